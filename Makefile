@@ -1,0 +1,48 @@
+# hmcr: the two commands of the README (`make run`, `make test`) and their helpers.
+BUILD    ?= build
+TYPE     ?= Release
+JOBS     ?= $(shell nproc)
+SANITIZE ?= OFF
+
+# Debian 12 packages hmcr builds against (README: "Dependencies" says why each is there).
+DEPS := g++ cmake make pkg-config zlib1g-dev libembree-dev libopenmesh-dev libvtk9-dev \
+        libeigen3-dev libtbb-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev \
+        libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
+
+.PHONY: deps build run test test-quick bench format clean
+
+# Installs only what is missing, so it is quick when everything is present.
+deps:
+	@missing=$$(for p in $(DEPS); do dpkg -s $$p >/dev/null 2>&1 || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing $$missing"; \
+	  export DEBIAN_FRONTEND=noninteractive; \
+	  apt-get update -qq && apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(TYPE) -DHMCR_SANITIZE=$(SANITIZE)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Solves the bundled Cornell box: out/cornell.vtp (open it in ParaView) and out/cornell.json.
+run: build
+	$(BUILD)/hmcr solve cornell -o out/cornell.vtp
+
+# The whole suite, statistical tests included (label `slow`).
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Everything but the slow statistical tests.
+test-quick: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
+
+bench: build
+	$(BUILD)/hmcr_bench
+
+format:
+	clang-format -i $$(git ls-files '*.cpp' '*.h')
+
+clean:
+	rm -rf $(BUILD)

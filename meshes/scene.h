@@ -1,0 +1,64 @@
+// A scene: the patch mesh plus what its optional JSON scene file says (views, solver defaults).
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "meshes/patch_mesh.h"
+
+namespace hmcr {
+
+// A user-facing input error; what() is one line, "file:line: what" when a line is known.
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct Material {
+    std::string name;
+    Eigen::Vector3d kd{0, 0, 0};  // diffuse reflectance rho, each channel in [0, 1)
+    Eigen::Vector3d ke{0, 0, 0};  // emitted radiance, W sr^-1 m^-2; E = pi * ke
+};
+
+struct View {
+    std::string name;
+    Eigen::Vector3d position{0, 0, 0};
+    Eigen::Vector3d look_at{0, 0, 1};
+    Eigen::Vector3d up{0, 1, 0};
+    double fov_degrees = 40;  // vertical field of view
+    int width = 512;
+    int height = 512;
+};
+
+struct LoadOptions {
+    std::optional<Material> default_material;  // used by faces without a material
+};
+
+struct Scene {
+    std::string name;                   // bundled name, or the file's stem
+    std::filesystem::path source;       // the file given by the user (JSON or mesh)
+    std::filesystem::path mesh_path;    // the mesh file actually read
+    PatchMesh mesh;                     // validated, with the hmcr:* face properties
+    std::vector<View> views;
+    nlohmann::json solver_defaults = nlohmann::json::object();  // "solver" object of the file
+};
+
+// Reads an OBJ (+MTL) file through tinyobjloader, validates it (SPEC section 1) and returns
+// the patch mesh. Throws SceneError on any problem.
+PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options = {});
+
+// Accepts a bundled scene name ("cornell"), a JSON scene file, or a mesh file (.obj).
+Scene load_scene(const std::string& name_or_path);
+
+// Names of the bundled scenes (folders of the scene directory holding NAME/NAME.json).
+std::vector<std::string> bundled_scene_names();
+
+// Where bundled scenes live: $HMCR_SCENES if set, else the source tree's scenes/.
+std::filesystem::path scene_directory();
+
+}  // namespace hmcr

@@ -1,0 +1,16 @@
+// The list of refinement oracles, by name.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "oracles/oracle.h"
+
+namespace hmcr {
+
+// Every registered oracle, in the order `hmcr oracles` lists them.
+const std::vector<const Oracle*>& all_oracles();
+// The oracle called name; throws std::invalid_argument naming the valid ones.
+const Oracle& find_oracle(std::string_view name);
+
+}  // namespace hmcr

@@ -1,0 +1,55 @@
+// Parameter-space domain of an element and its regular 4-way subdivision (SPEC section 2).
+//
+// On a quad patch the domain is the square [u0, u0+s] x [v0, v0+s]. On a triangle patch it is
+// a triangle with legs of length |s| along u and v from the corner (u0, v0): upright (corners
+// (u0,v0), (u0+s,v0), (u0,v0+s)) when s > 0, inverted (corners (u0,v0), (u0+s,v0), (u0,v0+s)
+// with s < 0) for the middle children. All coordinates are dyadic, so floats hold them exactly
+// down to depth 24.
+#pragma once
+
+#include <array>
+
+#include "radiosity/types.h"
+
+namespace hmcr {
+
+struct Domain {
+    float u0 = 0, v0 = 0, s = 1;
+
+    static Domain root() { return {}; }
+    int corner_count(bool quad) const { return quad ? 4 : 3; }
+
+    // Corners in parameter space, counter-clockwise like the patch's own corners.
+    std::array<Vec2, 4> corners(bool quad) const {
+        const double u = u0, v = v0, d = s;
+        if (quad) return {Vec2(u, v), Vec2(u + d, v), Vec2(u + d, v + d), Vec2(u, v + d)};
+        return {Vec2(u, v), Vec2(u + d, v), Vec2(u, v + d), Vec2(u, v)};
+    }
+    Vec2 centre(bool quad) const {
+        return quad ? Vec2(u0 + 0.5 * s, v0 + 0.5 * s) : Vec2(u0 + s / 3.0, v0 + s / 3.0);
+    }
+
+    // Child k: quads number them (u half) + 2 (v half); triangles 0..2 are the corner
+    // triangles at (u0,v0), along u, along v, and 3 is the middle one, of opposite orientation.
+    Domain child(bool quad, int k) const {
+        const float h = 0.5f * s;
+        if (quad) return {u0 + (k & 1) * h, v0 + (k >> 1) * h, h};
+        switch (k) {
+            case 0: return {u0, v0, h};
+            case 1: return {u0 + h, v0, h};
+            case 2: return {u0, v0 + h, h};
+            default: return {u0 + h, v0 + h, -h};
+        }
+    }
+
+    // The child containing (u, v) (a point of this domain).
+    int child_containing(bool quad, const Vec2& uv) const {
+        const double a = (uv.x() - u0) / s, b = (uv.y() - v0) / s;
+        if (quad) return (a >= 0.5 ? 1 : 0) + (b >= 0.5 ? 2 : 0);
+        if (a >= 0.5) return 1;
+        if (b >= 0.5) return 2;
+        return a + b < 0.5 ? 0 : 3;
+    }
+};
+
+}  // namespace hmcr

@@ -1,0 +1,11 @@
+#include "radiosity/element.h"
+
+namespace hmcr {
+
+std::string ElementId::to_string() const {
+    std::string s = std::to_string(patch) + "/";
+    for (int level = depth - 1; level >= 0; --level) s += char('0' + ((path >> (2 * level)) & 3));
+    return s;
+}
+
+}  // namespace hmcr

@@ -1,0 +1,42 @@
+// A node of a patch's quadtree (SPEC section 2). The root element is the patch itself.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+#include "radiosity/domain.h"
+#include "radiosity/types.h"
+
+namespace hmcr {
+
+// Deterministic identity: the patch and the path of child indices from its root.
+struct ElementId {
+    std::uint32_t patch = 0;
+    std::uint8_t depth = 0;
+    std::uint64_t path = 0;  // 2 bits per level, the root's child index most significant
+
+    ElementId child(int k) const { return {patch, std::uint8_t(depth + 1), (path << 2) | unsigned(k)}; }
+    auto operator<=>(const ElementId&) const = default;
+    std::string to_string() const;  // "patch/0312"
+};
+
+struct Element {
+    ElementId id;
+    Domain domain;
+    double area = 0;
+    Rgb radiosity = Rgb::Zero();  // B
+    Rgb unshot = Rgb::Zero();     // Delta B, shot in the next iteration
+    Rgb received = Rgb::Zero();   // radiosity received in the current iteration
+    Element* parent = nullptr;
+    std::atomic<Element*> first_child{nullptr};  // 4 consecutive children, or none
+
+    Element() = default;
+    Element(const Element&) = delete;
+    Element& operator=(const Element&) = delete;
+
+    Element* children() const { return first_child.load(std::memory_order_acquire); }
+    bool is_leaf() const { return children() == nullptr; }
+};
+
+}  // namespace hmcr

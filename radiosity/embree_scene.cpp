@@ -1,0 +1,184 @@
+#include "radiosity/embree_scene.h"
+
+#include <embree3/rtcore.h>
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace hmcr {
+
+struct EmbreeScene::Impl {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    std::string error;  // first error reported by Embree's callback
+};
+
+namespace {
+
+void on_embree_error(void* user, RTCError code, const char* message) {
+    auto* impl = static_cast<EmbreeScene::Impl*>(user);
+    if (impl->error.empty()) {
+        impl->error = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
+    }
+}
+
+void throw_if_failed(const EmbreeScene::Impl& impl, const char* step) {
+    if (!impl.error.empty()) throw std::runtime_error(std::string(step) + ": " + impl.error);
+}
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+}  // namespace
+
+void set_tracing_float_mode() {
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+}
+
+EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(new Impl) {
+    // No "threads=N": with TBB in the process it would cap all TBB parallelism.
+    m_impl->device = rtcNewDevice(nullptr);
+    if (!m_impl->device) throw std::runtime_error("cannot create the Embree device");
+    rtcSetDeviceErrorFunction(m_impl->device, on_embree_error, m_impl);
+
+    std::vector<std::array<float, 3>> vertices;
+    std::vector<std::array<unsigned, 3>> triangles;
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+    for (std::uint32_t i = 0; i < patches.size(); ++i) {
+        const Patch& p = patches[i];
+        const unsigned base = unsigned(vertices.size());
+        for (int k = 0; k < p.corner_count; ++k) {
+            const Vec3& c = p.corner[k];
+            vertices.push_back({float(c.x()), float(c.y()), float(c.z())});
+            lo = lo.cwiseMin(c);
+            hi = hi.cwiseMax(c);
+        }
+        triangles.push_back({base, base + 1, base + 2});
+        m_triangle_patch.push_back(i);
+        if (p.is_quad()) {
+            triangles.push_back({base, base + 2, base + 3});
+            m_triangle_patch.push_back(i);
+        }
+    }
+    m_offset = 1e-6 * std::max(1e-9, (hi - lo).norm());
+
+    m_impl->scene = rtcNewScene(m_impl->device);
+    rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_MEDIUM);
+    RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree-allocated buffers carry the padding its vector loads need.
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
+    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles.size()));
+    throw_if_failed(*m_impl, "allocating Embree buffers");
+    std::copy_n(vertices.front().data(), 3 * vertices.size(), vb);
+    std::copy_n(triangles.front().data(), 3 * triangles.size(), ib);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(m_impl->scene, geom);
+    rtcReleaseGeometry(geom);
+    rtcCommitScene(m_impl->scene);
+    throw_if_failed(*m_impl, "building the Embree scene");
+}
+
+EmbreeScene::~EmbreeScene() {
+    if (m_impl->scene) rtcReleaseScene(m_impl->scene);
+    if (m_impl->device) rtcReleaseDevice(m_impl->device);
+    delete m_impl;
+}
+
+std::optional<Hit> EmbreeScene::first_hit(const Vec3& origin, const Vec3& direction) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray.org_x = float(origin.x());
+    rh.ray.org_y = float(origin.y());
+    rh.ray.org_z = float(origin.z());
+    rh.ray.dir_x = float(direction.x());
+    rh.ray.dir_y = float(direction.y());
+    rh.ray.dir_z = float(direction.z());
+    rh.ray.tnear = float(m_offset);
+    rh.ray.tfar = kInf;
+    rh.ray.time = 0;
+    rh.ray.mask = ~0u;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(m_impl->scene, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    return Hit{m_triangle_patch[rh.hit.primID], double(rh.ray.tfar)};
+}
+
+bool EmbreeScene::visible(const Vec3& p, const Vec3& q) const {
+    const Vec3 d = q - p;
+    const double len = d.norm();
+    if (len <= 2 * m_offset) return true;  // touching points: nothing can be between
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray;
+    ray.org_x = float(p.x());
+    ray.org_y = float(p.y());
+    ray.org_z = float(p.z());
+    ray.dir_x = float(d.x());
+    ray.dir_y = float(d.y());
+    ray.dir_z = float(d.z());
+    ray.tnear = float(m_offset / len);
+    ray.tfar = float(1 - m_offset / len);
+    ray.time = 0;
+    ray.mask = ~0u;
+    ray.id = 0;
+    ray.flags = 0;
+    rtcOccluded1(m_impl->scene, &context, &ray);
+    return ray.tfar >= 0;  // occluded sets tfar to -inf
+}
+
+void EmbreeScene::visible_many(std::span<const Vec3> p, std::span<const Vec3> q,
+                               std::span<bool> out) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    for (std::size_t first = 0; first < p.size(); first += 16) {
+        const std::size_t n = std::min<std::size_t>(16, p.size() - first);
+        alignas(64) int valid[16];
+        alignas(64) RTCRay16 ray;
+        for (std::size_t k = 0; k < 16; ++k) {
+            // Inactive lanes get an empty interval: some Embree paths ignore the valid mask.
+            ray.tnear[k] = 1;
+            ray.tfar[k] = 0;
+            ray.org_x[k] = ray.org_y[k] = ray.org_z[k] = 0;
+            ray.dir_x[k] = ray.dir_y[k] = 0;
+            ray.dir_z[k] = 1;
+            ray.time[k] = 0;
+            ray.mask[k] = ~0u;
+            ray.id[k] = unsigned(k);
+            ray.flags[k] = 0;
+            valid[k] = 0;
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+            const Vec3& a = p[first + k];
+            const Vec3 d = q[first + k] - a;
+            const double len = d.norm();
+            out[first + k] = true;
+            if (len <= 2 * m_offset) continue;  // touching points: nothing can be between
+            valid[k] = -1;
+            ray.org_x[k] = float(a.x());
+            ray.org_y[k] = float(a.y());
+            ray.org_z[k] = float(a.z());
+            ray.dir_x[k] = float(d.x());
+            ray.dir_y[k] = float(d.y());
+            ray.dir_z[k] = float(d.z());
+            ray.tnear[k] = float(m_offset / len);
+            ray.tfar[k] = float(1 - m_offset / len);
+        }
+        rtcOccluded16(valid, m_impl->scene, &context, &ray);
+        for (std::size_t k = 0; k < n; ++k) {
+            if (valid[k]) out[first + k] = ray.tfar[k] >= 0;  // occluded sets tfar to -inf
+        }
+    }
+}
+
+}  // namespace hmcr

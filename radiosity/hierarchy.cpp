@@ -1,0 +1,121 @@
+#include "radiosity/hierarchy.h"
+
+#include <tbb/parallel_for.h>
+
+#include <stdexcept>
+
+namespace hmcr {
+
+Hierarchy::Hierarchy(PatchSet patches, HierarchyLimits limits)
+    : m_patches(std::move(patches)), m_limits(limits), m_roots(m_patches.patches.size()) {
+    if (m_limits.max_depth < 0 || m_limits.max_depth > 24) {
+        throw std::invalid_argument("max depth must be between 0 and 24");
+    }
+    m_min_area = m_limits.min_area * m_patches.total_area;
+    for (std::size_t i = 0; i < m_roots.size(); ++i) {
+        Element& r = m_roots[i];
+        const Patch& p = m_patches.patches[i];
+        r.id = {std::uint32_t(i), 0, 0};
+        r.area = p.area;
+        r.radiosity = r.unshot = p.emission;
+    }
+}
+
+bool Hierarchy::can_subdivide(const Element& e) const {
+    return e.area > m_min_area && e.id.depth < m_limits.max_depth;
+}
+
+void Hierarchy::init_child(const Element& parent, int k, Element& child) const {
+    const Patch& p = patch(parent);
+    child.id = parent.id.child(k);
+    child.domain = parent.domain.child(p.is_quad(), k);
+    const auto uv = child.domain.corners(p.is_quad());
+    child.area = p.region_area(uv.data(), p.corner_count);
+    child.radiosity = parent.radiosity;
+    child.unshot = parent.unshot;
+    child.received = Rgb::Zero();
+    child.parent = const_cast<Element*>(&parent);
+    child.first_child.store(nullptr, std::memory_order_relaxed);
+}
+
+Element* Hierarchy::subdivide(Element& e) {
+    if (Element* c = e.children()) return c;
+    ElementArena& arena = m_arenas.local();
+    Element* block = arena.allocate_block();
+    for (int k = 0; k < 4; ++k) init_child(e, k, block[k]);
+    Element* expected = nullptr;
+    if (e.first_child.compare_exchange_strong(expected, block, std::memory_order_acq_rel)) {
+        m_blocks.fetch_add(1, std::memory_order_relaxed);
+        return block;
+    }
+    arena.give_back(block);  // another thread subdivided e first: its children are identical
+    return expected;
+}
+
+Element& Hierarchy::child_containing(const Element& e, const Vec2& uv) const {
+    const int k = e.domain.child_containing(patch(e).is_quad(), uv);
+    return e.children()[k];
+}
+
+Element& Hierarchy::locate(Element& e, const Vec2& uv) const {
+    Element* cur = &e;
+    while (!cur->is_leaf()) cur = &child_containing(*cur, uv);
+    return *cur;
+}
+
+Vec3 Hierarchy::centre(const Element& e) const {
+    const Patch& p = patch(e);
+    return p.point(e.domain.centre(p.is_quad()));
+}
+
+std::array<Vec3, 4> Hierarchy::corners(const Element& e) const {
+    const Patch& p = patch(e);
+    const auto uv = e.domain.corners(p.is_quad());
+    std::array<Vec3, 4> out;
+    for (int k = 0; k < 4; ++k) out[k] = p.point(uv[k]);
+    return out;
+}
+
+namespace {
+
+void push_pull_element(Element& e, const Rgb& from_above) {
+    const Rgb acc = from_above + e.received;
+    e.received = Rgb::Zero();
+    Element* c = e.children();
+    if (!c) {
+        e.unshot = acc;
+        e.radiosity += acc;
+        return;
+    }
+    Rgb b = Rgb::Zero(), db = Rgb::Zero();
+    double area = 0;
+    for (int k = 0; k < 4; ++k) {
+        push_pull_element(c[k], acc);
+        b += c[k].area * c[k].radiosity;
+        db += c[k].area * c[k].unshot;
+        area += c[k].area;
+    }
+    e.radiosity = b / area;
+    e.unshot = db / area;
+}
+
+}  // namespace
+
+void Hierarchy::push_pull() {
+    tbb::parallel_for(std::size_t(0), m_roots.size(),
+                      [&](std::size_t i) { push_pull_element(m_roots[i], Rgb::Zero()); });
+}
+
+Rgb Hierarchy::unshot_power() const {
+    Rgb sum = Rgb::Zero();
+    for (const Element& r : m_roots) sum += r.area * r.unshot;
+    return sum;
+}
+
+std::size_t Hierarchy::bytes() const {
+    std::size_t b = m_roots.size() * sizeof(Element);
+    for (const ElementArena& a : m_arenas) b += a.bytes();
+    return b;
+}
+
+}  // namespace hmcr

@@ -1,0 +1,80 @@
+// The element hierarchy: one quadtree per patch, created lazily and safely from many threads.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include "radiosity/element.h"
+#include "radiosity/element_arena.h"
+#include "radiosity/patch.h"
+
+namespace hmcr {
+
+struct HierarchyLimits {
+    double min_area = 1e-6;  // relative to A_T; an element at or below it is never subdivided
+    int max_depth = 16;      // a leaf at this depth is never subdivided (at most 24)
+};
+
+class Hierarchy {
+public:
+    Hierarchy(PatchSet patches, HierarchyLimits limits);
+
+    const PatchSet& patch_set() const { return m_patches; }
+    const Patch& patch(const Element& e) const { return m_patches.patches[e.id.patch]; }
+    std::size_t patch_count() const { return m_patches.patches.size(); }
+    Element& root(std::size_t patch) { return m_roots[patch]; }
+    const Element& root(std::size_t patch) const { return m_roots[patch]; }
+    const HierarchyLimits& limits() const { return m_limits; }
+
+    bool can_subdivide(const Element& e) const;
+    // The four children of e, created if they do not exist yet (thread-safe). New children
+    // inherit B and Delta B (constant basis) and start with nothing received.
+    Element* subdivide(Element& e);
+    // The existing child of e that contains the parameter point uv.
+    Element& child_containing(const Element& e, const Vec2& uv) const;
+    // The leaf below e containing uv (existing elements only).
+    Element& locate(Element& e, const Vec2& uv) const;
+
+    Vec3 centre(const Element& e) const;
+    std::array<Vec3, 4> corners(const Element& e) const;
+
+    // Pushes received radiosity to the leaves (Delta B = received, B += received), then pulls
+    // B and Delta B up as area-weighted averages. Parallel over patches.
+    void push_pull();
+    // Total unshot power sum_l A_l Delta B_l (per channel).
+    Rgb unshot_power() const;
+
+    std::size_t element_count() const { return m_patches.patches.size() + 4 * m_blocks.load(); }
+    std::size_t leaf_count() const { return element_count() - m_blocks.load(); }
+    std::size_t bytes() const;
+
+    // Leaves in canonical order (patch, then child index depth-first): the order of the output.
+    template <class F>
+    void for_each_leaf(F&& f) const {
+        for (const Element& r : m_roots) visit_leaves(r, f);
+    }
+    template <class F>
+    static void visit_leaves(const Element& e, F& f) {
+        if (const Element* c = e.children()) {
+            for (int k = 0; k < 4; ++k) visit_leaves(c[k], f);
+        } else {
+            f(e);
+        }
+    }
+
+private:
+    void init_child(const Element& parent, int k, Element& child) const;
+
+    PatchSet m_patches;
+    HierarchyLimits m_limits;
+    double m_min_area = 0;  // absolute
+    std::vector<Element> m_roots;
+    mutable tbb::enumerable_thread_specific<ElementArena> m_arenas;
+    std::atomic<std::size_t> m_blocks{0};
+};
+
+}  // namespace hmcr

@@ -1,0 +1,66 @@
+#include "radiosity/kernel.h"
+
+#include <Eigen/Geometry>
+#include <array>
+#include <numbers>
+
+#include "radiosity/sampling.h"
+
+namespace hmcr {
+namespace {
+
+// |dP/du x dP/dv| of the bilinear map at uv.
+double bilinear_jacobian(const Patch& p, const Vec2& uv) {
+    const double u = uv.x(), v = uv.y();
+    const Vec3 pu = (1 - v) * (p.corner[1] - p.corner[0]) + v * (p.corner[2] - p.corner[3]);
+    const Vec3 pv = (1 - u) * (p.corner[3] - p.corner[0]) + u * (p.corner[2] - p.corner[1]);
+    return pu.cross(pv).norm();
+}
+
+}  // namespace
+
+double point_kernel(const Vec3& x, const Vec3& nx, const Vec3& y, const Vec3& ny) {
+    const Vec3 d = y - x;
+    const double r2 = d.squaredNorm();
+    const double cx = nx.dot(d), cy = -ny.dot(d);
+    if (cx <= 0 || cy <= 0 || r2 == 0) return 0;
+    return cx * cy / (std::numbers::pi * r2 * r2);  // the two cosines carry a factor r each
+}
+
+Vec2 sample_element(const Patch& patch, const Domain& domain, double xi1, double xi2) {
+    if (!patch.is_quad()) {
+        const Vec2 ab = sample_uniform_triangle(xi1, xi2);
+        return {domain.u0 + domain.s * ab.x(), domain.v0 + domain.s * ab.y()};
+    }
+    // The Jacobian of a planar bilinear map is affine in (u, v), so area-uniform sampling is a
+    // linear density in s followed by a linear density in t given s.
+    const auto c = domain.corners(true);
+    const double j00 = bilinear_jacobian(patch, c[0]), j10 = bilinear_jacobian(patch, c[1]);
+    const double j11 = bilinear_jacobian(patch, c[2]), j01 = bilinear_jacobian(patch, c[3]);
+    const double s = sample_linear(j00 + j01, j10 + j11, xi1);
+    const double t = sample_linear((1 - s) * j00 + s * j10, (1 - s) * j01 + s * j11, xi2);
+    return {domain.u0 + domain.s * s, domain.v0 + domain.s * t};
+}
+
+void sample_kernel(const EmbreeScene& scene, const Hierarchy& hierarchy, const Element& i,
+                   const Element& j, Rng& rng, std::span<double> out) {
+    const Patch& pi = hierarchy.patch(i);
+    const Patch& pj = hierarchy.patch(j);
+    constexpr std::size_t kBatch = 64;
+    std::array<Vec3, kBatch> xs, ys;
+    std::array<bool, kBatch> vis;
+    for (std::size_t first = 0; first < out.size(); first += kBatch) {
+        const std::size_t n = std::min(kBatch, out.size() - first);
+        for (std::size_t k = 0; k < n; ++k) {
+            xs[k] = pi.point(sample_element(pi, i.domain, rng.uniform(), rng.uniform()));
+            ys[k] = pj.point(sample_element(pj, j.domain, rng.uniform(), rng.uniform()));
+            out[first + k] = point_kernel(xs[k], pi.normal, ys[k], pj.normal);
+        }
+        scene.visible_many({xs.data(), n}, {ys.data(), n}, {vis.data(), n});
+        for (std::size_t k = 0; k < n; ++k) {
+            if (!vis[k]) out[first + k] = 0;
+        }
+    }
+}
+
+}  // namespace hmcr

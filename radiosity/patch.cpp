@@ -1,0 +1,98 @@
+#include "radiosity/patch.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace hmcr {
+namespace {
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+Vec2 clamp_to_unit(Vec2 uv) { return uv.cwiseMax(0.0).cwiseMin(1.0); }
+
+// Inverse of the bilinear map, in 2D plane coordinates: q = u e1 + v e3 + u v g.
+// Eliminating v gives a quadratic in u (zero leading term for parallelograms).
+Vec2 inverse_bilinear(const Vec2& q, const Vec2& e1, const Vec2& e3, const Vec2& g) {
+    const double a = -cross2(e1, g);
+    const double b = cross2(q, g) - cross2(e1, e3);
+    const double c = cross2(q, e3);
+    double u;
+    if (std::abs(a) < 1e-12 * (std::abs(b) + std::abs(c)) || a == 0) {
+        u = -c / b;
+    } else {
+        const double disc = std::sqrt(std::max(0.0, b * b - 4 * a * c));
+        // Stable roots; keep the one inside (or nearest to) [0, 1].
+        const double qq = -0.5 * (b + std::copysign(disc, b));
+        const double r1 = qq / a, r2 = c / qq;
+        auto dist = [](double x) { return x < 0 ? -x : (x > 1 ? x - 1 : 0); };
+        u = dist(r1) <= dist(r2) ? r1 : r2;
+    }
+    const Vec2 d = e3 + u * g;
+    const double v = (q - u * e1).dot(d) / d.squaredNorm();
+    return clamp_to_unit({u, v});
+}
+
+}  // namespace
+
+Vec3 Patch::point(const Vec2& uv) const {
+    const double u = uv.x(), v = uv.y();
+    if (!is_quad()) return corner[0] + u * (corner[1] - corner[0]) + v * (corner[2] - corner[0]);
+    return (1 - u) * (1 - v) * corner[0] + u * (1 - v) * corner[1] + u * v * corner[2] +
+           (1 - u) * v * corner[3];
+}
+
+Vec2 Patch::param(const Vec3& p) const {
+    // 2D frame in the patch plane.
+    const Vec3 ax = (corner[1] - corner[0]).normalized();
+    const Vec3 ay = normal.cross(ax);
+    auto to2 = [&](const Vec3& w) { return Vec2(w.dot(ax), w.dot(ay)); };
+    const Vec2 q = to2(p - corner[0]);
+    if (is_quad()) {
+        const Vec2 e1 = to2(corner[1] - corner[0]), e3 = to2(corner[3] - corner[0]);
+        const Vec2 g = to2(corner[0] - corner[1] + corner[2] - corner[3]);
+        return inverse_bilinear(q, e1, e3, g);
+    }
+    const Vec2 e1 = to2(corner[1] - corner[0]), e2 = to2(corner[2] - corner[0]);
+    const double det = cross2(e1, e2);
+    Vec2 uv(cross2(q, e2) / det, cross2(e1, q) / det);
+    uv = uv.cwiseMax(0.0);
+    const double s = uv.sum();
+    return s > 1 ? Vec2(uv / s) : uv;
+}
+
+double Patch::region_area(const Vec2* uv, int count) const {
+    const Vec3 a = point(uv[0]), b = point(uv[1]), c = point(uv[2]);
+    if (count == 3) return 0.5 * (b - a).cross(c - a).norm();
+    const Vec3 d = point(uv[3]);
+    return 0.5 * (c - a).cross(d - b).norm();  // exact for planar quads
+}
+
+PatchSet build_patch_set(const PatchMesh& mesh) {
+    PatchSet set;
+    auto& m = const_cast<PatchMesh&>(mesh);  // OpenMesh property lookup needs a mutable mesh
+    auto rho = reflectance_prop(m);
+    auto emit = emission_prop(m);
+    set.patches.reserve(mesh.n_faces());
+    for (auto f : mesh.faces()) {
+        Patch p;
+        p.corner_count = 0;
+        for (auto v : mesh.fv_range(f)) {
+            const auto& pt = mesh.point(v);
+            p.corner[p.corner_count++] = Vec3(pt[0], pt[1], pt[2]);
+        }
+        const Vec3 n = p.is_quad() ? Vec3((p.corner[2] - p.corner[0]).cross(p.corner[3] - p.corner[1]))
+                                   : Vec3((p.corner[1] - p.corner[0]).cross(p.corner[2] - p.corner[0]));
+        p.normal = n.normalized();
+        p.area = 0.5 * n.norm();
+        p.reflectance = Rgb(rho[f][0], rho[f][1], rho[f][2]);
+        p.emission = Rgb(emit[f][0], emit[f][1], emit[f][2]);
+        set.total_area += p.area;
+        set.emitted_power += p.area * p.emission;
+        set.max_emitted_power = std::max(set.max_emitted_power, p.area * p.emission.maxCoeff());
+        set.patches.push_back(p);
+    }
+    return set;
+}
+
+}  // namespace hmcr

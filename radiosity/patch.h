@@ -1,0 +1,44 @@
+// One input polygon as the engine sees it: corners, plane, material, and the map between its
+// parameter space and 3D.
+//
+// Parameter space: a quad is the bilinear image of [0,1]^2 with corners k at (0,0), (1,0),
+// (1,1), (0,1); a triangle is the affine image of {u, v >= 0, u + v <= 1} with corners at
+// (0,0), (1,0), (0,1). Both maps are exact for planar patches, so element corners computed in
+// parameter space are exact points of the patch.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "meshes/patch_mesh.h"
+#include "radiosity/types.h"
+
+namespace hmcr {
+
+struct Patch {
+    std::array<Vec3, 4> corner;  // corner[3] unused on triangles
+    int corner_count = 3;
+    Vec3 normal{0, 0, 1};        // unit, right-hand rule of the corner order (the front side)
+    double area = 0;
+    Rgb reflectance = Rgb::Zero();
+    Rgb emission = Rgb::Zero();  // emitted radiosity E, W/m^2
+
+    bool is_quad() const { return corner_count == 4; }
+    Vec3 point(const Vec2& uv) const;
+    // Parameter coordinates of a point on the patch plane (clamped to the domain).
+    Vec2 param(const Vec3& p) const;
+    // Area of the region with the given parameter-space corners (3 or 4 of them).
+    double region_area(const Vec2* uv, int count) const;
+};
+
+// The patches of a mesh in face order, plus the scene constants the oracles need.
+struct PatchSet {
+    std::vector<Patch> patches;
+    double total_area = 0;          // A_T
+    double max_emitted_power = 0;   // Phi_max: largest A_i * max_c E_i,c of any patch
+    Rgb emitted_power = Rgb::Zero();  // sum of A_i * E_i
+};
+
+PatchSet build_patch_set(const PatchMesh& mesh);
+
+}  // namespace hmcr

@@ -1,0 +1,108 @@
+#include "radiosity/shooting.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "radiosity/kernel.h"
+#include "radiosity/rng.h"
+#include "radiosity/sampling.h"
+
+namespace hmcr {
+namespace {
+
+// Leaves weighted by A_l |Delta B_l|, frozen for the iteration (Jacobi).
+struct SourceTable {
+    std::vector<const Element*> leaves;
+    std::vector<double> cumulative;  // running sums of the weights
+    double total = 0;                // S
+
+    explicit SourceTable(const Hierarchy& h) {
+        h.for_each_leaf([&](const Element& e) {
+            const double w = e.area * channel_sum(e.unshot);
+            if (w <= 0) return;
+            total += w;
+            leaves.push_back(&e);
+            cumulative.push_back(total);
+        });
+    }
+    const Element& pick(double xi) const {
+        const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), xi * total);
+        return *leaves[std::min<std::size_t>(it - cumulative.begin(), leaves.size() - 1)];
+    }
+};
+
+enum class Fate : std::uint8_t { deposited, escaped, back_face };
+
+struct RayResult {
+    Element* receiver = nullptr;
+    Rgb power = Rgb::Zero();  // the ray's power (deposited: rho * power / A was added later)
+    Fate fate = Fate::escaped;
+};
+
+RayResult trace_ray(const RefinementContext& ctx, const SourceTable& sources, double power_scale,
+                    Rng& rng, RefinementCounters& counters) {
+    const Hierarchy& h = ctx.hierarchy;
+    const Element& leaf = sources.pick(rng.uniform());
+    const Patch& src = h.patch(leaf);
+    const Vec2 x_uv = sample_element(src, leaf.domain, rng.uniform(), rng.uniform());
+    const Vec3 x = src.point(x_uv);
+    const Vec3 dir = sample_cosine_hemisphere(src.normal, rng.uniform(), rng.uniform());
+    RayResult r;
+    r.power = power_scale * leaf.unshot / channel_sum(leaf.unshot);
+    const auto hit = ctx.scene.first_hit(x, dir);
+    if (!hit) return r;
+    const Patch& rcv = h.patch_set().patches[hit->patch];
+    if (rcv.normal.dot(dir) >= 0) {
+        r.fate = Fate::back_face;
+        return r;
+    }
+    const Vec2 y_uv = rcv.param(x + hit->distance * dir);
+    r.receiver = &refine_link(ctx, hit->patch, y_uv, leaf.id.patch, x_uv, counters);
+    r.fate = Fate::deposited;
+    return r;
+}
+
+constexpr std::uint64_t kBatchRays = 1 << 16;
+constexpr std::uint64_t kGrain = 256;
+
+}  // namespace
+
+IterationOutcome shoot_iteration(const RefinementContext& ctx, std::uint32_t iteration,
+                                 std::uint64_t rays,
+                                 const std::function<void(std::uint64_t)>& on_batch) {
+    IterationOutcome out;
+    const SourceTable sources(ctx.hierarchy);
+    if (rays == 0 || sources.total <= 0) return out;
+    const double power_scale = sources.total / double(rays);  // S / N_iter
+    std::vector<RayResult> results(std::min(rays, kBatchRays));
+    std::vector<RefinementCounters> chunk_counters;
+    for (std::uint64_t first = 0; first < rays; first += kBatchRays) {
+        const std::uint64_t n = std::min(kBatchRays, rays - first);
+        chunk_counters.assign((n + kGrain - 1) / kGrain, {});
+        tbb::parallel_for(std::uint64_t(0), chunk_counters.size(), [&](std::uint64_t c) {
+            set_tracing_float_mode();
+            for (std::uint64_t k = c * kGrain; k < std::min(n, (c + 1) * kGrain); ++k) {
+                Rng rng(ctx.seed, iteration, first + k);
+                results[k] = trace_ray(ctx, sources, power_scale, rng, chunk_counters[c]);
+            }
+        });
+        // Deposits in ray order (SPEC section 3, step 6): received += rho * Phi / A.
+        for (std::uint64_t k = 0; k < n; ++k) {
+            const RayResult& r = results[k];
+            out.shot_power += r.power;
+            if (r.fate == Fate::escaped) out.escaped_power += r.power;
+            if (r.fate == Fate::back_face) out.back_face_power += r.power;
+            if (r.fate != Fate::deposited) continue;
+            const Patch& p = ctx.hierarchy.patch(*r.receiver);
+            r.receiver->received += p.reflectance * r.power / r.receiver->area;
+        }
+        for (const auto& c : chunk_counters) out.counters += c;
+        out.rays += n;
+        if (on_batch) on_batch(out.rays);
+    }
+    return out;
+}
+
+}  // namespace hmcr

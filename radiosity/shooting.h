@@ -1,0 +1,27 @@
+// One stochastic Jacobi iteration (SPEC section 3, steps 2-6): sources frozen, rays chosen
+// by unshot power, each ray refined to its receiver element and deposited there.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "radiosity/refinement.h"
+
+namespace hmcr {
+
+struct IterationOutcome {
+    std::uint64_t rays = 0;
+    Rgb shot_power = Rgb::Zero();       // sum of the rays' power
+    Rgb escaped_power = Rgb::Zero();    // rays that left the scene
+    Rgb back_face_power = Rgb::Zero();  // rays absorbed by a back face
+    RefinementCounters counters;
+};
+
+// Shoots `rays` rays of iteration `iteration` and adds their deposits to the elements'
+// received accumulators, in ray order so the sums do not depend on the thread count.
+// `on_batch(rays_done)` is called from the calling thread between batches.
+IterationOutcome shoot_iteration(const RefinementContext& ctx, std::uint32_t iteration,
+                                 std::uint64_t rays,
+                                 const std::function<void(std::uint64_t)>& on_batch = {});
+
+}  // namespace hmcr

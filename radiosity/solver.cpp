@@ -1,0 +1,123 @@
+#include "radiosity/solver.h"
+
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "oracles/registry.h"
+#include "radiosity/embree_scene.h"
+#include "radiosity/ray_schedule.h"
+#include "radiosity/shooting.h"
+
+namespace hmcr {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// Area-weighted mean reflectance: the first guess of the unshot power's decay per iteration.
+double mean_reflectance(const PatchSet& set) {
+    double sum = 0;
+    for (const Patch& p : set.patches) sum += p.area * p.reflectance.mean();
+    return set.total_area > 0 ? sum / set.total_area : 0;
+}
+
+}  // namespace
+
+std::string SolverOptions::to_string() const {
+    return fmt::format(
+        "oracle={} epsilon={} lines={} rays={} seed={} threads={} min_area={} max_depth={} "
+        "stop={}",
+        oracle, epsilon, lines, rays, seed, threads, min_area, max_depth, stop);
+}
+
+double SolveStats::back_face_fraction() const {
+    double shot = 0;
+    for (const auto& it : iterations) shot += channel_sum(it.unshot_before);
+    return shot > 0 ? channel_sum(back_face_power) / shot : 0;
+}
+
+void validate(const SolverOptions& o) {
+    find_oracle(o.oracle);  // throws with the list of valid names
+    auto require = [](bool ok, const std::string& what) {
+        if (!ok) throw std::invalid_argument(what);
+    };
+    require(std::isnan(o.epsilon) || (o.epsilon > 0 && std::isfinite(o.epsilon)),
+            fmt::format("epsilon must be a positive number, got {}", o.epsilon));
+    require(o.lines >= 1 && o.lines <= 4096, fmt::format("lines must be in 1..4096, got {}", o.lines));
+    require(o.rays >= 1, "rays must be at least 1");
+    require(o.threads >= 0, fmt::format("threads must be 0 (all) or more, got {}", o.threads));
+    require(o.min_area >= 0 && o.min_area < 1,
+            fmt::format("min-area is relative to the total area, in [0, 1), got {}", o.min_area));
+    require(o.max_depth >= 0 && o.max_depth <= 24,
+            fmt::format("max-depth must be in 0..24, got {}", o.max_depth));
+    require(o.stop > 0 && o.stop < 1, fmt::format("stop must be in (0, 1), got {}", o.stop));
+}
+
+Solution solve(const PatchMesh& mesh, const SolverOptions& options, const ProgressFn& progress) {
+    validate(options);
+    const auto start = Clock::now();
+    const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+    tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
+
+    Solution sol;
+    sol.options = options;
+    SolveStats& st = sol.stats;
+    const Oracle& oracle = find_oracle(options.oracle);
+    st.epsilon = std::isnan(options.epsilon) ? oracle.default_epsilon() : options.epsilon;
+    st.threads = threads;
+
+    PatchSet patches = build_patch_set(mesh);
+    if (patches.max_emitted_power <= 0) throw std::invalid_argument("the scene emits no light");
+    st.emitted_power = patches.emitted_power;
+    const double ratio = mean_reflectance(patches);
+    const EmbreeScene scene(patches.patches);
+    sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
+                                                HierarchyLimits{options.min_area, options.max_depth});
+    Hierarchy& h = *sol.hierarchy;
+    const RefinementContext ctx{h, oracle, scene, st.epsilon * h.patch_set().max_emitted_power,
+                                options.lines, options.seed};
+    st.setup_seconds = seconds_since(start);
+
+    const double emitted = channel_sum(st.emitted_power);
+    RaySchedule schedule(options.rays, options.stop * emitted, ratio);
+    Rgb unshot = h.unshot_power();
+    for (std::uint32_t it = 0; channel_sum(unshot) >= options.stop * emitted; ++it) {
+        const auto t0 = Clock::now();
+        IterationRecord rec;
+        rec.unshot_before = unshot;
+        rec.rays = schedule.next(channel_sum(unshot));
+        const std::uint64_t done_before = st.rays;
+        const auto out = shoot_iteration(ctx, it, rec.rays, [&](std::uint64_t n) {
+            if (progress) progress(std::min(1.0, double(done_before + n) / double(options.rays)));
+        });
+        st.shooting_seconds += seconds_since(t0);
+        const auto t1 = Clock::now();
+        h.push_pull();
+        st.push_pull_seconds += seconds_since(t1);
+        unshot = rec.unshot_after = h.unshot_power();
+        rec.leaves_after = h.leaf_count();
+        rec.seconds = seconds_since(t0);
+        schedule.record(rec.rays, channel_sum(rec.unshot_before), channel_sum(unshot));
+        st.rays += out.rays;
+        st.oracle_calls += out.counters.oracle_calls;
+        st.lines_cast += out.counters.lines_cast;
+        st.escaped_power += out.escaped_power;
+        st.back_face_power += out.back_face_power;
+        st.iterations.push_back(rec);
+    }
+    st.unshot_power = unshot;
+    st.elements = h.element_count();
+    st.leaves = h.leaf_count();
+    st.hierarchy_bytes = h.bytes();
+    st.total_seconds = seconds_since(start);
+    return sol;
+}
+
+}  // namespace hmcr

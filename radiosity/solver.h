@@ -1,0 +1,55 @@
+// solve(): a patch mesh in, an element hierarchy with radiosity out (SPEC sections 2 and 3).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "meshes/patch_mesh.h"
+#include "radiosity/hierarchy.h"
+#include "radiosity/solver_options.h"
+
+namespace hmcr {
+
+struct IterationRecord {
+    std::uint64_t rays = 0;
+    Rgb unshot_before = Rgb::Zero();  // unshot power at the start of the iteration, W
+    Rgb unshot_after = Rgb::Zero();
+    std::size_t leaves_after = 0;
+    double seconds = 0;
+};
+
+struct SolveStats {
+    std::vector<IterationRecord> iterations;
+    std::uint64_t rays = 0;
+    std::uint64_t oracle_calls = 0;
+    std::uint64_t lines_cast = 0;
+    double epsilon = 0;              // the value used (the oracle's default if not given)
+    int threads = 0;                 // worker threads used
+    Rgb emitted_power = Rgb::Zero();
+    Rgb escaped_power = Rgb::Zero();    // shot power that left the scene
+    Rgb back_face_power = Rgb::Zero();  // shot power absorbed by back faces
+    Rgb unshot_power = Rgb::Zero();     // left when the solve stopped
+    std::size_t elements = 0, leaves = 0, hierarchy_bytes = 0;
+    double setup_seconds = 0, shooting_seconds = 0, push_pull_seconds = 0, total_seconds = 0;
+
+    // Fraction of the shot power that hit back faces (a sign of flipped normals if > 1%).
+    double back_face_fraction() const;
+};
+
+struct Solution {
+    std::unique_ptr<Hierarchy> hierarchy;
+    SolverOptions options;
+    SolveStats stats;
+};
+
+// Progress: fraction of the ray budget shot so far, called from the calling thread.
+using ProgressFn = std::function<void(double)>;
+
+// Throws std::invalid_argument on a bad option (unknown oracle, non-positive rays, ...).
+Solution solve(const PatchMesh& mesh, const SolverOptions& options, const ProgressFn& progress = {});
+
+void validate(const SolverOptions& options);
+
+}  // namespace hmcr

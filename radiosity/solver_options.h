@@ -1,0 +1,24 @@
+// Everything a solve can be told; the command line fills it.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+
+namespace hmcr {
+
+struct SolverOptions {
+    std::string oracle = "power";  // refinement oracle (`hmcr oracles` lists them)
+    double epsilon = std::numeric_limits<double>::quiet_NaN();  // NaN: the oracle's default
+    int lines = 10;                   // N_s, kernel lines per link for line-based oracles
+    std::uint64_t rays = 2'684'000;   // shooting rays over the whole solve (within 2%)
+    std::uint64_t seed = 1;           // keys every random stream
+    int threads = 0;                  // 0: all cores
+    double min_area = 1e-6;           // relative to A_T: elements at or below are not split
+    int max_depth = 16;               // quadtree depth limit (at most 24)
+    double stop = 0.01;               // stop when unshot power < stop * emitted power
+
+    std::string to_string() const;
+};
+
+}  // namespace hmcr

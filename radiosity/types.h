@@ -1,0 +1,15 @@
+// Basic numeric types of the engine.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace hmcr {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+using Rgb = Eigen::Array3d;  // radiometric triple, one value per channel
+
+// |c| of SPEC section 3: the sum of the channels.
+inline double channel_sum(const Rgb& c) { return c.sum(); }
+
+}  // namespace hmcr
