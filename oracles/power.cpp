@@ -21,7 +21,7 @@ public:
     std::string_view description() const override {
         return "power transported through the link, unoccluded centre estimate (Hanrahan 1991)";
     }
-    double default_epsilon() const override { return 1e-3; }
+    double default_epsilon() const override { return 1e-5; }
     bool uses_lines() const override { return false; }
 
     double geometric_factor(const LinkGeometry& g) const override {

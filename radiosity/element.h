@@ -25,6 +25,7 @@ struct Element {
     ElementId id;
     Domain domain;
     double area = 0;
+    Vec3 centre{0, 0, 0};  // the image of the domain's centre, kept for the oracles' geometry
     Rgb radiosity = Rgb::Zero();  // B
     Rgb unshot = Rgb::Zero();     // Delta B, shot in the next iteration
     Rgb received = Rgb::Zero();   // radiosity received in the current iteration

@@ -17,6 +17,7 @@ Hierarchy::Hierarchy(PatchSet patches, HierarchyLimits limits)
         const Patch& p = m_patches.patches[i];
         r.id = {std::uint32_t(i), 0, 0};
         r.area = p.area;
+        r.centre = p.point(r.domain.centre(p.is_quad()));
         r.radiosity = r.unshot = p.emission;
     }
 }
@@ -31,6 +32,7 @@ void Hierarchy::init_child(const Element& parent, int k, Element& child) const {
     child.domain = parent.domain.child(p.is_quad(), k);
     const auto uv = child.domain.corners(p.is_quad());
     child.area = p.region_area(uv.data(), p.corner_count);
+    child.centre = p.point(child.domain.centre(p.is_quad()));
     child.radiosity = parent.radiosity;
     child.unshot = parent.unshot;
     child.received = Rgb::Zero();
@@ -61,11 +63,6 @@ Element& Hierarchy::locate(Element& e, const Vec2& uv) const {
     Element* cur = &e;
     while (!cur->is_leaf()) cur = &child_containing(*cur, uv);
     return *cur;
-}
-
-Vec3 Hierarchy::centre(const Element& e) const {
-    const Patch& p = patch(e);
-    return p.point(e.domain.centre(p.is_quad()));
 }
 
 std::array<Vec3, 4> Hierarchy::corners(const Element& e) const {

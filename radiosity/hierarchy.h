@@ -39,7 +39,7 @@ public:
     // The leaf below e containing uv (existing elements only).
     Element& locate(Element& e, const Vec2& uv) const;
 
-    Vec3 centre(const Element& e) const;
+    Vec3 centre(const Element& e) const { return e.centre; }
     std::array<Vec3, 4> corners(const Element& e) const;
 
     // Pushes received radiosity to the leaves (Delta B = received, B += received), then pulls
@@ -58,7 +58,7 @@ public:
         for (const Element& r : m_roots) visit_leaves(r, f);
     }
     template <class F>
-    static void visit_leaves(const Element& e, F& f) {
+    static void visit_leaves(const Element& e, F&& f) {
         if (const Element* c = e.children()) {
             for (int k = 0; k < 4; ++k) visit_leaves(c[k], f);
         } else {

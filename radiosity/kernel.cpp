@@ -7,17 +7,6 @@
 #include "radiosity/sampling.h"
 
 namespace hmcr {
-namespace {
-
-// |dP/du x dP/dv| of the bilinear map at uv.
-double bilinear_jacobian(const Patch& p, const Vec2& uv) {
-    const double u = uv.x(), v = uv.y();
-    const Vec3 pu = (1 - v) * (p.corner[1] - p.corner[0]) + v * (p.corner[2] - p.corner[3]);
-    const Vec3 pv = (1 - u) * (p.corner[3] - p.corner[0]) + u * (p.corner[2] - p.corner[1]);
-    return pu.cross(pv).norm();
-}
-
-}  // namespace
 
 double point_kernel(const Vec3& x, const Vec3& nx, const Vec3& y, const Vec3& ny) {
     const Vec3 d = y - x;
@@ -35,8 +24,8 @@ Vec2 sample_element(const Patch& patch, const Domain& domain, double xi1, double
     // The Jacobian of a planar bilinear map is affine in (u, v), so area-uniform sampling is a
     // linear density in s followed by a linear density in t given s.
     const auto c = domain.corners(true);
-    const double j00 = bilinear_jacobian(patch, c[0]), j10 = bilinear_jacobian(patch, c[1]);
-    const double j11 = bilinear_jacobian(patch, c[2]), j01 = bilinear_jacobian(patch, c[3]);
+    const double j00 = patch.jacobian(c[0]), j10 = patch.jacobian(c[1]);
+    const double j11 = patch.jacobian(c[2]), j01 = patch.jacobian(c[3]);
     const double s = sample_linear(j00 + j01, j10 + j11, xi1);
     const double t = sample_linear((1 - s) * j00 + s * j10, (1 - s) * j01 + s * j11, xi2);
     return {domain.u0 + domain.s * s, domain.v0 + domain.s * t};

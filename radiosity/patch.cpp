@@ -42,20 +42,32 @@ Vec3 Patch::point(const Vec2& uv) const {
            (1 - u) * v * corner[3];
 }
 
-Vec2 Patch::param(const Vec3& p) const {
-    // 2D frame in the patch plane.
-    const Vec3 ax = (corner[1] - corner[0]).normalized();
-    const Vec3 ay = normal.cross(ax);
-    auto to2 = [&](const Vec3& w) { return Vec2(w.dot(ax), w.dot(ay)); };
-    const Vec2 q = to2(p - corner[0]);
-    if (is_quad()) {
-        const Vec2 e1 = to2(corner[1] - corner[0]), e3 = to2(corner[3] - corner[0]);
-        const Vec2 g = to2(corner[0] - corner[1] + corner[2] - corner[3]);
-        return inverse_bilinear(q, e1, e3, g);
+void Patch::finalize() {
+    const Vec3 n = is_quad() ? Vec3((corner[2] - corner[0]).cross(corner[3] - corner[1]))
+                             : Vec3((corner[1] - corner[0]).cross(corner[2] - corner[0]));
+    normal = n.normalized();
+    area = 0.5 * n.norm();
+    m_axis_x = (corner[1] - corner[0]).normalized();
+    m_axis_y = normal.cross(m_axis_x);
+    auto to2 = [&](const Vec3& w) { return Vec2(w.dot(m_axis_x), w.dot(m_axis_y)); };
+    m_e1 = to2(corner[1] - corner[0]);
+    if (!is_quad()) {
+        m_e2 = to2(corner[2] - corner[0]);
+        m_jacobian = Vec3(2 * area, 0, 0);
+        return;
     }
-    const Vec2 e1 = to2(corner[1] - corner[0]), e2 = to2(corner[2] - corner[0]);
-    const double det = cross2(e1, e2);
-    Vec2 uv(cross2(q, e2) / det, cross2(e1, q) / det);
+    m_e2 = to2(corner[3] - corner[0]);
+    m_g = to2(corner[0] - corner[1] + corner[2] - corner[3]);
+    // In the plane, J = cross2(e1 + v g, e2 + u g), affine because cross2(g, g) = 0.
+    m_jacobian = Vec3(cross2(m_e1, m_e2), cross2(m_e1, m_g), cross2(m_g, m_e2));
+}
+
+Vec2 Patch::param(const Vec3& p) const {
+    const Vec3 w = p - corner[0];
+    const Vec2 q(w.dot(m_axis_x), w.dot(m_axis_y));
+    if (is_quad()) return inverse_bilinear(q, m_e1, m_e2, m_g);
+    const double det = cross2(m_e1, m_e2);
+    Vec2 uv(cross2(q, m_e2) / det, cross2(m_e1, q) / det);
     uv = uv.cwiseMax(0.0);
     const double s = uv.sum();
     return s > 1 ? Vec2(uv / s) : uv;
@@ -81,10 +93,7 @@ PatchSet build_patch_set(const PatchMesh& mesh) {
             const auto& pt = mesh.point(v);
             p.corner[p.corner_count++] = Vec3(pt[0], pt[1], pt[2]);
         }
-        const Vec3 n = p.is_quad() ? Vec3((p.corner[2] - p.corner[0]).cross(p.corner[3] - p.corner[1]))
-                                   : Vec3((p.corner[1] - p.corner[0]).cross(p.corner[2] - p.corner[0]));
-        p.normal = n.normalized();
-        p.area = 0.5 * n.norm();
+        p.finalize();
         p.reflectance = Rgb(rho[f][0], rho[f][1], rho[f][2]);
         p.emission = Rgb(emit[f][0], emit[f][1], emit[f][2]);
         set.total_area += p.area;

@@ -24,11 +24,22 @@ struct Patch {
     Rgb emission = Rgb::Zero();  // emitted radiosity E, W/m^2
 
     bool is_quad() const { return corner_count == 4; }
+    // Computes normal, area and the cached map data below from the corners.
+    void finalize();
+
     Vec3 point(const Vec2& uv) const;
     // Parameter coordinates of a point on the patch plane (clamped to the domain).
     Vec2 param(const Vec3& p) const;
     // Area of the region with the given parameter-space corners (3 or 4 of them).
     double region_area(const Vec2* uv, int count) const;
+    // |dP/du x dP/dv| at uv: constant on triangles, affine in (u, v) on planar quads.
+    double jacobian(const Vec2& uv) const { return m_jacobian.dot(Vec3(1, uv.x(), uv.y())); }
+
+private:
+    // Cached by finalize(): the patch-plane frame and the map's edge vectors in it.
+    Vec3 m_axis_x{1, 0, 0}, m_axis_y{0, 1, 0};
+    Vec2 m_e1{1, 0}, m_e2{0, 1}, m_g{0, 0};  // quads: e2 is corner 3 - corner 0
+    Vec3 m_jacobian{0, 0, 0};                // J(u, v) = c0 + c1 u + c2 v
 };
 
 // The patches of a mesh in face order, plus the scene constants the oracles need.

@@ -18,7 +18,7 @@ LinkGeometry centre_geometry(const Hierarchy& h, const Element& i, const Element
     g.receiver_area = i.area;
     g.source_area = j.area;
     g.total_area = h.patch_set().total_area;
-    const Vec3 d = h.centre(j) - h.centre(i);
+    const Vec3 d = j.centre - i.centre;
     g.centre_distance = d.norm();
     if (g.centre_distance > 0) {
         g.receiver_cos = std::max(0.0, h.patch(i).normal.dot(d) / g.centre_distance);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "radiosity/alias_table.h"
 #include "radiosity/kernel.h"
 #include "radiosity/rng.h"
 #include "radiosity/sampling.h"
@@ -15,8 +16,8 @@ namespace {
 // Leaves weighted by A_l |Delta B_l|, frozen for the iteration (Jacobi).
 struct SourceTable {
     std::vector<const Element*> leaves;
-    std::vector<double> cumulative;  // running sums of the weights
-    double total = 0;                // S
+    std::vector<double> weights;
+    double total = 0;  // S
 
     explicit SourceTable(const Hierarchy& h) {
         h.for_each_leaf([&](const Element& e) {
@@ -24,12 +25,8 @@ struct SourceTable {
             if (w <= 0) return;
             total += w;
             leaves.push_back(&e);
-            cumulative.push_back(total);
+            weights.push_back(w);
         });
-    }
-    const Element& pick(double xi) const {
-        const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), xi * total);
-        return *leaves[std::min<std::size_t>(it - cumulative.begin(), leaves.size() - 1)];
     }
 };
 
@@ -41,10 +38,11 @@ struct RayResult {
     Fate fate = Fate::escaped;
 };
 
-RayResult trace_ray(const RefinementContext& ctx, const SourceTable& sources, double power_scale,
-                    Rng& rng, RefinementCounters& counters) {
+RayResult trace_ray(const RefinementContext& ctx, const SourceTable& sources,
+                    const AliasTable& alias, double power_scale, Rng& rng,
+                    RefinementCounters& counters) {
     const Hierarchy& h = ctx.hierarchy;
-    const Element& leaf = sources.pick(rng.uniform());
+    const Element& leaf = *sources.leaves[alias.sample(rng.uniform())];
     const Patch& src = h.patch(leaf);
     const Vec2 x_uv = sample_element(src, leaf.domain, rng.uniform(), rng.uniform());
     const Vec3 x = src.point(x_uv);
@@ -75,6 +73,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, std::uint32_t ite
     IterationOutcome out;
     const SourceTable sources(ctx.hierarchy);
     if (rays == 0 || sources.total <= 0) return out;
+    const AliasTable alias(sources.weights);
     const double power_scale = sources.total / double(rays);  // S / N_iter
     std::vector<RayResult> results(std::min(rays, kBatchRays));
     std::vector<RefinementCounters> chunk_counters;
@@ -85,7 +84,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, std::uint32_t ite
             set_tracing_float_mode();
             for (std::uint64_t k = c * kGrain; k < std::min(n, (c + 1) * kGrain); ++k) {
                 Rng rng(ctx.seed, iteration, first + k);
-                results[k] = trace_ray(ctx, sources, power_scale, rng, chunk_counters[c]);
+                results[k] = trace_ray(ctx, sources, alias, power_scale, rng, chunk_counters[c]);
             }
         });
         // Deposits in ray order (SPEC section 3, step 6): received += rho * Phi / A.

@@ -88,7 +88,8 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
     const double emitted = channel_sum(st.emitted_power);
     RaySchedule schedule(options.rays, options.stop * emitted, ratio);
     Rgb unshot = h.unshot_power();
-    for (std::uint32_t it = 0; channel_sum(unshot) >= options.stop * emitted; ++it) {
+    // The cap only guards against a scene that never converges; stop ends real solves.
+    for (std::uint32_t it = 0; channel_sum(unshot) >= options.stop * emitted && it < 10'000; ++it) {
         const auto t0 = Clock::now();
         IterationRecord rec;
         rec.unshot_before = unshot;
@@ -108,6 +109,7 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
         st.rays += out.rays;
         st.oracle_calls += out.counters.oracle_calls;
         st.lines_cast += out.counters.lines_cast;
+        st.shot_power += out.shot_power;
         st.escaped_power += out.escaped_power;
         st.back_face_power += out.back_face_power;
         st.iterations.push_back(rec);

@@ -28,6 +28,7 @@ struct SolveStats {
     double epsilon = 0;              // the value used (the oracle's default if not given)
     int threads = 0;                 // worker threads used
     Rgb emitted_power = Rgb::Zero();
+    Rgb shot_power = Rgb::Zero();       // sum over iterations of the rays' power
     Rgb escaped_power = Rgb::Zero();    // shot power that left the scene
     Rgb back_face_power = Rgb::Zero();  // shot power absorbed by back faces
     Rgb unshot_power = Rgb::Zero();     // left when the solve stopped

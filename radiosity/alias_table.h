@@ -1,0 +1,32 @@
+// Sampling an index with probability proportional to its weight in O(1): Walker's alias
+// method, built with Vose's stable variant ("A linear algorithm for generating random numbers
+// with a given distribution", IEEE TSE 1991). Used to pick the source leaf of every ray.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace hmcr {
+
+class AliasTable {
+public:
+    explicit AliasTable(const std::vector<double>& weights);
+
+    // Index i with probability weights[i] / total, from one uniform number in [0, 1).
+    std::size_t sample(double xi) const;
+    // Probability of index i (for tests).
+    double probability(std::size_t i) const { return m_weights[i] / m_total; }
+    double total() const { return m_total; }
+    std::size_t size() const { return m_bins.size(); }
+
+private:
+    struct Bin {
+        double keep;          // probability of keeping this bin's own index
+        std::uint32_t alias;  // the index taken otherwise
+    };
+    std::vector<Bin> m_bins;
+    std::vector<double> m_weights;
+    double m_total = 0;
+};
+
+}  // namespace hmcr

@@ -1,0 +1,113 @@
+// Samplers against their densities: each is a hypothesis test with binomial or sample
+// standard errors.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "radiosity/alias_table.h"
+#include "radiosity/hierarchy.h"
+#include "radiosity/kernel.h"
+#include "radiosity/rng.h"
+#include "radiosity/sampling.h"
+#include "tests/support/statistics.h"
+#include "tests/support/test_scenes.h"
+
+namespace hmcr::test {
+namespace {
+
+constexpr int kSamples = 400'000;
+
+TEST(Sampling, LinearDensityPutsTheRightMassInEachBin) {
+    Rng rng(1, 0);
+    const double a = 0.2, b = 3.0;
+    constexpr int kBins = 10;
+    std::array<int, kBins> count{};
+    for (int k = 0; k < kSamples; ++k) {
+        const double x = sample_linear(a, b, rng.uniform());
+        ASSERT_GE(x, 0);
+        ASSERT_LE(x, 1);
+        ++count[std::min(kBins - 1, int(x * kBins))];
+    }
+    for (int i = 0; i < kBins; ++i) {
+        // Mass of bin i under the density: the pdf is linear, so the midpoint rule is exact.
+        const double p = linear_pdf(a, b, (i + 0.5) / kBins) / kBins;
+        const double f = double(count[i]) / kSamples;
+        EXPECT_TRUE(within_standard_errors("bin " + std::to_string(i), f, p,
+                                           std::sqrt(p * (1 - p) / kSamples)));
+    }
+}
+
+TEST(Sampling, CosineHemisphereHasMeanCosineTwoThirds) {
+    Rng rng(2, 0);
+    const Vec3 n = Vec3(0.3, -0.5, 0.8).normalized();
+    std::vector<double> cosines(kSamples);
+    for (double& c : cosines) {
+        const Vec3 d = sample_cosine_hemisphere(n, rng.uniform(), rng.uniform());
+        ASSERT_NEAR(d.norm(), 1, 1e-12);
+        c = d.dot(n);
+        ASSERT_GE(c, 0);
+    }
+    // E[cos] = integral of cos * cos/pi over the hemisphere = 2/3.
+    const Estimate e = estimate_mean(cosines);
+    EXPECT_TRUE(within_standard_errors("E[cos theta]", e.mean, 2.0 / 3.0, e.standard_error));
+}
+
+// On a skewed quad and a triangle, sample_element is uniform by area: each child of the
+// sampled element gets a share of the points equal to its share of the area.
+TEST(Sampling, ElementSamplesAreUniformByArea) {
+    TestPolygon q{{{0, 0, 0}, {3, 0, 0}, {2.2, 1.0, 0}, {0.1, 2.5, 0}}, Rgb::Constant(0.5), Rgb::Zero()};
+    TestPolygon t{{{4, 0, 0}, {6, 0.5, 0}, {4.5, 2, 0}}, Rgb::Constant(0.5), Rgb::Zero()};
+    Hierarchy h(build_patch_set(make_patch_mesh({q, t})), {});
+    Rng rng(3, 0);
+    for (std::size_t p = 0; p < 2; ++p) {
+        Element& parent = h.subdivide(h.root(p))[3];  // a child: a sub-domain, not the patch
+        const Element* c = h.subdivide(parent);
+        const Patch& patch = h.patch_set().patches[p];
+        std::array<int, 4> count{};
+        for (int k = 0; k < kSamples; ++k) {
+            const Vec2 uv = sample_element(patch, parent.domain, rng.uniform(), rng.uniform());
+            ++count[parent.domain.child_containing(patch.is_quad(), uv)];
+        }
+        for (int k = 0; k < 4; ++k) {
+            const double expected = c[k].area / parent.area;
+            EXPECT_TRUE(within_standard_errors(
+                "patch " + std::to_string(p) + " child " + std::to_string(k),
+                double(count[k]) / kSamples, expected,
+                std::sqrt(expected * (1 - expected) / kSamples)));
+        }
+    }
+}
+
+TEST(Sampling, AliasTablePicksEachIndexWithItsWeightsShare) {
+    const std::vector<double> weights = {5, 0, 1, 0.25, 12, 3, 3, 0.01};
+    const AliasTable table(weights);
+    Rng rng(4, 0);
+    std::vector<int> count(weights.size());
+    for (int k = 0; k < kSamples; ++k) ++count[table.sample(rng.uniform())];
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        const double p = table.probability(i);
+        if (p == 0) {
+            EXPECT_EQ(count[i], 0) << i;
+            continue;
+        }
+        EXPECT_TRUE(within_standard_errors("index " + std::to_string(i),
+                                           double(count[i]) / kSamples, p,
+                                           std::sqrt(p * (1 - p) / kSamples)));
+    }
+}
+
+TEST(Rng, StreamsAreDeterministicAndDistinct) {
+    Rng a(7, 1, 2), b(7, 1, 2), c(7, 2, 1), d(8, 1, 2);
+    const auto x = a.next_u64();
+    EXPECT_EQ(x, b.next_u64());
+    EXPECT_NE(x, c.next_u64());
+    EXPECT_NE(x, d.next_u64());
+    std::vector<double> u(kSamples);
+    for (double& v : u) v = a.uniform();
+    const Estimate e = estimate_mean(u);
+    EXPECT_TRUE(within_standard_errors("mean of uniform", e.mean, 0.5, e.standard_error));
+}
+
+}  // namespace
+}  // namespace hmcr::test

@@ -1,0 +1,35 @@
+// Hypothesis tests for Monte Carlo results. A check fails when the estimate is further from
+// the exact value than a few standard errors of the estimator; the standard error comes from
+// the estimator's own variance, never from a tuned tolerance.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace hmcr::test {
+
+// z = 4: a correct estimator fails a check about once in 16,000 seeds (two-sided normal).
+inline constexpr double kZ = 4.0;
+
+struct Estimate {
+    double mean = 0;
+    double standard_error = 0;
+    std::size_t n = 0;
+};
+
+// Sample mean and its standard error (sample standard deviation / sqrt(n)).
+Estimate estimate_mean(const std::vector<double>& samples);
+
+// |estimate - expected| <= z * standard_error (+ an exact, stated bias bound, default 0).
+testing::AssertionResult within_standard_errors(const std::string& what, double estimate,
+                                                double expected, double standard_error,
+                                                double bias_bound = 0, double z = kZ);
+
+// One-sample Student t test of the mean of a few independent runs (e.g. one per seed) at
+// two-sided level 1e-3; for 2..31 samples.
+testing::AssertionResult t_test(const std::string& what, const std::vector<double>& samples,
+                                double expected, double bias_bound = 0);
+
+}  // namespace hmcr::test
