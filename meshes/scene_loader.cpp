@@ -1,0 +1,287 @@
+// load_scene: a bundled scene name, a JSON scene file or a bare mesh file -> Scene.
+//
+// JSON scene file (keys other than these are an error, to catch typos):
+//   {
+//     "mesh": "cornell.obj",              required; relative to the JSON file; .obj only
+//     "description": "...",               optional string
+//     "views": [                          optional; each view:
+//       {"name": "camera",                  required, unique
+//        "position": [x, y, z],             required, metres
+//        "look_at": [x, y, z],              required, != position
+//        "up": [x, y, z],                   optional, default [0, 1, 0]; not along the view
+//        "fov": 39.31,                      optional, vertical, degrees in (0, 180), default 40
+//        "width": 512, "height": 512}       optional, pixels > 0, default 512
+//     ],
+//     "solver": {...},                    optional object, copied to Scene::solver_defaults
+//     "default_material": {"kd": [r, g, b], "ke": [r, g, b]}
+//                                         optional; used by faces without a material;
+//                                         kd defaults to 0.5 grey, ke to 0
+//   }
+// A scene without views (a bare .obj, or a JSON file without "views") gets one view named
+// "default": 40 degrees, 512x512, on the +z side of the bounding box looking along -z, far
+// enough for the bounding sphere to fit the vertical field of view.
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "meshes/scene.h"
+#include "meshes/validation.h"
+
+#ifndef HMCR_SCENE_DIR
+#define HMCR_SCENE_DIR "scenes"  // the build defines the source tree's scenes/ folder
+#endif
+
+namespace hmcr {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& where, const std::string& message) {
+    throw SceneError(fmt::format("{}: {}", where, message));
+}
+
+std::string bundled_list() {
+    const std::vector<std::string> names = bundled_scene_names();
+    if (names.empty()) return fmt::format("none found in {}", scene_directory().string());
+    return fmt::format("{}", fmt::join(names, ", "));
+}
+
+bool is_bundled(const std::string& name) {
+    const auto names = bundled_scene_names();
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string read_text(const fs::path& path) {
+    std::error_code ec;
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    if (in && !fs::is_directory(path, ec)) text << in.rdbuf();
+    if (!in || in.bad() || fs::is_directory(path, ec)) fail(path.string(), "cannot be read");
+    return text.str();
+}
+
+// nlohmann reports the byte offset of a parse error; users want the line.
+int line_of_byte(const std::string& text, std::size_t byte) {
+    const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
+    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + end, '\n'));
+}
+
+// nlohmann's message without its "[json.exception.parse_error.101] " tag.
+std::string plain_message(const std::exception& e) {
+    const std::string what = e.what();
+    const std::size_t tag_end = what.rfind("] ", what.find(' '));
+    return tag_end == std::string::npos || what.front() != '[' ? what : what.substr(tag_end + 2);
+}
+
+json parse_json(const fs::path& path) {
+    const std::string text = read_text(path);
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error& e) {
+        fail(fmt::format("{}:{}", path.string(), line_of_byte(text, e.byte)), plain_message(e));
+    }
+}
+
+void check_keys(const json& object, const std::set<std::string>& known, const std::string& where) {
+    if (!object.is_object()) fail(where, "must be a JSON object");
+    for (const auto& [key, value] : object.items()) {
+        if (known.count(key) == 0) {
+            fail(where, fmt::format("unknown key '{}' (known: {})", key, fmt::join(known, ", ")));
+        }
+    }
+}
+
+Eigen::Vector3d vector3(const json& value, const std::string& where) {
+    const bool ok = value.is_array() && value.size() == 3 &&
+                    std::all_of(value.begin(), value.end(), [](const json& x) {
+                        return x.is_number() && std::isfinite(x.get<double>());
+                    });
+    if (!ok) fail(where, "must be an array of 3 finite numbers");
+    return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
+}
+
+double number(const json& value, const std::string& where) {
+    if (!value.is_number()) fail(where, "must be a number");
+    return value.get<double>();
+}
+
+int pixels(const json& value, const std::string& where) {
+    if (!value.is_number_integer() || value.get<long long>() <= 0 ||
+        value.get<long long>() > 1 << 16) {
+        fail(where, "must be a positive integer of at most 65536");
+    }
+    return value.get<int>();
+}
+
+void check_view(const View& v, const std::string& where) {
+    if (!(v.fov_degrees > 0 && v.fov_degrees < 180)) {
+        fail(where, fmt::format("fov {} is not in (0, 180) degrees", v.fov_degrees));
+    }
+    const Eigen::Vector3d direction = v.look_at - v.position;
+    if (direction.norm() == 0) fail(where, "look_at equals position: no view direction");
+    if (v.up.norm() == 0) fail(where, "up is the zero vector");
+    if (direction.normalized().cross(v.up.normalized()).norm() < 1e-9) {
+        fail(where, "up is parallel to the view direction");
+    }
+}
+
+View parse_view(const json& j, const std::string& file, std::size_t index) {
+    std::string where = fmt::format("{}: views[{}]", file, index);
+    check_keys(j, {"name", "position", "look_at", "up", "fov", "width", "height"}, where);
+    if (!j.contains("name") || !j["name"].is_string()) fail(where, "needs a \"name\" string");
+    View v;
+    v.name = j["name"].get<std::string>();
+    where += fmt::format(" ('{}')", v.name);
+    for (const char* key : {"position", "look_at"}) {
+        if (!j.contains(key)) fail(where, fmt::format("needs \"{}\"", key));
+    }
+    v.position = vector3(j["position"], where + ": position");
+    v.look_at = vector3(j["look_at"], where + ": look_at");
+    if (j.contains("up")) v.up = vector3(j["up"], where + ": up");
+    if (j.contains("fov")) v.fov_degrees = number(j["fov"], where + ": fov");
+    if (j.contains("width")) v.width = pixels(j["width"], where + ": width");
+    if (j.contains("height")) v.height = pixels(j["height"], where + ": height");
+    check_view(v, where);
+    return v;
+}
+
+std::vector<View> parse_views(const json& views, const std::string& file) {
+    if (!views.is_array()) fail(file, "\"views\" must be an array");
+    std::vector<View> out;
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        out.push_back(parse_view(views[i], file, i));
+        if (!names.insert(out.back().name).second) {
+            fail(file, fmt::format("two views are named '{}'", out.back().name));
+        }
+    }
+    return out;
+}
+
+Material parse_default_material(const json& j, const std::string& file) {
+    const std::string where = file + ": default_material";
+    check_keys(j, {"kd", "ke"}, where);
+    Material m;
+    m.name = "default";
+    m.kd = Eigen::Vector3d::Constant(0.5);
+    if (j.contains("kd")) m.kd = vector3(j["kd"], where + ": kd");
+    if (j.contains("ke")) m.ke = vector3(j["ke"], where + ": ke");
+    if (auto error = check_reflectance(m)) fail(where, *error);
+    if (auto error = check_emission(m)) fail(where, *error);
+    return m;
+}
+
+// One view of the whole scene; see the file's opening comment.
+View default_view(const PatchMesh& mesh) {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY);
+    Eigen::Vector3d hi = -lo;
+    for (const auto vh : mesh.vertices()) {
+        const auto& p = mesh.point(vh);
+        const Eigen::Vector3d q(p[0], p[1], p[2]);
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+    }
+    View v;
+    v.name = "default";
+    const double radius = std::max(0.5 * (hi - lo).norm(), 1e-3);
+    const double half_fov = 0.5 * v.fov_degrees * std::numbers::pi / 180;
+    v.look_at = 0.5 * (lo + hi);
+    v.position = v.look_at + Eigen::Vector3d(0, 0, radius / std::sin(half_fov));
+    return v;
+}
+
+void check_mesh_extension(const fs::path& mesh, const std::string& where) {
+    if (mesh.extension() != ".obj") {
+        fail(where, fmt::format("mesh '{}': hmcr reads .obj meshes", mesh.string()));
+    }
+}
+
+Scene load_json_scene(const fs::path& path, const std::string& name) {
+    const std::string file = path.string();
+    const json j = parse_json(path);
+    check_keys(j, {"mesh", "description", "views", "solver", "default_material"}, file);
+    if (!j.contains("mesh") || !j["mesh"].is_string()) fail(file, "needs a \"mesh\" string");
+    if (j.contains("description") && !j["description"].is_string()) {
+        fail(file, "\"description\" must be a string");
+    }
+    Scene scene;
+    scene.name = name;
+    scene.source = path;
+    scene.mesh_path = path.parent_path() / j["mesh"].get<std::string>();
+    check_mesh_extension(scene.mesh_path, file);
+    if (j.contains("views")) scene.views = parse_views(j["views"], file);
+    if (j.contains("solver")) {
+        if (!j["solver"].is_object()) fail(file, "\"solver\" must be an object");
+        scene.solver_defaults = j["solver"];
+    }
+    LoadOptions options;
+    if (j.contains("default_material")) {
+        options.default_material = parse_default_material(j["default_material"], file);
+    }
+    scene.mesh = load_obj(scene.mesh_path, options);
+    if (scene.views.empty()) scene.views.push_back(default_view(scene.mesh));
+    return scene;
+}
+
+Scene load_mesh_scene(const fs::path& path) {
+    check_mesh_extension(path, path.string());
+    Scene scene;
+    scene.name = path.stem().string();
+    scene.source = path;
+    scene.mesh_path = path;
+    scene.mesh = load_obj(path);
+    scene.views.push_back(default_view(scene.mesh));
+    return scene;
+}
+
+Scene load_file(const fs::path& path) {
+    const std::string extension = path.extension().string();
+    if (extension == ".json") return load_json_scene(path, path.stem().string());
+    if (extension == ".obj") return load_mesh_scene(path);
+    fail(path.string(), fmt::format("unknown extension '{}': give a .json scene, an .obj mesh "
+                                    "or a bundled scene name ({})",
+                                    extension, bundled_list()));
+}
+
+}  // namespace
+
+fs::path scene_directory() {
+    const char* env = std::getenv("HMCR_SCENES");
+    if (env != nullptr && *env != '\0') return env;
+    return HMCR_SCENE_DIR;
+}
+
+std::vector<std::string> bundled_scene_names() {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(scene_directory(), ec)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_directory(ec) && fs::is_regular_file(entry.path() / (name + ".json"), ec)) {
+            names.push_back(name);
+        }
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+Scene load_scene(const std::string& name_or_path) {
+    const fs::path path(name_or_path);
+    std::error_code ec;
+    if (fs::is_regular_file(path, ec)) return load_file(path);
+    if (is_bundled(name_or_path)) {
+        return load_json_scene(scene_directory() / name_or_path / (name_or_path + ".json"),
+                               name_or_path);
+    }
+    fail(name_or_path,
+         fmt::format("no such file or bundled scene (bundled scenes: {})", bundled_list()));
+}
+
+}  // namespace hmcr

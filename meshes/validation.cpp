@@ -1,0 +1,138 @@
+// Patch and material validation. The tolerances are relative to the face's own size so that
+// the checks mean the same in a 5 cm model and a 50 m hall.
+#include "meshes/validation.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace hmcr {
+namespace {
+
+// The turn at corner i: cross product of the incoming and outgoing edge. Its length is twice
+// the area of the corner triangle; for a planar polygon it is parallel to the face normal.
+Eigen::Vector3d corner_turn(const std::vector<Eigen::Vector3d>& p, std::size_t i) {
+    const std::size_t n = p.size();
+    const Eigen::Vector3d& prev = p[(i + n - 1) % n];
+    const Eigen::Vector3d& next = p[(i + 1) % n];
+    return (p[i] - prev).cross(next - p[i]);
+}
+
+double largest_edge(const std::vector<Eigen::Vector3d>& p) {
+    double longest = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        longest = std::max(longest, (p[(i + 1) % p.size()] - p[i]).norm());
+    }
+    return longest;
+}
+
+std::optional<std::string> check_repeated(const std::vector<int>& ids) {
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        for (std::size_t j = i + 1; j < ids.size(); ++j) {
+            if (ids[i] == ids[j]) {
+                return fmt::format("degenerate face: corners {} and {} are the same point", i + 1,
+                                   j + 1);
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+// Zero area (triangle) or a corner collinear with its neighbours (quad).
+std::optional<std::string> check_area(const std::vector<Eigen::Vector3d>& p) {
+    const double edge = largest_edge(p);
+    const double limit = kDegenerateAreaRatio * edge * edge;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double area = 0.5 * corner_turn(p, i).norm();
+        if (!std::isfinite(area) || !std::isfinite(limit)) {
+            return std::string("face too large: its size overflows double precision");
+        }
+        if (area < limit) {
+            return fmt::format(
+                "degenerate face: corner {} spans an area of {:.3g} m^2, below {:g} x (largest "
+                "edge {:.3g} m)^2",
+                i + 1, area, kDegenerateAreaRatio, edge);
+        }
+    }
+    return std::nullopt;
+}
+
+// Distance of the 4th corner from the plane of the first three.
+std::optional<std::string> check_planar(const std::vector<Eigen::Vector3d>& p) {
+    const Eigen::Vector3d normal = corner_turn(p, 1).normalized();
+    const double distance = std::abs((p[3] - p[0]).dot(normal));
+    const double diagonal = std::max((p[2] - p[0]).norm(), (p[3] - p[1]).norm());
+    const double tolerance = kPlanarityRatio * diagonal;
+    if (distance <= tolerance) return std::nullopt;
+    return fmt::format(
+        "non-planar quad: the 4th vertex is {:.3g} mm off the plane of the other three "
+        "(tolerance {:.3g} mm = {:g} x diagonal); split it into two triangles",
+        1e3 * distance, 1e3 * tolerance, kPlanarityRatio);
+}
+
+// Every corner must turn the same way. The reference is the corner with the largest turn
+// rather than the face normal, which vanishes for a symmetric bow-tie.
+std::optional<std::string> check_convex(const std::vector<Eigen::Vector3d>& p) {
+    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Eigen::Vector3d turn = corner_turn(p, i);
+        if (turn.squaredNorm() > reference.squaredNorm()) reference = turn;
+    }
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (corner_turn(p, i).dot(reference) <= 0) {
+            return fmt::format(
+                "non-convex quad: corner {} turns the other way; split it into two triangles",
+                i + 1);
+        }
+    }
+    return std::nullopt;
+}
+
+// `bound` is the first value out of range, described by `bound_text`.
+std::optional<std::string> check_channels(const Material& m, const Eigen::Vector3d& value,
+                                          const char* what, double bound, const char* bound_text) {
+    for (int c = 0; c < 3; ++c) {
+        const double v = value[c];
+        if (std::isnan(v) || v >= bound) {
+            return fmt::format("{} {} of material '{}' is {}", what, v, m.name, bound_text);
+        }
+        if (v < 0) return fmt::format("{} {} of material '{}' is negative", what, v, m.name);
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> check_face_geometry(const std::vector<Eigen::Vector3d>& corners,
+                                               const std::vector<int>& ids) {
+    if (auto error = check_repeated(ids)) return error;
+    if (auto error = check_area(corners)) return error;
+    if (corners.size() != 4) return std::nullopt;
+    if (auto error = check_planar(corners)) return error;
+    return check_convex(corners);
+}
+
+std::optional<std::pair<std::size_t, std::size_t>> find_duplicate_face(
+    const std::vector<std::vector<int>>& faces) {
+    std::map<std::vector<int>, std::size_t> seen;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        std::vector<int> key = faces[f];
+        std::sort(key.begin(), key.end());
+        auto [it, inserted] = seen.try_emplace(std::move(key), f);
+        if (!inserted) return std::make_pair(f, it->second);
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> check_reflectance(const Material& m) {
+    return check_channels(m, m.kd, "reflectance", 1.0, "not below 1");
+}
+
+std::optional<std::string> check_emission(const Material& m) {
+    return check_channels(m, m.ke, "emission", INFINITY, "not finite");
+}
+
+}  // namespace hmcr

@@ -1,0 +1,35 @@
+// Validation of loaded patches and materials (SPEC section 1), on plain numbers so that it can
+// be tested without files. Each check returns the message of the first problem (without the
+// `file:line:` prefix, which the caller knows) or nothing.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "meshes/scene.h"
+
+namespace hmcr {
+
+// Relative tolerances of the geometric checks.
+inline constexpr double kDegenerateAreaRatio = 1e-12;  // area / (largest edge)^2 below: zero
+inline constexpr double kPlanarityRatio = 1e-4;        // off-plane distance / diagonal above
+
+// Checks one polygon given by its corners (counter-clockwise, welded: equal positions are the
+// same index in `ids`): 3 or 4 distinct corners, no zero-area corner, and for a quad planarity
+// and convexity.
+std::optional<std::string> check_face_geometry(const std::vector<Eigen::Vector3d>& corners,
+                                               const std::vector<int>& ids);
+
+// Finds the first face that uses the same set of (welded) vertices as an earlier one,
+// whatever the order or orientation. Returns {later face, earlier face}.
+std::optional<std::pair<std::size_t, std::size_t>> find_duplicate_face(
+    const std::vector<std::vector<int>>& faces);
+
+// Checks Kd in [0, 1) and finite Ke >= 0 per channel; names the material in the message.
+std::optional<std::string> check_reflectance(const Material& m);
+std::optional<std::string> check_emission(const Material& m);
+
+}  // namespace hmcr

@@ -1,0 +1,262 @@
+// load_obj: a good file gives the right patches, materials and adjacency; every validation
+// error of SPEC section 1 throws a SceneError naming the right `file:line`.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "meshes/scene.h"
+#include "tests/meshes/scene_files.h"
+
+namespace hmcr {
+namespace {
+
+using test::contains;
+using test::scene_error;
+using test::SceneFiles;
+
+constexpr const char* kMtl =
+    "newmtl white\n"    // 1
+    "Kd 0.5 0.5 0.5\n"  // 2
+    "newmtl light\n"    // 3
+    "Kd 0.5 0.5 0.5\n"  // 4
+    "Ke 1 2 3\n";       // 5
+
+// Lines 1-2 of every test OBJ; its statements start on line 3.
+constexpr const char* kHeader =
+    "mtllib scene.mtl\n"
+    "usemtl white\n";
+
+// The SceneError message of loading kHeader + body with the given MTL.
+std::string obj_error(const std::string& body, const std::string& mtl = kMtl) {
+    SceneFiles files;
+    files.write("scene.mtl", mtl);
+    const auto obj = files.write("scene.obj", kHeader + body);
+    return scene_error([&] { load_obj(obj); });
+}
+
+// Two unit quads side by side in z = 0 (normal +z), sharing the edge x = 1; the second one
+// is the light and repeats the position (1, 0, 0) in its own `v` statement (line 9).
+constexpr const char* kTwoQuads =
+    "v 0 0 0\n"  // 3
+    "v 1 0 0\n"  // 4
+    "v 1 1 0\n"  // 5
+    "v 0 1 0\n"  // 6
+    "v 2 0 0\n"  // 7
+    "v 2 1 0\n"  // 8
+    "v 1 0 0\n"  // 9
+    "# the grey quad\n"
+    "f 1 2 3 4\n"  // 11
+    "usemtl light\n"
+    "f 7 5 6 -5\n";  // 13: (1,0,0) (2,0,0) (2,1,0) (1,1,0)
+
+TEST(ObjLoader, LoadsFacesMaterialsAndLines) {
+    SceneFiles files;
+    files.write("scene.mtl", kMtl);
+    PatchMesh mesh = load_obj(files.write("scene.obj", std::string(kHeader) + kTwoQuads));
+    ASSERT_EQ(mesh.n_faces(), 2u);
+    auto reflectance = reflectance_prop(mesh);
+    auto emission = emission_prop(mesh);
+    auto line = source_line_prop(mesh);
+    const OpenMesh::FaceHandle grey(0), light(1);
+    EXPECT_EQ(reflectance[grey], OpenMesh::Vec3d(0.5, 0.5, 0.5));
+    EXPECT_EQ(emission[grey], OpenMesh::Vec3d(0, 0, 0));
+    EXPECT_EQ(emission[light], OpenMesh::Vec3d(1, 2, 3) * std::numbers::pi);
+    EXPECT_EQ(line[grey], 11);
+    EXPECT_EQ(line[light], 13);
+}
+
+TEST(ObjLoader, WeldsEqualPositionsSoNeighboursShareAnEdge) {
+    SceneFiles files;
+    files.write("scene.mtl", kMtl);
+    PatchMesh mesh = load_obj(files.write("scene.obj", std::string(kHeader) + kTwoQuads));
+    EXPECT_EQ(mesh.n_vertices(), 6u);
+    int interior_edges = 0;
+    for (auto eh : mesh.edges()) interior_edges += mesh.is_boundary(eh) ? 0 : 1;
+    EXPECT_EQ(interior_edges, 1);
+    for (auto eh : mesh.edges()) {
+        if (mesh.is_boundary(eh)) continue;
+        const auto he = mesh.halfedge_handle(eh, 0);
+        EXPECT_EQ(mesh.point(mesh.from_vertex_handle(he))[0], 1.0);
+        EXPECT_EQ(mesh.point(mesh.to_vertex_handle(he))[0], 1.0);
+    }
+}
+
+TEST(ObjLoader, KeepsFacesOpenMeshRefuses) {
+    // Three triangles on the edge (0,0,0)-(1,0,0): OpenMesh refuses the third one (complex
+    // edge); it must be kept with its own vertices.
+    const std::string body =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0 -1 1\n"
+        "usemtl light\n"
+        "f 1 2 3\nf 2 1 4\nf 1 2 5\n";
+    SceneFiles files;
+    files.write("scene.mtl", kMtl);
+    PatchMesh mesh = load_obj(files.write("scene.obj", kHeader + body));
+    EXPECT_EQ(mesh.n_faces(), 3u);
+    EXPECT_EQ(source_line_prop(mesh)[OpenMesh::FaceHandle(2)], 11);
+}
+
+TEST(ObjLoader, DefaultMaterialForFacesWithout) {
+    SceneFiles files;
+    const auto obj = files.write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    LoadOptions options;
+    options.default_material = Material{"default", {0.25, 0.5, 0.75}, {2, 2, 2}};
+    PatchMesh mesh = load_obj(obj, options);
+    ASSERT_EQ(mesh.n_faces(), 1u);
+    EXPECT_EQ(reflectance_prop(mesh)[OpenMesh::FaceHandle(0)], OpenMesh::Vec3d(0.25, 0.5, 0.75));
+    EXPECT_EQ(emission_prop(mesh)[OpenMesh::FaceHandle(0)],
+              OpenMesh::Vec3d(2, 2, 2) * std::numbers::pi);
+}
+
+TEST(ObjLoader, UnreadableFile) {
+    SceneFiles files;
+    const auto missing = files.dir() / "missing.obj";
+    EXPECT_EQ(scene_error([&] { load_obj(missing); }), missing.string() + ": no such file");
+    EXPECT_TRUE(contains(scene_error([&] { load_obj(files.dir()); }), ": is a directory"));
+}
+
+TEST(ObjLoader, UnreadableMaterialLibrary) {
+    SceneFiles files;
+    const auto obj = files.write("scene.obj", "v 0 0 0\nmtllib nowhere.mtl\n");
+    EXPECT_TRUE(contains(scene_error([&] { load_obj(obj); }),
+                         "scene.obj:2: cannot read material library 'nowhere.mtl'"));
+}
+
+TEST(ObjLoader, ParseErrorInNumber) {
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 zero\n"), "scene.obj:4: cannot parse number"));
+    EXPECT_TRUE(contains(obj_error("v 0 0\n"), "scene.obj:3: 'v' needs 3 to 7 numbers"));
+}
+
+TEST(ObjLoader, ParseErrorUnknownStatement) {
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nvertex 1 2 3\n"),
+                         "scene.obj:4: unknown OBJ statement 'vertex'"));
+}
+
+TEST(ObjLoader, ParseErrorBadVertexReference) {
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n"),
+                         "scene.obj:6: bad vertex reference '0'"));
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"),
+                         "scene.obj:6: vertex reference '4' is out of range (3 vertices)"));
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3/x\n"),
+                         "scene.obj:6: bad vertex reference '3/x'"));
+}
+
+TEST(ObjLoader, ParseErrorLineNumbersCountCarriageReturns) {
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\r\nv 0 0 0\rv 1 1 q\n"), "scene.obj:5:"));
+}
+
+TEST(ObjLoader, PolygonWithMoreThanFourVertices) {
+    const std::string pentagon = "v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nf 1 2 3 4 5\n";
+    EXPECT_TRUE(contains(obj_error(pentagon),
+                         "scene.obj:8: polygon with 5 vertices: hmcr reads triangles and "
+                         "convex quads; triangulate it"));
+}
+
+TEST(ObjLoader, PolygonWithFewerThanThreeVertices) {
+    EXPECT_TRUE(
+        contains(obj_error("v 0 0 0\nv 1 0 0\nf 1 2\n"), "scene.obj:5: polygon with 2 vertices"));
+}
+
+TEST(ObjLoader, NanOrInfCoordinate) {
+    EXPECT_TRUE(
+        contains(obj_error("v 0 0 0\nv 1 nan 0\n"), "scene.obj:4: 'nan' is not a finite number"));
+    EXPECT_TRUE(contains(obj_error("v -inf 0 0\n"), "scene.obj:3: '-inf' is not a finite"));
+    EXPECT_TRUE(contains(obj_error("v 1e999 0 0\n"), "scene.obj:3: number '1e999' is out of"));
+}
+
+TEST(ObjLoader, ZeroAreaTriangle) {
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"),
+                         "scene.obj:6: degenerate face"));
+}
+
+TEST(ObjLoader, TinyAreaRelativeToSize) {
+    // Area 5e-13 m^2 against a largest edge of 1 m: below 1e-12 x 1^2.
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0.5 1e-12 0\nf 1 2 3\n"),
+                         "scene.obj:6: degenerate face"));
+}
+
+TEST(ObjLoader, RepeatedVertex) {
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"),
+                         "scene.obj:6: degenerate face: corners 2 and 3 are the same point"));
+    // Two `v` statements at the same position are one vertex after welding.
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0 0\nf 1 2 3 4\n"),
+                         "scene.obj:7: degenerate face: corners 2 and 4 are the same point"));
+}
+
+TEST(ObjLoader, NonPlanarQuad) {
+    // The 4th vertex is 1 mm above the plane z = 0; the tolerance is 1e-4 x 1.414 m.
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0.001\nf 1 2 3 4\n"),
+                         "scene.obj:7: non-planar quad: the 4th vertex is 1 mm off the plane "
+                         "of the other three (tolerance 0.141 mm"));
+}
+
+TEST(ObjLoader, NearlyPlanarQuadLoads) {
+    SceneFiles files;
+    files.write("scene.mtl", kMtl);
+    const auto obj = files.write("scene.obj", std::string(kHeader) +
+                                                  "usemtl light\nv 0 0 0\nv 1 0 0\nv 1 1 0\n"
+                                                  "v 0 1 0.0001\nf 1 2 3 4\n");
+    EXPECT_EQ(load_obj(obj).n_faces(), 1u);
+}
+
+TEST(ObjLoader, NonConvexQuad) {
+    // A dart: the corner at (0.3, 0.3) turns clockwise, the others counter-clockwise.
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0.3 0.3 0\nv 0 1 0\nf 1 2 3 4\n"),
+                         "scene.obj:7: non-convex quad: corner 3 turns the other way"));
+    // A bow-tie, whose vector area is zero.
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4\n"),
+                         "scene.obj:7: non-convex quad"));
+}
+
+TEST(ObjLoader, DuplicateFaces) {
+    const std::string body =
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        "f 1 2 3 4\n"   // 7
+        "f 4 3 2 1\n";  // 8: the same face seen from the back
+    EXPECT_TRUE(contains(obj_error(body),
+                         "scene.obj:8: duplicate face: same vertices as the face on line 7"));
+}
+
+TEST(ObjLoader, FaceWithoutMaterial) {
+    SceneFiles files;
+    const auto obj = files.write("scene.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_TRUE(contains(scene_error([&] { load_obj(obj); }), "scene.obj:4: face has no material"));
+    EXPECT_TRUE(contains(obj_error("usemtl purple\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+                         "scene.obj:7: face uses material 'purple', which no loaded MTL"));
+}
+
+TEST(ObjLoader, ReflectanceNotBelowOne) {
+    const std::string mtl = "# grey\nnewmtl white\nKd 0.5 1.2 0.5\nKe 1 1 1\n";
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mtl),
+                         "scene.mtl:3: reflectance 1.2 of material 'white' is not below 1"));
+    const std::string white = "newmtl white\nKe 1 1 1\nKd 1 1 1\n";
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", white),
+                         "scene.mtl:3: reflectance 1 of material 'white' is not below 1"));
+}
+
+TEST(ObjLoader, NegativeReflectance) {
+    const std::string mtl = "newmtl white\nKd 0.5 0.5 -0.1\n";
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mtl),
+                         "scene.mtl:2: reflectance -0.1 of material 'white' is negative"));
+}
+
+TEST(ObjLoader, NegativeEmission) {
+    const std::string mtl = "newmtl white\nKd 0.5 0.5 0.5\n\nKe 1 -2 1\n";
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mtl),
+                         "scene.mtl:4: emission -2 of material 'white' is negative"));
+}
+
+TEST(ObjLoader, MaterialParseError) {
+    const std::string mtl = "newmtl white\nKd 0.5 0.5\n";
+    EXPECT_TRUE(
+        contains(obj_error("v 0 0 0\n", mtl), "scene.mtl:2: 'Kd' needs three numbers (r g b)"));
+}
+
+TEST(ObjLoader, NoEmitter) {
+    const std::string path_end = "scene.obj: no face emits light";
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), path_end));
+}
+
+TEST(ObjLoader, NoFaces) { EXPECT_TRUE(contains(obj_error("v 0 0 0\n"), "scene.obj: no faces")); }
+
+}  // namespace
+}  // namespace hmcr
