@@ -1,0 +1,66 @@
+#include "viz/tone_map.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <numbers>
+
+namespace hmcr {
+namespace {
+
+using Srgb8 = std::array<std::uint8_t, 3>;
+
+TEST(ToneMap, SrgbTransferFunction) {
+    EXPECT_EQ(srgb_encode(0), 0);
+    EXPECT_DOUBLE_EQ(srgb_encode(0.001), 12.92 * 0.001);  // the linear segment
+    // Both segments meet at the breakpoint (to the precision of the standard's constants).
+    EXPECT_NEAR(srgb_encode(0.0031308), 1.055 * std::pow(0.0031308, 1 / 2.4) - 0.055, 1e-7);
+    EXPECT_DOUBLE_EQ(srgb_encode(0.5), 1.055 * std::pow(0.5, 1 / 2.4) - 0.055);
+    EXPECT_DOUBLE_EQ(srgb_encode(1), 1);
+    EXPECT_DOUBLE_EQ(srgb_encode(7), 1);   // clamped
+    EXPECT_DOUBLE_EQ(srgb_encode(-1), 0);  // clamped
+}
+
+TEST(ToneMap, EightBitValues) {
+    EXPECT_EQ(to_srgb8(Rgb(0, 0, 0), 1), (Srgb8{0, 0, 0}));
+    EXPECT_EQ(to_srgb8(Rgb(1, 2, 0.5), 1), (Srgb8{255, 255, 188}));
+    // 0.0031308 -> 10.31, 0.001 -> 3.29, 0.18 (middle grey) -> 117.6.
+    EXPECT_EQ(to_srgb8(Rgb(0.0031308, 0.001, 0.18), 1), (Srgb8{10, 3, 118}));
+    EXPECT_EQ(to_srgb8(Rgb(0.25, 0.036, 0.09), 2), (Srgb8{188, 76, 118}));  // exposure scales
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(to_srgb8(Rgb(nan, 1, 0), 1), (Srgb8{0, 255, 0}));
+}
+
+// Two grey cells: B = 0.1 pi on area 1 and 0.3 pi on area 3, so the mean radiance is 0.25.
+ShadedMesh two_cells() {
+    ShadedMesh m;
+    m.element_radiosity = {Rgb::Constant(0.1 * std::numbers::pi),
+                           Rgb::Constant(0.3 * std::numbers::pi)};
+    m.element_area = {1, 3};
+    m.point_radiosity = {Rgb::Constant(0.25 * std::numbers::pi), Rgb::Zero(),
+                         Rgb(0.25 * std::numbers::pi / 0.2126, 0, 0)};
+    m.points.resize(3, Vec3::Zero());
+    return m;
+}
+
+TEST(ToneMap, ExposureMapsMeanLuminanceToMiddleGrey) {
+    EXPECT_DOUBLE_EQ(auto_exposure(two_cells()), 0.18 / 0.25);
+    EXPECT_DOUBLE_EQ(luminance(Rgb(1, 0, 0)), 0.2126);
+    EXPECT_DOUBLE_EQ(luminance(Rgb(0, 1, 0)), 0.7152);
+    EXPECT_DOUBLE_EQ(luminance(Rgb(0, 0, 1)), 0.0722);
+    ShadedMesh black = two_cells();
+    black.element_radiosity.assign(2, Rgb::Zero());
+    EXPECT_EQ(auto_exposure(black), 1);
+    EXPECT_EQ(auto_exposure(ShadedMesh{}), 1);
+}
+
+TEST(ToneMap, PointColorsUseTheMeshExposure) {
+    const auto colors = point_colors(two_cells());
+    ASSERT_EQ(colors.size(), 3u);
+    EXPECT_EQ(colors[0], (Srgb8{118, 118, 118}));  // the mean radiance becomes middle grey
+    EXPECT_EQ(colors[1], (Srgb8{0, 0, 0}));
+    EXPECT_EQ(colors[2], (Srgb8{237, 0, 0}));  // linear 0.18 / 0.2126 = 0.847 of red
+}
+
+}  // namespace
+}  // namespace hmcr

@@ -1,0 +1,20 @@
+// Atomic file output (SPEC section 5): write a temp file beside the target, then rename it into
+// place, so readers see the old file or the complete new one and a failed run leaves nothing.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace hmcr {
+
+// Creates the target's parent directory if needed, calls `write` with a fresh temp path in that
+// directory and renames the result onto `target`. On any exception the temp file is removed and
+// the exception rethrown.
+void write_file_atomically(const std::filesystem::path& target,
+                           const std::function<void(const std::filesystem::path& tmp)>& write);
+
+// write_file_atomically with the given bytes; throws std::runtime_error naming the file.
+void write_text_atomically(const std::filesystem::path& target, const std::string& text);
+
+}  // namespace hmcr

@@ -1,0 +1,77 @@
+#!/usr/bin/python3
+"""Render an hmcr solution (.vtp) to a PNG with VTK, the way ParaView shows it.
+
+    xvfb-run -a /usr/bin/python3 viz/render_vtp.py out/cornell.vtp scenes/cornell/cornell.json camera out/cornell.png [--edges]
+
+Colours are the solution's own RadiosityColor (tone-mapped sRGB bytes, not re-mapped through a
+colour table) with Gouraud interpolation and lighting off, as in ParaView with "Map Scalars"
+unchecked and the light kit off: what you see is the radiosity. --edges draws the element
+boundaries (the mesh the oracle made). Needs Debian's python3-vtk9 (`/usr/bin/python3`).
+"""
+import json
+import sys
+
+import vtk
+
+
+def load_view(scene_json, name):
+    views = {v["name"]: v for v in json.load(open(scene_json))["views"]}
+    if name not in views:
+        sys.exit(f"{scene_json}: no view '{name}' (views: {', '.join(views)})")
+    return views[name]
+
+
+def main(argv):
+    args = [a for a in argv[1:] if not a.startswith("--")]
+    if len(args) != 4:
+        sys.exit(__doc__)
+    vtp, scene_json, view_name, png = args
+    v = load_view(scene_json, view_name)
+
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(vtp)
+    reader.Update()
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputConnection(reader.GetOutputPort())
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("RadiosityColor")
+    mapper.SetColorModeToDirectScalars()
+    mapper.ScalarVisibilityOn()
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    prop = actor.GetProperty()
+    prop.SetInterpolationToGouraud()
+    prop.SetAmbient(1.0)
+    prop.SetDiffuse(0.0)
+    prop.SetSpecular(0.0)
+    if "--edges" in argv:
+        prop.EdgeVisibilityOn()
+        prop.SetEdgeColor(0.1, 0.1, 0.1)
+        prop.SetLineWidth(0.5)
+
+    renderer = vtk.vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(0, 0, 0)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*v["position"])
+    camera.SetFocalPoint(*v["look_at"])
+    camera.SetViewUp(*v["up"])
+    camera.SetViewAngle(v["fov"])
+    renderer.ResetCameraClippingRange()
+
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    window.SetSize(v["width"], v["height"])
+    window.Render()
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(png)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+
+
+if __name__ == "__main__":
+    main(sys.argv)

@@ -1,0 +1,175 @@
+#include "viz/shaded_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <tuple>
+#include <utility>
+
+#include "viz/conforming_polygons.h"
+
+namespace hmcr {
+namespace {
+
+// One use of a lattice vertex by a cell: the slot of the cell's polygon that names it.
+struct Incidence {
+    std::uint32_t vertex = 0;
+    std::uint32_t patch = 0;
+    std::uint32_t cell = 0;
+    std::size_t slot = 0;
+};
+
+std::vector<Incidence> incidences(const ConformingPolygons& polys, const ShadedMesh& out) {
+    std::vector<Incidence> inc;
+    inc.reserve(polys.polygon_vertices.size());
+    for (std::size_t c = 0; c + 1 < polys.offsets.size(); ++c) {
+        for (auto s = polys.offsets[c]; s < polys.offsets[c + 1]; ++s) {
+            inc.push_back({polys.polygon_vertices[s], std::uint32_t(out.patch_id[c]),
+                           std::uint32_t(c), std::size_t(s)});
+        }
+    }
+    std::sort(inc.begin(), inc.end(), [](const Incidence& a, const Incidence& b) {
+        return std::tuple(a.vertex, a.patch, a.slot) < std::tuple(b.vertex, b.patch, b.slot);
+    });
+    return inc;
+}
+
+// Groups the patches meeting at a vertex into blend groups: two patches blend when they share a
+// mesh edge through the vertex, their normals differ by less than the crease angle, and they
+// have the same material (and transitively, so a smooth fan around a vertex is one group).
+// Radiosity B = E + rho H jumps where E or rho jumps, even where H is smooth: blending there
+// would smear a light's edge into the ceiling around it, or one colour into the next.
+class CreaseGrouping {
+  public:
+    CreaseGrouping(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees)
+        : m_h(h), m_mesh(mesh), m_cos_crease(std::cos(crease_degrees * std::numbers::pi / 180.0)) {}
+
+    std::vector<int> groups(const LatticeVertex& v, const std::vector<std::uint32_t>& patches) {
+        m_parent.resize(patches.size());
+        std::iota(m_parent.begin(), m_parent.end(), 0);
+        if (patches.size() > 1 && v.kind == VertexKind::mesh_edge) {
+            join_across(PatchMesh::EdgeHandle(int(v.id)), patches);
+        } else if (patches.size() > 1 && v.kind == VertexKind::mesh_vertex) {
+            for (auto e : m_mesh.ve_range(PatchMesh::VertexHandle(int(v.id)))) {
+                join_across(e, patches);
+            }
+        }
+        std::vector<int> group(patches.size());
+        for (std::size_t i = 0; i < patches.size(); ++i) group[i] = find(int(i));
+        return group;
+    }
+
+  private:
+    void join_across(PatchMesh::EdgeHandle e, const std::vector<std::uint32_t>& patches) {
+        const auto f0 = m_mesh.face_handle(m_mesh.halfedge_handle(e, 0));
+        const auto f1 = m_mesh.face_handle(m_mesh.halfedge_handle(e, 1));
+        if (!f0.is_valid() || !f1.is_valid()) return;
+        const int a = index_of(patches, f0.idx()), b = index_of(patches, f1.idx());
+        if (a < 0 || b < 0) return;
+        const auto& ps = m_h.patch_set().patches;
+        const Patch& p0 = ps[f0.idx()];
+        const Patch& p1 = ps[f1.idx()];
+        const bool same_material =
+            (p0.reflectance == p1.reflectance).all() && (p0.emission == p1.emission).all();
+        if (same_material && p0.normal.dot(p1.normal) > m_cos_crease) {
+            m_parent[find(a)] = find(b);
+        }
+    }
+    static int index_of(const std::vector<std::uint32_t>& patches, int patch) {
+        auto it = std::find(patches.begin(), patches.end(), std::uint32_t(patch));
+        return it == patches.end() ? -1 : int(it - patches.begin());
+    }
+    int find(int i) {
+        while (m_parent[i] != i) i = m_parent[i] = m_parent[m_parent[i]];
+        return i;
+    }
+
+    const Hierarchy& m_h;
+    const PatchMesh& m_mesh;
+    double m_cos_crease;
+    std::vector<int> m_parent;
+};
+
+void fill_cells(const Hierarchy& h, ShadedMesh& out) {
+    h.for_each_leaf([&](const Element& e) {
+        out.element_radiosity.push_back(e.radiosity);
+        out.hierarchy_level.push_back(e.id.depth);
+        out.patch_id.push_back(int(e.id.patch));
+        out.element_area.push_back(e.area);
+    });
+}
+
+// Appends a point with the area-weighted average B of the cells of [first, last).
+void emit_point(const Incidence* first, const Incidence* last, const Vec3& position,
+                ShadedMesh& out) {
+    Rgb sum = Rgb::Zero();
+    double area = 0;
+    for (auto* i = first; i != last; ++i) {
+        out.connectivity[i->slot] = std::int64_t(out.points.size());
+        sum += out.element_area[i->cell] * out.element_radiosity[i->cell];
+        area += out.element_area[i->cell];
+    }
+    out.points.push_back(position);
+    out.point_radiosity.push_back(area > 0 ? Rgb(sum / area) : Rgb(Rgb::Zero()));
+}
+
+// The incidences [first, last) share one lattice vertex: one output point per blend group,
+// holding the area-weighted average B of the group's leaves around the vertex.
+void emit_points(const Incidence* first, const Incidence* last, const LatticeVertex& v,
+                 CreaseGrouping& grouping, ShadedMesh& out) {
+    std::vector<std::uint32_t> patches;
+    for (auto* i = first; i != last; ++i) {
+        if (patches.empty() || patches.back() != i->patch) patches.push_back(i->patch);
+    }
+    const std::vector<int> group = grouping.groups(v, patches);
+    std::vector<std::int64_t> point_of_group(patches.size(), -1);
+    std::vector<Rgb> sum(patches.size(), Rgb::Zero());
+    std::vector<double> area(patches.size(), 0.0);
+    std::size_t p = 0;
+    for (auto* i = first; i != last; ++i) {
+        while (patches[p] != i->patch) ++p;
+        const int g = group[p];
+        if (point_of_group[g] < 0) {
+            point_of_group[g] = std::int64_t(out.points.size());
+            out.points.push_back(v.position);
+        }
+        out.connectivity[i->slot] = point_of_group[g];
+        sum[g] += out.element_area[i->cell] * out.element_radiosity[i->cell];
+        area[g] += out.element_area[i->cell];
+    }
+    out.point_radiosity.resize(out.points.size(), Rgb::Zero());
+    for (std::size_t g = 0; g < patches.size(); ++g) {
+        if (point_of_group[g] >= 0 && area[g] > 0) {
+            out.point_radiosity[point_of_group[g]] = sum[g] / area[g];
+        }
+    }
+}
+
+}  // namespace
+
+ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees) {
+    const ConformingPolygons polys = build_conforming_polygons(h, mesh);
+    ShadedMesh out;
+    fill_cells(h, out);
+    out.offsets = polys.offsets;
+    out.connectivity.assign(polys.polygon_vertices.size(), -1);
+    out.points.reserve(polys.vertices.size());
+    out.point_radiosity.reserve(polys.vertices.size());
+    const std::vector<Incidence> inc = incidences(polys, out);
+    CreaseGrouping grouping(h, mesh, crease_degrees);
+    for (std::size_t i = 0; i < inc.size();) {
+        std::size_t j = i;
+        while (j < inc.size() && inc[j].vertex == inc[i].vertex) ++j;
+        const LatticeVertex& v = polys.vertices[inc[i].vertex];
+        if (inc[i].patch == inc[j - 1].patch) {  // inside one patch: the common case
+            emit_point(&inc[i], &inc[j], v.position, out);
+        } else {
+            emit_points(&inc[i], &inc[j], v, grouping, out);
+        }
+        i = j;
+    }
+    return out;
+}
+
+}  // namespace hmcr

@@ -1,0 +1,35 @@
+// The leaves of a solved hierarchy as a conforming polygon mesh with Gouraud vertex radiosity
+// (SPEC section 5): what the VTK export and the image renderer draw.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "meshes/patch_mesh.h"
+#include "radiosity/hierarchy.h"
+#include "radiosity/types.h"
+
+namespace hmcr {
+
+// Plain arrays in VTK's layout: cell c is connectivity[offsets[c] .. offsets[c + 1]).
+struct ShadedMesh {
+    std::vector<Vec3> points;
+    std::vector<Rgb> point_radiosity;      // Gouraud value of each point, W/m^2
+    std::vector<std::int64_t> offsets{0};  // cell_count() + 1 entries
+    std::vector<std::int64_t> connectivity;
+
+    // One cell per leaf, in the canonical leaf order of Hierarchy::for_each_leaf.
+    std::vector<Rgb> element_radiosity;  // the leaf's B
+    std::vector<int> hierarchy_level;    // the leaf's depth
+    std::vector<int> patch_id;
+    std::vector<double> element_area;
+
+    std::size_t cell_count() const { return offsets.size() - 1; }
+};
+
+// Face i of `mesh` must be patch i of `h` (h was built from build_patch_set(mesh)). Patches whose
+// normals differ by `crease_degrees` or more are not blended and get separate points.
+// Throws std::invalid_argument when the mesh does not match the hierarchy.
+ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees = 30);
+
+}  // namespace hmcr

@@ -1,0 +1,36 @@
+// Tone mapping of linear radiosity to 8-bit sRGB for `RadiosityColor` and rendered images.
+//
+// Radiance L = B / pi (Lambertian surfaces). One fixed exposure per mesh maps the area-weighted
+// mean luminance to middle grey, 0.18 (Reinhard et al. 2002, "Photographic tone reproduction for
+// digital images", the key value a = 0.18); then clamp to 1 and apply the sRGB transfer function
+// of IEC 61966-2-1.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "radiosity/types.h"
+#include "viz/shaded_mesh.h"
+
+namespace hmcr {
+
+inline constexpr double kMiddleGrey = 0.18;
+
+// Relative luminance of linear Rec. 709 / sRGB primaries.
+double luminance(const Rgb& c);
+
+// Scale factor on radiance that maps the area-weighted mean cell luminance to kMiddleGrey;
+// 1 when the mesh is black (or empty).
+double auto_exposure(const ShadedMesh& mesh);
+
+// sRGB encoding of one linear value in [0, 1] (clamped), in [0, 1].
+double srgb_encode(double linear);
+
+// exposure * radiance, clamped, sRGB-encoded and rounded to 8 bits per channel.
+std::array<std::uint8_t, 3> to_srgb8(const Rgb& radiance, double exposure);
+
+// RadiosityColor of every point of the mesh, with auto_exposure(mesh).
+std::vector<std::array<std::uint8_t, 3>> point_colors(const ShadedMesh& mesh);
+
+}  // namespace hmcr

@@ -1,0 +1,172 @@
+#include "viz/vtk_export.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkDoubleArray.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkTypeInt64Array.h>
+#include <vtkTypeUInt64Array.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <cctype>
+#include <stdexcept>
+#include <vector>
+
+#include "viz/atomic_file.h"
+#include "viz/tone_map.h"
+
+#ifndef HMCR_VERSION
+#error "HMCR_VERSION must be defined by the build"
+#endif
+
+namespace hmcr {
+namespace {
+
+// Collects VTK error messages instead of letting them go to the console.
+class ErrorObserver : public vtkCommand {
+  public:
+    static ErrorObserver* New() { return new ErrorObserver; }
+    void Execute(vtkObject*, unsigned long, void* data) override {
+        std::string text = data ? static_cast<const char*>(data) : "unknown VTK error";
+        while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) {
+            text.pop_back();
+        }
+        m_message += (m_message.empty() ? "" : "; ") + text;
+    }
+    const std::string& message() const { return m_message; }
+
+  private:
+    std::string m_message;
+};
+
+vtkNew<vtkFloatArray> rgb_array(const char* name, const std::vector<Rgb>& values) {
+    vtkNew<vtkFloatArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(3);
+    a->SetComponentName(0, "R");
+    a->SetComponentName(1, "G");
+    a->SetComponentName(2, "B");
+    a->SetNumberOfTuples(vtkIdType(values.size()));
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        for (int k = 0; k < 3; ++k) a->SetTypedComponent(vtkIdType(i), k, float(values[i][k]));
+    }
+    return a;
+}
+
+template <class Array, class T>
+vtkNew<Array> scalar_array(const char* name, const std::vector<T>& values) {
+    vtkNew<Array> a;
+    a->SetName(name);
+    a->SetNumberOfTuples(vtkIdType(values.size()));
+    for (std::size_t i = 0; i < values.size(); ++i) a->SetValue(vtkIdType(i), values[i]);
+    return a;
+}
+
+vtkNew<vtkUnsignedCharArray> color_array(const ShadedMesh& mesh) {
+    const auto colors = point_colors(mesh);
+    vtkNew<vtkUnsignedCharArray> a;
+    a->SetName("RadiosityColor");
+    a->SetNumberOfComponents(3);
+    a->SetNumberOfTuples(vtkIdType(colors.size()));
+    for (std::size_t i = 0; i < colors.size(); ++i) {
+        for (int k = 0; k < 3; ++k) a->SetTypedComponent(vtkIdType(i), k, colors[i][k]);
+    }
+    return a;
+}
+
+void set_geometry(vtkPolyData* pd, const ShadedMesh& mesh) {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(vtkIdType(mesh.points.size()));
+    for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+        points->SetPoint(vtkIdType(i), mesh.points[i].data());
+    }
+    pd->SetPoints(points);
+    vtkNew<vtkCellArray> polys;
+    polys->SetData(scalar_array<vtkTypeInt64Array>("offsets", mesh.offsets),
+                   scalar_array<vtkTypeInt64Array>("connectivity", mesh.connectivity));
+    pd->SetPolys(polys);
+}
+
+void set_attributes(vtkPolyData* pd, const ShadedMesh& mesh) {
+    pd->GetPointData()->AddArray(rgb_array("Radiosity", mesh.point_radiosity));
+    pd->GetPointData()->SetScalars(color_array(mesh));
+    vtkCellData* cd = pd->GetCellData();
+    cd->AddArray(rgb_array("ElementRadiosity", mesh.element_radiosity));
+    cd->AddArray(scalar_array<vtkIntArray>("HierarchyLevel", mesh.hierarchy_level));
+    cd->AddArray(scalar_array<vtkIntArray>("PatchId", mesh.patch_id));
+    cd->AddArray(scalar_array<vtkDoubleArray>("ElementArea", mesh.element_area));
+}
+
+void add_string(vtkFieldData* fd, const char* name, const std::string& value) {
+    vtkNew<vtkStringArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+}
+
+template <class Array, class T>
+void add_value(vtkFieldData* fd, const char* name, T value) {
+    fd->AddArray(scalar_array<Array>(name, std::vector<T>{value}));
+}
+
+void set_metadata(vtkPolyData* pd, const VtpMetadata& meta) {
+    vtkFieldData* fd = pd->GetFieldData();
+    add_string(fd, "Oracle", meta.oracle);
+    add_value<vtkDoubleArray>(fd, "Epsilon", meta.epsilon);
+    add_value<vtkTypeUInt64Array>(fd, "Lines", meta.lines);
+    add_value<vtkTypeUInt64Array>(fd, "Rays", meta.rays);
+    add_value<vtkTypeUInt64Array>(fd, "Seed", meta.seed);
+    add_value<vtkTypeUInt64Array>(fd, "ElementCount", meta.element_count);
+    add_value<vtkTypeUInt64Array>(fd, "Iterations", meta.iterations);
+    add_string(fd, "HmcrVersion", HMCR_VERSION);
+    add_value<vtkDoubleArray>(fd, "TimeValue", meta.time_value);
+}
+
+void write_polydata(vtkPolyData* pd, const std::filesystem::path& file,
+                    const std::filesystem::path& target) {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    vtkNew<ErrorObserver> errors, pipeline;
+    writer->AddObserver(vtkCommand::ErrorEvent, errors);
+    // The executive repeats the failure with a dump of the request: keep it off the console.
+    writer->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, pipeline);
+    writer->SetFileName(file.c_str());
+    writer->SetInputData(pd);
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetCompressorTypeToZLib();
+    const int ok = writer->Write();
+    if (ok != 1 || writer->GetErrorCode() != 0 || !errors->message().empty() ||
+        !pipeline->message().empty()) {
+        throw std::runtime_error(
+            "cannot write " + target.string() + ": " +
+            (errors->message().empty() ? "VTK writer failed" : errors->message()));
+    }
+}
+
+}  // namespace
+
+void write_vtp(const std::filesystem::path& path, const ShadedMesh& mesh, const VtpMetadata& meta) {
+    vtkNew<vtkPolyData> pd;
+    set_geometry(pd, mesh);
+    set_attributes(pd, mesh);
+    set_metadata(pd, meta);
+    try {
+        write_file_atomically(
+            path, [&](const std::filesystem::path& tmp) { write_polydata(pd, tmp, path); });
+    } catch (const std::filesystem::filesystem_error& e) {
+        throw std::runtime_error("cannot write " + path.string() + ": " + e.what());
+    }
+}
+
+}  // namespace hmcr

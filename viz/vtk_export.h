@@ -1,0 +1,29 @@
+// The solution as VTK XML PolyData (.vtp, appended raw, zlib), with the arrays of SPEC
+// section 5, for ParaView.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "viz/shaded_mesh.h"
+
+namespace hmcr {
+
+// Run description stored as field data (one tuple per array).
+struct VtpMetadata {
+    std::string oracle;               // Oracle
+    double epsilon = 0;               // Epsilon
+    std::uint64_t lines = 0;          // Lines
+    std::uint64_t rays = 0;           // Rays
+    std::uint64_t seed = 0;           // Seed
+    std::uint64_t element_count = 0;  // ElementCount
+    std::uint64_t iterations = 0;     // Iterations
+    double time_value = 0;            // TimeValue (ParaView's time of this file)
+};
+
+// Writes `mesh` atomically; RadiosityColor is tone-mapped with auto_exposure(mesh). Throws
+// std::runtime_error naming the file on failure, leaving no file behind.
+void write_vtp(const std::filesystem::path& path, const ShadedMesh& mesh, const VtpMetadata& meta);
+
+}  // namespace hmcr
