@@ -115,6 +115,7 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
         st.iterations.push_back(rec);
     }
     st.unshot_power = unshot;
+    if (progress) progress(1.0);
     st.elements = h.element_count();
     st.leaves = h.leaf_count();
     st.hierarchy_bytes = h.bytes();

@@ -1,0 +1,84 @@
+#include "radiosity/run_summary.h"
+
+#include <sys/resource.h>
+
+namespace hmcr {
+namespace {
+
+nlohmann::json rgb(const Rgb& c) { return {c[0], c[1], c[2]}; }
+
+nlohmann::json iterations_json(const SolveStats& st) {
+    auto list = nlohmann::json::array();
+    for (const auto& it : st.iterations) {
+        list.push_back({{"rays", it.rays},
+                        {"unshot_before_w", rgb(it.unshot_before)},
+                        {"unshot_after_w", rgb(it.unshot_after)},
+                        {"leaves_after", it.leaves_after},
+                        {"seconds", it.seconds}});
+    }
+    return list;
+}
+
+nlohmann::json options_json(const SolverOptions& o, const SolveStats& st) {
+    return {{"oracle", o.oracle},   {"epsilon", st.epsilon},  {"lines", o.lines},
+            {"rays", o.rays},       {"seed", o.seed},         {"threads", st.threads},
+            {"min_area", o.min_area}, {"max_depth", o.max_depth}, {"stop", o.stop}};
+}
+
+nlohmann::json power_json(const SolveStats& st) {
+    return {{"emitted_w", rgb(st.emitted_power)},
+            {"escaped_w", rgb(st.escaped_power)},
+            {"back_face_w", rgb(st.back_face_power)},
+            {"unshot_remaining_w", rgb(st.unshot_power)},
+            {"back_face_fraction", st.back_face_fraction()},
+            {"back_face_warning", st.back_face_fraction() > 0.01}};
+}
+
+}  // namespace
+
+std::size_t peak_memory_bytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return std::size_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
+}
+
+nlohmann::json run_summary(const Scene& scene, const Solution& solution, const RunTimings& timings,
+                           const std::string& command_line, const std::string& output) {
+    const SolveStats& st = solution.stats;
+    const Hierarchy& h = *solution.hierarchy;
+    return {
+        {"hmcr_version", HMCR_VERSION},
+        {"command", command_line},
+        {"output", output},
+        {"scene",
+         {{"name", scene.name},
+          {"source", scene.source.string()},
+          {"mesh", scene.mesh_path.string()},
+          {"patches", h.patch_count()},
+          {"total_area_m2", h.patch_set().total_area},
+          {"max_emitted_power_w", h.patch_set().max_emitted_power}}},
+        {"options", options_json(solution.options, st)},
+        {"counts",
+         {{"rays", st.rays},
+          {"iterations", st.iterations.size()},
+          {"oracle_calls", st.oracle_calls},
+          {"cache_hits", 0},
+          {"lines_cast", st.lines_cast},
+          {"elements", st.elements},
+          {"leaves", st.leaves}}},
+        {"power", power_json(st)},
+        {"timings_s",
+         {{"load", timings.load_seconds},
+          {"setup", st.setup_seconds},
+          {"shooting", st.shooting_seconds},
+          {"push_pull", st.push_pull_seconds},
+          {"solve", st.total_seconds},
+          {"output", timings.output_seconds},
+          {"total", timings.total_seconds}}},
+        {"memory",
+         {{"peak_bytes", peak_memory_bytes()}, {"hierarchy_bytes", st.hierarchy_bytes}}},
+        {"iterations", iterations_json(st)},
+    };
+}
+
+}  // namespace hmcr

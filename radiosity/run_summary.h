@@ -1,0 +1,24 @@
+// The JSON run summary written beside every solution (SPEC section 5).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "meshes/scene.h"
+#include "radiosity/solver.h"
+
+namespace hmcr {
+
+struct RunTimings {
+    double load_seconds = 0;
+    double output_seconds = 0;
+    double total_seconds = 0;
+};
+
+nlohmann::json run_summary(const Scene& scene, const Solution& solution, const RunTimings& timings,
+                           const std::string& command_line, const std::string& output);
+
+// Peak resident memory of this process so far, bytes.
+std::size_t peak_memory_bytes();
+
+}  // namespace hmcr
