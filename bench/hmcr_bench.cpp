@@ -1,11 +1,13 @@
 // `make bench`: the shooting rate of hmcr against the Embree floor for the same work,
-// measured in the same run on the same scene (issue 2's benchmark).
+// measured in the same run on the same scene (issue 2's benchmark). floor/hmcr = how many
+// times more rays per second Embree alone traces than a whole hmcr solve shoots; 1 would mean
+// refinement and deposits cost nothing. peak_MiB is the process's peak so far.
 //
 // For each scene and thread count: one full solve with the power oracle at 2,684,000 rays
 // (rays/s = rays / shooting time, time per phase, leaves, memory), then the floor: the same
 // number of incoherent first-hit rays (area-uniform origins, cosine directions), generated
 // beforehand and traced through the EmbreeScene facade (one rtcIntersect1 each), median of 3.
-#include <fmt/core.h>
+#include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
@@ -62,39 +64,50 @@ double floor_seconds(const EmbreeScene& scene, const std::vector<Ray>& rays) {
     return times[1];
 }
 
-void bench_scene(const std::string& name) {
+// One benchmark per scene and thread count; Google Benchmark prints the counters as a table.
+void bench_solve(benchmark::State& state, const std::string& name) {
+    const int threads = int(state.range(0));
     const Scene scene = load_scene(name);
     const PatchSet set = build_patch_set(scene.mesh);
     const EmbreeScene embree(set.patches);
     const std::vector<Ray> rays = incoherent_rays(set, kRays);
-    fmt::print("\n{} ({} patches), power oracle, {} rays\n", name, set.patches.size(), kRays);
-    fmt::print("{:>7} {:>8} {:>9} {:>8} {:>8} {:>8} {:>6} {:>10} {:>12} {:>7} {:>9}\n", "threads",
-               "leaves", "iter", "setup s", "shoot s", "pushpull", "total", "rays/s",
-               "embree rays/s", "ratio", "peak MiB");
-    for (int threads : {1, 2}) {
+    for (auto _ : state) {
         SolverOptions o;
         o.oracle = "power";
         o.rays = kRays;
         o.threads = threads;
         const Solution sol = solve(scene.mesh, o);
         const SolveStats& st = sol.stats;
+        state.SetIterationTime(st.total_seconds);
         tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
         const double floor = floor_seconds(embree, rays);
         const double rate = double(st.rays) / st.shooting_seconds;
-        const double floor_rate = double(kRays) / floor;
-        fmt::print("{:>7} {:>8} {:>9} {:>8.3f} {:>8.3f} {:>8.3f} {:>6.2f} {:>10.3g} {:>12.3g} {:>7.2f} {:>9.0f}\n",
-                   threads, st.leaves, st.iterations.size(), st.setup_seconds, st.shooting_seconds,
-                   st.push_pull_seconds, st.total_seconds, rate, floor_rate, floor_rate / rate,
-                   double(peak_memory_bytes()) / (1 << 20));
+        state.counters["leaves"] = double(st.leaves);
+        state.counters["setup_s"] = st.setup_seconds;
+        state.counters["shoot_s"] = st.shooting_seconds;
+        state.counters["pushpull_s"] = st.push_pull_seconds;
+        state.counters["rays/s"] = rate;
+        state.counters["embree_rays/s"] = double(kRays) / floor;
+        state.counters["floor/hmcr"] = double(kRays) / floor / rate;
+        state.counters["peak_MiB"] = double(peak_memory_bytes()) / (1 << 20);
     }
 }
 
 }  // namespace
 }  // namespace hmcr
 
-int main() {
-    fmt::print("hmcr benchmark: shooting rate vs the Embree floor (ratio = floor rate / hmcr rate;\n"
-               "1.0 would mean hmcr's shooting costs nothing beyond the first-hit queries).\n"
-               "peak MiB is the process's peak resident memory so far.\n");
-    for (const char* name : {"cornell", "cube-room"}) hmcr::bench_scene(name);
+int main(int argc, char** argv) {
+    for (const char* name : {"cornell", "cube-room"}) {
+        benchmark::RegisterBenchmark((std::string("solve_power/") + name).c_str(), hmcr::bench_solve,
+                                     std::string(name))
+            ->Arg(1)
+            ->Arg(2)
+            ->ArgName("threads")
+            ->Iterations(1)
+            ->UseManualTime()
+            ->Unit(benchmark::kSecond);
+    }
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
 }

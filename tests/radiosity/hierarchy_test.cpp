@@ -79,6 +79,11 @@ TEST(Hierarchy, IdentitiesAreTheChildPathsAndUnique) {
     EXPECT_EQ(h.leaf_count(), 65u);
 }
 
+// SPEC section 2: a 1M-element hierarchy must fit well under 1 GiB.
+TEST(Hierarchy, AMillionElementsFitInAFifthOfAGibibyte) {
+    EXPECT_LE(sizeof(Element) * 1'000'000, std::size_t(200) << 20) << sizeof(Element);
+}
+
 TEST(Hierarchy, LimitsStopSubdivision) {
     Hierarchy by_depth = make_hierarchy({0, 2});
     EXPECT_TRUE(by_depth.can_subdivide(by_depth.root(0)));
