@@ -26,7 +26,7 @@ bool Hierarchy::can_subdivide(const Element& e) const {
     return e.area > m_min_area && e.id.depth < m_limits.max_depth;
 }
 
-void Hierarchy::init_child(const Element& parent, int k, Element& child) const {
+void Hierarchy::init_child(Element& parent, int k, Element& child) const {
     const Patch& p = patch(parent);
     child.id = parent.id.child(k);
     child.domain = parent.domain.child(p.is_quad(), k);
@@ -36,7 +36,7 @@ void Hierarchy::init_child(const Element& parent, int k, Element& child) const {
     child.radiosity = parent.radiosity;
     child.unshot = parent.unshot;
     child.received = Rgb::Zero();
-    child.parent = const_cast<Element*>(&parent);
+    child.parent = &parent;
     child.first_child.store(nullptr, std::memory_order_relaxed);
 }
 

@@ -67,7 +67,7 @@ public:
     }
 
 private:
-    void init_child(const Element& parent, int k, Element& child) const;
+    void init_child(Element& parent, int k, Element& child) const;
 
     PatchSet m_patches;
     HierarchyLimits m_limits;

@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace hmcr {
 namespace {
@@ -80,11 +82,23 @@ double Patch::region_area(const Vec2* uv, int count) const {
     return 0.5 * (c - a).cross(d - b).norm();  // exact for planar quads
 }
 
+namespace {
+
+template <class T>
+OpenMesh::FPropHandleT<T> face_property(const PatchMesh& mesh, const char* name) {
+    OpenMesh::FPropHandleT<T> h;
+    if (!mesh.get_property_handle(h, name)) {
+        throw std::invalid_argument(std::string("patch mesh has no face property ") + name);
+    }
+    return h;
+}
+
+}  // namespace
+
 PatchSet build_patch_set(const PatchMesh& mesh) {
     PatchSet set;
-    auto& m = const_cast<PatchMesh&>(mesh);  // OpenMesh property lookup needs a mutable mesh
-    auto rho = reflectance_prop(m);
-    auto emit = emission_prop(m);
+    const auto rho_h = face_property<OpenMesh::Vec3d>(mesh, kReflectanceProp);
+    const auto emit_h = face_property<OpenMesh::Vec3d>(mesh, kEmissionProp);
     set.patches.reserve(mesh.n_faces());
     for (auto f : mesh.faces()) {
         Patch p;
@@ -94,8 +108,10 @@ PatchSet build_patch_set(const PatchMesh& mesh) {
             p.corner[p.corner_count++] = Vec3(pt[0], pt[1], pt[2]);
         }
         p.finalize();
-        p.reflectance = Rgb(rho[f][0], rho[f][1], rho[f][2]);
-        p.emission = Rgb(emit[f][0], emit[f][1], emit[f][2]);
+        const auto& rho = mesh.property(rho_h, f);
+        const auto& emit = mesh.property(emit_h, f);
+        p.reflectance = Rgb(rho[0], rho[1], rho[2]);
+        p.emission = Rgb(emit[0], emit[1], emit[2]);
         set.total_area += p.area;
         set.emitted_power += p.area * p.emission;
         set.max_emitted_power = std::max(set.max_emitted_power, p.area * p.emission.maxCoeff());

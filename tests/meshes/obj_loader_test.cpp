@@ -109,9 +109,9 @@ TEST(ObjLoader, DefaultMaterialForFacesWithout) {
 
 TEST(ObjLoader, UnreadableFile) {
     SceneFiles files;
-    const auto missing = files.dir() / "missing.obj";
+    const auto missing = files.path() / "missing.obj";
     EXPECT_EQ(scene_error([&] { load_obj(missing); }), missing.string() + ": no such file");
-    EXPECT_TRUE(contains(scene_error([&] { load_obj(files.dir()); }), ": is a directory"));
+    EXPECT_TRUE(contains(scene_error([&] { load_obj(files.path()); }), ": is a directory"));
 }
 
 TEST(ObjLoader, UnreadableMaterialLibrary) {

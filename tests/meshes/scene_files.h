@@ -1,5 +1,4 @@
-// Test helper: a fresh temporary directory to write small scene files into, removed at the end
-// of the test, so that every loader test states its whole input next to its expectations.
+// Loader test helpers: scene files in a fresh temporary directory, and error-message checks.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -11,39 +10,11 @@
 #include <string>
 
 #include "meshes/scene.h"
+#include "tests/support/temp_dir.h"
 
 namespace hmcr::test {
 
-class SceneFiles {
-  public:
-    SceneFiles() {
-        static std::atomic<int> counter{0};
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        const std::string name = info != nullptr ? info->name() : "scene";
-        m_dir = std::filesystem::temp_directory_path() /
-                ("hmcr_" + name + "_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
-        std::filesystem::remove_all(m_dir);
-        std::filesystem::create_directories(m_dir);
-    }
-    ~SceneFiles() {
-        std::error_code ec;
-        std::filesystem::remove_all(m_dir, ec);
-    }
-    SceneFiles(const SceneFiles&) = delete;
-    SceneFiles& operator=(const SceneFiles&) = delete;
-
-    // Writes `text` to dir/name and returns the path.
-    std::filesystem::path write(const std::string& name, const std::string& text) const {
-        const std::filesystem::path path = m_dir / name;
-        std::filesystem::create_directories(path.parent_path());
-        std::ofstream(path, std::ios::binary) << text;
-        return path;
-    }
-    const std::filesystem::path& dir() const { return m_dir; }
-
-  private:
-    std::filesystem::path m_dir;
-};
+using SceneFiles = TempDir;
 
 // Passes when `text` contains `part`; the failure shows both.
 inline testing::AssertionResult contains(const std::string& text, const std::string& part) {

@@ -67,7 +67,7 @@ TEST(SceneLoader, JsonSceneWithViews) {
     SceneFiles files;
     const Scene scene = load_scene(write_scene(files, kSceneJson).string());
     EXPECT_EQ(scene.name, "scene");
-    EXPECT_EQ(scene.mesh_path, files.dir() / "tri.obj");
+    EXPECT_EQ(scene.mesh_path, files.path() / "tri.obj");
     EXPECT_EQ(scene.mesh.n_faces(), 1u);
     ASSERT_EQ(scene.views.size(), 2u);
     const View& front = scene.views[0];
@@ -168,12 +168,12 @@ TEST(SceneLoader, BundledSceneByName) {
     files.write("box/tri.mtl", kLightMtl);
     files.write("box/box.json", R"({"mesh": "tri.obj"})");
     files.write("empty/readme.txt", "not a scene: no empty.json");
-    ScopedEnv env("HMCR_SCENES", files.dir().string());
-    EXPECT_EQ(scene_directory(), files.dir());
+    ScopedEnv env("HMCR_SCENES", files.path().string());
+    EXPECT_EQ(scene_directory(), files.path());
     EXPECT_EQ(bundled_scene_names(), std::vector<std::string>{"box"});
     const Scene scene = load_scene("box");
     EXPECT_EQ(scene.name, "box");
-    EXPECT_EQ(scene.source, files.dir() / "box" / "box.json");
+    EXPECT_EQ(scene.source, files.path() / "box" / "box.json");
     EXPECT_EQ(scene.mesh.n_faces(), 1u);
 }
 
@@ -181,7 +181,7 @@ TEST(SceneLoader, UnknownNameListsBundledScenes) {
     SceneFiles files;
     files.write("box/box.json", "{}");
     files.write("room/room.json", "{}");
-    ScopedEnv env("HMCR_SCENES", files.dir().string());
+    ScopedEnv env("HMCR_SCENES", files.path().string());
     EXPECT_EQ(scene_error([] { load_scene("nothing"); }),
               "nothing: no such file or bundled scene (bundled scenes: box, room)");
     EXPECT_TRUE(contains(scene_error([] { load_scene("missing.json"); }), "box, room"));

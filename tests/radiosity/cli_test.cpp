@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tests/support/temp_dir.h"
+
 namespace hmcr::test {
 namespace {
 
@@ -27,24 +29,12 @@ std::string slurp(const fs::path& p) {
 
 class Cli : public testing::Test {
 protected:
-    void SetUp() override {
-        m_dir = fs::temp_directory_path() /
-                ("hmcr_cli_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
-    }
-    void TearDown() override { fs::remove_all(m_dir); }
-
     CliRun hmcr(const std::string& args) const {
         const std::string cmd = std::string(HMCR_BINARY) + " " + args + " >" +
                                 (m_dir / "stdout").string() + " 2>" + (m_dir / "stderr").string();
         const int status = std::system(cmd.c_str());
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(m_dir / "stdout"),
                 slurp(m_dir / "stderr")};
-    }
-    fs::path file(const std::string& name, const std::string& text = "") const {
-        std::ofstream(m_dir / name) << text;
-        return m_dir / name;
     }
     void expect_clean_failure(const CliRun& r, const std::string& needle) const {
         EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -53,7 +43,8 @@ protected:
         EXPECT_FALSE(fs::exists(m_dir / "out.vtp"));
         EXPECT_FALSE(fs::exists(m_dir / "out.json"));
     }
-    fs::path m_dir;
+    TempDir m_temp;
+    const fs::path& m_dir = m_temp.path();
 };
 
 TEST_F(Cli, UnknownOracleListsTheValidOnes) {
@@ -69,7 +60,7 @@ TEST_F(Cli, BadNumberIsRejected) {
 }
 
 TEST_F(Cli, MalformedSceneNamesFileAndLine) {
-    const fs::path obj = file("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+    const fs::path obj = m_temp.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
     expect_clean_failure(hmcr("solve " + obj.string() + " -o " + (m_dir / "out.vtp").string()),
                          "bad.obj:4");
 }

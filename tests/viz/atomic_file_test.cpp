@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "tests/viz/temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace hmcr::test {
 namespace {

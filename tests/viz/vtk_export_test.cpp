@@ -15,7 +15,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "tests/viz/temp_dir.h"
+#include "tests/support/temp_dir.h"
 #include "tests/viz/viz_test_scenes.h"
 #include "viz/atomic_file.h"
 #include "viz/tone_map.h"

@@ -1,10 +1,14 @@
-// A fresh directory per test, removed afterwards.
+// A fresh directory per test (per TempDir, if a test makes several), removed afterwards, so a
+// test states its whole input next to its expectations.
 #pragma once
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -14,8 +18,10 @@ class TempDir {
   public:
     TempDir() {
         const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+        static std::atomic<int> counter{0};
         m_path = std::filesystem::temp_directory_path() /
-                 ("hmcr_viz_" + std::to_string(::getpid()) + "_" + info->name());
+                 ("hmcr_" + std::string(info ? info->name() : "test") + "_" +
+                  std::to_string(::getpid()) + "_" + std::to_string(counter++));
         std::filesystem::remove_all(m_path);
         std::filesystem::create_directories(m_path);
     }
@@ -27,6 +33,13 @@ class TempDir {
     TempDir& operator=(const TempDir&) = delete;
 
     const std::filesystem::path& path() const { return m_path; }
+    // Writes `text` to path()/name (creating folders) and returns its path.
+    std::filesystem::path write(const std::string& name, const std::string& text) const {
+        const std::filesystem::path file = m_path / name;
+        std::filesystem::create_directories(file.parent_path());
+        std::ofstream(file, std::ios::binary) << text;
+        return file;
+    }
     // Names of all files below the directory, relative to it, sorted.
     std::vector<std::string> files() const {
         std::vector<std::string> out;
