@@ -7,12 +7,24 @@
 namespace hmcr {
 
 std::unique_ptr<Oracle> make_power_oracle();
+std::unique_ptr<Oracle> make_ks_oracle();
+std::unique_ptr<Oracle> make_mi_oracle();
+std::unique_ptr<Oracle> make_kl_oracle();
+std::unique_ptr<Oracle> make_cs_oracle();
+std::unique_ptr<Oracle> make_hl_oracle();
+std::unique_ptr<Oracle> make_vt_oracle();
 
 namespace {
 
 std::vector<std::unique_ptr<Oracle>> make_all() {
     std::vector<std::unique_ptr<Oracle>> list;
     list.push_back(make_power_oracle());
+    list.push_back(make_ks_oracle());
+    list.push_back(make_mi_oracle());
+    list.push_back(make_kl_oracle());
+    list.push_back(make_cs_oracle());
+    list.push_back(make_hl_oracle());
+    list.push_back(make_vt_oracle());
     return list;
 }
 

@@ -142,6 +142,8 @@ void add_solve(CLI::App& app, SolveArgs& args) {
     cmd->add_option("--max-depth", o.max_depth, "quadtree depth limit (<= 24)")->capture_default_str();
     cmd->add_option("--stop", o.stop, "stop when unshot power < stop * emitted power")
         ->capture_default_str();
+    cmd->add_option("--cache-mb", o.cache_mb, "link cache size for line-based oracles, MiB")
+        ->capture_default_str();
     cmd->add_option("--crease-angle", args.crease_degrees,
                     "patches meeting at a smaller angle are blended in the Gouraud values (degrees)")
         ->capture_default_str();

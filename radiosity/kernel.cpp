@@ -21,6 +21,9 @@ Vec2 sample_element(const Patch& patch, const Domain& domain, double xi1, double
         const Vec2 ab = sample_uniform_triangle(xi1, xi2);
         return {domain.u0 + domain.s * ab.x(), domain.v0 + domain.s * ab.y()};
     }
+    if (patch.is_parallelogram()) {  // constant Jacobian: uniform in parameter space
+        return {domain.u0 + domain.s * xi1, domain.v0 + domain.s * xi2};
+    }
     // The Jacobian of a planar bilinear map is affine in (u, v), so area-uniform sampling is a
     // linear density in s followed by a linear density in t given s.
     const auto c = domain.corners(true);
@@ -37,17 +40,24 @@ void sample_kernel(const EmbreeScene& scene, const Hierarchy& hierarchy, const E
     const Patch& pj = hierarchy.patch(j);
     constexpr std::size_t kBatch = 64;
     std::array<Vec3, kBatch> xs, ys;
+    std::array<std::size_t, kBatch> slot;
     std::array<bool, kBatch> vis;
     for (std::size_t first = 0; first < out.size(); first += kBatch) {
         const std::size_t n = std::min(kBatch, out.size() - first);
+        std::size_t cast = 0;  // only lines with a non-zero kernel need a visibility query
         for (std::size_t k = 0; k < n; ++k) {
-            xs[k] = pi.point(sample_element(pi, i.domain, rng.uniform(), rng.uniform()));
-            ys[k] = pj.point(sample_element(pj, j.domain, rng.uniform(), rng.uniform()));
-            out[first + k] = point_kernel(xs[k], pi.normal, ys[k], pj.normal);
+            const Vec3 x = pi.point(sample_element(pi, i.domain, rng.uniform(), rng.uniform()));
+            const Vec3 y = pj.point(sample_element(pj, j.domain, rng.uniform(), rng.uniform()));
+            out[first + k] = point_kernel(x, pi.normal, y, pj.normal);
+            if (out[first + k] > 0) {
+                xs[cast] = x;
+                ys[cast] = y;
+                slot[cast++] = first + k;
+            }
         }
-        scene.visible_many({xs.data(), n}, {ys.data(), n}, {vis.data(), n});
-        for (std::size_t k = 0; k < n; ++k) {
-            if (!vis[k]) out[first + k] = 0;
+        scene.visible_many({xs.data(), cast}, {ys.data(), cast}, {vis.data(), cast});
+        for (std::size_t k = 0; k < cast; ++k) {
+            if (!vis[k]) out[slot[k]] = 0;
         }
     }
 }

@@ -62,6 +62,8 @@ void Patch::finalize() {
     m_g = to2(corner[0] - corner[1] + corner[2] - corner[3]);
     // In the plane, J = cross2(e1 + v g, e2 + u g), affine because cross2(g, g) = 0.
     m_jacobian = Vec3(cross2(m_e1, m_e2), cross2(m_e1, m_g), cross2(m_g, m_e2));
+    // Snap the linear terms of (numerically) parallelograms to zero: their Jacobian is constant.
+    if (m_g.norm() <= 1e-12 * (m_e1.norm() + m_e2.norm())) m_jacobian[1] = m_jacobian[2] = 0;
 }
 
 Vec2 Patch::param(const Vec3& p) const {

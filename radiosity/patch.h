@@ -34,6 +34,9 @@ struct Patch {
     double region_area(const Vec2* uv, int count) const;
     // |dP/du x dP/dv| at uv: constant on triangles, affine in (u, v) on planar quads.
     double jacobian(const Vec2& uv) const { return m_jacobian.dot(Vec3(1, uv.x(), uv.y())); }
+    // A quad whose bilinear map is affine (rectangles among them): uniform (u, v) is uniform
+    // by area.
+    bool is_parallelogram() const { return is_quad() && m_jacobian[1] == 0 && m_jacobian[2] == 0; }
 
 private:
     // Cached by finalize(): the patch-plane frame and the map's edge vectors in it.

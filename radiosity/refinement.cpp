@@ -1,6 +1,7 @@
 #include "radiosity/refinement.h"
 
 #include <array>
+#include <chrono>
 #include <vector>
 
 #include "radiosity/kernel.h"
@@ -29,42 +30,94 @@ LinkGeometry centre_geometry(const Hierarchy& h, const Element& i, const Element
 
 }  // namespace
 
+namespace {
+
+// The oracle's geometric factor from the pair's own N_s lines (SPEC sections 3 and 4).
+double line_factor(const RefinementContext& ctx, const Element& receiver, const Element& source,
+                   RefinementCounters& counters) {
+    const auto start = std::chrono::steady_clock::now();
+    thread_local std::vector<double> kernel;
+    kernel.resize(std::size_t(ctx.lines));
+    Rng rng(ctx.seed, element_key(receiver.id), element_key(source.id));
+    sample_kernel(ctx.scene, ctx.hierarchy, receiver, source, rng, kernel);
+    LinkGeometry g = centre_geometry(ctx.hierarchy, receiver, source);
+    g.kernel = kernel;
+    const double factor = ctx.oracle.geometric_factor(g);
+    counters.lines_cast += kernel.size();
+    ++counters.oracle_evaluations;
+    counters.oracle_nanoseconds += std::uint64_t(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() -
+                                                             start)
+            .count());
+    return factor;
+}
+
+double geometric_factor(const RefinementContext& ctx, const Element& receiver,
+                        const Element& source, RefinementCounters& counters) {
+    if (!ctx.oracle.uses_lines()) {
+        ++counters.oracle_evaluations;
+        return ctx.oracle.geometric_factor(centre_geometry(ctx.hierarchy, receiver, source));
+    }
+    if (!ctx.cache) return line_factor(ctx, receiver, source, counters);
+    if (const auto cached = ctx.cache->find(&receiver, &source)) {
+        ++counters.cache_hits;
+        return *cached;
+    }
+    const double factor = line_factor(ctx, receiver, source, counters);
+    ctx.cache->insert(&receiver, &source, factor);
+    return factor;
+}
+
+}  // namespace
+
 double link_value(const RefinementContext& ctx, const Element& receiver, const Element& source,
                   RefinementCounters& counters) {
-    const Hierarchy& h = ctx.hierarchy;
-    const double w = link_weight(h.patch(receiver).reflectance, source.unshot);
-    if (w <= 0) return 0;
+    const double w = link_weight(ctx.hierarchy.patch(receiver).reflectance, source.unshot);
+    if (w <= 0) return 0;  // nothing to transport: no refinement can matter
     ++counters.oracle_calls;
-    LinkGeometry g = centre_geometry(h, receiver, source);
-    std::vector<double> kernel;
-    if (ctx.oracle.uses_lines()) {
-        // The pair's own stream: the same lines whichever ray asks (SPEC section 3).
-        Rng rng(ctx.seed, element_key(receiver.id), element_key(source.id));
-        kernel.resize(std::size_t(ctx.lines));
-        sample_kernel(ctx.scene, h, receiver, source, rng, kernel);
-        counters.lines_cast += kernel.size();
-        g.kernel = kernel;
-    }
-    return w * ctx.oracle.geometric_factor(g);
+    return w * geometric_factor(ctx, receiver, source, counters);
 }
+
+namespace {
+
+// The pair a refused link (i, j) is replaced by: the larger element (of those that may still
+// be split) by its child containing the ray's point on it. Returns false when both are at the
+// limits. Children are created when `create`; otherwise false when they do not exist yet.
+bool next_pair(Hierarchy& h, Element*& i, Element*& j, const Vec2& y_uv, const Vec2& x_uv,
+               bool create) {
+    const bool split_i = h.can_subdivide(*i), split_j = h.can_subdivide(*j);
+    if (!split_i && !split_j) return false;
+    Element*& e = split_i && (!split_j || i->area >= j->area) ? i : j;
+    if (e->is_leaf() && !create) return false;
+    if (create) h.subdivide(*e);
+    e = &h.child_containing(*e, &e == &i ? y_uv : x_uv);
+    return true;
+}
+
+// Prefetches the cache sets of the pairs the descent will visit if it keeps refining, as far
+// as the elements exist: a handful of independent memory loads in flight instead of one
+// cache miss after the other.
+void prefetch_descent(const RefinementContext& ctx, Element* i, Element* j, const Vec2& y_uv,
+                      const Vec2& x_uv) {
+    constexpr int kDepth = 12;
+    for (int step = 0; step < kDepth; ++step) {
+        ctx.cache->prefetch(i, j);
+        if (!next_pair(ctx.hierarchy, i, j, y_uv, x_uv, false)) return;
+    }
+}
+
+}  // namespace
 
 Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch, const Vec2& y_uv,
                      std::uint32_t source_patch, const Vec2& x_uv, RefinementCounters& counters) {
     Hierarchy& h = ctx.hierarchy;
     Element* i = &h.root(receiver_patch);
     Element* j = &h.root(source_patch);
+    if (ctx.cache && ctx.oracle.uses_lines()) prefetch_descent(ctx, i, j, y_uv, x_uv);
     for (;;) {
-        const bool split_i = h.can_subdivide(*i), split_j = h.can_subdivide(*j);
-        if (!split_i && !split_j) return *i;  // both at the limits: accept
+        if (!h.can_subdivide(*i) && !h.can_subdivide(*j)) return *i;  // both at the limits
         if (link_value(ctx, *i, *j, counters) < ctx.threshold) return *i;
-        // Subdivide the larger element of the pair (or the one that still can be).
-        if (split_i && (!split_j || i->area >= j->area)) {
-            h.subdivide(*i);
-            i = &h.child_containing(*i, y_uv);
-        } else {
-            h.subdivide(*j);
-            j = &h.child_containing(*j, x_uv);
-        }
+        next_pair(h, i, j, y_uv, x_uv, true);
     }
 }
 

@@ -7,6 +7,7 @@
 #include "oracles/oracle.h"
 #include "radiosity/embree_scene.h"
 #include "radiosity/hierarchy.h"
+#include "radiosity/link_cache.h"
 
 namespace hmcr {
 
@@ -17,15 +18,22 @@ struct RefinementContext {
     double threshold = 0;  // epsilon * Phi_max: a link is accepted when its value is below
     int lines = 10;        // N_s
     std::uint64_t seed = 0;
+    LinkCache* cache = nullptr;  // geometric factors of line-based oracles; none: recompute
 };
 
 struct RefinementCounters {
-    std::uint64_t oracle_calls = 0;
+    std::uint64_t oracle_calls = 0;        // link decisions
+    std::uint64_t oracle_evaluations = 0;  // geometric factors computed (cache misses)
+    std::uint64_t cache_hits = 0;
     std::uint64_t lines_cast = 0;
+    std::uint64_t oracle_nanoseconds = 0;  // spent computing line-based factors, all threads
 
     RefinementCounters& operator+=(const RefinementCounters& o) {
         oracle_calls += o.oracle_calls;
+        oracle_evaluations += o.oracle_evaluations;
+        cache_hits += o.cache_hits;
         lines_cast += o.lines_cast;
+        oracle_nanoseconds += o.oracle_nanoseconds;
         return *this;
     }
 };

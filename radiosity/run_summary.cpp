@@ -20,9 +20,10 @@ nlohmann::json iterations_json(const SolveStats& st) {
 }
 
 nlohmann::json options_json(const SolverOptions& o, const SolveStats& st) {
-    return {{"oracle", o.oracle},   {"epsilon", st.epsilon},  {"lines", o.lines},
-            {"rays", o.rays},       {"seed", o.seed},         {"threads", st.threads},
-            {"min_area", o.min_area}, {"max_depth", o.max_depth}, {"stop", o.stop}};
+    return {{"oracle", o.oracle},     {"epsilon", st.epsilon},      {"lines", o.lines},
+            {"rays", o.rays},         {"seed", o.seed},             {"threads", st.threads},
+            {"min_area", o.min_area}, {"max_depth", o.max_depth},   {"stop", o.stop},
+            {"cache_mb", o.cache_mb}};
 }
 
 nlohmann::json power_json(const SolveStats& st) {
@@ -32,6 +33,16 @@ nlohmann::json power_json(const SolveStats& st) {
             {"unshot_remaining_w", rgb(st.unshot_power)},
             {"back_face_fraction", st.back_face_fraction()},
             {"back_face_warning", st.back_face_fraction() > 0.01}};
+}
+
+nlohmann::json cache_json(const SolveStats& st) {
+    const double lookups = double(st.cache_hits + st.oracle_evaluations);
+    return {{"capacity_pairs", st.cache_capacity},
+            {"bytes", st.cache_bytes},
+            {"hits", st.cache_hits},
+            {"misses", st.cache_capacity ? st.oracle_evaluations : 0},
+            {"hit_rate", st.cache_capacity && lookups > 0 ? double(st.cache_hits) / lookups : 0.0},
+            {"evictions", st.cache_evictions}};
 }
 
 }  // namespace
@@ -62,7 +73,8 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
          {{"rays", st.rays},
           {"iterations", st.iterations.size()},
           {"oracle_calls", st.oracle_calls},
-          {"cache_hits", 0},
+          {"oracle_evaluations", st.oracle_evaluations},
+          {"cache_hits", st.cache_hits},
           {"lines_cast", st.lines_cast},
           {"elements", st.elements},
           {"leaves", st.leaves}}},
@@ -72,11 +84,15 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
           {"setup", st.setup_seconds},
           {"shooting", st.shooting_seconds},
           {"push_pull", st.push_pull_seconds},
+          {"oracles_all_threads", st.oracle_seconds},
           {"solve", st.total_seconds},
           {"output", timings.output_seconds},
           {"total", timings.total_seconds}}},
+        {"link_cache", cache_json(st)},
         {"memory",
-         {{"peak_bytes", peak_memory_bytes()}, {"hierarchy_bytes", st.hierarchy_bytes}}},
+         {{"peak_bytes", peak_memory_bytes()},
+          {"hierarchy_bytes", st.hierarchy_bytes},
+          {"link_cache_bytes", st.cache_bytes}}},
         {"iterations", iterations_json(st)},
     };
 }

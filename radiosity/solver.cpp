@@ -10,6 +10,7 @@
 
 #include "oracles/registry.h"
 #include "radiosity/embree_scene.h"
+#include "radiosity/link_cache.h"
 #include "radiosity/ray_schedule.h"
 #include "radiosity/shooting.h"
 
@@ -33,8 +34,8 @@ double mean_reflectance(const PatchSet& set) {
 std::string SolverOptions::to_string() const {
     return fmt::format(
         "oracle={} epsilon={} lines={} rays={} seed={} threads={} min_area={} max_depth={} "
-        "stop={}",
-        oracle, epsilon, lines, rays, seed, threads, min_area, max_depth, stop);
+        "stop={} cache_mb={}",
+        oracle, epsilon, lines, rays, seed, threads, min_area, max_depth, stop, cache_mb);
 }
 
 double SolveStats::back_face_fraction() const {
@@ -58,6 +59,8 @@ void validate(const SolverOptions& o) {
     require(o.max_depth >= 0 && o.max_depth <= 24,
             fmt::format("max-depth must be in 0..24, got {}", o.max_depth));
     require(o.stop > 0 && o.stop < 1, fmt::format("stop must be in (0, 1), got {}", o.stop));
+    require(o.cache_mb >= 0 && o.cache_mb <= 1 << 20,
+            fmt::format("cache-mb must be in [0, 1048576], got {}", o.cache_mb));
 }
 
 Solution solve(const PatchMesh& mesh, const SolverOptions& options, const ProgressFn& progress) {
@@ -81,8 +84,12 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
     sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
                                                 HierarchyLimits{options.min_area, options.max_depth});
     Hierarchy& h = *sol.hierarchy;
-    const RefinementContext ctx{h, oracle, scene, st.epsilon * h.patch_set().max_emitted_power,
-                                options.lines, options.seed};
+    std::unique_ptr<LinkCache> cache;
+    if (oracle.uses_lines() && options.cache_mb > 0) {
+        cache = std::make_unique<LinkCache>(std::size_t(options.cache_mb * (1 << 20)));
+    }
+    const RefinementContext ctx{h,       oracle,       scene, st.epsilon * h.patch_set().max_emitted_power,
+                                options.lines, options.seed, cache.get()};
     st.setup_seconds = seconds_since(start);
 
     const double emitted = channel_sum(st.emitted_power);
@@ -108,7 +115,10 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
         schedule.record(rec.rays, channel_sum(rec.unshot_before), channel_sum(unshot));
         st.rays += out.rays;
         st.oracle_calls += out.counters.oracle_calls;
+        st.oracle_evaluations += out.counters.oracle_evaluations;
+        st.cache_hits += out.counters.cache_hits;
         st.lines_cast += out.counters.lines_cast;
+        st.oracle_seconds += 1e-9 * double(out.counters.oracle_nanoseconds);
         st.shot_power += out.shot_power;
         st.escaped_power += out.escaped_power;
         st.back_face_power += out.back_face_power;
@@ -119,6 +129,11 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
     st.elements = h.element_count();
     st.leaves = h.leaf_count();
     st.hierarchy_bytes = h.bytes();
+    if (cache) {
+        st.cache_bytes = cache->bytes();
+        st.cache_capacity = cache->capacity();
+        st.cache_evictions = cache->evictions();
+    }
     st.total_seconds = seconds_since(start);
     return sol;
 }

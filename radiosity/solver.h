@@ -23,8 +23,12 @@ struct IterationRecord {
 struct SolveStats {
     std::vector<IterationRecord> iterations;
     std::uint64_t rays = 0;
-    std::uint64_t oracle_calls = 0;
+    std::uint64_t oracle_calls = 0;        // link decisions
+    std::uint64_t oracle_evaluations = 0;  // geometric factors computed
+    std::uint64_t cache_hits = 0;
     std::uint64_t lines_cast = 0;
+    double oracle_seconds = 0;             // computing line-based factors, summed over threads
+    std::size_t cache_bytes = 0, cache_capacity = 0, cache_evictions = 0;
     double epsilon = 0;              // the value used (the oracle's default if not given)
     int threads = 0;                 // worker threads used
     Rgb emitted_power = Rgb::Zero();

@@ -8,7 +8,7 @@
 namespace hmcr {
 
 struct SolverOptions {
-    std::string oracle = "power";  // refinement oracle (`hmcr oracles` lists them)
+    std::string oracle = "kl";     // refinement oracle (`hmcr oracles` lists them)
     double epsilon = std::numeric_limits<double>::quiet_NaN();  // NaN: the oracle's default
     int lines = 10;                   // N_s, kernel lines per link for line-based oracles
     std::uint64_t rays = 2'684'000;   // shooting rays over the whole solve (within 2%)
@@ -17,6 +17,7 @@ struct SolverOptions {
     double min_area = 1e-6;           // relative to A_T: elements at or below are not split
     int max_depth = 16;               // quadtree depth limit (at most 24)
     double stop = 0.01;               // stop when unshot power < stop * emitted power
+    double cache_mb = 32;             // link cache size for line-based oracles (0: no cache)
 
     std::string to_string() const;
 };

@@ -1,0 +1,39 @@
+// cs: chi-square divergence of the sampled kernel from the uniform distribution.
+// Rigau, Feixas, Sbert, "Refinement criteria based on f-divergences", EGSR 2003.
+//
+//   value = w_ij * A_i A_j F^ * chi2(p||q),  chi2 = N_s sum_k (p_k - 1/N_s)^2,  p_k = F_k / F^
+//
+// chi2 is in [0, N_s - 1]; it weighs large deviations more than kl does.
+#include <cmath>
+#include <memory>
+
+#include "oracles/kernel_stats.h"
+#include "oracles/oracle.h"
+
+namespace hmcr {
+namespace {
+
+class ChiSquareOracle final : public Oracle {
+public:
+    std::string_view name() const override { return "cs"; }
+    std::string_view description() const override {
+        return "chi-square divergence of the sampled kernel from uniform (Rigau 2003)";
+    }
+    double default_epsilon() const override { return 1e-5; }
+    bool uses_lines() const override { return true; }
+
+    double geometric_factor(const LinkGeometry& g) const override {
+        const KernelStats s = kernel_stats(g.kernel);
+        if (s.sum <= 0) return 0;
+        const double q = 1 / s.n;
+        double chi2 = 0;
+        for (double f : g.kernel) chi2 += (f / s.sum - q) * (f / s.sum - q);
+        return g.receiver_area * g.source_area * s.sum * s.n * chi2;
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<Oracle> make_cs_oracle() { return std::make_unique<ChiSquareOracle>(); }
+
+}  // namespace hmcr
