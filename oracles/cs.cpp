@@ -19,7 +19,7 @@ public:
     std::string_view description() const override {
         return "chi-square divergence of the sampled kernel from uniform (Rigau 2003)";
     }
-    double default_epsilon() const override { return 1e-5; }
+    double default_epsilon() const override { return 2.5e-5; }
     bool uses_lines() const override { return true; }
 
     double geometric_factor(const LinkGeometry& g) const override {

@@ -19,7 +19,7 @@ public:
     std::string_view description() const override {
         return "squared Hellinger distance of the sampled kernel from uniform (Rigau 2003)";
     }
-    double default_epsilon() const override { return 1e-6; }
+    double default_epsilon() const override { return 4e-6; }
     bool uses_lines() const override { return true; }
 
     double geometric_factor(const LinkGeometry& g) const override {

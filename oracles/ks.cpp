@@ -20,7 +20,7 @@ public:
         return "kernel smoothness: largest deviation of the sampled kernel from its mean "
                "(Gortler 1993)";
     }
-    double default_epsilon() const override { return 1e-4; }
+    double default_epsilon() const override { return 1.5e-2; }
     bool uses_lines() const override { return true; }
 
     double geometric_factor(const LinkGeometry& g) const override {

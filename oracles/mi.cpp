@@ -21,7 +21,7 @@ public:
         return "mutual information lost by the discretisation, Jensen gap of x ln x "
                "(Feixas 2002)";
     }
-    double default_epsilon() const override { return 1e-7; }
+    double default_epsilon() const override { return 6e-7; }
     bool uses_lines() const override { return true; }
 
     double geometric_factor(const LinkGeometry& g) const override {

@@ -20,7 +20,7 @@ public:
     std::string_view description() const override {
         return "variance of the normalised sampled kernel (Rigau 2003)";
     }
-    double default_epsilon() const override { return 1e-6; }
+    double default_epsilon() const override { return 5e-4; }
     bool uses_lines() const override { return true; }
 
     double geometric_factor(const LinkGeometry& g) const override {

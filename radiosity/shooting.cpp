@@ -38,26 +38,38 @@ struct RayResult {
     Fate fate = Fate::escaped;
 };
 
+// Step 3: a source leaf by unshot power, a uniform point on it, a cosine direction.
+struct RayStart {
+    const Element* leaf;
+    Vec2 x_uv;
+    Vec3 x, direction;
+};
+
+RayStart start_ray(const Hierarchy& h, const SourceTable& sources, const AliasTable& alias,
+                   Rng& rng) {
+    const Element& leaf = *sources.leaves[alias.sample(rng.uniform())];
+    const Patch& src = h.patch(leaf);
+    const Vec2 x_uv = sample_element(src, leaf.domain, rng.uniform(), rng.uniform());
+    const Vec3 dir = sample_cosine_hemisphere(src.normal, rng.uniform(), rng.uniform());
+    return {&leaf, x_uv, src.point(x_uv), dir};
+}
+
 RayResult trace_ray(const RefinementContext& ctx, const SourceTable& sources,
                     const AliasTable& alias, double power_scale, Rng& rng,
                     RefinementCounters& counters) {
     const Hierarchy& h = ctx.hierarchy;
-    const Element& leaf = *sources.leaves[alias.sample(rng.uniform())];
-    const Patch& src = h.patch(leaf);
-    const Vec2 x_uv = sample_element(src, leaf.domain, rng.uniform(), rng.uniform());
-    const Vec3 x = src.point(x_uv);
-    const Vec3 dir = sample_cosine_hemisphere(src.normal, rng.uniform(), rng.uniform());
+    const RayStart start = start_ray(h, sources, alias, rng);
     RayResult r;
-    r.power = power_scale * leaf.unshot / channel_sum(leaf.unshot);
-    const auto hit = ctx.scene.first_hit(x, dir);
+    r.power = power_scale * start.leaf->unshot / channel_sum(start.leaf->unshot);
+    const auto hit = ctx.scene.first_hit(start.x, start.direction);
     if (!hit) return r;
     const Patch& rcv = h.patch_set().patches[hit->patch];
-    if (rcv.normal.dot(dir) >= 0) {
+    if (rcv.normal.dot(start.direction) >= 0) {
         r.fate = Fate::back_face;
         return r;
     }
-    const Vec2 y_uv = rcv.param(x + hit->distance * dir);
-    r.receiver = &refine_link(ctx, hit->patch, y_uv, leaf.id.patch, x_uv, counters);
+    const Vec2 y_uv = rcv.param(start.x + hit->distance * start.direction);
+    r.receiver = &refine_link(ctx, hit->patch, y_uv, start.leaf->id.patch, start.x_uv, counters);
     r.fate = Fate::deposited;
     return r;
 }
@@ -65,7 +77,31 @@ RayResult trace_ray(const RefinementContext& ctx, const SourceTable& sources,
 constexpr std::uint64_t kBatchRays = 1 << 16;
 constexpr std::uint64_t kGrain = 256;
 
+// Pilot rays draw from streams of their own, apart from the iteration's rays.
+constexpr std::uint64_t kPilotStream = std::uint64_t(1) << 62;
+
 }  // namespace
+
+double reflected_fraction(const RefinementContext& ctx, std::uint32_t iteration,
+                          std::uint64_t rays) {
+    const Hierarchy& h = ctx.hierarchy;
+    const SourceTable sources(h);
+    if (sources.total <= 0 || rays == 0) return 0;
+    const AliasTable alias(sources.weights);
+    set_tracing_float_mode();
+    double reflected = 0;
+    for (std::uint64_t k = 0; k < rays; ++k) {
+        Rng rng(ctx.seed, iteration, kPilotStream + k);
+        const RayStart start = start_ray(h, sources, alias, rng);
+        const auto hit = ctx.scene.first_hit(start.x, start.direction);
+        if (!hit) continue;
+        const Patch& rcv = h.patch_set().patches[hit->patch];
+        if (rcv.normal.dot(start.direction) >= 0) continue;
+        const Rgb unit = start.leaf->unshot / channel_sum(start.leaf->unshot);
+        reflected += channel_sum(rcv.reflectance * unit);
+    }
+    return reflected / double(rays);
+}
 
 IterationOutcome shoot_iteration(const RefinementContext& ctx, std::uint32_t iteration,
                                  std::uint64_t rays,

@@ -17,6 +17,11 @@ struct IterationOutcome {
     RefinementCounters counters;
 };
 
+// Fraction of the current unshot power that its receivers will reflect, estimated from `rays`
+// pilot rays traced without refinement or deposits (for the ray schedule).
+double reflected_fraction(const RefinementContext& ctx, std::uint32_t iteration,
+                          std::uint64_t rays);
+
 // Shoots `rays` rays of iteration `iteration` and adds their deposits to the elements'
 // received accumulators, in ray order so the sums do not depend on the thread count.
 // `on_batch(rays_done)` is called from the calling thread between batches.

@@ -22,12 +22,9 @@ double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// Area-weighted mean reflectance: the first guess of the unshot power's decay per iteration.
-double mean_reflectance(const PatchSet& set) {
-    double sum = 0;
-    for (const Patch& p : set.patches) sum += p.area * p.reflectance.mean();
-    return set.total_area > 0 ? sum / set.total_area : 0;
-}
+// Pilot rays per iteration for the ray schedule's decay estimate: a standard error of about
+// 0.005 on the reflected fraction, for well under a millisecond.
+constexpr std::uint64_t kPilotRays = 4096;
 
 }  // namespace
 
@@ -79,7 +76,6 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
     PatchSet patches = build_patch_set(mesh);
     if (patches.max_emitted_power <= 0) throw std::invalid_argument("the scene emits no light");
     st.emitted_power = patches.emitted_power;
-    const double ratio = mean_reflectance(patches);
     const EmbreeScene scene(patches.patches);
     sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
                                                 HierarchyLimits{options.min_area, options.max_depth});
@@ -93,14 +89,15 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
     st.setup_seconds = seconds_since(start);
 
     const double emitted = channel_sum(st.emitted_power);
-    RaySchedule schedule(options.rays, options.stop * emitted, ratio);
+    RaySchedule schedule(options.rays, options.stop * emitted);
     Rgb unshot = h.unshot_power();
     // The cap only guards against a scene that never converges; stop ends real solves.
     for (std::uint32_t it = 0; channel_sum(unshot) >= options.stop * emitted && it < 10'000; ++it) {
         const auto t0 = Clock::now();
         IterationRecord rec;
         rec.unshot_before = unshot;
-        rec.rays = schedule.next(channel_sum(unshot));
+        const double ratio = reflected_fraction(ctx, it, kPilotRays);
+        rec.rays = schedule.next(channel_sum(unshot), ratio);
         const std::uint64_t done_before = st.rays;
         const auto out = shoot_iteration(ctx, it, rec.rays, [&](std::uint64_t n) {
             if (progress) progress(std::min(1.0, double(done_before + n) / double(options.rays)));
@@ -112,7 +109,7 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
         unshot = rec.unshot_after = h.unshot_power();
         rec.leaves_after = h.leaf_count();
         rec.seconds = seconds_since(t0);
-        schedule.record(rec.rays, channel_sum(rec.unshot_before), channel_sum(unshot));
+        schedule.record(rec.rays);
         st.rays += out.rays;
         st.oracle_calls += out.counters.oracle_calls;
         st.oracle_evaluations += out.counters.oracle_evaluations;

@@ -1,0 +1,98 @@
+#include "bench/embree_floor.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <functional>
+#include <memory>
+
+#include "radiosity/kernel.h"
+#include "radiosity/rng.h"
+#include "radiosity/sampling.h"
+
+namespace hmcr::bench {
+namespace {
+
+double median_of_3(const std::function<void()>& run) {
+    std::array<double, 3> t{};
+    for (double& s : t) {
+        const auto start = std::chrono::steady_clock::now();
+        run();
+        s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    std::sort(t.begin(), t.end());
+    return t[1];
+}
+
+}  // namespace
+
+std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n) {
+    std::vector<double> cumulative;
+    double total = 0;
+    for (const Patch& p : set.patches) cumulative.push_back(total += p.area);
+    std::vector<Ray> rays(n);
+    Rng rng(1234, 0);
+    for (Ray& r : rays) {
+        const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), rng.uniform() * total);
+        const Patch& p = set.patches[std::min<std::size_t>(it - cumulative.begin(),
+                                                           set.patches.size() - 1)];
+        r.origin = p.point(sample_element(p, Domain::root(), rng.uniform(), rng.uniform()));
+        r.direction = sample_cosine_hemisphere(p.normal, rng.uniform(), rng.uniform());
+    }
+    return rays;
+}
+
+std::vector<Segment> pair_segments(const Hierarchy& h, std::uint64_t n_pairs, int lines) {
+    std::vector<const Element*> leaves;
+    h.for_each_leaf([&](const Element& e) { leaves.push_back(&e); });
+    std::vector<Segment> out;
+    out.reserve(n_pairs * std::uint64_t(lines));
+    Rng rng(4321, 0);
+    auto point_on = [&](const Element& e) {
+        const Patch& p = h.patch(e);
+        return p.point(sample_element(p, e.domain, rng.uniform(), rng.uniform()));
+    };
+    for (std::uint64_t k = 0; k < n_pairs; ++k) {
+        const Element& a = *leaves[std::size_t(rng.uniform() * double(leaves.size()))];
+        const Element& b = *leaves[std::size_t(rng.uniform() * double(leaves.size()))];
+        for (int l = 0; l < lines; ++l) out.push_back({point_on(a), point_on(b)});
+    }
+    return out;
+}
+
+double first_hit_seconds(const EmbreeScene& scene, const std::vector<Ray>& rays) {
+    return median_of_3([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 4096), [&](auto r) {
+            set_tracing_float_mode();
+            for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                (void)scene.first_hit(rays[k].origin, rays[k].direction);
+            }
+        });
+    });
+}
+
+double occlusion_seconds(const EmbreeScene& scene, const std::vector<Segment>& segments,
+                         int lines) {
+    const std::size_t pairs = segments.size() / std::size_t(lines);
+    return median_of_3([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs, 1024), [&](auto r) {
+            set_tracing_float_mode();
+            const std::size_t n = std::size_t(lines);
+            std::vector<Vec3> from(n), to(n);
+            const auto visible = std::make_unique<bool[]>(n);
+            for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                for (int l = 0; l < lines; ++l) {
+                    from[std::size_t(l)] = segments[k * std::size_t(lines) + std::size_t(l)].from;
+                    to[std::size_t(l)] = segments[k * std::size_t(lines) + std::size_t(l)].to;
+                }
+                // One pair's lines together, as the line sampler casts them.
+                scene.visible_many(from, to, {visible.get(), n});
+            }
+        });
+    });
+}
+
+}  // namespace hmcr::bench
