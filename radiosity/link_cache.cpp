@@ -4,6 +4,7 @@
 
 #include <sys/mman.h>
 
+#include <array>
 #include <bit>
 #include <cstdlib>
 #include <memory>
@@ -14,6 +15,18 @@ namespace hmcr {
 namespace {
 
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
+
+// The per-thread front table: 4,096 pairs, 128 KiB.
+struct FrontEntry {
+    const Element* receiver = nullptr;
+    const Element* source = nullptr;
+    std::uint64_t generation = 0;
+    double factor = 0;
+};
+constexpr std::size_t kFrontSize = 4096;
+thread_local std::array<FrontEntry, kFrontSize> t_front;
+
+std::atomic<std::uint64_t> g_generations{0};
 
 // Memory for the sets, in transparent huge pages where the kernel allows: lookups land on
 // random sets, and with 4 KiB pages nearly every one would also miss the TLB.
@@ -33,7 +46,8 @@ void LinkCache::FreeSets::operator()(Set* sets) const {
 }
 
 LinkCache::LinkCache(std::size_t max_bytes)
-    : m_set_count(std::bit_floor(std::max<std::size_t>(1, max_bytes / sizeof(Set)))),
+    : m_generation(++g_generations),
+      m_set_count(std::bit_floor(std::max<std::size_t>(1, max_bytes / sizeof(Set)))),
       m_sets(static_cast<Set*>(allocate_table(m_set_count * sizeof(Set))),
              FreeSets{m_set_count}) {
     std::uninitialized_default_construct_n(m_sets.get(), m_set_count);
@@ -41,16 +55,26 @@ LinkCache::LinkCache(std::size_t max_bytes)
 
 LinkCache::~LinkCache() = default;
 
-LinkCache::Set& LinkCache::set_of(const Element* receiver, const Element* source) const {
+std::uint64_t LinkCache::hash(const Element* receiver, const Element* source) const {
     // Elements are 8-byte aligned; mix both pointers so neighbouring pairs spread out.
     std::uint64_t h = reinterpret_cast<std::uintptr_t>(receiver) * 0x9e3779b97f4a7c15ULL;
     h ^= reinterpret_cast<std::uintptr_t>(source) * 0xc2b2ae3d27d4eb4fULL;
-    h ^= h >> 29;
-    return m_sets[h & (m_set_count - 1)];
+    return h ^ (h >> 29);
 }
 
 std::optional<double> LinkCache::find(const Element* receiver, const Element* source) const {
-    const Set& s = set_of(receiver, source);
+    const std::uint64_t h = hash(receiver, source);
+    FrontEntry& front = t_front[(h >> 40) & (kFrontSize - 1)];
+    if (front.receiver == receiver && front.source == source && front.generation == m_generation) {
+        return front.factor;
+    }
+    const auto found = find_shared(m_sets[h & (m_set_count - 1)], receiver, source);
+    if (found) front = {receiver, source, m_generation, *found};
+    return found;
+}
+
+std::optional<double> LinkCache::find_shared(const Set& s, const Element* receiver,
+                                             const Element* source) const {
     constexpr auto relaxed = std::memory_order_relaxed;
     for (;;) {
         const std::uint32_t before = s.version.load(std::memory_order_acquire);
@@ -69,12 +93,10 @@ std::optional<double> LinkCache::find(const Element* receiver, const Element* so
     }
 }
 
-void LinkCache::prefetch(const Element* receiver, const Element* source) const {
-    _mm_prefetch(reinterpret_cast<const char*>(&set_of(receiver, source)), _MM_HINT_T0);
-}
-
 void LinkCache::insert(const Element* receiver, const Element* source, double factor) {
-    Set& s = set_of(receiver, source);
+    const std::uint64_t h = hash(receiver, source);
+    t_front[(h >> 40) & (kFrontSize - 1)] = {receiver, source, m_generation, factor};
+    Set& s = m_sets[h & (m_set_count - 1)];
     constexpr auto relaxed = std::memory_order_relaxed;
     std::uint32_t version = s.version.load(relaxed);
     while ((version & 1) ||

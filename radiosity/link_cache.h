@@ -5,8 +5,10 @@
 // A fixed-size, 2-way set-associative table, one cache line per set: bounded memory. Each set
 // is a seqlock: lookups only read (the top-level pairs are looked up by every ray on every
 // core, and a lock written on each lookup would bounce their cache lines between cores), an
-// insert takes the set by making its version odd. An evicted pair is recomputed to the same
-// value (its stream is keyed by the pair), so eviction changes timings, never results.
+// insert takes the set by making its version odd. In front of it, each thread keeps a small
+// direct-mapped table of the pairs it used last (the top-level pairs of every descent), which
+// stays in its own L2 cache. An evicted pair is recomputed to the same value (its stream is
+// keyed by the pair), so eviction changes timings, never results.
 #pragma once
 
 #include <atomic>
@@ -28,9 +30,6 @@ public:
 
     std::optional<double> find(const Element* receiver, const Element* source) const;
     void insert(const Element* receiver, const Element* source, double factor);
-    // Starts loading the pair's set into the CPU cache: a descent prefetches the pairs it is
-    // about to look up, so their memory latencies overlap.
-    void prefetch(const Element* receiver, const Element* source) const;
 
     std::size_t capacity() const { return m_set_count * kWays; }  // pairs
     std::size_t bytes() const { return m_set_count * sizeof(Set); }
@@ -50,13 +49,16 @@ private:
         Entry entries[kWays];
     };
 
-    Set& set_of(const Element* receiver, const Element* source) const;
+    std::uint64_t hash(const Element* receiver, const Element* source) const;
+    std::optional<double> find_shared(const Set& s, const Element* receiver,
+                                      const Element* source) const;
 
     struct FreeSets {
         std::size_t count;
         void operator()(Set* sets) const;
     };
 
+    std::uint64_t m_generation;   // tells this cache's entries in the per-thread tables apart
     std::size_t m_set_count = 0;  // a power of two
     std::unique_ptr<Set[], FreeSets> m_sets;
     std::atomic<std::size_t> m_evictions{0};

@@ -94,18 +94,6 @@ bool next_pair(Hierarchy& h, Element*& i, Element*& j, const Vec2& y_uv, const V
     return true;
 }
 
-// Prefetches the cache sets of the pairs the descent will visit if it keeps refining, as far
-// as the elements exist: a handful of independent memory loads in flight instead of one
-// cache miss after the other.
-void prefetch_descent(const RefinementContext& ctx, Element* i, Element* j, const Vec2& y_uv,
-                      const Vec2& x_uv) {
-    constexpr int kDepth = 12;
-    for (int step = 0; step < kDepth; ++step) {
-        ctx.cache->prefetch(i, j);
-        if (!next_pair(ctx.hierarchy, i, j, y_uv, x_uv, false)) return;
-    }
-}
-
 }  // namespace
 
 Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch, const Vec2& y_uv,
@@ -113,7 +101,6 @@ Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch,
     Hierarchy& h = ctx.hierarchy;
     Element* i = &h.root(receiver_patch);
     Element* j = &h.root(source_patch);
-    if (ctx.cache && ctx.oracle.uses_lines()) prefetch_descent(ctx, i, j, y_uv, x_uv);
     for (;;) {
         if (!h.can_subdivide(*i) && !h.can_subdivide(*j)) return *i;  // both at the limits
         if (link_value(ctx, *i, *j, counters) < ctx.threshold) return *i;
