@@ -11,6 +11,7 @@
 
 #include "meshes/scene.h"
 #include "oracles/registry.h"
+#include "radiosity/budget_search.h"
 #include "radiosity/progress.h"
 #include "radiosity/run_summary.h"
 #include "radiosity/solver.h"
@@ -29,6 +30,7 @@ struct SolveArgs {
     std::string scene;
     std::string output;
     SolverOptions options;
+    BudgetOptions budget;       // leaves == 0: no budget, solve at epsilon
     double crease_degrees = 30;
     std::string progress = "auto";
     bool quiet = false;
@@ -80,6 +82,37 @@ void write_outputs(const fs::path& vtp, const Scene& scene, const Solution& sol,
     write_vtp(vtp, mesh, meta);
 }
 
+// One solve at epsilon, or the probes of a budget search (each a full solve), with progress.
+BudgetResult solve_scene(const Scene& scene, const SolveArgs& args, ProgressMode mode) {
+    ProgressReporter reporter(mode, "hmcr " + scene.name);
+    auto progress = [&](double f) { reporter.update(f); };
+    BudgetResult out;
+    if (args.budget.leaves == 0) {
+        out.solution = solve(scene.mesh, args.options, progress);
+        reporter.finish();
+        return out;
+    }
+    auto on_probe = [&](const BudgetProbe& p, int k) {
+        reporter.finish();
+        if (mode != ProgressMode::none) {
+            fmt::print(stderr, "hmcr {}: budget probe {}: epsilon {:.4g} -> {} leaves ({:.1f} s)\n",
+                       scene.name, k, p.epsilon, p.leaves, p.seconds);
+        }
+        reporter.restart();
+    };
+    // Without a terminal, one line per probe says enough; a bar per probe is fine.
+    const ProgressFn probe_progress = mode == ProgressMode::bar ? ProgressFn(progress) : nullptr;
+    return solve_for_budget(scene.mesh, args.options, args.budget, on_probe, probe_progress);
+}
+
+nlohmann::json budget_json(const BudgetOptions& budget, const std::vector<BudgetProbe>& probes) {
+    auto list = nlohmann::json::array();
+    for (const auto& p : probes) {
+        list.push_back({{"epsilon", p.epsilon}, {"leaves", p.leaves}, {"seconds", p.seconds}});
+    }
+    return {{"target_leaves", budget.leaves}, {"tolerance", budget.tolerance}, {"probes", list}};
+}
+
 int run_solve(SolveArgs& args, const std::string& command_line) {
     const auto start = Clock::now();
     validate(args.options);  // fail on a bad option before loading anything
@@ -98,9 +131,8 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     RunTimings timings;
     timings.load_seconds = seconds_since(start);
 
-    ProgressReporter reporter(mode, "hmcr " + scene.name);
-    const Solution sol = solve(scene.mesh, args.options, [&](double f) { reporter.update(f); });
-    reporter.finish();
+    BudgetResult found = solve_scene(scene, args, mode);
+    const Solution& sol = found.solution;
 
     const auto t_out = Clock::now();
     write_outputs(vtp, scene, sol, args.crease_degrees);
@@ -108,7 +140,8 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     timings.total_seconds = seconds_since(start);
     fs::path json = vtp;
     json.replace_extension(".json");
-    const auto summary = run_summary(scene, sol, timings, command_line, vtp.string());
+    auto summary = run_summary(scene, sol, timings, command_line, vtp.string());
+    if (args.budget.leaves > 0) summary["budget"] = budget_json(args.budget, found.probes);
     write_text_atomically(json, summary.dump(2) + "\n");
 
     if (!args.quiet) {
@@ -141,6 +174,11 @@ void add_solve(CLI::App& app, SolveArgs& args) {
         ->capture_default_str();
     cmd->add_option("--max-depth", o.max_depth, "quadtree depth limit (<= 24)")->capture_default_str();
     cmd->add_option("--stop", o.stop, "stop when unshot power < stop * emitted power")
+        ->capture_default_str();
+    cmd->add_option("--budget", args.budget.leaves,
+                    "target leaf count: epsilon is found by bisection (each probe a full solve)");
+    cmd->add_option("--budget-tolerance", args.budget.tolerance,
+                    "accepted relative distance to the budget")
         ->capture_default_str();
     cmd->add_option("--cache-mb", o.cache_mb, "link cache size for line-based oracles, MiB")
         ->capture_default_str();

@@ -42,3 +42,13 @@ void ProgressReporter::finish() {
 }
 
 }  // namespace hmcr
+
+namespace hmcr {
+
+void ProgressReporter::restart() {
+    m_last_decile = 0;
+    m_last_percent = -1;
+    m_start = std::chrono::steady_clock::now();
+}
+
+}  // namespace hmcr

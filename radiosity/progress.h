@@ -16,6 +16,7 @@ public:
     ProgressReporter(ProgressMode mode, std::string label);
     void update(double fraction);  // in [0, 1]
     void finish();
+    void restart();  // a new run of the same task (the next budget probe)
 
 private:
     ProgressMode m_mode;

@@ -1,0 +1,134 @@
+#include "radiosity/budget_search.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include "oracles/registry.h"
+
+namespace hmcr {
+namespace {
+
+// The probes so far and the bracket [lo, hi] in log epsilon: more leaves than the target at
+// lo, fewer at hi (the leaf count falls as epsilon grows).
+class Search {
+public:
+    Search(const PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
+           const ProbeFn& on_probe, const ProgressFn& progress)
+        : m_mesh(mesh), m_options(options), m_budget(budget), m_on_probe(on_probe),
+          m_progress(progress) {}
+
+    BudgetResult run();
+
+private:
+    // Solves at log epsilon x; returns the leaf count. Keeps the solve if it is the best yet.
+    std::size_t probe(double x);
+    bool within(std::size_t leaves) const {
+        return std::abs(double(leaves) - double(m_budget.leaves)) <=
+               m_budget.tolerance * double(m_budget.leaves);
+    }
+    double next_point() const;
+    [[noreturn]] void fail(const std::string& why) const;
+
+    const PatchMesh& m_mesh;
+    SolverOptions m_options;
+    BudgetOptions m_budget;
+    const ProbeFn& m_on_probe;
+    const ProgressFn& m_progress;
+    BudgetResult m_result;
+    std::optional<double> m_lo, m_hi;           // log epsilon bounds
+    std::size_t m_lo_leaves = 0, m_hi_leaves = 0;
+    double m_best_distance = INFINITY;
+};
+
+std::size_t Search::probe(double x) {
+    SolverOptions o = m_options;
+    o.epsilon = std::exp(x);
+    Solution sol = solve(m_mesh, o, m_progress);
+    const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
+    m_result.probes.push_back(p);
+    if (m_on_probe) m_on_probe(p, int(m_result.probes.size()));
+    const double distance = std::abs(double(p.leaves) - double(m_budget.leaves));
+    if (distance < m_best_distance) {
+        m_best_distance = distance;
+        m_result.solution = std::move(sol);
+    }
+    if (p.leaves > m_budget.leaves) {
+        m_lo = x;
+        m_lo_leaves = p.leaves;
+    } else {
+        m_hi = x;
+        m_hi_leaves = p.leaves;
+    }
+    return p.leaves;
+}
+
+// Inside a bracket: the log-log interpolation of the two ends (leaf counts follow a power of
+// epsilon closely), kept in the middle 80% so that the bracket always shrinks; outside one:
+// a step of a factor 10 towards the target.
+double Search::next_point() const {
+    if (!m_lo) return *m_hi - std::log(10.0);
+    if (!m_hi) return *m_lo + std::log(10.0);
+    const double a = std::log(double(m_lo_leaves)), b = std::log(double(std::max<std::size_t>(1, m_hi_leaves)));
+    const double t = (a - std::log(double(m_budget.leaves))) / (a - b);
+    return *m_lo + std::clamp(t, 0.1, 0.9) * (*m_hi - *m_lo);
+}
+
+void Search::fail(const std::string& why) const {
+    throw std::invalid_argument(fmt::format("budget of {} leaves (+-{}%) not reached: {}",
+                                            m_budget.leaves, 100 * m_budget.tolerance, why));
+}
+
+BudgetResult Search::run() {
+    const std::size_t patches = m_mesh.n_faces();
+    if (m_budget.leaves < patches) {
+        fail(fmt::format("the scene has {} patches, the fewest leaves a solve can have", patches));
+    }
+    const double start = std::isnan(m_options.epsilon)
+                             ? find_oracle(m_options.oracle).default_epsilon()
+                             : m_options.epsilon;
+    double x = std::log(start);
+    for (int k = 0; k < m_budget.max_probes; ++k) {
+        if (within(probe(x))) return std::move(m_result);
+        // The leaf count is a step function of epsilon: one decision flipping near the top of a
+        // tree changes every ray's descent below it (and, through the noise, the rest of the
+        // solve), so it can jump across the whole tolerance at one epsilon.
+        if (m_lo && m_hi && *m_hi - *m_lo < 1e-6) {
+            fail(fmt::format("with seed {} the leaf count jumps from {} to {} between epsilon "
+                             "{:.8g} and {:.8g}; try another seed or a wider budget-tolerance",
+                             m_options.seed, m_lo_leaves, m_hi_leaves, std::exp(*m_lo),
+                             std::exp(*m_hi)));
+        }
+        // Ten decades below the start without reaching the target: limits or rays bind.
+        if (!m_hi && *m_lo > std::log(start) + std::log(1e10)) break;
+        if (!m_lo && *m_hi < std::log(start) - std::log(1e10)) {
+            fail(fmt::format("even at epsilon {:.3g} the solve stops at {} leaves (limits: "
+                             "min-area {} of the total area, max-depth {}; more rays or looser "
+                             "limits may help)",
+                             std::exp(*m_hi), m_hi_leaves, m_options.min_area,
+                             m_options.max_depth));
+        }
+        x = next_point();
+    }
+    fail(fmt::format("closest after {} probes: {} leaves at epsilon {:.4g}",
+                     m_result.probes.size(), m_result.solution.stats.leaves,
+                     m_result.solution.stats.epsilon));
+}
+
+}  // namespace
+
+BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
+                              const BudgetOptions& budget, const ProbeFn& on_probe,
+                              const ProgressFn& progress) {
+    if (budget.leaves == 0) throw std::invalid_argument("budget must be a positive leaf count");
+    if (!(budget.tolerance > 0 && budget.tolerance < 1)) {
+        throw std::invalid_argument(
+            fmt::format("budget-tolerance must be in (0, 1), got {}", budget.tolerance));
+    }
+    validate(options);
+    return Search(mesh, options, budget, on_probe, progress).run();
+}
+
+}  // namespace hmcr

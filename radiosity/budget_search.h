@@ -1,0 +1,42 @@
+// Solving to an element budget (SPEC section 6): epsilon found by bisection on log epsilon
+// until the leaf count is within a tolerance of the target, every probe a full solve with the
+// same seed.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "radiosity/solver.h"
+
+namespace hmcr {
+
+struct BudgetOptions {
+    std::size_t leaves = 0;   // the target leaf count
+    double tolerance = 0.01;  // accepted relative distance to the target
+    int max_probes = 40;      // solves before giving up
+};
+
+struct BudgetProbe {
+    double epsilon = 0;
+    std::size_t leaves = 0;
+    double seconds = 0;
+};
+
+struct BudgetResult {
+    Solution solution;  // the accepted probe's solve
+    std::vector<BudgetProbe> probes;
+};
+
+// Called after each probe (for progress).
+using ProbeFn = std::function<void(const BudgetProbe&, int probe_index)>;
+
+// Starts from options.epsilon (or the oracle's default). Throws std::invalid_argument with a
+// one-line explanation when the budget cannot be reached: below the patch count, above what the
+// area/depth limits and the rays allow, or not within the tolerance after max_probes.
+BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
+                              const BudgetOptions& budget, const ProbeFn& on_probe = {},
+                              const ProgressFn& progress = {});
+
+}  // namespace hmcr
