@@ -32,6 +32,29 @@ void throw_if_failed(const EmbreeScene::Impl& impl, const char* step) {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
+// One closest-hit query, ignoring hits closer than tnear.
+RTCRayHit intersect(RTCScene scene, const Vec3& origin, const Vec3& direction, double tnear) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray.org_x = float(origin.x());
+    rh.ray.org_y = float(origin.y());
+    rh.ray.org_z = float(origin.z());
+    rh.ray.dir_x = float(direction.x());
+    rh.ray.dir_y = float(direction.y());
+    rh.ray.dir_z = float(direction.z());
+    rh.ray.tnear = float(tnear);
+    rh.ray.tfar = kInf;
+    rh.ray.time = 0;
+    rh.ray.mask = ~0u;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &context, &rh);
+    return rh;
+}
+
 }  // namespace
 
 void set_tracing_float_mode() {
@@ -40,11 +63,6 @@ void set_tracing_float_mode() {
 }
 
 EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(new Impl) {
-    // No "threads=N": with TBB in the process it would cap all TBB parallelism.
-    m_impl->device = rtcNewDevice(nullptr);
-    if (!m_impl->device) throw std::runtime_error("cannot create the Embree device");
-    rtcSetDeviceErrorFunction(m_impl->device, on_embree_error, m_impl);
-
     std::vector<std::array<float, 3>> vertices;
     std::vector<std::array<unsigned, 3>> triangles;
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
@@ -64,22 +82,63 @@ EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(new Impl) {
             m_triangle_patch.push_back(i);
         }
     }
+    build(vertices, triangles, lo, hi);
+}
+
+EmbreeScene::EmbreeScene(const std::vector<Vec3>& points,
+                         const std::vector<std::array<unsigned, 3>>& triangles)
+    : m_impl(new Impl) {
+    std::vector<std::array<float, 3>> vertices;
+    vertices.reserve(points.size());
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+    for (const Vec3& c : points) {
+        vertices.push_back({float(c.x()), float(c.y()), float(c.z())});
+        lo = lo.cwiseMin(c);
+        hi = hi.cwiseMax(c);
+    }
+    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+        for (unsigned i : triangles[t]) {
+            if (i >= points.size()) {
+                delete m_impl;  // the destructor does not run for a throwing constructor
+                throw std::invalid_argument("triangle " + std::to_string(t) + " names vertex " +
+                                            std::to_string(i) + " of " +
+                                            std::to_string(points.size()));
+            }
+        }
+        m_triangle_patch.push_back(t);  // a soup's "patch" is the triangle itself
+    }
+    if (points.empty()) lo = hi = Vec3::Zero();
+    build(vertices, triangles, lo, hi);
+}
+
+void EmbreeScene::build(const std::vector<std::array<float, 3>>& vertices,
+                        const std::vector<std::array<unsigned, 3>>& triangles, const Vec3& lo,
+                        const Vec3& hi) {
+    // No "threads=N": with TBB in the process it would cap all TBB parallelism.
+    m_impl->device = rtcNewDevice(nullptr);
+    if (!m_impl->device) throw std::runtime_error("cannot create the Embree device");
+    rtcSetDeviceErrorFunction(m_impl->device, on_embree_error, m_impl);
     m_offset = 1e-6 * std::max(1e-9, (hi - lo).norm());
 
     m_impl->scene = rtcNewScene(m_impl->device);
     rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_MEDIUM);
-    RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    // Embree-allocated buffers carry the padding its vector loads need.
-    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
-    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles.size()));
-    throw_if_failed(*m_impl, "allocating Embree buffers");
-    std::copy_n(vertices.front().data(), 3 * vertices.size(), vb);
-    std::copy_n(triangles.front().data(), 3 * triangles.size(), ib);
-    rtcCommitGeometry(geom);
-    rtcAttachGeometry(m_impl->scene, geom);
-    rtcReleaseGeometry(geom);
+    // An empty soup is a valid scene that nothing hits; Embree rejects empty buffers.
+    if (!triangles.empty()) {
+        RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        // Embree-allocated buffers carry the padding its vector loads need.
+        auto* vb = static_cast<float*>(
+            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                    3 * sizeof(float), vertices.size()));
+        auto* ib = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(unsigned), triangles.size()));
+        throw_if_failed(*m_impl, "allocating Embree buffers");
+        std::copy_n(vertices.front().data(), 3 * vertices.size(), vb);
+        std::copy_n(triangles.front().data(), 3 * triangles.size(), ib);
+        rtcCommitGeometry(geom);
+        rtcAttachGeometry(m_impl->scene, geom);
+        rtcReleaseGeometry(geom);
+    }
     rtcCommitScene(m_impl->scene);
     throw_if_failed(*m_impl, "building the Embree scene");
 }
@@ -91,26 +150,16 @@ EmbreeScene::~EmbreeScene() {
 }
 
 std::optional<Hit> EmbreeScene::first_hit(const Vec3& origin, const Vec3& direction) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit rh;
-    rh.ray.org_x = float(origin.x());
-    rh.ray.org_y = float(origin.y());
-    rh.ray.org_z = float(origin.z());
-    rh.ray.dir_x = float(direction.x());
-    rh.ray.dir_y = float(direction.y());
-    rh.ray.dir_z = float(direction.z());
-    rh.ray.tnear = float(m_offset);
-    rh.ray.tfar = kInf;
-    rh.ray.time = 0;
-    rh.ray.mask = ~0u;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_impl->scene, &context, &rh);
+    const RTCRayHit rh = intersect(m_impl->scene, origin, direction, m_offset);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     return Hit{m_triangle_patch[rh.hit.primID], double(rh.ray.tfar)};
+}
+
+std::optional<TriangleHit> EmbreeScene::first_hit_triangle(const Vec3& origin,
+                                                           const Vec3& direction) const {
+    const RTCRayHit rh = intersect(m_impl->scene, origin, direction, m_offset);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    return TriangleHit{rh.hit.primID, double(rh.hit.u), double(rh.hit.v), double(rh.ray.tfar)};
 }
 
 bool EmbreeScene::visible(const Vec3& p, const Vec3& q) const {

@@ -1,7 +1,10 @@
 // Embree behind a small RAII facade: the rest of hmcr asks for first hits and visibility and
 // never touches RTC types. Quads are traced as two triangles; hits report the patch index.
+// A scene can also be built from a plain triangle soup (the renderer's Gouraud mesh): there a
+// "patch" is the triangle index, and first_hit_triangle() adds the hit's barycentric position.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -16,15 +19,30 @@ struct Hit {
     double distance = 0;  // along the (unit) direction
 };
 
+// A hit on a triangle of the soup: the hit point is (1 - u - v) p0 + u p1 + v p2 for the
+// triangle's vertices p0, p1, p2 in the order given (Embree's convention).
+struct TriangleHit {
+    std::uint32_t triangle = 0;
+    double u = 0, v = 0;
+    double distance = 0;  // along the (unit) direction
+};
+
 class EmbreeScene {
 public:
     explicit EmbreeScene(const std::vector<Patch>& patches);
+    // A triangle soup: indices into `vertices`. Degenerate triangles are allowed (never hit).
+    // Throws std::invalid_argument on an index out of range.
+    EmbreeScene(const std::vector<Vec3>& vertices,
+                const std::vector<std::array<unsigned, 3>>& triangles);
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
 
     // First surface hit along a unit direction, ignoring hits closer than the self-hit offset.
     std::optional<Hit> first_hit(const Vec3& origin, const Vec3& direction) const;
+    // first_hit() with the triangle and its barycentric coordinates (for a patch scene the
+    // triangle index counts the two triangles of each quad).
+    std::optional<TriangleHit> first_hit_triangle(const Vec3& origin, const Vec3& direction) const;
     // Whether the open segment between two surface points is unoccluded.
     bool visible(const Vec3& p, const Vec3& q) const;
     // visible() for many segments at once, 16 per coherent packet (the segments of one element
@@ -36,6 +54,10 @@ public:
     struct Impl;  // opaque: keeps RTC types out of this header
 
 private:
+    void build(const std::vector<std::array<float, 3>>& vertices,
+               const std::vector<std::array<unsigned, 3>>& triangles, const Vec3& lo,
+               const Vec3& hi);
+
     Impl* m_impl;
     std::vector<std::uint32_t> m_triangle_patch;
     double m_offset = 0;

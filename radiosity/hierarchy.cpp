@@ -54,6 +54,15 @@ Element* Hierarchy::subdivide(Element& e) {
     return expected;
 }
 
+void Hierarchy::subdivide_uniformly(double max_area) {
+    auto split = [&](auto& self, Element& e) -> void {
+        if (e.area <= max_area || e.id.depth >= m_limits.max_depth) return;
+        Element* c = subdivide(e);
+        for (int k = 0; k < 4; ++k) self(self, c[k]);
+    };
+    tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) { split(split, m_roots[i]); });
+}
+
 Element& Hierarchy::child_containing(const Element& e, const Vec2& uv) const {
     const int k = e.domain.child_containing(patch(e).is_quad(), uv);
     return e.children()[k];

@@ -31,6 +31,9 @@ public:
     const HierarchyLimits& limits() const { return m_limits; }
 
     bool can_subdivide(const Element& e) const;
+    // Splits every element larger than max_area (m^2) until none is, within max_depth: the
+    // fixed uniform mesh of a converged reference (SPEC section 6). Parallel over patches.
+    void subdivide_uniformly(double max_area);
     // The four children of e, created if they do not exist yet (thread-safe). New children
     // inherit B and Delta B (constant basis) and start with nothing received.
     Element* subdivide(Element& e);

@@ -100,6 +100,7 @@ Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch,
                      std::uint32_t source_patch, const Vec2& x_uv, RefinementCounters& counters) {
     Hierarchy& h = ctx.hierarchy;
     Element* i = &h.root(receiver_patch);
+    if (ctx.fixed_mesh) return h.locate(*i, y_uv);
     Element* j = &h.root(source_patch);
     for (;;) {
         if (!h.can_subdivide(*i) && !h.can_subdivide(*j)) return *i;  // both at the limits

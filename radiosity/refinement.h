@@ -19,6 +19,7 @@ struct RefinementContext {
     int lines = 10;        // N_s
     std::uint64_t seed = 0;
     LinkCache* cache = nullptr;  // geometric factors of line-based oracles; none: recompute
+    bool fixed_mesh = false;     // deposit on the existing leaf at the hit, ask no oracle
 };
 
 struct RefinementCounters {

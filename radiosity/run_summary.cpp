@@ -23,7 +23,7 @@ nlohmann::json options_json(const SolverOptions& o, const SolveStats& st) {
     return {{"oracle", o.oracle},     {"epsilon", st.epsilon},      {"lines", o.lines},
             {"rays", o.rays},         {"seed", o.seed},             {"threads", st.threads},
             {"min_area", o.min_area}, {"max_depth", o.max_depth},   {"stop", o.stop},
-            {"cache_mb", o.cache_mb}};
+            {"cache_mb", o.cache_mb},   {"uniform_max_area", o.uniform_max_area}};
 }
 
 nlohmann::json power_json(const SolveStats& st) {

@@ -56,6 +56,8 @@ void validate(const SolverOptions& o) {
     require(o.max_depth >= 0 && o.max_depth <= 24,
             fmt::format("max-depth must be in 0..24, got {}", o.max_depth));
     require(o.stop > 0 && o.stop < 1, fmt::format("stop must be in (0, 1), got {}", o.stop));
+    require(o.uniform_max_area >= 0,
+            fmt::format("max-area must be positive, got {}", o.uniform_max_area));
     require(o.cache_mb >= 0 && o.cache_mb <= 1 << 20,
             fmt::format("cache-mb must be in [0, 1048576], got {}", o.cache_mb));
 }
@@ -84,8 +86,19 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
     if (oracle.uses_lines() && options.cache_mb > 0) {
         cache = std::make_unique<LinkCache>(std::size_t(options.cache_mb * (1 << 20)));
     }
-    const RefinementContext ctx{h,       oracle,       scene, st.epsilon * h.patch_set().max_emitted_power,
-                                options.lines, options.seed, cache.get()};
+    const bool fixed_mesh = options.uniform_max_area > 0;
+    if (fixed_mesh) {
+        h.subdivide_uniformly(options.uniform_max_area);
+        cache.reset();
+    }
+    const RefinementContext ctx{h,
+                                oracle,
+                                scene,
+                                st.epsilon * h.patch_set().max_emitted_power,
+                                options.lines,
+                                options.seed,
+                                cache.get(),
+                                fixed_mesh};
     st.setup_seconds = seconds_since(start);
 
     const double emitted = channel_sum(st.emitted_power);

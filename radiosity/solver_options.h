@@ -17,6 +17,8 @@ struct SolverOptions {
     double min_area = 1e-6;           // relative to A_T: elements at or below are not split
     int max_depth = 16;               // quadtree depth limit (at most 24)
     double stop = 0.01;               // stop when unshot power < stop * emitted power
+    double uniform_max_area = 0;      // > 0: a fixed uniform mesh of elements <= this (m^2),
+                                      // no oracle (converged references); 0: adaptive
     double cache_mb = 32;             // link cache size for line-based oracles (0: no cache)
 
     std::string to_string() const;

@@ -79,6 +79,19 @@ TEST(Hierarchy, IdentitiesAreTheChildPathsAndUnique) {
     EXPECT_EQ(h.leaf_count(), 65u);
 }
 
+TEST(Hierarchy, UniformSubdivisionSplitsExactlyTheElementsAboveTheArea) {
+    Hierarchy h = make_hierarchy();
+    const double max_area = 0.01;
+    h.subdivide_uniformly(max_area);
+    h.for_each_leaf([&](const Element& e) {
+        EXPECT_LE(e.area, max_area);
+        if (e.parent) {
+            EXPECT_GT(e.parent->area, max_area);
+        }
+    });
+    EXPECT_GT(h.leaf_count(), 100u);
+}
+
 // SPEC section 2: a 1M-element hierarchy must fit well under 1 GiB.
 TEST(Hierarchy, AMillionElementsFitInAFifthOfAGibibyte) {
     EXPECT_LE(sizeof(Element) * 1'000'000, std::size_t(200) << 20) << sizeof(Element);

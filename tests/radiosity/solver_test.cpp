@@ -89,6 +89,14 @@ TEST_P(EveryOracle, FurnaceOnARefinedMesh) {
     expect_furnace(o, 1, 200);
 }
 
+// The fixed uniform mesh of a converged reference: no oracle, the same exact furnace value.
+TEST(FixedMesh, FurnaceOnAUniformMesh) {
+    SolverOptions o;
+    o.rays = 30'000;
+    o.uniform_max_area = 1.0 / 64;  // every face cut into 8 x 8 elements
+    expect_furnace(o, 1, 6 * 64);
+}
+
 // Energy: every ray's power is deposited, escapes or hits a back face, and push-pull moves
 // radiosity without creating power. Per channel, exactly (up to rounding):
 //   shot = absorbed + reflected (the unshot power of the later iterations) + escaped + back face
