@@ -1,0 +1,175 @@
+#include "viz/object_space_error.h"
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+namespace hmcr {
+namespace {
+
+using Field = std::function<Rgb(const Vec3&)>;
+
+// Embree's float barycentrics perturb the solution's values by about 1e-7 relative; the
+// quadrature is otherwise exact for the linear fields used here.
+constexpr double kTol = 1e-6;
+
+// The unit square [0,1]^2 at height z as an nx x ny grid of cells of one patch, quads or (when
+// `triangles`) each quad cut along its diagonal, counter-clockwise seen from +z unless
+// `facing_down`.
+ShadedMesh grid(int nx, int ny, const Field& field, bool triangles = false, double z = 0,
+                int patch = 0, bool facing_down = false) {
+    ShadedMesh m;
+    for (int j = 0; j <= ny; ++j) {
+        for (int i = 0; i <= nx; ++i) {
+            m.points.emplace_back(double(i) / nx, double(j) / ny, z);
+            m.point_radiosity.push_back(field(m.points.back()));
+        }
+    }
+    const auto add_cell = [&](std::vector<std::int64_t> c) {
+        if (facing_down) std::reverse(c.begin(), c.end());
+        m.connectivity.insert(m.connectivity.end(), c.begin(), c.end());
+        m.offsets.push_back(std::int64_t(m.connectivity.size()));
+        m.patch_id.push_back(patch);
+    };
+    for (int j = 0; j < ny; ++j) {
+        for (int i = 0; i < nx; ++i) {
+            const std::int64_t a = j * (nx + 1) + i, b = a + 1, c = b + nx + 1, d = a + nx + 1;
+            if (triangles) {
+                add_cell({a, b, c});
+                add_cell({a, c, d});
+            } else {
+                add_cell({a, b, c, d});
+            }
+        }
+    }
+    return m;
+}
+
+// `part` appended to `into`, its points and cells renumbered.
+void append(ShadedMesh& into, const ShadedMesh& part) {
+    const auto base = std::int64_t(into.points.size());
+    into.points.insert(into.points.end(), part.points.begin(), part.points.end());
+    into.point_radiosity.insert(into.point_radiosity.end(), part.point_radiosity.begin(),
+                                part.point_radiosity.end());
+    for (std::size_t c = 0; c < part.cell_count(); ++c) {
+        for (auto s = part.offsets[c]; s < part.offsets[c + 1]; ++s) {
+            into.connectivity.push_back(base + part.connectivity[s]);
+        }
+        into.offsets.push_back(std::int64_t(into.connectivity.size()));
+        into.patch_id.push_back(part.patch_id[c]);
+    }
+}
+
+// A linear field: channel k is coef[k][0] + coef[k][1] x + coef[k][2] y.
+using Linear = std::array<std::array<double, 3>, 3>;
+Field linear(const Linear& coef) {
+    return [coef](const Vec3& p) {
+        Rgb b;
+        for (int k = 0; k < 3; ++k) b[k] = coef[k][0] + coef[k][1] * p.x() + coef[k][2] * p.y();
+        return b;
+    };
+}
+// Integral over the unit square of |field|^2: per channel, (a + b x + c y)^2 integrates to
+// a^2 + b^2/3 + c^2/3 + ab + ac + bc/2.
+double integral_of_square(const Linear& coef) {
+    double sum = 0;
+    for (const auto& [a, b, c] : coef) {
+        sum += a * a + b * b / 3 + c * c / 3 + a * b + a * c + b * c / 2;
+    }
+    return sum;
+}
+
+const Linear kReference = {{{1, 1, 2}, {2, 0, 0}, {3, -1, 0}}};
+const Linear kDifference = {{{0.5, 1, 0}, {0, 0, -1}, {0, 0.25, 0.5}}};
+
+Linear plus(const Linear& a, const Linear& b) {
+    Linear out;
+    for (int k = 0; k < 3; ++k) {
+        for (int i = 0; i < 3; ++i) out[k][i] = a[k][i] + b[k][i];
+    }
+    return out;
+}
+
+TEST(ObjectSpaceError, SameFieldOnAnotherMeshIsZero) {
+    const ShadedMesh ref = grid(4, 4, linear(kReference));
+    const ObjectError e = object_space_error(grid(3, 2, linear(kReference), true), ref);
+    EXPECT_LT(e.relative_l2, kTol);
+    EXPECT_EQ(e.samples, 16u * 2 * 3 * 4);  // cells x fan triangles x 3 points x k^2
+    EXPECT_EQ(e.unmatched, 0u);
+    EXPECT_LT(object_space_error(ref, ref).relative_l2, kTol);
+}
+
+TEST(ObjectSpaceError, ScaledFieldGivesTheScale) {
+    const double c = 0.25;
+    const auto scaled = [&](const Vec3& p) { return Rgb((1 + c) * linear(kReference)(p)); };
+    const ObjectError e = object_space_error(grid(5, 2, scaled), grid(4, 4, linear(kReference)));
+    EXPECT_NEAR(e.relative_l2, c, kTol);
+}
+
+TEST(ObjectSpaceError, TwoLinearFieldsMatchTheClosedForm) {
+    const double expected =
+        std::sqrt(integral_of_square(kDifference) / integral_of_square(kReference));
+    const ShadedMesh solution = grid(3, 3, linear(plus(kReference, kDifference)), true);
+    const ShadedMesh reference = grid(4, 4, linear(kReference));
+    // The 3-point rule integrates the quadratic |B_sol - B_ref|^2 exactly at any k.
+    for (const int k : {1, 2, 3}) {
+        const ObjectError e = object_space_error(solution, reference, {k});
+        EXPECT_NEAR(e.relative_l2, expected, kTol) << "k = " << k << ", " << e.to_string();
+    }
+    // The estimator integrates over the reference's surface: the roles are not symmetric.
+    const double swapped = std::sqrt(integral_of_square(kDifference) /
+                                     integral_of_square(plus(kReference, kDifference)));
+    EXPECT_NEAR(object_space_error(reference, solution).relative_l2, swapped, kTol);
+}
+
+TEST(ObjectSpaceError, PointsAreMatchedOnTheirOwnPatch) {
+    // A floor (patch 0) and, 1e-7 above it, a facing-down plate (patch 1) over part of it,
+    // closer than the probe's offset: the probe must look through the wrong surface's side.
+    const auto plate = [](const Field& f) {
+        ShadedMesh p = grid(2, 2, f, false, 1e-7, 1, true);
+        for (Vec3& x : p.points) x.head<2>() = 0.25 * Vec2::Ones() + 0.5 * x.head<2>();
+        for (std::size_t i = 0; i < p.points.size(); ++i) p.point_radiosity[i] = f(p.points[i]);
+        return p;
+    };
+    const Field floor_field = linear(kReference);
+    const Field plate_field = [](const Vec3&) { return Rgb(0.5, 0.5, 0.5); };
+    ShadedMesh reference = grid(4, 4, floor_field);
+    append(reference, plate(plate_field));
+    ShadedMesh solution = grid(3, 5, floor_field, true);
+    append(solution, plate(plate_field));
+    const ObjectError e = object_space_error(solution, reference);
+    EXPECT_EQ(e.unmatched, 0u);
+    EXPECT_LT(e.relative_l2, kTol);
+
+    // Without the plate in the solution, its points are unmatched and count as B_sol = 0.
+    const ObjectError missing = object_space_error(grid(3, 5, floor_field, true), reference);
+    EXPECT_EQ(missing.unmatched, 4u * 2 * 3 * 4);
+    const double plate_part = 0.25 * 0.75;  // area 0.25 times |(0.5, 0.5, 0.5)|^2
+    EXPECT_NEAR(missing.relative_l2,
+                std::sqrt(plate_part / (integral_of_square(kReference) + plate_part)), kTol);
+}
+
+TEST(ObjectSpaceError, DoesNotDependOnThreads) {
+    const ShadedMesh solution = grid(7, 5, linear(plus(kReference, kDifference)), true);
+    const ShadedMesh reference = grid(40, 40, linear(kReference));
+    const double all = object_space_error(solution, reference).relative_l2;
+    tbb::task_arena one(1);
+    EXPECT_EQ(one.execute([&] { return object_space_error(solution, reference).relative_l2; }),
+              all);
+}
+
+TEST(ObjectSpaceError, RejectsMalformedInput) {
+    const ShadedMesh ref = grid(2, 2, linear(kReference));
+    ShadedMesh no_patches = ref;
+    no_patches.patch_id.clear();
+    EXPECT_THROW(object_space_error(no_patches, ref), std::invalid_argument);
+    EXPECT_THROW(object_space_error(ref, no_patches), std::invalid_argument);
+    EXPECT_THROW(object_space_error(ref, ref, {0}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hmcr

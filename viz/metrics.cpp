@@ -1,0 +1,64 @@
+#include "viz/metrics.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace hmcr {
+namespace {
+
+constexpr double kEqualWeights[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+constexpr double kLuminanceWeights[3] = {0.2126, 0.7152, 0.0722};
+
+void check_same_size(const Image8& a, const Image8& b) {
+    if (a.width != b.width || a.height != b.height || a.pixels.size() != b.pixels.size() ||
+        a.pixels.empty() || a.pixels.size() != std::size_t(a.width) * std::size_t(a.height)) {
+        throw std::invalid_argument(
+            "images to compare must have the same non-empty size: " + std::to_string(a.width) +
+            " x " + std::to_string(a.height) + " and " + std::to_string(b.width) + " x " +
+            std::to_string(b.height));
+    }
+}
+
+// sqrt of the mean over pixels of sum_c w_c (a_c - b_c)^2.
+double weighted_rmse(const Image8& a, const Image8& b, const double (&w)[3]) {
+    check_same_size(a, b);
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const double d = double(a.pixels[i][c]) - double(b.pixels[i][c]);
+            sum += w[c] * d * d;
+        }
+    }
+    return std::sqrt(sum / double(a.pixels.size()));
+}
+
+}  // namespace
+
+double rmse_a(const Image8& a, const Image8& b) { return weighted_rmse(a, b, kEqualWeights); }
+
+double rmse_p(const Image8& a, const Image8& b) { return weighted_rmse(a, b, kLuminanceWeights); }
+
+double psnr(double rmse) {
+    if (rmse == 0) return std::numeric_limits<double>::infinity();
+    return 20 * std::log10(255 / rmse);
+}
+
+ImageErrors image_errors(const Image8& solution, const Image8& reference) {
+    ImageErrors e;
+    e.rmse_a = rmse_a(solution, reference);
+    e.rmse_p = rmse_p(solution, reference);
+    e.psnr_a = psnr(e.rmse_a);
+    e.psnr_p = psnr(e.rmse_p);
+    return e;
+}
+
+std::string ImageErrors::to_string() const {
+    std::ostringstream s;
+    s << "ImageErrors{rmse_a=" << rmse_a << ", rmse_p=" << rmse_p << ", psnr_a=" << psnr_a
+      << ", psnr_p=" << psnr_p << "}";
+    return s.str();
+}
+
+}  // namespace hmcr

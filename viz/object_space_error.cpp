@@ -1,0 +1,168 @@
+#include "viz/object_space_error.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
+
+#include "radiosity/embree_scene.h"
+#include "viz/shaded_tracer.h"
+
+namespace hmcr {
+namespace {
+
+// Sums of one block of reference triangles; blocks are fixed, so the total is deterministic.
+struct Partial {
+    double squared_error = 0, squared_reference = 0;
+    std::size_t samples = 0, unmatched = 0;
+
+    void add(const Partial& o) {
+        squared_error += o.squared_error;
+        squared_reference += o.squared_reference;
+        samples += o.samples;
+        unmatched += o.unmatched;
+    }
+};
+
+// Looks up the solution's Gouraud radiosity at a point of a given patch (see the header).
+struct SolutionProbe {
+    const ShadedTracer& tracer;
+    const std::vector<int>& patch_id;
+    double delta;
+
+    std::optional<Rgb> at(const Vec3& p, const Vec3& normal, int patch) const {
+        for (const double side : {1.0, -1.0}) {
+            const auto hit = tracer.hit_along(p + side * delta * normal, -side * normal);
+            if (hit && patch_id[hit->cell] == patch) return hit->radiosity;
+        }
+        return std::nullopt;
+    }
+};
+
+// Unit normal of a planar polygon (Newell's method), zero for a degenerate one.
+Vec3 cell_normal(const ShadedMesh& m, std::size_t cell) {
+    Vec3 sum = Vec3::Zero();
+    const auto first = m.offsets[cell], last = m.offsets[cell + 1];
+    for (auto s = first; s < last; ++s) {
+        const auto next = s + 1 < last ? s + 1 : first;
+        sum += m.points[m.connectivity[s]].cross(m.points[m.connectivity[next]]);
+    }
+    const double n = sum.norm();
+    return n > 0 ? Vec3(sum / n) : Vec3::Zero();
+}
+
+// The 3 k^2 quadrature points of a triangle as the weights (s, t) of its second and third
+// vertex; each carries 1 / (3 k^2) of the triangle's area.
+std::vector<Vec2> quadrature_points(int k) {
+    std::vector<Vec2> out;
+    const auto add_rule = [&](const Vec2& a, const Vec2& b, const Vec2& c) {
+        for (const auto& [x, y, z] :
+             {std::tuple(a, b, c), std::tuple(b, c, a), std::tuple(c, a, b)}) {
+            out.push_back((4 * x + y + z) / (6.0 * k));  // (2/3, 1/6, 1/6), in units of 1/k
+        }
+    };
+    for (int i = 0; i < k; ++i) {
+        for (int j = 0; i + j < k; ++j) {
+            add_rule(Vec2(i, j), Vec2(i + 1, j), Vec2(i, j + 1));  // the upward sub-triangle
+            if (i + j + 2 <= k) add_rule(Vec2(i + 1, j), Vec2(i + 1, j + 1), Vec2(i, j + 1));
+        }
+    }
+    return out;
+}
+
+Partial integrate_triangle(const ShadedMesh& ref, const FanTriangle& tri, const Vec3& normal,
+                           const SolutionProbe& probe, const std::vector<Vec2>& points) {
+    const Vec3& p0 = ref.points[tri.points[0]];
+    const Vec3 e1 = ref.points[tri.points[1]] - p0, e2 = ref.points[tri.points[2]] - p0;
+    const double area = 0.5 * e1.cross(e2).norm();
+    Partial sum;
+    if (!(area > 0)) return sum;  // the fan's zero-area triangles cover nothing
+    const Rgb& b0 = ref.point_radiosity[tri.points[0]];
+    const Rgb& b1 = ref.point_radiosity[tri.points[1]];
+    const Rgb& b2 = ref.point_radiosity[tri.points[2]];
+    const double weight = area / double(points.size());
+    const int patch = ref.patch_id[tri.cell];
+    for (const Vec2& st : points) {
+        const Rgb b_ref = (1 - st.x() - st.y()) * b0 + st.x() * b1 + st.y() * b2;
+        const auto b_sol = probe.at(p0 + st.x() * e1 + st.y() * e2, normal, patch);
+        if (!b_sol) ++sum.unmatched;
+        sum.squared_error += weight * (b_sol.value_or(Rgb::Zero()) - b_ref).matrix().squaredNorm();
+        sum.squared_reference += weight * b_ref.matrix().squaredNorm();
+        ++sum.samples;
+    }
+    return sum;
+}
+
+void check_patch_ids(const ShadedMesh& m, const char* which) {
+    if (m.patch_id.size() != m.cell_count()) {
+        throw std::invalid_argument(std::string("the ") + which + " needs one patch_id per cell");
+    }
+}
+
+double bounding_diagonal(const std::vector<Vec3>& points) {
+    if (points.empty()) return 0;
+    Vec3 lo = points.front(), hi = points.front();
+    for (const Vec3& p : points) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    return (hi - lo).norm();
+}
+
+}  // namespace
+
+std::string ObjectErrorOptions::to_string() const {
+    return "ObjectErrorOptions{subdivisions=" + std::to_string(subdivisions) + "}";
+}
+
+std::string ObjectError::to_string() const {
+    std::ostringstream s;
+    s << "ObjectError{relative_l2=" << relative_l2 << ", samples=" << samples
+      << ", unmatched=" << unmatched << "}";
+    return s.str();
+}
+
+ObjectError object_space_error(const ShadedMesh& solution, const ShadedMesh& reference,
+                               const ObjectErrorOptions& options) {
+    if (options.subdivisions < 1 || options.subdivisions > 64) {
+        throw std::invalid_argument("subdivisions must be in [1, 64]: " + options.to_string());
+    }
+    check_patch_ids(solution, "solution");
+    check_patch_ids(reference, "reference");
+    const ShadedTracer tracer(solution);
+    const std::vector<FanTriangle> triangles = fan_triangulate(reference);
+    std::vector<Vec3> normals(reference.cell_count());
+    for (std::size_t c = 0; c < normals.size(); ++c) normals[c] = cell_normal(reference, c);
+    const SolutionProbe probe{tracer, solution.patch_id,
+                              std::max(1e-5 * bounding_diagonal(reference.points), 1e-12)};
+    const std::vector<Vec2> points = quadrature_points(options.subdivisions);
+
+    constexpr std::size_t kBlock = 256;
+    std::vector<Partial> blocks((triangles.size() + kBlock - 1) / kBlock);
+    tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t b) {
+        set_tracing_float_mode();
+        const std::size_t end = std::min(triangles.size(), (b + 1) * kBlock);
+        for (std::size_t t = b * kBlock; t < end; ++t) {
+            const FanTriangle& tri = triangles[t];
+            blocks[b].add(integrate_triangle(reference, tri, normals[tri.cell], probe, points));
+        }
+    });
+    Partial total;
+    for (const Partial& p : blocks) total.add(p);
+
+    ObjectError out{0, total.samples, total.unmatched};
+    if (total.squared_reference > 0) {
+        out.relative_l2 = std::sqrt(total.squared_error / total.squared_reference);
+    } else if (total.squared_error > 0) {
+        out.relative_l2 = std::numeric_limits<double>::infinity();
+    }
+    return out;
+}
+
+}  // namespace hmcr

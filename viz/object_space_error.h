@@ -1,0 +1,53 @@
+// Object-space error of a meshing study (SPEC section 6): the area-weighted relative L2
+// difference between a solution's and the reference's Gouraud radiosity over all surfaces,
+//
+//   e = sqrt( int |B_sol(x) - B_ref(x)|^2 dA  /  int |B_ref(x)|^2 dA ),
+//
+// |.| the Euclidean norm over RGB, B the Gouraud field each ShadedMesh shows (the barycentric
+// interpolation of its point radiosity over the fan triangles of its polygons, as rendered).
+// Both meshes come from the same scene: the same patches, different subdivisions.
+//
+// Estimator: a fixed, deterministic quadrature over the reference's surface. Every fan triangle
+// of every reference cell is cut into k x k congruent sub-triangles (k = subdivisions; each
+// edge into k parts), and each sub-triangle is integrated with the symmetric 3-point rule
+// (points at barycentric (2/3, 1/6, 1/6) and its permutations, weight area / 3), which is exact
+// for quadratics. The estimate is therefore exact when B_sol - B_ref is linear on every
+// reference sub-triangle (e.g. a solution and a reference showing linear fields), and otherwise
+// converges as the reference is refined. The points are interior, so no ray grazes an edge.
+//
+// B_ref at a point comes from the reference triangle's own barycentric weights. B_sol comes from
+// a ShadedTracer of the solution: a ray from delta in front of the point (along the reference
+// cell's normal, delta = 1e-5 of the reference's bounding-box diagonal, ten times Embree's
+// self-hit offset) back along minus the normal. The hit must be on a solution cell of the same
+// patch; if a surface closer than delta is hit instead (an object resting on the floor), the
+// ray is cast from behind the point instead. A point neither ray finds on its patch counts with
+// B_sol = 0 and is reported as unmatched: it means the meshes do not cover the same surfaces.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "viz/shaded_mesh.h"
+
+namespace hmcr {
+
+struct ObjectErrorOptions {
+    int subdivisions = 2;  // k: each reference fan triangle gives k^2 sub-triangles, 3 points each
+
+    std::string to_string() const;
+};
+
+struct ObjectError {
+    double relative_l2 = 0;     // e above; 0 when both fields are 0, +inf when only B_ref is 0
+    std::size_t samples = 0;    // quadrature points
+    std::size_t unmatched = 0;  // points where the solution shows no surface of the same patch
+
+    std::string to_string() const;
+};
+
+// Throws std::invalid_argument on malformed meshes (patch_id missing for some cell) or options.
+// Parallel over the reference with TBB; the result does not depend on the number of threads.
+ObjectError object_space_error(const ShadedMesh& solution, const ShadedMesh& reference,
+                               const ObjectErrorOptions& options = {});
+
+}  // namespace hmcr

@@ -1,0 +1,58 @@
+// Ray queries against a ShadedMesh's Gouraud shading: the renderer's primary rays and the
+// object-space error's point lookups both ask "what radiosity does the mesh show here".
+//
+// Each polygon is fan-triangulated from its first point (leaf polygons are convex, so the fan
+// covers it exactly; points lying on the fan vertex's own edges give zero-area triangles that
+// are never hit). Within a triangle the radiosity is the barycentric interpolation of the
+// point radiosity of its three points: Gouraud shading as a rasteriser would draw it.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "radiosity/embree_scene.h"
+#include "radiosity/types.h"
+#include "viz/shaded_mesh.h"
+
+namespace hmcr {
+
+// One triangle of a polygon's fan: indices into ShadedMesh::points and the polygon it came from.
+struct FanTriangle {
+    std::array<std::uint32_t, 3> points;
+    std::uint32_t cell = 0;
+};
+
+// The fan triangles of every cell, in cell order (n - 2 per polygon of n points).
+// Throws std::invalid_argument when offsets or connectivity are malformed.
+std::vector<FanTriangle> fan_triangulate(const ShadedMesh& mesh);
+
+struct ShadedHit {
+    std::uint32_t cell = 0;       // the ShadedMesh cell hit
+    Rgb radiosity = Rgb::Zero();  // Gouraud value at the hit, W/m^2
+    double distance = 0;          // along the unit direction
+};
+
+class ShadedTracer {
+  public:
+    // Copies what it needs: the mesh may be destroyed afterwards.
+    explicit ShadedTracer(const ShadedMesh& mesh);
+
+    // First hit along a unit direction (either side of a surface), or nullopt on a miss.
+    std::optional<ShadedHit> hit_along(const Vec3& origin, const Vec3& direction) const;
+    std::optional<Rgb> radiosity_along(const Vec3& origin, const Vec3& direction) const;
+    std::optional<std::uint32_t> cell_along(const Vec3& origin, const Vec3& direction) const;
+
+    std::size_t triangle_count() const { return m_triangles.size(); }
+    double offset() const { return m_scene->offset(); }  // Embree's self-hit offset, metres
+
+  private:
+    std::vector<FanTriangle> m_triangles;
+    std::vector<Rgb> m_point_radiosity;
+    std::unique_ptr<EmbreeScene> m_scene;
+};
+
+}  // namespace hmcr
