@@ -12,6 +12,7 @@
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "radiosity/budget_search.h"
+#include "radiosity/cli_tools.h"
 #include "radiosity/progress.h"
 #include "radiosity/run_summary.h"
 #include "radiosity/solver.h"
@@ -221,6 +222,10 @@ int run_cli(int argc, char** argv) {
     app.require_subcommand(1);
     SolveArgs solve_args;
     add_solve(app, solve_args);
+    RenderArgs render_args;
+    ReferenceArgs reference_args;
+    auto* render_cmd = add_render_command(app, render_args);
+    auto* reference_cmd = add_reference_command(app, reference_args);
     auto* oracles = app.add_subcommand("oracles", "list the refinement oracles");
     auto* scenes = app.add_subcommand("scenes", "list the bundled scenes");
     try {
@@ -235,6 +240,8 @@ int run_cli(int argc, char** argv) {
     try {
         if (oracles->parsed()) return list_oracles();
         if (scenes->parsed()) return list_scenes();
+        if (render_cmd->parsed()) return run_render(render_args);
+        if (reference_cmd->parsed()) return run_reference(reference_args, join_args(argc, argv));
         return run_solve(solve_args, join_args(argc, argv));
     } catch (const SceneError& e) {
         return fail(e.what());

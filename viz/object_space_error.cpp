@@ -77,7 +77,8 @@ std::vector<Vec2> quadrature_points(int k) {
 }
 
 Partial integrate_triangle(const ShadedMesh& ref, const FanTriangle& tri, const Vec3& normal,
-                           const SolutionProbe& probe, const std::vector<Vec2>& points) {
+                           const SolutionProbe& probe, const std::vector<Vec2>& points,
+                           const std::vector<Rgb>& emission) {
     const Vec3& p0 = ref.points[tri.points[0]];
     const Vec3 e1 = ref.points[tri.points[1]] - p0, e2 = ref.points[tri.points[2]] - p0;
     const double area = 0.5 * e1.cross(e2).norm();
@@ -93,7 +94,8 @@ Partial integrate_triangle(const ShadedMesh& ref, const FanTriangle& tri, const 
         const auto b_sol = probe.at(p0 + st.x() * e1 + st.y() * e2, normal, patch);
         if (!b_sol) ++sum.unmatched;
         sum.squared_error += weight * (b_sol.value_or(Rgb::Zero()) - b_ref).matrix().squaredNorm();
-        sum.squared_reference += weight * b_ref.matrix().squaredNorm();
+        const Rgb reflected = emission.empty() ? b_ref : Rgb(b_ref - emission[std::size_t(patch)]);
+        sum.squared_reference += weight * reflected.matrix().squaredNorm();
         ++sum.samples;
     }
     return sum;
@@ -135,6 +137,11 @@ ObjectError object_space_error(const ShadedMesh& solution, const ShadedMesh& ref
     }
     check_patch_ids(solution, "solution");
     check_patch_ids(reference, "reference");
+    for (int p : reference.patch_id) {
+        if (!options.emission.empty() && std::size_t(p) >= options.emission.size()) {
+            throw std::invalid_argument("emission has no entry for patch " + std::to_string(p));
+        }
+    }
     const ShadedTracer tracer(solution);
     const std::vector<FanTriangle> triangles = fan_triangulate(reference);
     std::vector<Vec3> normals(reference.cell_count());
@@ -150,7 +157,8 @@ ObjectError object_space_error(const ShadedMesh& solution, const ShadedMesh& ref
         const std::size_t end = std::min(triangles.size(), (b + 1) * kBlock);
         for (std::size_t t = b * kBlock; t < end; ++t) {
             const FanTriangle& tri = triangles[t];
-            blocks[b].add(integrate_triangle(reference, tri, normals[tri.cell], probe, points));
+            blocks[b].add(integrate_triangle(reference, tri, normals[tri.cell], probe, points,
+                                             options.emission));
         }
     });
     Partial total;

@@ -110,6 +110,21 @@ TEST(ObjectSpaceError, ScaledFieldGivesTheScale) {
     EXPECT_NEAR(e.relative_l2, c, kTol);
 }
 
+// With the patches' emission given, the error is relative to the reflected part B - E: a
+// solution whose reflected radiosity is 1.25 times the reference's is off by 0.25, however
+// bright the emitter.
+TEST(ObjectSpaceError, WithEmissionItIsRelativeToTheReflectedRadiosity) {
+    const double c = 0.25;
+    const Rgb e(50, 40, 30);
+    const auto ref_field = [&](const Vec3& p) { return Rgb(e + linear(kReference)(p)); };
+    const auto sol_field = [&](const Vec3& p) { return Rgb(e + (1 + c) * linear(kReference)(p)); };
+    ObjectErrorOptions o;
+    o.emission = {e};  // the grid is patch 0
+    const ShadedMesh ref = grid(4, 4, ref_field);
+    EXPECT_NEAR(object_space_error(grid(5, 2, sol_field), ref, o).relative_l2, c, kTol);
+    EXPECT_LT(object_space_error(grid(5, 2, sol_field), ref).relative_l2, c / 10);
+}
+
 TEST(ObjectSpaceError, TwoLinearFieldsMatchTheClosedForm) {
     const double expected =
         std::sqrt(integral_of_square(kDifference) / integral_of_square(kReference));
@@ -117,7 +132,7 @@ TEST(ObjectSpaceError, TwoLinearFieldsMatchTheClosedForm) {
     const ShadedMesh reference = grid(4, 4, linear(kReference));
     // The 3-point rule integrates the quadratic |B_sol - B_ref|^2 exactly at any k.
     for (const int k : {1, 2, 3}) {
-        const ObjectError e = object_space_error(solution, reference, {k});
+        const ObjectError e = object_space_error(solution, reference, {k, {}});
         EXPECT_NEAR(e.relative_l2, expected, kTol) << "k = " << k << ", " << e.to_string();
     }
     // The estimator integrates over the reference's surface: the roles are not symmetric.
@@ -168,7 +183,7 @@ TEST(ObjectSpaceError, RejectsMalformedInput) {
     no_patches.patch_id.clear();
     EXPECT_THROW(object_space_error(no_patches, ref), std::invalid_argument);
     EXPECT_THROW(object_space_error(ref, no_patches), std::invalid_argument);
-    EXPECT_THROW(object_space_error(ref, ref, {0}), std::invalid_argument);
+    EXPECT_THROW(object_space_error(ref, ref, {0, {}}), std::invalid_argument);
 }
 
 }  // namespace

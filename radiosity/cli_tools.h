@@ -1,0 +1,35 @@
+// The `render` and `reference` commands (the study tools of SPEC section 6); cli.cpp wires them.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "studies/reference.h"
+#include "viz/renderer.h"
+
+namespace hmcr {
+
+struct RenderArgs {
+    std::string solution;      // .vtp
+    std::string scene;         // for the view
+    std::string view;          // empty: the scene's first view
+    std::string output;        // .png
+    std::string pfm;           // optional linear image
+    std::string reference;     // optional reference folder: its exposure for this view
+    double exposure = 0;       // > 0: fixed exposure
+    RenderOptions options;
+};
+
+struct ReferenceArgs {
+    std::string scene;
+    std::string output;
+    ReferenceOptions options;
+    bool quiet = false;
+};
+
+CLI::App* add_render_command(CLI::App& app, RenderArgs& args);
+CLI::App* add_reference_command(CLI::App& app, ReferenceArgs& args);
+int run_render(const RenderArgs& args);
+int run_reference(const ReferenceArgs& args, const std::string& command_line);
+
+}  // namespace hmcr
