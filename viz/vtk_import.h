@@ -7,7 +7,7 @@
 
 namespace hmcr {
 
-// The ShadedMesh an hmcr .vtp holds. Throws std::runtime_error naming the file when it cannot
+// The ShadedMesh an hmcr .vtp holds. Throws std::invalid_argument naming the file when it cannot
 // be read or lacks the hmcr arrays.
 ShadedMesh read_vtp(const std::filesystem::path& path);
 

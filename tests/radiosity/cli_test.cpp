@@ -96,6 +96,39 @@ TEST_F(Cli, SolveWritesTheMeshAndASummaryWithCountsAndTimings) {
     }
 }
 
+TEST_F(Cli, RenderAndReferenceWriteTheirFiles) {
+    const std::string vtp = (m_dir / "p.vtp").string();
+    ASSERT_EQ(hmcr("solve plates --rays 20000 --quiet -o " + vtp).exit_code, 0);
+    const CliRun r = hmcr("render " + vtp + " --scene plates --view side --samples 2 -o " +
+                          (m_dir / "p.png").string() + " --pfm " + (m_dir / "p.pfm").string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(m_dir / "p.png"));
+    EXPECT_TRUE(fs::exists(m_dir / "p.pfm"));
+    const CliRun ref = hmcr("reference plates --max-area 0.05 --rays 20000 -q -o " +
+                            (m_dir / "ref").string());
+    EXPECT_EQ(ref.exit_code, 0) << ref.err;
+    for (const char* f : {"reference.vtp", "reference.json", "views/side.pfm", "views/side.png"}) {
+        EXPECT_TRUE(fs::exists(m_dir / "ref" / f)) << f;
+    }
+    const auto summary = nlohmann::json::parse(slurp(m_dir / "ref" / "reference.json"));
+    EXPECT_GT(summary["reference"]["views"]["side"]["exposure"].get<double>(), 0);
+    EXPECT_TRUE(summary["reference"]["convergence"].contains("object_space_relative_l2"));
+}
+
+TEST_F(Cli, RenderRejectsAnUnknownViewAndAMissingSolution) {
+    const std::string vtp = (m_dir / "p.vtp").string();
+    ASSERT_EQ(hmcr("solve plates --rays 5000 --quiet -o " + vtp).exit_code, 0);
+    const CliRun view = hmcr("render " + vtp + " --scene plates --view nope -o " +
+                             (m_dir / "out.vtp.png").string());
+    EXPECT_EQ(view.exit_code, 2);
+    EXPECT_NE(view.err.find("no view 'nope' (views: side"), std::string::npos) << view.err;
+    const CliRun missing = hmcr("render " + (m_dir / "none.vtp").string() +
+                                " --scene plates -o " + (m_dir / "x.png").string());
+    EXPECT_EQ(missing.exit_code, 2);
+    EXPECT_NE(missing.err.find("none.vtp: no such file"), std::string::npos) << missing.err;
+    EXPECT_FALSE(fs::exists(m_dir / "x.png"));
+}
+
 TEST_F(Cli, QuietPrintsNothing) {
     const CliRun r = hmcr("solve plates --rays 5000 --quiet -o " + (m_dir / "q.vtp").string());
     EXPECT_EQ(r.exit_code, 0);

@@ -38,14 +38,14 @@ TEST(VtkImport, NamesTheFileWhenItIsMissingOrNotASolution) {
     try {
         read_vtp(dir.path() / "none.vtp");
         FAIL();
-    } catch (const std::runtime_error& e) {
+    } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("none.vtp: no such file"), std::string::npos);
     }
     const auto junk = dir.write("junk.vtp", "<VTKFile>nonsense");
     try {
         read_vtp(junk);
         FAIL();
-    } catch (const std::runtime_error& e) {
+    } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("junk.vtp"), std::string::npos);
     }
 }
