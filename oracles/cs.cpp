@@ -13,14 +13,11 @@
 namespace hmcr {
 namespace {
 
-class ChiSquareOracle final : public Oracle {
+class ChiSquareOracle final : public NamedOracle {
 public:
-    std::string_view name() const override { return "cs"; }
-    std::string_view description() const override {
-        return "chi-square divergence of the sampled kernel from uniform (Rigau 2003)";
-    }
-    double default_epsilon() const override { return 2.5e-5; }
-    bool uses_lines() const override { return true; }
+    ChiSquareOracle()
+        : NamedOracle("cs", "chi-square divergence of the sampled kernel from uniform (Rigau 2003)",
+                      2.5e-5, true) {}
 
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);

@@ -13,14 +13,12 @@
 namespace hmcr {
 namespace {
 
-class HellingerOracle final : public Oracle {
+class HellingerOracle final : public NamedOracle {
 public:
-    std::string_view name() const override { return "hl"; }
-    std::string_view description() const override {
-        return "squared Hellinger distance of the sampled kernel from uniform (Rigau 2003)";
-    }
-    double default_epsilon() const override { return 4e-6; }
-    bool uses_lines() const override { return true; }
+    HellingerOracle()
+        : NamedOracle("hl",
+                      "squared Hellinger distance of the sampled kernel from uniform (Rigau 2003)",
+                      4e-6, true) {}
 
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);

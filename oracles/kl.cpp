@@ -14,14 +14,12 @@
 namespace hmcr {
 namespace {
 
-class KullbackLeiblerOracle final : public Oracle {
+class KullbackLeiblerOracle final : public NamedOracle {
 public:
-    std::string_view name() const override { return "kl"; }
-    std::string_view description() const override {
-        return "Kullback-Leibler divergence of the sampled kernel from uniform (Rigau 2003)";
-    }
-    double default_epsilon() const override { return 1e-5; }
-    bool uses_lines() const override { return true; }
+    KullbackLeiblerOracle()
+        : NamedOracle("kl",
+                      "Kullback-Leibler divergence of the sampled kernel from uniform (Rigau 2003)",
+                      1e-5, true) {}
 
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);

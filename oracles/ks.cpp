@@ -13,15 +13,13 @@
 namespace hmcr {
 namespace {
 
-class KernelSmoothnessOracle final : public Oracle {
+class KernelSmoothnessOracle final : public NamedOracle {
 public:
-    std::string_view name() const override { return "ks"; }
-    std::string_view description() const override {
-        return "kernel smoothness: largest deviation of the sampled kernel from its mean "
-               "(Gortler 1993)";
-    }
-    double default_epsilon() const override { return 1.5e-2; }
-    bool uses_lines() const override { return true; }
+    KernelSmoothnessOracle()
+        : NamedOracle("ks",
+                      "kernel smoothness: largest deviation of the sampled kernel from its mean "
+                      "(Gortler 1993)",
+                      1.5e-2, true) {}
 
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);

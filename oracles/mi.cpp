@@ -14,15 +14,13 @@
 namespace hmcr {
 namespace {
 
-class MutualInformationOracle final : public Oracle {
+class MutualInformationOracle final : public NamedOracle {
 public:
-    std::string_view name() const override { return "mi"; }
-    std::string_view description() const override {
-        return "mutual information lost by the discretisation, Jensen gap of x ln x "
-               "(Feixas 2002)";
-    }
-    double default_epsilon() const override { return 6e-7; }
-    bool uses_lines() const override { return true; }
+    MutualInformationOracle()
+        : NamedOracle("mi",
+                      "mutual information lost by the discretisation, Jensen gap of x ln x "
+                      "(Feixas 2002)",
+                      6e-7, true) {}
 
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);

@@ -15,14 +15,13 @@
 namespace hmcr {
 namespace {
 
-class PowerOracle final : public Oracle {
+class PowerOracle final : public NamedOracle {
 public:
-    std::string_view name() const override { return "power"; }
-    std::string_view description() const override {
-        return "power transported through the link, unoccluded centre estimate (Hanrahan 1991)";
-    }
-    double default_epsilon() const override { return 1e-5; }
-    bool uses_lines() const override { return false; }
+    PowerOracle()
+        : NamedOracle(
+              "power",
+              "power transported through the link, unoccluded centre estimate (Hanrahan 1991)",
+              1e-5, false) {}
 
     double geometric_factor(const LinkGeometry& g) const override {
         const double d2 = g.centre_distance * g.centre_distance;

@@ -46,7 +46,8 @@ const Oracle& find_oracle(std::string_view name) {
         if (o->name() == name) return *o;
         valid += (valid.empty() ? "" : ", ") + std::string(o->name());
     }
-    throw std::invalid_argument("unknown oracle '" + std::string(name) + "' (valid: " + valid + ")");
+    throw std::invalid_argument("unknown oracle '" + std::string(name) + "' (valid: " + valid +
+                                ")");
 }
 
 }  // namespace hmcr

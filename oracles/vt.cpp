@@ -14,14 +14,10 @@
 namespace hmcr {
 namespace {
 
-class VarianceOracle final : public Oracle {
+class VarianceOracle final : public NamedOracle {
 public:
-    std::string_view name() const override { return "vt"; }
-    std::string_view description() const override {
-        return "variance of the normalised sampled kernel (Rigau 2003)";
-    }
-    double default_epsilon() const override { return 5e-4; }
-    bool uses_lines() const override { return true; }
+    VarianceOracle()
+        : NamedOracle("vt", "variance of the normalised sampled kernel (Rigau 2003)", 5e-4, true) {}
 
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);
