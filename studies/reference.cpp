@@ -1,0 +1,96 @@
+#include "studies/reference.h"
+
+#include <chrono>
+
+#include "viz/atomic_file.h"
+#include "viz/renderer.h"
+#include "viz/shaded_tracer.h"
+#include "viz/vtk_export.h"
+
+namespace hmcr {
+namespace {
+
+Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint64_t seed) {
+    SolverOptions s;
+    s.uniform_max_area = o.max_area;
+    s.rays = o.rays;
+    s.seed = seed;
+    s.threads = o.threads;
+    s.min_area = 0;   // the uniform mesh decides; limits only cap the depth
+    s.max_depth = 24;
+    return solve(scene.mesh, s);
+}
+
+// The object-space error relative to the reflected radiosity (viz/object_space_error.h).
+ObjectErrorOptions reflected_error_options(const Scene& scene) {
+    ObjectErrorOptions o;
+    for (const Patch& p : build_patch_set(scene.mesh).patches) o.emission.push_back(p.emission);
+    return o;
+}
+
+nlohmann::json errors_json(const ImageErrors& e) {
+    return {{"rmse_a", e.rmse_a}, {"rmse_p", e.rmse_p}, {"psnr_a", e.psnr_a}, {"psnr_p", e.psnr_p}};
+}
+
+}  // namespace
+
+Reference compute_reference(const Scene& scene, const ReferenceOptions& o,
+                            const ReferenceProgress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    auto step = [&](const std::string& s) {
+        if (progress) progress(s);
+    };
+    Reference ref;
+    step("solving with seed " + std::to_string(o.seed));
+    ref.solution = solve_uniform(scene, o, o.seed);
+    ref.mesh = build_shaded_mesh(*ref.solution.hierarchy, scene.mesh, o.crease_degrees);
+    step("solving with seed " + std::to_string(o.seed + 1) + " for the convergence report");
+    const Solution second = solve_uniform(scene, o, o.seed + 1);
+    const ShadedMesh second_mesh = build_shaded_mesh(*second.hierarchy, scene.mesh, o.crease_degrees);
+    step("comparing the two seeds");
+    ref.object_error = object_space_error(second_mesh, ref.mesh, reflected_error_options(scene));
+    const ShadedTracer first_tracer(ref.mesh), second_tracer(second_mesh);
+    const RenderOptions render_options{o.samples_per_axis};
+    for (const View& v : scene.views) {
+        step("rendering view " + v.name);
+        Image image = render(first_tracer, v, render_options);
+        const double exposure = exposure_from(image);
+        const Image other = render(second_tracer, v, render_options);
+        ref.view_errors[v.name] = image_errors(quantise(other, exposure), quantise(image, exposure));
+        ref.views[v.name] = {std::move(image), exposure};
+    }
+    ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return ref;
+}
+
+void write_reference(const std::filesystem::path& dir, const Scene& scene,
+                     const Reference& ref, const ReferenceOptions& o, nlohmann::json summary) {
+    const SolveStats& st = ref.solution.stats;
+    VtpMetadata meta{"uniform", 0, 0, st.rays, o.seed, st.leaves, st.iterations.size(),
+                     double(st.iterations.size())};
+    write_vtp(dir / "reference.vtp", ref.mesh, meta);
+    nlohmann::json views = nlohmann::json::object(), errors = nlohmann::json::object();
+    for (const auto& [name, view] : ref.views) {
+        write_pfm(dir / "views" / (name + ".pfm"), view.image);
+        write_png(dir / "views" / (name + ".png"), view.image, view.exposure);
+        views[name] = {{"exposure", view.exposure}};
+        errors[name] = errors_json(ref.view_errors.at(name));
+    }
+    summary["reference"] = {
+        {"max_area_m2", o.max_area},
+        {"rays_per_seed", o.rays},
+        {"seeds", {o.seed, o.seed + 1}},
+        {"samples_per_axis", o.samples_per_axis},
+        {"views", views},
+        {"convergence",
+         {{"what", "the second seed's solution measured against the first"},
+          {"object_space_relative_l2", ref.object_error.relative_l2},
+          {"object_space_samples", ref.object_error.samples},
+          {"object_space_unmatched", ref.object_error.unmatched},
+          {"views", errors}}},
+        {"seconds", ref.seconds},
+        {"scene", scene.name}};
+    write_text_atomically(dir / "reference.json", summary.dump(2) + "\n");
+}
+
+}  // namespace hmcr

@@ -1,0 +1,62 @@
+// Converged references (SPEC section 6): a fixed uniform mesh solved with many rays, twice with
+// different seeds, so that the reference states its own convergence in the study's metrics.
+//
+// On disk (`hmcr reference SCENE -o DIR`):
+//   DIR/reference.vtp          the solution of the first seed (a normal hmcr solution)
+//   DIR/reference.json         its run summary plus "reference": options, the exposure of every
+//                              view, and the convergence report (second seed vs first)
+//   DIR/views/VIEW.pfm         the first seed's image of every view, linear radiance
+//   DIR/views/VIEW.png         the same, 8-bit sRGB at the view's fixed exposure
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "meshes/scene.h"
+#include "radiosity/solver.h"
+#include "viz/image.h"
+#include "viz/metrics.h"
+#include "viz/object_space_error.h"
+#include "viz/shaded_mesh.h"
+
+namespace hmcr {
+
+struct ReferenceOptions {
+    double max_area = 1e-4;           // m^2: every patch cut to elements no larger
+    std::uint64_t rays = 200'000'000;
+    std::uint64_t seed = 1;           // the second solve uses seed + 1
+    int samples_per_axis = 2;         // supersampling of the view images
+    int threads = 0;
+    double crease_degrees = 30;
+};
+
+struct ViewImage {
+    Image image;        // linear radiance
+    double exposure;    // fixed from this image for every image of a study
+};
+
+struct Reference {
+    Solution solution;  // first seed
+    ShadedMesh mesh;
+    std::map<std::string, ViewImage> views;
+    // Convergence: the second seed's solution measured against the first, as a study would.
+    ObjectError object_error;
+    std::map<std::string, ImageErrors> view_errors;
+    double seconds = 0;
+};
+
+using ReferenceProgress = std::function<void(const std::string& step)>;
+
+Reference compute_reference(const Scene& scene, const ReferenceOptions& options,
+                            const ReferenceProgress& progress = {});
+
+// Writes the folder described above (every file atomically).
+void write_reference(const std::filesystem::path& dir, const Scene& scene,
+                     const Reference& reference, const ReferenceOptions& options,
+                     nlohmann::json summary);
+
+}  // namespace hmcr
