@@ -1,0 +1,284 @@
+// The study's cell files and tables (studies/study.h): JSON per cell, the long-form table.json
+// and table.csv, the paper's table.md and the error-versus-elements plot.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "studies/plot.h"
+#include "studies/study.h"
+#include "viz/atomic_file.h"
+#include "viz/image.h"
+
+namespace hmcr {
+namespace {
+
+// JSON has no inf or NaN: nlohmann writes them as null, and null reads back as `missing`.
+double number(const nlohmann::json& j, const char* key, double missing) {
+    const auto it = j.find(key);
+    return it == j.end() || it->is_null() ? missing : it->get<double>();
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Mean and standard error (sample sd / sqrt(n)) over seeds.
+struct MeanSe {
+    double mean = kNaN, se = kNaN;
+    std::size_t n = 0;
+};
+
+MeanSe mean_se(const std::vector<double>& v) {
+    MeanSe m;
+    m.n = v.size();
+    if (v.empty()) return m;
+    double sum = 0;
+    for (double x : v) sum += x;
+    m.mean = sum / double(v.size());
+    if (v.size() < 2 || !std::isfinite(m.mean)) return m;
+    double ss = 0;
+    for (double x : v) ss += (x - m.mean) * (x - m.mean);
+    m.se = std::sqrt(ss / double(v.size() - 1)) / std::sqrt(double(v.size()));
+    return m;
+}
+
+double view_mean(const CellResult& c, double ImageErrors::*field) {
+    double sum = 0;
+    for (const auto& [name, e] : c.views) sum += e.*field;
+    return c.views.empty() ? kNaN : sum / double(c.views.size());
+}
+
+// One column of table.md: how a cell gives its value, how it prints, which way is better.
+struct Column {
+    const char* title;
+    std::function<double(const CellResult&)> value;
+    const char* format;
+    int better;  // -1: lower is better, +1: higher, 0: not an error column
+};
+
+std::vector<Column> md_columns() {
+    return {
+        {"RMSEa", [](const CellResult& c) { return view_mean(c, &ImageErrors::rmse_a); }, "{:.2f}",
+         -1},
+        {"RMSEp", [](const CellResult& c) { return view_mean(c, &ImageErrors::rmse_p); }, "{:.2f}",
+         -1},
+        {"PSNRa (dB)", [](const CellResult& c) { return view_mean(c, &ImageErrors::psnr_a); },
+         "{:.2f}", 1},
+        {"PSNRp (dB)", [](const CellResult& c) { return view_mean(c, &ImageErrors::psnr_p); },
+         "{:.2f}", 1},
+        {"object error", [](const CellResult& c) { return c.object_error.relative_l2; }, "{:.4f}",
+         -1},
+        {"leaves", [](const CellResult& c) { return double(c.leaves); }, "{:.0f}", 0},
+        {"ε", [](const CellResult& c) { return c.epsilon; }, "{:.3g}", 0},
+        {"seconds", [](const CellResult& c) { return c.seconds; }, "{:.1f}", 0},
+    };
+}
+
+std::string format_mean_se(const MeanSe& m, const char* format) {
+    if (m.n == 0) return "–";
+    const std::string mean = fmt::format(fmt::runtime(format), m.mean);
+    if (m.n < 2 || !std::isfinite(m.se)) return mean;
+    return mean + " ± " + fmt::format(fmt::runtime(format), m.se);
+}
+
+std::vector<const CellResult*> select(const std::vector<CellResult>& cells, std::size_t budget,
+                                      const std::string& oracle, bool ok_only) {
+    std::vector<const CellResult*> out;
+    for (const CellResult& c : cells)
+        if (c.budget == budget && c.oracle == oracle && (!ok_only || c.ok())) out.push_back(&c);
+    return out;
+}
+
+std::vector<std::string> oracle_order(const std::vector<CellResult>& cells) {
+    std::vector<std::string> out;
+    for (const CellResult& c : cells)
+        if (std::find(out.begin(), out.end(), c.oracle) == out.end()) out.push_back(c.oracle);
+    return out;
+}
+
+std::string md_budget_table(std::size_t budget, const std::vector<CellResult>& cells) {
+    const std::vector<Column> columns = md_columns();
+    const std::vector<std::string> oracles = oracle_order(cells);
+    std::vector<std::vector<MeanSe>> stats;  // [oracle][column]
+    for (const std::string& oracle : oracles) {
+        stats.emplace_back();
+        for (const Column& col : columns) {
+            std::vector<double> v;
+            for (const CellResult* c : select(cells, budget, oracle, true))
+                v.push_back(col.value(*c));
+            stats.back().push_back(mean_se(v));
+        }
+    }
+    std::string out = fmt::format("## {} leaves\n\n| oracle | seeds |", budget);
+    std::string rule = "|:--|--:|";
+    for (const Column& col : columns) {
+        out += fmt::format(" {} |", col.title);
+        rule += "--:|";
+    }
+    out += "\n" + rule + "\n";
+    for (std::size_t o = 0; o < oracles.size(); ++o) {
+        out += fmt::format("| {} | {}/{} |", oracles[o], stats[o][0].n,
+                           select(cells, budget, oracles[o], false).size());
+        for (std::size_t k = 0; k < columns.size(); ++k) {
+            std::string text = format_mean_se(stats[o][k], columns[k].format);
+            bool best = columns[k].better != 0 && stats[o][k].n > 0;
+            for (std::size_t q = 0; q < oracles.size() && best; ++q) {
+                if (stats[q][k].n > 0 &&
+                    columns[k].better * (stats[q][k].mean - stats[o][k].mean) > 0)
+                    best = false;
+            }
+            out += best ? fmt::format(" **{}** |", text) : fmt::format(" {} |", text);
+        }
+        out += "\n";
+    }
+    return out;
+}
+
+std::string md_table(const StudyOptions& o, const std::vector<std::string>& views,
+                     const std::vector<CellResult>& cells) {
+    const std::string scene = cells.empty() ? o.scene : cells.front().scene;
+    std::string out = fmt::format("# Meshing study: {}\n\n", scene);
+    out += fmt::format(
+        "{} rays, N_s = {}, budget tolerance {}%, {} seeds from {}. Mean ± standard error over "
+        "the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 scale and "
+        "PSNR in dB, each averaged over the {} views ({}); object error: the area-weighted "
+        "relative L2 error of the reflected radiosity against the reference; seconds: the "
+        "budget search. The best mean of each error column is in bold.\n\n",
+        o.rays, o.lines, 100 * o.budget_tolerance, o.seeds, o.first_seed, views.size(),
+        fmt::join(views, ", "));
+    for (std::size_t b : o.budgets) out += md_budget_table(b, cells) + "\n";
+    return out;
+}
+
+std::string csv_number(double x) {
+    if (std::isnan(x)) return "";
+    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+    return fmt::format("{}", x);
+}
+
+std::string csv_text(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+constexpr const char* kCsvHeader =
+    "scene,oracle,budget,seed,status,epsilon,leaves,probes,seconds,view,rmse_a,rmse_p,psnr_a,"
+    "psnr_p,object_error,object_samples,object_unmatched,message";
+
+std::string csv_table(const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
+    std::string out = std::string(kCsvHeader) + "\n";
+    for (const CellResult& c : cells) {
+        for (const std::string& view : views) {
+            const auto it = c.views.find(view);
+            const ImageErrors e =
+                it != c.views.end() ? it->second : ImageErrors{kNaN, kNaN, kNaN, kNaN};
+            const double object = c.ok() ? c.object_error.relative_l2 : kNaN;
+            out +=
+                fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+                            csv_text(c.scene), c.oracle, c.budget, c.seed, c.status,
+                            csv_number(c.epsilon), c.leaves, c.probes.size(), csv_number(c.seconds),
+                            csv_text(view), csv_number(e.rmse_a), csv_number(e.rmse_p),
+                            csv_number(e.psnr_a), csv_number(e.psnr_p), csv_number(object),
+                            c.object_error.samples, c.object_error.unmatched, csv_text(c.message));
+        }
+    }
+    return out;
+}
+
+Image8 error_plot(const std::vector<CellResult>& cells, const std::vector<std::size_t>& budgets) {
+    LogLogPlot plot;
+    plot.x_label = "leaves";
+    plot.y_label = "object error";
+    for (const std::string& oracle : oracle_order(cells)) {
+        PlotSeries s{oracle, {}};
+        for (std::size_t b : budgets) {
+            std::vector<double> leaves, error;
+            for (const CellResult* c : select(cells, b, oracle, true)) {
+                leaves.push_back(double(c->leaves));
+                error.push_back(c->object_error.relative_l2);
+            }
+            if (!leaves.empty()) s.points.push_back({mean_se(leaves).mean, mean_se(error).mean});
+        }
+        plot.series.push_back(std::move(s));
+    }
+    return draw_log_log(plot);
+}
+
+}  // namespace
+
+nlohmann::json cell_to_json(const CellResult& c) {
+    nlohmann::json probes = nlohmann::json::array(), views = nlohmann::json::object();
+    for (const BudgetProbe& p : c.probes)
+        probes.push_back({{"epsilon", p.epsilon}, {"leaves", p.leaves}, {"seconds", p.seconds}});
+    for (const auto& [name, e] : c.views)
+        views[name] = {
+            {"rmse_a", e.rmse_a}, {"rmse_p", e.rmse_p}, {"psnr_a", e.psnr_a}, {"psnr_p", e.psnr_p}};
+    return {{"scene", c.scene},
+            {"oracle", c.oracle},
+            {"budget", c.budget},
+            {"seed", c.seed},
+            {"status", c.status},
+            {"message", c.message},
+            {"epsilon", c.epsilon},
+            {"leaves", c.leaves},
+            {"probes", c.probes.size()},
+            {"probe_history", probes},
+            {"seconds", c.seconds},
+            {"views", views},
+            {"object_error",
+             {{"relative_l2", c.object_error.relative_l2},
+              {"samples", c.object_error.samples},
+              {"unmatched", c.object_error.unmatched}}}};
+}
+
+CellResult cell_from_json(const nlohmann::json& j) {
+    CellResult c;
+    c.scene = j.at("scene").get<std::string>();
+    c.oracle = j.at("oracle").get<std::string>();
+    c.budget = j.at("budget").get<std::size_t>();
+    c.seed = j.at("seed").get<std::uint64_t>();
+    c.status = j.at("status").get<std::string>();
+    c.message = j.value("message", "");
+    c.epsilon = number(j, "epsilon", kNaN);
+    c.leaves = j.at("leaves").get<std::size_t>();
+    for (const auto& p : j.at("probe_history"))
+        c.probes.push_back({number(p, "epsilon", kNaN), p.at("leaves").get<std::size_t>(),
+                            number(p, "seconds", kNaN)});
+    c.seconds = number(j, "seconds", kNaN);
+    for (const auto& [name, e] : j.at("views").items())
+        c.views[name] = {number(e, "rmse_a", kNaN), number(e, "rmse_p", kNaN),
+                         number(e, "psnr_a", kInf), number(e, "psnr_p", kInf)};
+    const nlohmann::json& oe = j.at("object_error");
+    c.object_error = {number(oe, "relative_l2", kInf), oe.at("samples").get<std::size_t>(),
+                      oe.at("unmatched").get<std::size_t>()};
+    return c;
+}
+
+void write_study_tables(const StudyOptions& o, const std::vector<std::string>& views,
+                        const std::vector<CellResult>& cells) {
+    nlohmann::json all = nlohmann::json::array();
+    for (const CellResult& c : cells) all.push_back(cell_to_json(c));
+    const nlohmann::json table = {{"scene", cells.empty() ? o.scene : cells.front().scene},
+                                  {"options",
+                                   {{"budgets", o.budgets},
+                                    {"oracles", oracle_order(cells)},
+                                    {"seeds", o.seeds},
+                                    {"first_seed", o.first_seed},
+                                    {"rays", o.rays},
+                                    {"lines", o.lines},
+                                    {"budget_tolerance", o.budget_tolerance},
+                                    {"samples_per_axis", o.samples_per_axis},
+                                    {"reference", o.reference.string()}}},
+                                  {"views", views},
+                                  {"cells", all}};
+    write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
+    write_text_atomically(o.output / "table.csv", csv_table(views, cells));
+    write_text_atomically(o.output / "table.md", md_table(o, views, cells));
+    write_png(o.output / "plots" / "error_vs_elements.png", error_plot(cells, o.budgets));
+}
+
+}  // namespace hmcr

@@ -1,0 +1,174 @@
+// A tiny meshing study on the Cornell box (studies/study.h): every documented file with its
+// schema, and resuming: a rerun after one cell's file is deleted recomputes exactly that cell
+// and reproduces the tables, the recomputed cell's timing aside.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "studies/reference.h"
+#include "studies/study.h"
+#include "tests/support/temp_dir.h"
+#include "viz/image.h"
+
+namespace hmcr::test {
+namespace {
+
+std::string read_text(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream s(text);
+    for (std::string line; std::getline(s, line);) out.push_back(line);
+    return out;
+}
+
+// Counts the cells a run computed and skipped.
+struct Counts {
+    int computed = 0, skipped = 0;
+    std::vector<std::string> computed_cells;
+};
+
+StudyProgressFn counting(Counts& counts) {
+    return [&counts](const StudyProgress& p) {
+        EXPECT_LT(p.cell_index, p.cell_count);
+        if (p.stage == StudyProgress::Stage::kSkipped) ++counts.skipped;
+        if (p.stage == StudyProgress::Stage::kDone || p.stage == StudyProgress::Stage::kFailed) {
+            ++counts.computed;
+            counts.computed_cells.push_back(p.cell);
+        }
+    };
+}
+
+// table.json without the timings of one cell (every "seconds", the probes' included).
+nlohmann::json without_timing(nlohmann::json table, const std::string& cell) {
+    for (auto& c : table["cells"]) {
+        if (cell_name(c["scene"], c["oracle"], c["budget"], c["seed"]) != cell) continue;
+        c.erase("seconds");
+        for (auto& p : c["probe_history"]) p.erase("seconds");
+    }
+    return table;
+}
+
+// Markdown table rows without their last column (seconds).
+std::string without_last_column(const std::string& md) {
+    std::string out;
+    for (const std::string& line : lines_of(md)) {
+        const auto cut = line.rfind(" | ", line.size() - 2);
+        out += (line.rfind("| ", 0) == 0 && cut != std::string::npos ? line.substr(0, cut) : line) +
+               "\n";
+    }
+    return out;
+}
+
+class TinyStudy : public testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        s_dir = new TempDir;
+        const Scene scene = load_scene("cornell");
+        ReferenceOptions ro;
+        ro.max_area = 4e-3;
+        ro.rays = 2'000'000;
+        write_reference(s_dir->path() / "ref", scene, compute_reference(scene, ro), ro, {});
+    }
+    static void TearDownTestSuite() { delete s_dir; }
+
+    StudyOptions options() const {
+        StudyOptions o;
+        o.scene = "cornell";
+        o.reference = s_dir->path() / "ref";
+        o.budgets = {200};
+        o.oracles = {"power", "kl"};
+        o.seeds = 2;
+        o.rays = 200'000;
+        o.output = m_out.path();
+        return o;
+    }
+
+    static TempDir* s_dir;
+    TempDir m_out;
+};
+
+TempDir* TinyStudy::s_dir = nullptr;
+
+TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
+    const StudyOptions o = options();
+    Counts first;
+    run_study(o, counting(first));
+    EXPECT_EQ(first.computed, 4);
+    EXPECT_EQ(first.skipped, 0);
+    const std::filesystem::path out = o.output;
+
+    const nlohmann::json table = nlohmann::json::parse(read_text(out / "table.json"));
+    ASSERT_EQ(table.at("cells").size(), 4u);
+    EXPECT_EQ(table.at("views"), nlohmann::json({"camera", "corner"}));
+    for (const auto& c : table["cells"]) {
+        for (const char* key : {"scene", "oracle", "budget", "seed", "status", "epsilon", "leaves",
+                                "probes", "seconds", "views", "object_error"})
+            EXPECT_TRUE(c.contains(key)) << key;
+        ASSERT_EQ(c["status"], "ok") << c["message"];
+        EXPECT_NEAR(double(c["leaves"]), 200, 2.0);
+        EXPECT_LT(double(c["object_error"]["relative_l2"]), 1.0);
+        for (const char* view : {"camera", "corner"}) {
+            for (const char* key : {"rmse_a", "rmse_p", "psnr_a", "psnr_p"})
+                EXPECT_TRUE(c["views"][view].contains(key)) << view << " " << key;
+        }
+        const std::string name = cell_name(c["scene"], c["oracle"], c["budget"], c["seed"]);
+        EXPECT_TRUE(std::filesystem::exists(out / "cells" / (name + ".json"))) << name;
+        EXPECT_TRUE(std::filesystem::exists(out / "meshes" / (name + ".vtp"))) << name;
+        for (const char* view : {"camera", "corner"})
+            EXPECT_EQ(read_png(out / "images" / (name + "-" + view + ".png")).width, 512);
+    }
+
+    const std::vector<std::string> csv = lines_of(read_text(out / "table.csv"));
+    ASSERT_EQ(csv.size(), 1u + 4 * 2);  // header, one row per cell and view
+    EXPECT_EQ(csv[0].rfind("scene,oracle,budget,seed,status,epsilon,leaves,probes,seconds,view,"
+                           "rmse_a,rmse_p,psnr_a,psnr_p,object_error",
+                           0),
+              0u);
+
+    const std::string md = read_text(out / "table.md");
+    int rows = 0;
+    for (const std::string& line : lines_of(md))
+        rows += line.rfind("| power | 2/2 |", 0) == 0 || line.rfind("| kl | 2/2 |", 0) == 0;
+    EXPECT_EQ(rows, 2) << md;
+    EXPECT_NE(md.find("**"), std::string::npos) << md;  // the best values are bold
+
+    const Image8 plot = read_png(out / "plots" / "error_vs_elements.png");
+    EXPECT_GT(plot.width, 0);
+
+    // Resume: only the deleted cell is computed again.
+    const std::string deleted = cell_name("cornell", "kl", 200, 2);
+    std::filesystem::remove(out / "cells" / (deleted + ".json"));
+    Counts second;
+    run_study(o, counting(second));
+    EXPECT_EQ(second.computed, 1);
+    EXPECT_EQ(second.skipped, 3);
+    EXPECT_EQ(second.computed_cells, std::vector<std::string>{deleted});
+    const nlohmann::json again = nlohmann::json::parse(read_text(out / "table.json"));
+    EXPECT_EQ(without_timing(again, deleted), without_timing(table, deleted));
+    EXPECT_EQ(without_last_column(read_text(out / "table.md")), without_last_column(md));
+}
+
+TEST_F(TinyStudy, RecordsAnUnreachableBudgetAsAFailedCell) {
+    StudyOptions o = options();
+    o.budgets = {5};  // fewer leaves than the Cornell box has patches
+    o.oracles = {"power"};
+    o.seeds = 1;
+    Counts counts;
+    run_study(o, counting(counts));
+    EXPECT_EQ(counts.computed, 1);
+    const nlohmann::json table = nlohmann::json::parse(read_text(o.output / "table.json"));
+    ASSERT_EQ(table.at("cells").size(), 1u);
+    EXPECT_EQ(table["cells"][0]["status"], "failed");
+    EXPECT_FALSE(std::string(table["cells"][0]["message"]).empty());
+    EXPECT_NE(read_text(o.output / "table.md").find("| power | 0/1 |"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hmcr::test
