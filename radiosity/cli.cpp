@@ -226,6 +226,8 @@ int run_cli(int argc, char** argv) {
     ReferenceArgs reference_args;
     auto* render_cmd = add_render_command(app, render_args);
     auto* reference_cmd = add_reference_command(app, reference_args);
+    StudyArgs study_args;
+    auto* study_cmd = add_study_command(app, study_args);
     auto* oracles = app.add_subcommand("oracles", "list the refinement oracles");
     auto* scenes = app.add_subcommand("scenes", "list the bundled scenes");
     try {
@@ -242,6 +244,7 @@ int run_cli(int argc, char** argv) {
         if (scenes->parsed()) return list_scenes();
         if (render_cmd->parsed()) return run_render(render_args);
         if (reference_cmd->parsed()) return run_reference(reference_args, join_args(argc, argv));
+        if (study_cmd->parsed()) return run_study_command(study_args);
         return run_solve(solve_args, join_args(argc, argv));
     } catch (const SceneError& e) {
         return fail(e.what());

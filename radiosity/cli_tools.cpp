@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <fstream>
+#include <sstream>
 
 #include "radiosity/run_summary.h"
 #include "viz/vtk_import.h"
@@ -104,6 +105,84 @@ int run_reference(const ReferenceArgs& a, const std::string& command_line) {
                    scene.name, ref.solution.stats.leaves, a.options.rays, ref.seconds,
                    ref.object_error.relative_l2, dir.string());
     }
+    return 0;
+}
+
+CLI::App* add_study_command(CLI::App& app, StudyArgs& a) {
+    auto* cmd = app.add_subcommand(
+        "study", "every oracle x budget x seed against a reference: tables, images, plots");
+    StudyOptions& o = a.options;
+    cmd->add_option("scene", o.scene, "bundled scene name, scene .json, or .obj")->required();
+    cmd->add_option("--reference", o.reference, "folder written by `hmcr reference`")->required();
+    cmd->add_option("--budgets", a.budgets, "leaf counts, comma-separated")->required();
+    cmd->add_option("--oracles", a.oracles, "comma-separated names, or all")->capture_default_str();
+    cmd->add_option("--seeds", o.seeds, "seeds per cell")->capture_default_str();
+    cmd->add_option("--first-seed", o.first_seed, "the first seed")->capture_default_str();
+    cmd->add_option("--rays", o.rays, "rays per solve")->capture_default_str();
+    cmd->add_option("--lines", o.lines, "N_s")->capture_default_str();
+    cmd->add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
+    cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();
+    cmd->add_option("--threads", o.threads, "worker threads, 0 = all")->capture_default_str();
+    cmd->add_option("-o,--output", o.output, "output folder (rerunning resumes)")->required();
+    cmd->add_flag("-q,--quiet", a.quiet, "print only errors");
+    return cmd;
+}
+
+namespace {
+
+std::vector<std::string> split_commas(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        if (!item.empty()) out.push_back(item);
+    }
+    return out;
+}
+
+std::size_t parse_budget(const std::string& text) {
+    std::size_t used = 0;
+    long long v = 0;
+    try {
+        v = std::stoll(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || v <= 0) {
+        throw std::invalid_argument("budgets: '" + text + "' is not a positive leaf count");
+    }
+    return std::size_t(v);
+}
+
+void print_study_progress(const StudyProgress& p) {
+    using Stage = StudyProgress::Stage;
+    const std::string where = fmt::format("hmcr study [{}/{}] {}", p.cell_index + 1, p.cell_count,
+                                          p.cell);
+    const std::string left = p.remaining_seconds >= 0
+                                 ? fmt::format(", about {:.0f} s left", p.remaining_seconds)
+                                 : std::string();
+    switch (p.stage) {
+        case Stage::kSkipped: fmt::print(stderr, "{}: done before, skipped\n", where); break;
+        case Stage::kProbe:
+            fmt::print(stderr, "{}: probe {}: epsilon {:.4g} -> {} leaves\n", where, p.probe,
+                       p.last_probe.epsilon, p.last_probe.leaves);
+            break;
+        case Stage::kMeasuring: fmt::print(stderr, "{}: rendering and measuring\n", where); break;
+        case Stage::kDone:
+            fmt::print(stderr, "{}: done ({:.0f} s elapsed{})\n", where, p.elapsed_seconds, left);
+            break;
+        case Stage::kFailed:
+            fmt::print(stderr, "{}: budget not reached, recorded as failed{}\n", where, left);
+            break;
+    }
+}
+
+}  // namespace
+
+int run_study_command(StudyArgs& a) {
+    for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
+    a.options.oracles = split_commas(a.oracles);
+    run_study(a.options, a.quiet ? StudyProgressFn{} : StudyProgressFn(print_study_progress));
+    if (!a.quiet) fmt::print("study written to {}\n", a.options.output.string());
     return 0;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "studies/reference.h"
+#include "studies/study.h"
 #include "viz/renderer.h"
 
 namespace hmcr {
@@ -27,7 +28,16 @@ struct ReferenceArgs {
     bool quiet = false;
 };
 
+struct StudyArgs {
+    StudyOptions options;
+    std::string budgets;  // "2000,5000,19000"
+    std::string oracles = "all";
+    bool quiet = false;
+};
+
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);
+CLI::App* add_study_command(CLI::App& app, StudyArgs& args);
+int run_study_command(StudyArgs& args);
 CLI::App* add_reference_command(CLI::App& app, ReferenceArgs& args);
 int run_render(const RenderArgs& args);
 int run_reference(const ReferenceArgs& args, const std::string& command_line);
