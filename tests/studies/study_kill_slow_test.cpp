@@ -1,0 +1,80 @@
+// An interrupted study loses at most the cell in flight: `hmcr study` is killed (SIGKILL) after
+// its first cell is written, then run again; the rerun skips every cell the first run finished
+// and completes the rest.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "tests/support/temp_dir.h"
+
+namespace hmcr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::size_t finished_cells(const fs::path& dir) {
+    std::size_t n = 0;
+    if (!fs::exists(dir / "cells")) return 0;
+    for (const auto& e : fs::directory_iterator(dir / "cells")) n += e.path().extension() == ".json";
+    return n;
+}
+
+int run(const std::string& args, const fs::path& log) {
+    const std::string cmd = std::string(HMCR_BINARY) + " " + args + " >/dev/null 2>" + log.string();
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string slurp(const fs::path& p) {
+    std::stringstream s;
+    s << std::ifstream(p).rdbuf();
+    return s.str();
+}
+
+TEST(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
+    TempDir dir;
+    const fs::path ref = dir.path() / "ref", out = dir.path() / "study";
+    ASSERT_EQ(run("reference plates --max-area 0.05 --rays 20000 -q -o " + ref.string(),
+                  dir.path() / "ref.log"), 0);
+    const std::string study = "study plates --reference " + ref.string() +
+                              " --budgets 60,120 --oracles power,kl --seeds 2 --rays 400000 -o " +
+                              out.string();
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        execl("/bin/sh", "sh", "-c", (std::string("exec ") + HMCR_BINARY + " " + study +
+                                      " >/dev/null 2>/dev/null").c_str(), nullptr);
+        _exit(127);
+    }
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (finished_cells(out) == 0 && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    kill(child, SIGKILL);
+    int status = 0;
+    waitpid(child, &status, 0);
+    const std::size_t before = finished_cells(out);
+    ASSERT_GE(before, 1u);
+    ASSERT_LT(before, 8u) << "the study finished before it could be killed";
+    EXPECT_FALSE(fs::exists(out / "table.md"));
+
+    ASSERT_EQ(run(study, dir.path() / "rerun.log"), 0);
+    const std::string log = slurp(dir.path() / "rerun.log");
+    std::size_t skipped = 0;
+    for (std::size_t at = 0; (at = log.find("done before, skipped", at)) != std::string::npos; ++at) {
+        ++skipped;
+    }
+    EXPECT_EQ(skipped, before) << log;
+    EXPECT_EQ(finished_cells(out), 8u);
+    EXPECT_TRUE(fs::exists(out / "table.md"));
+}
+
+}  // namespace
+}  // namespace hmcr::test
