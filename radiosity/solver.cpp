@@ -26,6 +26,24 @@ double seconds_since(Clock::time_point t) {
 // 0.005 on the reflected fraction, for well under a millisecond.
 constexpr std::uint64_t kPilotRays = 4096;
 
+// The link cache of the line-based oracles; none for power or a fixed mesh (no oracle asked).
+std::unique_ptr<LinkCache> make_link_cache(const Oracle& oracle, const SolverOptions& o) {
+    if (!oracle.uses_lines() || o.cache_mb <= 0 || o.uniform_max_area > 0) return nullptr;
+    return std::make_unique<LinkCache>(std::size_t(o.cache_mb * (1 << 20)));
+}
+
+void add_iteration(SolveStats& st, const IterationOutcome& out) {
+    st.rays += out.rays;
+    st.oracle_calls += out.counters.oracle_calls;
+    st.oracle_evaluations += out.counters.oracle_evaluations;
+    st.cache_hits += out.counters.cache_hits;
+    st.lines_cast += out.counters.lines_cast;
+    st.oracle_seconds += 1e-9 * double(out.counters.oracle_nanoseconds);
+    st.shot_power += out.shot_power;
+    st.escaped_power += out.escaped_power;
+    st.back_face_power += out.back_face_power;
+}
+
 }  // namespace
 
 std::string SolverOptions::to_string() const {
@@ -82,15 +100,9 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
     sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
                                                 HierarchyLimits{options.min_area, options.max_depth});
     Hierarchy& h = *sol.hierarchy;
-    std::unique_ptr<LinkCache> cache;
-    if (oracle.uses_lines() && options.cache_mb > 0) {
-        cache = std::make_unique<LinkCache>(std::size_t(options.cache_mb * (1 << 20)));
-    }
     const bool fixed_mesh = options.uniform_max_area > 0;
-    if (fixed_mesh) {
-        h.subdivide_uniformly(options.uniform_max_area);
-        cache.reset();
-    }
+    if (fixed_mesh) h.subdivide_uniformly(options.uniform_max_area);
+    const std::unique_ptr<LinkCache> cache = make_link_cache(oracle, options);
     const RefinementContext ctx{h,
                                 oracle,
                                 scene,
@@ -123,15 +135,7 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
         rec.leaves_after = h.leaf_count();
         rec.seconds = seconds_since(t0);
         schedule.record(rec.rays);
-        st.rays += out.rays;
-        st.oracle_calls += out.counters.oracle_calls;
-        st.oracle_evaluations += out.counters.oracle_evaluations;
-        st.cache_hits += out.counters.cache_hits;
-        st.lines_cast += out.counters.lines_cast;
-        st.oracle_seconds += 1e-9 * double(out.counters.oracle_nanoseconds);
-        st.shot_power += out.shot_power;
-        st.escaped_power += out.escaped_power;
-        st.back_face_power += out.back_face_power;
+        add_iteration(st, out);
         st.iterations.push_back(rec);
     }
     st.unshot_power = unshot;
