@@ -1,0 +1,126 @@
+#include "studies/scene_information.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace hmcr {
+namespace {
+
+constexpr std::size_t kChunk = 64;  // patches per parallel task (fixed reduction order)
+
+// Row sums of one batch (or all rays): -sum F log F and sum F log(F / a_j), in bits.
+struct RowTerms {
+    double entropy = 0, mutual = 0;
+};
+
+RowTerms row_terms(const std::vector<FormFactorEntry>& row, double rays,
+                   const std::vector<double>& a) {
+    RowTerms t;
+    for (const FormFactorEntry& e : row) {
+        const double f = e.count / rays;
+        t.entropy -= f * std::log2(f);
+        t.mutual += f * std::log2(f / a[e.patch]);
+    }
+    return t;
+}
+
+// sum_i a_i (row terms of i) for all rays (slot 0) and every batch (slot 1 + b).
+std::vector<RowTerms> channel_terms(const LocalLines& lines, const std::vector<double>& a) {
+    const std::size_t n = a.size(), slots = lines.batches + 1;
+    const std::size_t chunks = (n + kChunk - 1) / kChunk;
+    std::vector<RowTerms> partial(chunks * slots);
+    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+        for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+            const auto targets = lines.targets(i);
+            for (std::size_t s = 0; s < slots; ++s) {
+                const bool all = s == 0;
+                const auto row =
+                    all ? form_factor_row(targets) : form_factor_row(targets, lines.batches, s - 1);
+                const double rays =
+                    all ? double(targets.size()) : double(targets.size() / lines.batches);
+                const RowTerms t = row_terms(row, rays, a);
+                partial[c * slots + s].entropy += a[i] * t.entropy;
+                partial[c * slots + s].mutual += a[i] * t.mutual;
+            }
+        }
+    });
+    std::vector<RowTerms> total(slots);
+    for (std::size_t c = 0; c < chunks; ++c) {
+        for (std::size_t s = 0; s < slots; ++s) {
+            total[s].entropy += partial[c * slots + s].entropy;
+            total[s].mutual += partial[c * slots + s].mutual;
+        }
+    }
+    return total;
+}
+
+// The estimate from all lines, the standard error from the batch values (sd / sqrt(B)).
+InformationMeasures::Value batch_value(double estimate, const std::vector<double>& batch) {
+    const double b = double(batch.size());
+    if (batch.size() < 2) return {estimate, 0.0};
+    double mean = 0, sq = 0;
+    for (double v : batch) mean += v / b;
+    for (double v : batch) sq += (v - mean) * (v - mean);
+    return {estimate, std::sqrt(sq / (b - 1) / b)};
+}
+
+}  // namespace
+
+InformationMeasures scene_information(const PatchSet& patches, const LocalLineOptions& options) {
+    const EmbreeScene scene(patches.patches);
+    return scene_information(patches, trace_local_lines(patches, scene, options));
+}
+
+InformationMeasures scene_information(const PatchSet& patches, const LocalLines& lines) {
+    std::vector<double> a(patches.patches.size());
+    double h_p = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        a[i] = patches.patches[i].area / patches.total_area;
+        if (a[i] > 0) h_p -= a[i] * std::log2(a[i]);
+    }
+    const std::vector<RowTerms> terms = channel_terms(lines, a);
+    const std::size_t b = lines.batches;
+    std::vector<double> h_s(b), i_s(b), h_j(b), i_cs(b), error(b);
+    double sum = 0;
+    std::size_t hits = 0;
+    for (std::size_t k = 0; k < b; ++k) {
+        h_s[k] = terms[k + 1].entropy;
+        i_s[k] = terms[k + 1].mutual;
+        h_j[k] = h_p + h_s[k];
+        const auto n = lines.log_kernel_count[k];
+        i_cs[k] = n > 0 ? lines.log_kernel_sum[k] / double(n) : 0.0;
+        error[k] = i_cs[k] - i_s[k];
+        sum += lines.log_kernel_sum[k];
+        hits += n;
+    }
+    InformationMeasures m;
+    m.lines = lines.lines();
+    m.lines_missed = m.lines - hits;
+    const double i_cs_all = hits > 0 ? sum / double(hits) : 0.0;
+    m.h_p = {h_p, 0.0};
+    m.h_s = batch_value(terms[0].entropy, h_s);
+    m.i_s = batch_value(terms[0].mutual, i_s);
+    m.h_j = batch_value(h_p + terms[0].entropy, h_j);
+    m.i_cs = batch_value(i_cs_all, i_cs);
+    m.discretisation_error = batch_value(i_cs_all - terms[0].mutual, error);
+    return m;
+}
+
+nlohmann::json to_json(const InformationMeasures& m) {
+    const auto value = [](const InformationMeasures::Value& v) {
+        return nlohmann::json{{"estimate", v.estimate}, {"standard_error", v.standard_error}};
+    };
+    return {{"units", "bits"},
+            {"h_p", value(m.h_p)},
+            {"h_s", value(m.h_s)},
+            {"i_s", value(m.i_s)},
+            {"h_j", value(m.h_j)},
+            {"i_cs", value(m.i_cs)},
+            {"discretisation_error", value(m.discretisation_error)},
+            {"lines", m.lines},
+            {"lines_missed", m.lines_missed}};
+}
+
+}  // namespace hmcr

@@ -1,0 +1,48 @@
+// Information measures of a scene's visibility channel (SPEC section 7; Feixas, del Acebo,
+// Bekaert, Sbert, "An information theory framework for the analysis of scene complexity",
+// Eurographics 1999). The states are the patches of a discretisation, the transition
+// probabilities their form factors, the stationary distribution the relative areas
+// a_i = A_i / A_T. In bits:
+//   H_P = -sum a_i log a_i                       positional entropy
+//   H_S = -sum_i a_i sum_j F_ij log F_ij         scene visibility entropy
+//   I_S = sum_i sum_j a_i F_ij log(F_ij / a_j)   mutual information (= H_P - H_S when closed)
+//   H_J = H_P + H_S                              joint entropy
+//   I^c_S = (1/N) sum_k log(A_T F(x_k, y_k))     continuous mutual information
+//   I^c_S - I_S >= 0                             discretisation error
+// The form factors come from local lines (studies/form_factors.h); I^c_S uses the point kernel
+// on the same lines (skipping those that miss or hit a back face). Standard errors are batch
+// means: each measure is computed on every one of the independent ray batches, and
+// SE = sd(batch values) / sqrt(batches).
+//
+// The plug-in entropies are biased: H_S low and I_S high, by at most log2(1 + (K - 1) / n) for
+// rows of K reachable patches and n rays (Paninski, "Estimation of entropy and mutual
+// information", Neural Computation 2003). Few rays per patch make form factors look spiky.
+#pragma once
+
+#include <cstddef>
+#include <nlohmann/json_fwd.hpp>
+
+#include "radiosity/embree_scene.h"
+#include "radiosity/patch.h"
+#include "studies/form_factors.h"
+
+namespace hmcr {
+
+struct InformationMeasures {
+    struct Value {
+        double estimate = 0;
+        double standard_error = 0;
+    };
+    Value h_p, h_s, i_s, h_j, i_cs, discretisation_error;
+    std::size_t lines = 0;         // local lines traced
+    std::size_t lines_missed = 0;  // lines without a front-face hit (skipped in I^c_S)
+};
+
+// The measures of the discretisation given by the patches, from freshly traced local lines.
+InformationMeasures scene_information(const PatchSet& patches, const LocalLineOptions& options);
+// The same from lines already traced on these patches.
+InformationMeasures scene_information(const PatchSet& patches, const LocalLines& lines);
+
+nlohmann::json to_json(const InformationMeasures& m);
+
+}  // namespace hmcr
