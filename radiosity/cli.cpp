@@ -228,6 +228,8 @@ int run_cli(int argc, char** argv) {
     auto* reference_cmd = add_reference_command(app, reference_args);
     StudyArgs study_args;
     auto* study_cmd = add_study_command(app, study_args);
+    InfoArgs info_args;
+    auto* info_cmd = add_info_command(app, info_args);
     auto* oracles = app.add_subcommand("oracles", "list the refinement oracles");
     auto* scenes = app.add_subcommand("scenes", "list the bundled scenes");
     try {
@@ -245,6 +247,7 @@ int run_cli(int argc, char** argv) {
         if (render_cmd->parsed()) return run_render(render_args);
         if (reference_cmd->parsed()) return run_reference(reference_args, join_args(argc, argv));
         if (study_cmd->parsed()) return run_study_command(study_args);
+        if (info_cmd->parsed()) return run_info(info_args);
         return run_solve(solve_args, join_args(argc, argv));
     } catch (const SceneError& e) {
         return fail(e.what());

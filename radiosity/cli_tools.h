@@ -35,6 +35,15 @@ struct StudyArgs {
     bool quiet = false;
 };
 
+struct InfoArgs {
+    std::string scene;
+    std::uint64_t lines = 1'000'000;
+    std::uint64_t seed = 1;
+    bool json = false;
+};
+
+CLI::App* add_info_command(CLI::App& app, InfoArgs& args);
+int run_info(const InfoArgs& args);
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);
 CLI::App* add_study_command(CLI::App& app, StudyArgs& args);
 int run_study_command(StudyArgs& args);

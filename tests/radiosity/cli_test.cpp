@@ -129,6 +129,19 @@ TEST_F(Cli, RenderRejectsAnUnknownViewAndAMissingSolution) {
     EXPECT_FALSE(fs::exists(m_dir / "x.png"));
 }
 
+TEST_F(Cli, InfoPrintsTheMeasuresAndWarnsOnAnOpenScene) {
+    const CliRun closed = hmcr("info furnace --lines 200000");
+    EXPECT_EQ(closed.exit_code, 0) << closed.err;
+    EXPECT_NE(closed.out.find("I_S   mutual information"), std::string::npos) << closed.out;
+    EXPECT_EQ(closed.err, "");
+    const CliRun open = hmcr("info plates --lines 200000 --json");
+    EXPECT_EQ(open.exit_code, 0) << open.err;
+    const auto j = nlohmann::json::parse(open.out);
+    EXPECT_GT(j["open_fraction"].get<double>(), 0.5);
+    EXPECT_TRUE(j["i_s"].contains("standard_error"));
+    EXPECT_EQ(hmcr("info furnace --lines 3").exit_code, 2);
+}
+
 TEST_F(Cli, QuietPrintsNothing) {
     const CliRun r = hmcr("solve plates --rays 5000 --quiet -o " + (m_dir / "q.vtp").string());
     EXPECT_EQ(r.exit_code, 0);
