@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "radiosity/run_summary.h"
+#include "studies/leaf_patches.h"
 #include "studies/scene_information.h"
 #include "viz/vtk_import.h"
 
@@ -113,7 +114,10 @@ int run_reference(const ReferenceArgs& a, const std::string& command_line) {
 CLI::App* add_info_command(CLI::App& app, InfoArgs& a) {
     auto* cmd = app.add_subcommand(
         "info", "information measures of a scene's patches (entropies, mutual information)");
-    cmd->add_option("scene", a.scene, "bundled scene name, scene .json, or .obj")->required();
+    cmd->add_option("scene", a.scene,
+                    "bundled scene name, scene .json, .obj, or a solution's .vtp (its leaves)")
+        ->required();
+    cmd->add_option("--scene", a.solution_scene, "with a .vtp: the scene it solves (its name)");
     cmd->add_option("--lines", a.lines, "local lines in all")->capture_default_str();
     cmd->add_option("--seed", a.seed, "random seed")->capture_default_str();
     cmd->add_flag("--json", a.json, "machine-readable output");
@@ -122,8 +126,14 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& a) {
 
 int run_info(const InfoArgs& a) {
     if (a.lines < 16) throw std::invalid_argument("lines must be at least 16");
-    const Scene scene = load_scene(a.scene);
-    const PatchSet patches = build_patch_set(scene.mesh);
+    // A solution's leaves are a discretisation too; a scene's patches are the default one.
+    const bool leaves = fs::path(a.scene).extension() == ".vtp";
+    const std::string label = leaves ? (a.solution_scene.empty() ? fs::path(a.scene).stem().string()
+                                                                : a.solution_scene) +
+                                          " (leaves of " + fs::path(a.scene).filename().string() + ")"
+                                    : load_scene(a.scene).name;
+    const PatchSet patches =
+        leaves ? leaf_patches(read_vtp(a.scene)) : build_patch_set(load_scene(a.scene).mesh);
     LocalLineOptions o;
     o.lines = a.lines;
     o.seed = a.seed;
@@ -136,14 +146,14 @@ int run_info(const InfoArgs& a) {
     if (a.json) {
         nlohmann::json j = to_json(m);
         j["open_fraction"] = open;
-        j["scene"] = scene.name;
+        j["scene"] = label;
         j["patches"] = patches.patches.size();
         j["seconds"] = seconds;
         fmt::print("{}\n", j.dump(2));
         return 0;
     }
     fmt::print("{}: {} patches, {} local lines ({} missed), {:.1f} s; bits, +- one standard error\n",
-               scene.name, patches.patches.size(), m.lines, m.lines_missed, seconds);
+               label, patches.patches.size(), m.lines, m.lines_missed, seconds);
     const std::pair<const char*, InformationMeasures::Value> rows[] = {
         {"H_P   positional entropy", m.h_p},     {"H_S   visibility entropy", m.h_s},
         {"I_S   mutual information", m.i_s},     {"H_J   joint entropy", m.h_j},

@@ -36,7 +36,8 @@ struct StudyArgs {
 };
 
 struct InfoArgs {
-    std::string scene;
+    std::string scene;           // a scene, or a solution's .vtp
+    std::string solution_scene;  // with a .vtp: the scene's name, for the report
     std::uint64_t lines = 1'000'000;
     std::uint64_t seed = 1;
     bool json = false;

@@ -1,0 +1,16 @@
+// The leaves of a solution as a discretisation of their own (SPEC section 7: "measures of a
+// discretisation can be taken ... for the leaves of a solution").
+#pragma once
+
+#include "radiosity/patch.h"
+#include "viz/shaded_mesh.h"
+
+namespace hmcr {
+
+// One patch per cell of a solution's mesh: the cell's polygon without the vertices it carries
+// in the middle of its edges (T-junction points of finer neighbours), i.e. the leaf's own
+// triangle or quad. Material data is left at zero: the information measures need geometry only.
+// Throws std::invalid_argument for a cell that is not a triangle or quad once reduced.
+PatchSet leaf_patches(const ShadedMesh& mesh);
+
+}  // namespace hmcr
