@@ -28,10 +28,6 @@ LinkGeometry centre_geometry(const Hierarchy& h, const Element& i, const Element
     return g;
 }
 
-}  // namespace
-
-namespace {
-
 // The oracle's geometric factor from the pair's own N_s lines (SPEC sections 3 and 4).
 double line_factor(const RefinementContext& ctx, const Element& receiver, const Element& source,
                    RefinementCounters& counters) {
@@ -78,24 +74,6 @@ double link_value(const RefinementContext& ctx, const Element& receiver, const E
     return w * geometric_factor(ctx, receiver, source, counters);
 }
 
-namespace {
-
-// The pair a refused link (i, j) is replaced by: the larger element (of those that may still
-// be split) by its child containing the ray's point on it. Returns false when both are at the
-// limits. Children are created when `create`; otherwise false when they do not exist yet.
-bool next_pair(Hierarchy& h, Element*& i, Element*& j, const Vec2& y_uv, const Vec2& x_uv,
-               bool create) {
-    const bool split_i = h.can_subdivide(*i), split_j = h.can_subdivide(*j);
-    if (!split_i && !split_j) return false;
-    Element*& e = split_i && (!split_j || i->area >= j->area) ? i : j;
-    if (e->is_leaf() && !create) return false;
-    if (create) h.subdivide(*e);
-    e = &h.child_containing(*e, &e == &i ? y_uv : x_uv);
-    return true;
-}
-
-}  // namespace
-
 Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch, const Vec2& y_uv,
                      std::uint32_t source_patch, const Vec2& x_uv, RefinementCounters& counters) {
     Hierarchy& h = ctx.hierarchy;
@@ -103,9 +81,14 @@ Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch,
     if (ctx.fixed_mesh) return h.locate(*i, y_uv);
     Element* j = &h.root(source_patch);
     for (;;) {
-        if (!h.can_subdivide(*i) && !h.can_subdivide(*j)) return *i;  // both at the limits
+        const bool split_i = h.can_subdivide(*i), split_j = h.can_subdivide(*j);
+        if (!split_i && !split_j) return *i;  // both at the limits: accept
         if (link_value(ctx, *i, *j, counters) < ctx.threshold) return *i;
-        next_pair(h, i, j, y_uv, x_uv, true);
+        // Refused: the larger element that may still be split is replaced by its child holding
+        // the ray's point on it (the hit point y on the receiver, the origin x on the source).
+        Element*& e = split_i && (!split_j || i->area >= j->area) ? i : j;
+        h.subdivide(*e);
+        e = &h.child_containing(*e, &e == &i ? y_uv : x_uv);
     }
 }
 
