@@ -5,30 +5,25 @@
 #include <algorithm>
 #include <vector>
 
-#include "radiosity/alias_table.h"
 #include "radiosity/kernel.h"
 #include "radiosity/rng.h"
 #include "radiosity/sampling.h"
 
 namespace hmcr {
-namespace {
 
-// Leaves weighted by A_l |Delta B_l|, frozen for the iteration (Jacobi).
-struct SourceTable {
-    std::vector<const Element*> leaves;
+IterationSources::IterationSources(const Hierarchy& h) {
     std::vector<double> weights;
-    double total = 0;  // S
+    h.for_each_leaf([&](const Element& e) {
+        const double w = e.area * channel_sum(e.unshot);
+        if (w <= 0) return;
+        total += w;
+        leaves.push_back(&e);
+        weights.push_back(w);
+    });
+    if (!leaves.empty()) alias.emplace(weights);
+}
 
-    explicit SourceTable(const Hierarchy& h) {
-        h.for_each_leaf([&](const Element& e) {
-            const double w = e.area * channel_sum(e.unshot);
-            if (w <= 0) return;
-            total += w;
-            leaves.push_back(&e);
-            weights.push_back(w);
-        });
-    }
-};
+namespace {
 
 enum class Fate : std::uint8_t { deposited, escaped, back_face };
 
@@ -45,20 +40,19 @@ struct RayStart {
     Vec3 x, direction;
 };
 
-RayStart start_ray(const Hierarchy& h, const SourceTable& sources, const AliasTable& alias,
-                   Rng& rng) {
-    const Element& leaf = *sources.leaves[alias.sample(rng.uniform())];
+RayStart start_ray(const Hierarchy& h, const IterationSources& sources, Rng& rng) {
+    const Element& leaf = sources.pick(rng.uniform());
     const Patch& src = h.patch(leaf);
     const Vec2 x_uv = sample_element(src, leaf.domain, rng.uniform(), rng.uniform());
     const Vec3 dir = sample_cosine_hemisphere(src.normal, rng.uniform(), rng.uniform());
     return {&leaf, x_uv, src.point(x_uv), dir};
 }
 
-RayResult trace_ray(const RefinementContext& ctx, const SourceTable& sources,
-                    const AliasTable& alias, double power_scale, Rng& rng,
+RayResult trace_ray(const RefinementContext& ctx, const IterationSources& sources,
+                    double power_scale, Rng& rng,
                     RefinementCounters& counters) {
     const Hierarchy& h = ctx.hierarchy;
-    const RayStart start = start_ray(h, sources, alias, rng);
+    const RayStart start = start_ray(h, sources, rng);
     RayResult r;
     r.power = power_scale * start.leaf->unshot / channel_sum(start.leaf->unshot);
     const auto hit = ctx.scene.first_hit(start.x, start.direction);
@@ -82,17 +76,15 @@ constexpr std::uint64_t kPilotStream = std::uint64_t(1) << 62;
 
 }  // namespace
 
-double reflected_fraction(const RefinementContext& ctx, std::uint32_t iteration,
-                          std::uint64_t rays) {
+double reflected_fraction(const RefinementContext& ctx, const IterationSources& sources,
+                          std::uint32_t iteration, std::uint64_t rays) {
     const Hierarchy& h = ctx.hierarchy;
-    const SourceTable sources(h);
     if (sources.total <= 0 || rays == 0) return 0;
-    const AliasTable alias(sources.weights);
     set_tracing_float_mode();
     double reflected = 0;
     for (std::uint64_t k = 0; k < rays; ++k) {
         Rng rng(ctx.seed, iteration, kPilotStream + k);
-        const RayStart start = start_ray(h, sources, alias, rng);
+        const RayStart start = start_ray(h, sources, rng);
         const auto hit = ctx.scene.first_hit(start.x, start.direction);
         if (!hit) continue;
         const Patch& rcv = h.patch_set().patches[hit->patch];
@@ -103,13 +95,11 @@ double reflected_fraction(const RefinementContext& ctx, std::uint32_t iteration,
     return reflected / double(rays);
 }
 
-IterationOutcome shoot_iteration(const RefinementContext& ctx, std::uint32_t iteration,
-                                 std::uint64_t rays,
+IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
+                                 std::uint32_t iteration, std::uint64_t rays,
                                  const std::function<void(std::uint64_t)>& on_batch) {
     IterationOutcome out;
-    const SourceTable sources(ctx.hierarchy);
     if (rays == 0 || sources.total <= 0) return out;
-    const AliasTable alias(sources.weights);
     const double power_scale = sources.total / double(rays);  // S / N_iter
     std::vector<RayResult> results(std::min(rays, kBatchRays));
     std::vector<RefinementCounters> chunk_counters;
@@ -120,7 +110,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, std::uint32_t ite
             set_tracing_float_mode();
             for (std::uint64_t k = c * kGrain; k < std::min(n, (c + 1) * kGrain); ++k) {
                 Rng rng(ctx.seed, iteration, first + k);
-                results[k] = trace_ray(ctx, sources, alias, power_scale, rng, chunk_counters[c]);
+                results[k] = trace_ray(ctx, sources, power_scale, rng, chunk_counters[c]);
             }
         });
         // Deposits in ray order (SPEC section 3, step 6): received += rho * Phi / A.

@@ -121,10 +121,11 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
         const auto t0 = Clock::now();
         IterationRecord rec;
         rec.unshot_before = unshot;
-        const double ratio = reflected_fraction(ctx, it, kPilotRays);
+        const IterationSources sources(h);
+        const double ratio = reflected_fraction(ctx, sources, it, kPilotRays);
         rec.rays = schedule.next(channel_sum(unshot), ratio);
         const std::uint64_t done_before = st.rays;
-        const auto out = shoot_iteration(ctx, it, rec.rays, [&](std::uint64_t n) {
+        const auto out = shoot_iteration(ctx, sources, it, rec.rays, [&](std::uint64_t n) {
             if (progress) progress(std::min(1.0, double(done_before + n) / double(options.rays)));
         });
         st.shooting_seconds += seconds_since(t0);
