@@ -42,7 +42,6 @@ public:
     // The leaf below e containing uv (existing elements only).
     Element& locate(Element& e, const Vec2& uv) const;
 
-    Vec3 centre(const Element& e) const { return e.centre; }
     std::array<Vec3, 4> corners(const Element& e) const;
 
     // Pushes received radiosity to the leaves (Delta B = received, B += received), then pulls

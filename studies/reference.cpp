@@ -21,18 +21,17 @@ Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint6
     return solve(scene.mesh, s);
 }
 
-// The object-space error relative to the reflected radiosity (viz/object_space_error.h).
-ObjectErrorOptions reflected_error_options(const Scene& scene) {
-    ObjectErrorOptions o;
-    for (const Patch& p : build_patch_set(scene.mesh).patches) o.emission.push_back(p.emission);
-    return o;
-}
-
 nlohmann::json errors_json(const ImageErrors& e) {
     return {{"rmse_a", e.rmse_a}, {"rmse_p", e.rmse_p}, {"psnr_a", e.psnr_a}, {"psnr_p", e.psnr_p}};
 }
 
 }  // namespace
+
+ObjectErrorOptions reflected_error_options(const PatchMesh& mesh) {
+    ObjectErrorOptions o;
+    for (const Patch& p : build_patch_set(mesh).patches) o.emission.push_back(p.emission);
+    return o;
+}
 
 Reference compute_reference(const Scene& scene, const ReferenceOptions& o,
                             const ReferenceProgress& progress) {
@@ -48,7 +47,7 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o,
     const Solution second = solve_uniform(scene, o, o.seed + 1);
     const ShadedMesh second_mesh = build_shaded_mesh(*second.hierarchy, scene.mesh, o.crease_degrees);
     step("comparing the two seeds");
-    ref.object_error = object_space_error(second_mesh, ref.mesh, reflected_error_options(scene));
+    ref.object_error = object_space_error(second_mesh, ref.mesh, reflected_error_options(scene.mesh));
     const ShadedTracer first_tracer(ref.mesh), second_tracer(second_mesh);
     const RenderOptions render_options{o.samples_per_axis};
     for (const View& v : scene.views) {

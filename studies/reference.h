@@ -54,6 +54,10 @@ using ReferenceProgress = std::function<void(const std::string& step)>;
 Reference compute_reference(const Scene& scene, const ReferenceOptions& options,
                             const ReferenceProgress& progress = {});
 
+// Object-space error options relative to the reflected radiosity B - E of the scene's patches
+// (viz/object_space_error.h): how references and studies compare solutions.
+ObjectErrorOptions reflected_error_options(const PatchMesh& mesh);
+
 // Writes the folder described above (every file atomically).
 void write_reference(const std::filesystem::path& dir, const Scene& scene,
                      const Reference& reference, const ReferenceOptions& options,

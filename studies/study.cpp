@@ -10,6 +10,7 @@
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "radiosity/patch.h"
+#include "studies/reference.h"
 #include "viz/atomic_file.h"
 #include "viz/image.h"
 #include "viz/renderer.h"
@@ -111,8 +112,7 @@ public:
                     const std::uint64_t seed = o.first_seed + std::uint64_t(s);
                     m_tasks.push_back({oracle, b, seed, cell_name(m_scene.name, oracle, b, seed)});
                 }
-        for (const Patch& p : build_patch_set(m_scene.mesh).patches)
-            m_error_options.emission.push_back(p.emission);
+        m_error_options = reflected_error_options(m_scene.mesh);
     }
 
     void run();

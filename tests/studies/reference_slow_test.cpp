@@ -32,9 +32,8 @@ TEST(Reference, SeedsDifferMuchLessThanA2000ElementPowerSolutionErrs) {
     so.oracle = "power";
     const BudgetResult power = solve_for_budget(scene.mesh, so, {2000, 0.02});
     const ShadedMesh mesh = build_shaded_mesh(*power.solution.hierarchy, scene.mesh);
-    ObjectErrorOptions eo;
-    for (const Patch& p : build_patch_set(scene.mesh).patches) eo.emission.push_back(p.emission);
-    const ObjectError power_error = object_space_error(mesh, ref.mesh, eo);
+    const ObjectError power_error =
+        object_space_error(mesh, ref.mesh, reflected_error_options(scene.mesh));
     std::printf("reference seeds differ by %.4f; power at %zu leaves is off by %.4f (%.1fx)\n",
                 ref.object_error.relative_l2, power.solution.stats.leaves, power_error.relative_l2,
                 power_error.relative_l2 / ref.object_error.relative_l2);
