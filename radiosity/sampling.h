@@ -43,4 +43,17 @@ inline double cosine_hemisphere_pdf(double cos_theta) {
     return cos_theta > 0 ? cos_theta / std::numbers::pi : 0.0;
 }
 
+// Uniform direction on the unit sphere; density 1 / (4 pi) per sr.
+inline Vec3 sample_uniform_sphere(double xi1, double xi2) {
+    const double z = 1 - 2 * xi1, r = std::sqrt(std::max(0.0, 1 - z * z));
+    const double phi = 2 * std::numbers::pi * xi2;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+// Uniform point of the unit disk; density 1 / pi.
+inline Vec2 sample_uniform_disk(double xi1, double xi2) {
+    const double r = std::sqrt(xi1), phi = 2 * std::numbers::pi * xi2;
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
 }  // namespace hmcr

@@ -53,6 +53,42 @@ TEST(Sampling, CosineHemisphereHasMeanCosineTwoThirds) {
     EXPECT_TRUE(within_standard_errors("E[cos theta]", e.mean, 2.0 / 3.0, e.standard_error));
 }
 
+// Uniform on the sphere: a cap {d . u > c} holds (1 - c) / 2 of the directions, whatever the
+// axis u; the projection on u has mean 0 and mean square 1/3.
+TEST(Sampling, UniformSphereFillsEveryCapByItsArea) {
+    Rng rng(3, 0);
+    const Vec3 u = Vec3(-0.2, 0.9, 0.4).normalized();
+    std::vector<double> in_cap(kSamples), along(kSamples), square(kSamples);
+    for (std::size_t k = 0; k < kSamples; ++k) {
+        const Vec3 d = sample_uniform_sphere(rng.uniform(), rng.uniform());
+        ASSERT_NEAR(d.norm(), 1, 1e-12);
+        in_cap[k] = d.dot(u) > 0.6;
+        along[k] = d.dot(u);
+        square[k] = d.dot(u) * d.dot(u);
+    }
+    const Estimate cap = estimate_mean(in_cap), mean = estimate_mean(along),
+                   ms = estimate_mean(square);
+    EXPECT_TRUE(within_standard_errors("cap share", cap.mean, 0.2, cap.standard_error));
+    EXPECT_TRUE(within_standard_errors("E[d.u]", mean.mean, 0.0, mean.standard_error));
+    EXPECT_TRUE(within_standard_errors("E[(d.u)^2]", ms.mean, 1.0 / 3.0, ms.standard_error));
+}
+
+// Uniform on the disk: the inner disk of radius 1/2 holds a quarter of the points, and a
+// half-plane through the centre holds half.
+TEST(Sampling, UniformDiskFillsEveryRegionByItsArea) {
+    Rng rng(4, 0);
+    std::vector<double> inner(kSamples), half(kSamples);
+    for (std::size_t k = 0; k < kSamples; ++k) {
+        const Vec2 p = sample_uniform_disk(rng.uniform(), rng.uniform());
+        ASSERT_LE(p.norm(), 1.0);
+        inner[k] = p.norm() < 0.5;
+        half[k] = 0.6 * p.x() - 0.8 * p.y() > 0;
+    }
+    const Estimate i = estimate_mean(inner), h = estimate_mean(half);
+    EXPECT_TRUE(within_standard_errors("inner share", i.mean, 0.25, i.standard_error));
+    EXPECT_TRUE(within_standard_errors("half share", h.mean, 0.5, h.standard_error));
+}
+
 // On a skewed quad and a triangle, sample_element is uniform by area: each child of the
 // sampled element gets a share of the points equal to its share of the area.
 TEST(Sampling, ElementSamplesAreUniformByArea) {
