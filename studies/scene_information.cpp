@@ -2,8 +2,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+
+#include "studies/form_factors.h"
 
 namespace hmcr {
 namespace {
@@ -26,21 +29,19 @@ RowTerms row_terms(const std::vector<FormFactorEntry>& row, double rays,
     return t;
 }
 
-// sum_i a_i (row terms of i) for all rays (slot 0) and every batch (slot 1 + b).
-std::vector<RowTerms> channel_terms(const LocalLines& lines, const std::vector<double>& a) {
-    const std::size_t n = a.size(), slots = lines.batches + 1;
+// sum_i a_i (row terms of i) for all samples (slot 0) and every batch (slot 1 + b). A row
+// without samples (a patch no line crossed, or none in that batch) is left out.
+std::vector<RowTerms> channel_terms(const ChannelSamples& samples, const std::vector<double>& a) {
+    const std::size_t n = a.size(), slots = samples.batches + 1;
     const std::size_t chunks = (n + kChunk - 1) / kChunk;
     std::vector<RowTerms> partial(chunks * slots);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
         for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
-            const auto targets = lines.targets(i);
             for (std::size_t s = 0; s < slots; ++s) {
-                const bool all = s == 0;
-                const auto row =
-                    all ? form_factor_row(targets) : form_factor_row(targets, lines.batches, s - 1);
-                const double rays =
-                    all ? double(targets.size()) : double(targets.size() / lines.batches);
-                const RowTerms t = row_terms(row, rays, a);
+                const auto targets = s == 0 ? samples.targets(i)
+                                            : samples.targets(i, std::uint32_t(s - 1));
+                if (targets.empty()) continue;
+                const RowTerms t = row_terms(form_factor_row(targets), double(targets.size()), a);
                 partial[c * slots + s].entropy += a[i] * t.entropy;
                 partial[c * slots + s].mutual += a[i] * t.mutual;
             }
@@ -68,20 +69,21 @@ InformationMeasures::Value batch_value(double estimate, const std::vector<double
 
 }  // namespace
 
-InformationMeasures scene_information(const PatchSet& patches, const LocalLineOptions& options) {
+InformationMeasures scene_information(const PatchSet& patches, const LineOptions& options) {
     const EmbreeScene scene(patches.patches);
-    return scene_information(patches, trace_local_lines(patches, scene, options));
+    return scene_information(patches, trace_lines(patches, scene, options), options.method);
 }
 
-InformationMeasures scene_information(const PatchSet& patches, const LocalLines& lines) {
+InformationMeasures scene_information(const PatchSet& patches, const ChannelSamples& samples,
+                                      LineMethod method) {
     std::vector<double> a(patches.patches.size());
     double h_p = 0;
     for (std::size_t i = 0; i < a.size(); ++i) {
         a[i] = patches.patches[i].area / patches.total_area;
         if (a[i] > 0) h_p -= a[i] * std::log2(a[i]);
     }
-    const std::vector<RowTerms> terms = channel_terms(lines, a);
-    const std::size_t b = lines.batches;
+    const std::vector<RowTerms> terms = channel_terms(samples, a);
+    const std::size_t b = samples.batches;
     std::vector<double> h_s(b), i_s(b), h_j(b), i_cs(b), error(b);
     double sum = 0;
     std::size_t hits = 0;
@@ -89,15 +91,19 @@ InformationMeasures scene_information(const PatchSet& patches, const LocalLines&
         h_s[k] = terms[k + 1].entropy;
         i_s[k] = terms[k + 1].mutual;
         h_j[k] = h_p + h_s[k];
-        const auto n = lines.log_kernel_count[k];
-        i_cs[k] = n > 0 ? lines.log_kernel_sum[k] / double(n) : 0.0;
+        const auto n = samples.log_kernel_count[k];
+        i_cs[k] = n > 0 ? samples.log_kernel_sum[k] / double(n) : 0.0;
         error[k] = i_cs[k] - i_s[k];
-        sum += lines.log_kernel_sum[k];
+        sum += samples.log_kernel_sum[k];
         hits += n;
     }
     InformationMeasures m;
-    m.lines = lines.lines();
-    m.lines_missed = m.lines - hits;
+    m.method = method;
+    m.lines = samples.lines;
+    m.samples = samples.samples();
+    m.samples_open = std::size_t(std::count(samples.target.begin(), samples.target.end(),
+                                            ChannelSamples::kNoPatch));
+    for (std::size_t i = 0; i < a.size(); ++i) m.patches_unsampled += samples.targets(i).empty();
     const double i_cs_all = hits > 0 ? sum / double(hits) : 0.0;
     m.h_p = {h_p, 0.0};
     m.h_s = batch_value(terms[0].entropy, h_s);
@@ -119,8 +125,11 @@ nlohmann::json to_json(const InformationMeasures& m) {
             {"h_j", value(m.h_j)},
             {"i_cs", value(m.i_cs)},
             {"discretisation_error", value(m.discretisation_error)},
+            {"method", line_method_name(m.method)},
             {"lines", m.lines},
-            {"lines_missed", m.lines_missed}};
+            {"samples", m.samples},
+            {"samples_open", m.samples_open},
+            {"patches_unsampled", m.patches_unsampled}};
 }
 
 }  // namespace hmcr

@@ -9,8 +9,8 @@
 //   H_J = H_P + H_S                              joint entropy
 //   I^c_S = (1/N) sum_k log(A_T F(x_k, y_k))     continuous mutual information
 //   I^c_S - I_S >= 0                             discretisation error
-// The form factors come from local lines (studies/form_factors.h); I^c_S uses the point kernel
-// on the same lines (skipping those that miss or hit a back face). Standard errors are batch
+// The form factors come from local or global lines (studies/channel_samples.h); I^c_S uses the
+// point kernel on the same rays (skipping those that miss or hit a back face). Standard errors are batch
 // means: each measure is computed on every one of the independent ray batches, and
 // SE = sd(batch values) / sqrt(batches).
 //
@@ -24,7 +24,7 @@
 
 #include "radiosity/embree_scene.h"
 #include "radiosity/patch.h"
-#include "studies/form_factors.h"
+#include "studies/channel_samples.h"
 
 namespace hmcr {
 
@@ -34,14 +34,18 @@ struct InformationMeasures {
         double standard_error = 0;
     };
     Value h_p, h_s, i_s, h_j, i_cs, discretisation_error;
-    std::size_t lines = 0;         // local lines traced
-    std::size_t lines_missed = 0;  // lines without a front-face hit (skipped in I^c_S)
+    LineMethod method = LineMethod::local;
+    std::size_t lines = 0;              // lines traced
+    std::size_t samples = 0;            // rays leaving a patch (local: one per line)
+    std::size_t samples_open = 0;       // of which without a front-face hit (skipped in I^c_S)
+    std::size_t patches_unsampled = 0;  // patches no line crossed: their rows are missing
 };
 
-// The measures of the discretisation given by the patches, from freshly traced local lines.
-InformationMeasures scene_information(const PatchSet& patches, const LocalLineOptions& options);
-// The same from lines already traced on these patches.
-InformationMeasures scene_information(const PatchSet& patches, const LocalLines& lines);
+// The measures of the discretisation given by the patches, from freshly traced lines.
+InformationMeasures scene_information(const PatchSet& patches, const LineOptions& options);
+// The same from samples already traced on these patches.
+InformationMeasures scene_information(const PatchSet& patches, const ChannelSamples& samples,
+                                      LineMethod method);
 
 nlohmann::json to_json(const InformationMeasures& m);
 

@@ -36,7 +36,7 @@ TEST(LeafPatches, CellsBecomeTheirLeavesWithTheSameArea) {
     // The continuous I^c_S does not depend on the discretisation; I_S grows with refinement and
     // stays below I^c_S. The plug-in I_S is biased upward by few lines per leaf (at 2 M lines,
     // about 2,000 per leaf, it read 1.67 > I^c_S = 1.61), so 10 M lines (0.11 bits below).
-    LocalLineOptions lines;
+    LineOptions lines;
     lines.lines = 10'000'000;
     const InformationMeasures coarse = scene_information(build_patch_set(mesh), lines);
     const InformationMeasures fine = scene_information(leaves, lines);

@@ -1,0 +1,32 @@
+#include "studies/channel_samples.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "radiosity/kernel.h"
+
+namespace hmcr {
+
+LineMethod parse_line_method(const std::string& name) {
+    if (name == "local") return LineMethod::local;
+    if (name == "global") return LineMethod::global;
+    throw std::invalid_argument("unknown line method '" + name + "' (local or global)");
+}
+
+const char* line_method_name(LineMethod method) {
+    return method == LineMethod::local ? "local" : "global";
+}
+
+ChannelSamples trace_lines(const PatchSet& patches, const EmbreeScene& scene,
+                           const LineOptions& options) {
+    return options.method == LineMethod::local ? trace_local_lines(patches, scene, options)
+                                               : trace_global_lines(patches, scene, options);
+}
+
+double log_kernel(const Patch& p, const Vec3& x, const Patch& q, const Vec3& d, double total_area) {
+    const double t = q.normal.dot(q.corner[0] - x) / q.normal.dot(d);
+    const double f = point_kernel(x, p.normal, x + t * d, q.normal);
+    return f > 0 ? std::log2(total_area * f) : std::nan("");
+}
+
+}  // namespace hmcr

@@ -1,0 +1,91 @@
+// Samples of a scene's visibility channel (SPEC section 7): rays leaving the front of a patch
+// from an area-uniform point in a cosine-distributed direction, each with the patch whose front
+// face it hits first. F_ij is the share of i's rays that land on j; misses and back-face hits
+// land on no patch. Two ways to draw them (Sbert, "The use of global random directions to
+// compute radiosity", 1997):
+// - local lines: from each patch i, n_i rays with n_i proportional to A_i;
+// - global lines: uniformly distributed lines through the scene's bounding sphere. Along a
+//   line, every surface hit starts a ray on the patch's front side, ending at the neighbouring
+//   hit on that side, so each segment between consecutive hits counts for both end patches.
+//   Lines cross a patch in proportion to its area, with cosine-distributed directions on
+//   either side: the same distribution as local lines, but with random counts per patch.
+// Along every ray that lands on a front face, the continuous kernel log2(A_T F(x, y)) is
+// summed for I^c_S.
+//
+// Line k draws from the keyed stream (seed, key, k) and is traced in fixed blocks, so the
+// samples are independent of the thread count. Line k belongs to batch k % batches: every batch
+// is an independent replicate, for batch-means standard errors.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "radiosity/embree_scene.h"
+#include "radiosity/patch.h"
+
+namespace hmcr {
+
+enum class LineMethod { local, global };
+
+// "local" or "global"; throws std::invalid_argument naming the value otherwise.
+LineMethod parse_line_method(const std::string& name);
+const char* line_method_name(LineMethod method);
+
+struct LineOptions {
+    LineMethod method = LineMethod::local;
+    // Local: rays in all, shared among patches in proportion to area. Global: lines through
+    // the bounding sphere (each gives a sample per surface it crosses).
+    std::uint64_t lines = 1'000'000;
+    std::uint32_t batches = 16;  // independent batches by line index (batch-means errors)
+    std::uint64_t seed = 1;
+};
+
+struct ChannelSamples {
+    static constexpr std::uint32_t kNoPatch = std::numeric_limits<std::uint32_t>::max();
+
+    std::uint32_t batches = 1;
+    std::uint64_t lines = 0;  // lines traced
+    // Samples of patch i in batch b: target[first[i * batches + b] .. first[i * batches + b + 1]).
+    std::vector<std::uint64_t> first;
+    std::vector<std::uint32_t> target;  // front-face hit per sample, or kNoPatch
+    // Per batch: sum of log2(A_T F(x, y)) over the rays that land on a front face, and their
+    // count (a global segment between two front faces counts once).
+    std::vector<double> log_kernel_sum;
+    std::vector<std::uint64_t> log_kernel_count;
+
+    std::size_t patches() const { return (first.size() - 1) / batches; }
+    std::uint64_t samples() const { return target.size(); }
+    std::span<const std::uint32_t> targets(std::size_t patch) const {
+        return range(first[patch * batches], first[(patch + 1) * batches]);
+    }
+    std::span<const std::uint32_t> targets(std::size_t patch, std::uint32_t batch) const {
+        const std::size_t k = patch * batches + batch;
+        return range(first[k], first[k + 1]);
+    }
+
+private:
+    std::span<const std::uint32_t> range(std::uint64_t a, std::uint64_t b) const {
+        return {target.data() + a, b - a};
+    }
+};
+
+// Local rays per patch: a multiple of the batch count, at least one per batch, about N a_i.
+std::vector<std::uint64_t> local_line_counts(const PatchSet& patches, const LineOptions& options);
+
+ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& scene,
+                                 const LineOptions& options);
+ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& scene,
+                                  const LineOptions& options);
+// By options.method.
+ChannelSamples trace_lines(const PatchSet& patches, const EmbreeScene& scene,
+                           const LineOptions& options);
+
+// log2(A_T F(x, y)) for the ray from x on p to y on q along the unit direction d: y is
+// recomputed on q's plane in double precision (Embree's distance is a float), which keeps the
+// kernel accurate near edges and the estimates scale-equivariant. NaN when the kernel is 0.
+double log_kernel(const Patch& p, const Vec3& x, const Patch& q, const Vec3& d, double total_area);
+
+}  // namespace hmcr

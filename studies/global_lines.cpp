@@ -1,0 +1,163 @@
+// Global lines: uniformly distributed lines through the scene's bounding sphere (a uniform
+// direction, then a uniform point of the disk across the sphere perpendicular to it). Each
+// line is followed through every surface it crosses.
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "radiosity/rng.h"
+#include "radiosity/sampling.h"
+#include "studies/channel_samples.h"
+
+namespace hmcr {
+namespace {
+
+constexpr std::uint64_t kBlock = 1024;  // lines per parallel task (fixed: results are too)
+constexpr std::uint64_t kGlobalKey = 0x676c6f62616cULL;  // beyond every patch index
+constexpr int kMaxHits = 1 << 16;  // a line crossing more surfaces is cut (never in practice)
+
+struct Sphere {
+    Vec3 centre = Vec3::Zero();
+    double radius = 0;
+};
+
+Sphere bounding_sphere(const PatchSet& set) {
+    Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+    for (const Patch& p : set.patches) {
+        for (int k = 0; k < p.corner_count; ++k) {
+            lo = lo.cwiseMin(p.corner[k]);
+            hi = hi.cwiseMax(p.corner[k]);
+        }
+    }
+    Sphere s{(lo + hi) / 2, 0};
+    for (const Patch& p : set.patches) {
+        for (int k = 0; k < p.corner_count; ++k) {
+            s.radius = std::max(s.radius, (p.corner[k] - s.centre).norm());
+        }
+    }
+    return s;
+}
+
+struct LineHit {
+    std::uint32_t patch = 0;
+    Vec3 point;
+    double facing = 0;  // n . direction: > 0 when the front faces forward along the line
+};
+
+// The surfaces crossed by line k, in order along its direction.
+std::vector<LineHit> trace_line(const PatchSet& set, const EmbreeScene& scene, const Sphere& s,
+                                std::uint64_t seed, std::uint64_t k, Vec3& direction) {
+    Rng rng(seed, kGlobalKey, k);
+    const double xi1 = rng.uniform(), xi2 = rng.uniform();
+    direction = sample_uniform_sphere(xi1, xi2);
+    const double xi3 = rng.uniform(), xi4 = rng.uniform();
+    const Vec2 disk = sample_uniform_disk(xi3, xi4) * s.radius;
+    Vec3 t, b;
+    tangent_frame(direction, t, b);
+    const Vec3 origin = s.centre + disk.x() * t + disk.y() * b - 2 * s.radius * direction;
+    std::vector<LineHit> hits;
+    Vec3 from = origin;
+    while (hits.size() < kMaxHits) {
+        const auto hit = scene.first_hit(from, direction);
+        if (!hit) break;
+        from += hit->distance * direction;  // march on Embree's points: never re-hit, never skip
+        const Patch& q = set.patches[hit->patch];
+        const double facing = q.normal.dot(direction);
+        // The point itself on q's plane, from the line's origin in double precision.
+        const double along = q.normal.dot(q.corner[0] - origin) / facing;
+        hits.push_back({hit->patch, std::isfinite(along) ? origin + along * direction : from, facing});
+    }
+    return hits;
+}
+
+struct Record {
+    std::uint32_t slot = 0;  // patch * batches + batch
+    std::uint32_t target = ChannelSamples::kNoPatch;
+};
+
+struct Block {
+    std::vector<Record> records;
+    std::vector<double> sums;  // per batch
+    std::vector<std::uint64_t> hits;
+};
+
+// The samples of one line: one per crossed surface, from its front side to the neighbouring
+// hit on that side (when that hit's front faces back along the segment).
+void add_line(const PatchSet& set, const std::vector<LineHit>& hits, const Vec3& d,
+              std::uint32_t batches, std::uint32_t batch, Block& out) {
+    // Segment k joins hits k and k + 1; it carries a ray both ways when both fronts face it.
+    const auto open = [&](std::size_t k) {
+        return hits[k].facing > 0 && hits[k + 1].facing < 0;
+    };
+    std::vector<bool> joined(hits.size(), false);  // segment k is open with a non-zero kernel
+    for (std::size_t k = 0; k + 1 < hits.size(); ++k) {
+        if (!open(k)) continue;
+        const double v = log_kernel(set.patches[hits[k].patch], hits[k].point,
+                                    set.patches[hits[k + 1].patch], d, set.total_area);
+        if (std::isnan(v)) continue;
+        joined[k] = true;
+        out.sums[batch] += v;
+        ++out.hits[batch];
+    }
+    for (std::size_t k = 0; k < hits.size(); ++k) {
+        const LineHit& h = hits[k];
+        std::uint32_t target = ChannelSamples::kNoPatch;
+        if (h.facing > 0 && k + 1 < hits.size() && joined[k]) target = hits[k + 1].patch;
+        if (h.facing < 0 && k > 0 && joined[k - 1]) target = hits[k - 1].patch;
+        if (h.facing == 0) continue;  // grazing: measure zero
+        out.records.push_back({h.patch * batches + batch, target});
+    }
+}
+
+// Gathers the blocks' records by slot, in block order (so independent of the thread count).
+void gather(std::vector<Block>& blocks, std::size_t slots, ChannelSamples& out) {
+    out.first.assign(slots + 1, 0);
+    for (const Block& block : blocks) {
+        for (const Record& r : block.records) ++out.first[r.slot + 1];
+    }
+    for (std::size_t s = 0; s < slots; ++s) out.first[s + 1] += out.first[s];
+    out.target.assign(out.first.back(), ChannelSamples::kNoPatch);
+    std::vector<std::uint64_t> cursor(out.first.begin(), out.first.end() - 1);
+    for (Block& block : blocks) {
+        for (const Record& r : block.records) out.target[cursor[r.slot]++] = r.target;
+        block.records = {};
+        for (std::uint32_t b = 0; b < out.batches; ++b) {
+            out.log_kernel_sum[b] += block.sums[b];
+            out.log_kernel_count[b] += block.hits[b];
+        }
+    }
+}
+
+}  // namespace
+
+ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& scene,
+                                  const LineOptions& options) {
+    ChannelSamples out;
+    const std::uint32_t b = out.batches = std::max<std::uint32_t>(1, options.batches);
+    if (double(patches.patches.size()) * b >= double(ChannelSamples::kNoPatch)) {
+        throw std::invalid_argument("too many patches x batches for global lines");
+    }
+    out.lines = options.lines;
+    out.log_kernel_sum.assign(b, 0.0);
+    out.log_kernel_count.assign(b, 0);
+    const Sphere sphere = bounding_sphere(patches);
+    std::vector<Block> blocks((options.lines + kBlock - 1) / kBlock);
+    tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t i) {
+        set_tracing_float_mode();
+        Block& block = blocks[i];
+        block.sums.assign(b, 0.0);
+        block.hits.assign(b, 0);
+        const std::uint64_t k1 = std::min<std::uint64_t>(options.lines, (i + 1) * kBlock);
+        for (std::uint64_t k = i * kBlock; k < k1; ++k) {
+            Vec3 d;
+            const auto hits = trace_line(patches, scene, sphere, options.seed, k, d);
+            add_line(patches, hits, d, b, std::uint32_t(k % b), block);
+        }
+    });
+    gather(blocks, patches.patches.size() * b, out);
+    return out;
+}
+
+}  // namespace hmcr

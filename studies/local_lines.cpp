@@ -1,0 +1,99 @@
+// Local lines: n_i cosine-distributed rays from area-uniform points of each patch i.
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "radiosity/kernel.h"
+#include "radiosity/rng.h"
+#include "radiosity/sampling.h"
+#include "studies/channel_samples.h"
+
+namespace hmcr {
+namespace {
+
+constexpr std::uint64_t kBlock = 4096;  // rays per parallel task (fixed: results are too)
+
+struct RayOutcome {
+    std::uint32_t target = ChannelSamples::kNoPatch;
+    double log_kernel = 0;  // log2(A_T F(x, y)), valid when target is a patch
+};
+
+// Ray k of patch i: an area-uniform origin, a cosine direction, its first front-face hit.
+RayOutcome trace_ray(const PatchSet& set, const EmbreeScene& scene, std::uint64_t seed,
+                     std::uint32_t i, std::uint64_t k) {
+    const Patch& p = set.patches[i];
+    Rng rng(seed, i, k);
+    const double xi1 = rng.uniform(), xi2 = rng.uniform();
+    const Vec3 x = p.point(sample_element(p, Domain::root(), xi1, xi2));
+    const double xi3 = rng.uniform(), xi4 = rng.uniform();
+    const Vec3 d = sample_cosine_hemisphere(p.normal, xi3, xi4);
+    const auto hit = scene.first_hit(x, d);
+    if (!hit) return {};
+    const Patch& q = set.patches[hit->patch];
+    if (q.normal.dot(d) >= 0) return {};  // back face
+    const double value = log_kernel(p, x, q, d, set.total_area);
+    if (std::isnan(value)) return {};
+    return {hit->patch, value};
+}
+
+}  // namespace
+
+std::vector<std::uint64_t> local_line_counts(const PatchSet& patches, const LineOptions& options) {
+    const double per_batch = double(options.lines) / double(options.batches);
+    std::vector<std::uint64_t> n(patches.patches.size());
+    for (std::size_t i = 0; i < n.size(); ++i) {
+        const double share = per_batch * patches.patches[i].area / patches.total_area;
+        n[i] = options.batches * std::max<std::uint64_t>(1, std::llround(share));
+    }
+    return n;
+}
+
+ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& scene,
+                                 const LineOptions& options) {
+    ChannelSamples out;
+    const std::uint32_t b = out.batches = std::max<std::uint32_t>(1, options.batches);
+    const auto counts = local_line_counts(patches, {options.method, options.lines, b, options.seed});
+    // Ray k of patch i is number start[i] + k in tracing order; it goes to batch k % b, so every
+    // (patch, batch) slot holds counts[i] / b rays.
+    std::vector<std::uint64_t> start(counts.size() + 1, 0);
+    out.first.assign(counts.size() * b + 1, 0);
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+        start[i + 1] = start[i] + counts[i];
+        for (std::uint32_t s = 0; s < b; ++s) {
+            out.first[i * b + s + 1] = start[i] + (s + 1) * (counts[i] / b);
+        }
+    }
+    out.lines = start.back();
+    out.target.assign(out.lines, ChannelSamples::kNoPatch);
+
+    // Per block and batch partial sums, reduced in block order afterwards (deterministic).
+    const std::uint64_t blocks = (out.lines + kBlock - 1) / kBlock;
+    std::vector<double> sums(blocks * b, 0.0);
+    std::vector<std::uint64_t> hits(blocks * b, 0);
+    tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t block) {
+        set_tracing_float_mode();
+        const std::uint64_t g0 = block * kBlock, g1 = std::min(out.lines, g0 + kBlock);
+        auto i = std::uint32_t(std::upper_bound(start.begin(), start.end(), g0) - start.begin() - 1);
+        for (std::uint64_t g = g0; g < g1; ++g) {
+            while (g >= start[i + 1]) ++i;
+            const std::uint64_t k = g - start[i];
+            const RayOutcome r = trace_ray(patches, scene, options.seed, i, k);
+            out.target[out.first[i * b + k % b] + k / b] = r.target;
+            if (r.target == ChannelSamples::kNoPatch) continue;
+            sums[block * b + k % b] += r.log_kernel;
+            ++hits[block * b + k % b];
+        }
+    });
+    out.log_kernel_sum.assign(b, 0.0);
+    out.log_kernel_count.assign(b, 0);
+    for (std::uint64_t block = 0; block < blocks; ++block) {
+        for (std::uint64_t s = 0; s < b; ++s) {
+            out.log_kernel_sum[s] += sums[block * b + s];
+            out.log_kernel_count[s] += hits[block * b + s];
+        }
+    }
+    return out;
+}
+
+}  // namespace hmcr
