@@ -118,42 +118,40 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& a) {
                     "bundled scene name, scene .json, .obj, or a solution's .vtp (its leaves)")
         ->required();
     cmd->add_option("--scene", a.solution_scene, "with a .vtp: the scene it solves (its name)");
-    cmd->add_option("--lines", a.lines, "local lines in all")->capture_default_str();
+    cmd->add_option("--method", a.method, "local (rays from each patch) or global (lines through "
+                                          "the bounding sphere)")
+        ->capture_default_str();
+    cmd->add_option("--lines", a.lines, "local rays in all, or global lines")
+        ->capture_default_str();
     cmd->add_option("--seed", a.seed, "random seed")->capture_default_str();
     cmd->add_flag("--json", a.json, "machine-readable output");
     return cmd;
 }
 
-int run_info(const InfoArgs& a) {
-    if (a.lines < 16) throw std::invalid_argument("lines must be at least 16");
-    // A solution's leaves are a discretisation too; a scene's patches are the default one.
-    const bool leaves = fs::path(a.scene).extension() == ".vtp";
-    const std::string label = leaves ? (a.solution_scene.empty() ? fs::path(a.scene).stem().string()
-                                                                : a.solution_scene) +
-                                          " (leaves of " + fs::path(a.scene).filename().string() + ")"
-                                    : load_scene(a.scene).name;
-    const PatchSet patches =
-        leaves ? leaf_patches(read_vtp(a.scene)) : build_patch_set(load_scene(a.scene).mesh);
-    LocalLineOptions o;
-    o.lines = a.lines;
-    o.seed = a.seed;
-    const auto start = std::chrono::steady_clock::now();
-    const InformationMeasures m = scene_information(patches, o);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // The measures describe a closed scene's channel: rows of F sum to 1 only if no line leaves.
-    const double open = double(m.lines_missed) / double(std::max<std::uint64_t>(1, m.lines));
-    if (a.json) {
-        nlohmann::json j = to_json(m);
-        j["open_fraction"] = open;
-        j["scene"] = label;
-        j["patches"] = patches.patches.size();
-        j["seconds"] = seconds;
-        fmt::print("{}\n", j.dump(2));
-        return 0;
+namespace {
+
+// The discretisation `hmcr info` measures: a scene's patches, or a solution's leaves.
+struct InfoTarget {
+    std::string label;
+    PatchSet patches;
+};
+
+InfoTarget info_target(const InfoArgs& a) {
+    if (fs::path(a.scene).extension() != ".vtp") {
+        const Scene scene = load_scene(a.scene);
+        return {scene.name, build_patch_set(scene.mesh)};
     }
-    fmt::print("{}: {} patches, {} local lines ({} missed), {:.1f} s; bits, +- one standard error\n",
-               label, patches.patches.size(), m.lines, m.lines_missed, seconds);
+    const std::string name =
+        a.solution_scene.empty() ? fs::path(a.scene).stem().string() : a.solution_scene;
+    return {name + " (leaves of " + fs::path(a.scene).filename().string() + ")",
+            leaf_patches(read_vtp(a.scene))};
+}
+
+void print_info_table(const InfoTarget& t, const InformationMeasures& m, double seconds) {
+    fmt::print("{}: {} patches, {} {} lines, {} rays ({} open), {:.1f} s; bits, +- one standard "
+               "error\n",
+               t.label, t.patches.patches.size(), m.lines, line_method_name(m.method), m.samples,
+               m.samples_open, seconds);
     const std::pair<const char*, InformationMeasures::Value> rows[] = {
         {"H_P   positional entropy", m.h_p},     {"H_S   visibility entropy", m.h_s},
         {"I_S   mutual information", m.i_s},     {"H_J   joint entropy", m.h_j},
@@ -162,12 +160,49 @@ int run_info(const InfoArgs& a) {
     for (const auto& [name, v] : rows) {
         fmt::print("  {:<38} {:10.5f} +- {:.5f}\n", name, v.estimate, v.standard_error);
     }
+}
+
+// The measures describe a closed scene's channel, with every row of F sampled.
+void warn_info_assumptions(const InformationMeasures& m, double open, std::size_t patches) {
     if (open > 0.01) {
         fmt::print(stderr,
-                   "hmcr: warning: {:.1f}% of the lines leave the scene or hit a back face; the "
+                   "hmcr: warning: {:.1f}% of the rays leave the scene or hit a back face; the "
                    "measures assume a closed scene (rows of F summing to 1)\n",
                    100 * open);
     }
+    if (m.patches_unsampled > 0) {
+        fmt::print(stderr,
+                   "hmcr: warning: no line crossed {} of the {} patches; their rows of F are "
+                   "missing (use more lines)\n",
+                   m.patches_unsampled, patches);
+    }
+}
+
+}  // namespace
+
+int run_info(const InfoArgs& a) {
+    LineOptions o;
+    o.method = parse_line_method(a.method);
+    o.lines = a.lines;
+    o.seed = a.seed;
+    if (a.lines < 16) throw std::invalid_argument("lines must be at least 16");
+    const InfoTarget target = info_target(a);
+    const auto start = std::chrono::steady_clock::now();
+    const InformationMeasures m = scene_information(target.patches, o);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double open = double(m.samples_open) / double(std::max<std::size_t>(1, m.samples));
+    if (a.json) {
+        nlohmann::json j = to_json(m);
+        j["open_fraction"] = open;
+        j["scene"] = target.label;
+        j["patches"] = target.patches.patches.size();
+        j["seconds"] = seconds;
+        fmt::print("{}\n", j.dump(2));
+    } else {
+        print_info_table(target, m, seconds);
+    }
+    warn_info_assumptions(m, open, target.patches.patches.size());
     return 0;
 }
 

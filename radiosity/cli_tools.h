@@ -38,6 +38,7 @@ struct StudyArgs {
 struct InfoArgs {
     std::string scene;           // a scene, or a solution's .vtp
     std::string solution_scene;  // with a .vtp: the scene's name, for the report
+    std::string method = "local";  // local or global lines
     std::uint64_t lines = 1'000'000;
     std::uint64_t seed = 1;
     bool json = false;

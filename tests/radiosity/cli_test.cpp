@@ -139,7 +139,21 @@ TEST_F(Cli, InfoPrintsTheMeasuresAndWarnsOnAnOpenScene) {
     const auto j = nlohmann::json::parse(open.out);
     EXPECT_GT(j["open_fraction"].get<double>(), 0.5);
     EXPECT_TRUE(j["i_s"].contains("standard_error"));
+    EXPECT_NE(open.err.find("warning"), std::string::npos) << open.err;  // JSON warns too
     EXPECT_EQ(hmcr("info furnace --lines 3").exit_code, 2);
+}
+
+TEST_F(Cli, InfoWithGlobalLines) {
+    const CliRun r = hmcr("info furnace --method global --lines 100000 --json");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["method"], "global");
+    EXPECT_EQ(j["lines"].get<std::size_t>(), 100'000u);
+    EXPECT_GT(j["samples"].get<std::size_t>(), 100'000u);  // a line through the box gives two
+    const CliRun bad = hmcr("info furnace --method globl");
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("unknown line method 'globl'"), std::string::npos) << bad.err;
+    EXPECT_EQ(bad.out, "");
 }
 
 TEST_F(Cli, QuietPrintsNothing) {
