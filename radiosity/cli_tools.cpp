@@ -149,7 +149,7 @@ InfoTarget info_target(const InfoArgs& a) {
 
 void print_info_table(const InfoTarget& t, const InformationMeasures& m, double seconds) {
     fmt::print("{}: {} patches, {} {} lines, {} rays ({} open), {:.1f} s; bits, +- one standard "
-               "error\n",
+               "error, bias to subtract (1/n extrapolation)\n",
                t.label, t.patches.patches.size(), m.lines, line_method_name(m.method), m.samples,
                m.samples_open, seconds);
     const std::pair<const char*, InformationMeasures::Value> rows[] = {
@@ -158,7 +158,8 @@ void print_info_table(const InfoTarget& t, const InformationMeasures& m, double 
         {"I^c_S continuous mutual information", m.i_cs},
         {"I^c_S - I_S discretisation error", m.discretisation_error}};
     for (const auto& [name, v] : rows) {
-        fmt::print("  {:<38} {:10.5f} +- {:.5f}\n", name, v.estimate, v.standard_error);
+        fmt::print("  {:<38} {:10.5f} +- {:.5f}   bias {:+.5f}\n", name, v.estimate,
+                   v.standard_error, v.bias);
     }
 }
 
@@ -169,6 +170,12 @@ void warn_info_assumptions(const InformationMeasures& m, double open, std::size_
                    "hmcr: warning: {:.1f}% of the rays leave the scene or hit a back face; the "
                    "measures assume a closed scene (rows of F summing to 1)\n",
                    100 * open);
+    }
+    if (std::abs(m.i_s.bias) > m.i_s.standard_error) {
+        fmt::print(stderr,
+                   "hmcr: warning: I_S has not converged: its plug-in bias (about {:+.4f} bits, "
+                   "likely more) exceeds its standard error; raise --lines\n",
+                   m.i_s.bias);
     }
     if (m.patches_unsampled > 0) {
         fmt::print(stderr,

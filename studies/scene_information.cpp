@@ -57,14 +57,15 @@ std::vector<RowTerms> channel_terms(const ChannelSamples& samples, const std::ve
     return total;
 }
 
-// The estimate from all lines, the standard error from the batch values (sd / sqrt(B)).
+// The estimate from all lines, the standard error from the batch values (sd / sqrt(B)), and
+// the bias from how far the batches (B times fewer lines each) sit from the estimate.
 InformationMeasures::Value batch_value(double estimate, const std::vector<double>& batch) {
     const double b = double(batch.size());
-    if (batch.size() < 2) return {estimate, 0.0};
+    if (batch.size() < 2) return {estimate, 0.0, 0.0};
     double mean = 0, sq = 0;
     for (double v : batch) mean += v / b;
     for (double v : batch) sq += (v - mean) * (v - mean);
-    return {estimate, std::sqrt(sq / (b - 1) / b)};
+    return {estimate, std::sqrt(sq / (b - 1) / b), (mean - estimate) / (b - 1)};
 }
 
 }  // namespace
@@ -116,7 +117,9 @@ InformationMeasures scene_information(const PatchSet& patches, const ChannelSamp
 
 nlohmann::json to_json(const InformationMeasures& m) {
     const auto value = [](const InformationMeasures::Value& v) {
-        return nlohmann::json{{"estimate", v.estimate}, {"standard_error", v.standard_error}};
+        return nlohmann::json{{"estimate", v.estimate},
+                              {"standard_error", v.standard_error},
+                              {"bias", v.bias}};
     };
     return {{"units", "bits"},
             {"h_p", value(m.h_p)},

@@ -32,6 +32,11 @@ struct InformationMeasures {
     struct Value {
         double estimate = 0;
         double standard_error = 0;
+        // Estimated bias of the plug-in estimate, to be subtracted. Plug-in biases fall as 1/n
+        // to leading order, so a batch (B times fewer lines) carries B times the bias of all
+        // the lines: bias = (mean of the batch values - estimate) / (B - 1). About 0 for the
+        // linear I^c_S; large against the standard error means too few lines per patch.
+        double bias = 0;
     };
     Value h_p, h_s, i_s, h_j, i_cs, discretisation_error;
     LineMethod method = LineMethod::local;

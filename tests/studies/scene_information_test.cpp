@@ -173,11 +173,33 @@ TEST(SceneInformation, RefiningDoesNotLowerMutualInformation) {
                                        f.i_cs.standard_error + c.i_cs.standard_error));
 }
 
+// The reported bias extrapolates the batches (B times fewer lines) to all lines as 1/n. For the
+// empty cube that is Miller-Madow's first-order plug-in bias of H_S, -(K - 1) / (2 n ln 2)
+// with K = 5 faces in view and n rays a face; Harris's second-order term (1 - sum 1/F) /
+// (12 n^2 ln 2) adds (B + 1) times its value at n, 8e-7 bits here. A t test over 8 seeds.
+TEST(SceneInformation, BiasEstimateIsTheMillerMadowBias) {
+    const PatchSet set = cube(1, 1);
+    const LineOptions options = lines(48'000);
+    const double n = double(local_line_counts(set, options)[0]);
+    const double first_order = -4 / (2 * n * std::log(2.0));
+    const double second_order = 17 * 24 / (12 * n * n * std::log(2.0));
+    std::vector<double> h_s, i_cs;
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        const InformationMeasures m = scene_information(set, lines(48'000, seed));
+        h_s.push_back(m.h_s.bias);
+        // The rest of I_S is linear in F, which the batches average exactly (equal batches).
+        EXPECT_NEAR(m.i_s.bias, -m.h_s.bias, 1e-12);
+        EXPECT_LT(std::abs(m.i_cs.bias), m.i_cs.standard_error);  // a mean has no such bias
+    }
+    EXPECT_TRUE(t_test("H_S bias", h_s, first_order, second_order));
+}
+
 TEST(SceneInformation, JsonHasEveryMeasure) {
     const nlohmann::json j = to_json(scene_information(cube(1, 1), lines(16'000)));
     for (const char* key : {"h_p", "h_s", "i_s", "h_j", "i_cs", "discretisation_error"}) {
         EXPECT_TRUE(j.at(key).contains("estimate")) << key;
         EXPECT_TRUE(j.at(key).contains("standard_error")) << key;
+        EXPECT_TRUE(j.at(key).contains("bias")) << key;
     }
     // 1,000 lines a batch share 167 per face: 16 x 167 x 6 lines.
     EXPECT_EQ(j.at("lines").get<std::size_t>(), 16'032u);
