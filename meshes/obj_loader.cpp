@@ -206,6 +206,7 @@ Material face_material(const LoadedObj& obj, const LoadedFace& face, const MtlLi
         return m;
     }
     if (options.default_material) return *options.default_material;
+    if (options.use == SceneUse::geometry) return {"hmcr:grey", Eigen::Vector3d::Constant(0.5), {0, 0, 0}};
     const std::string& name = face.statement->usemtl;
     if (name.empty()) fail(where, "face has no material (no usemtl before it)");
     fail(where, fmt::format("face uses material '{}', which no loaded MTL file defines", name));
@@ -239,7 +240,9 @@ std::vector<Material> validate(const LoadedObj& obj, const MtlLines& mtl_lines,
     }
     double emitted = 0;
     for (const Material& m : materials) emitted += m.ke.sum();
-    if (!(emitted > 0)) fail(path, "no face emits light (give a material used by a face Ke > 0)");
+    if (!(emitted > 0) && options.use == SceneUse::solve) {
+        fail(path, "no face emits light (give a material used by a face Ke > 0)");
+    }
     return materials;
 }
 

@@ -35,8 +35,14 @@ struct View {
     int height = 512;
 };
 
+// What the scene is loaded for. Solving needs an emitter and a material on every face;
+// measuring the geometry (`hmcr info`) needs neither, so there a scene without light loads and
+// faces without a material get a neutral grey (the other checks all apply).
+enum class SceneUse { solve, geometry };
+
 struct LoadOptions {
     std::optional<Material> default_material;  // used by faces without a material
+    SceneUse use = SceneUse::solve;
 };
 
 struct Scene {
@@ -53,7 +59,7 @@ struct Scene {
 PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options = {});
 
 // Accepts a bundled scene name ("cornell"), a JSON scene file, or a mesh file (.obj).
-Scene load_scene(const std::string& name_or_path);
+Scene load_scene(const std::string& name_or_path, SceneUse use = SceneUse::solve);
 
 // Names of the bundled scenes (folders of the scene directory holding NAME/NAME.json).
 std::vector<std::string> bundled_scene_names();

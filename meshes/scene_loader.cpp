@@ -204,7 +204,7 @@ void check_mesh_extension(const fs::path& mesh, const std::string& where) {
     }
 }
 
-Scene load_json_scene(const fs::path& path, const std::string& name) {
+Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse use) {
     const std::string file = path.string();
     const json j = parse_json(path);
     check_keys(j, {"mesh", "description", "views", "solver", "default_material"}, file);
@@ -223,6 +223,7 @@ Scene load_json_scene(const fs::path& path, const std::string& name) {
         scene.solver_defaults = j["solver"];
     }
     LoadOptions options;
+    options.use = use;
     if (j.contains("default_material")) {
         options.default_material = parse_default_material(j["default_material"], file);
     }
@@ -231,21 +232,23 @@ Scene load_json_scene(const fs::path& path, const std::string& name) {
     return scene;
 }
 
-Scene load_mesh_scene(const fs::path& path) {
+Scene load_mesh_scene(const fs::path& path, SceneUse use) {
     check_mesh_extension(path, path.string());
     Scene scene;
     scene.name = path.stem().string();
     scene.source = path;
     scene.mesh_path = path;
-    scene.mesh = load_obj(path);
+    LoadOptions options;
+    options.use = use;
+    scene.mesh = load_obj(path, options);
     scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
 
-Scene load_file(const fs::path& path) {
+Scene load_file(const fs::path& path, SceneUse use) {
     const std::string extension = path.extension().string();
-    if (extension == ".json") return load_json_scene(path, path.stem().string());
-    if (extension == ".obj") return load_mesh_scene(path);
+    if (extension == ".json") return load_json_scene(path, path.stem().string(), use);
+    if (extension == ".obj") return load_mesh_scene(path, use);
     fail(path.string(), fmt::format("unknown extension '{}': give a .json scene, an .obj mesh "
                                     "or a bundled scene name ({})",
                                     extension, bundled_list()));
@@ -272,13 +275,13 @@ std::vector<std::string> bundled_scene_names() {
     return names;
 }
 
-Scene load_scene(const std::string& name_or_path) {
+Scene load_scene(const std::string& name_or_path, SceneUse use) {
     const fs::path path(name_or_path);
     std::error_code ec;
-    if (fs::is_regular_file(path, ec)) return load_file(path);
+    if (fs::is_regular_file(path, ec)) return load_file(path, use);
     if (is_bundled(name_or_path)) {
         return load_json_scene(scene_directory() / name_or_path / (name_or_path + ".json"),
-                               name_or_path);
+                               name_or_path, use);
     }
     fail(name_or_path,
          fmt::format("no such file or bundled scene (bundled scenes: {})", bundled_list()));

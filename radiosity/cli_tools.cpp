@@ -138,7 +138,7 @@ struct InfoTarget {
 
 InfoTarget info_target(const InfoArgs& a) {
     if (fs::path(a.scene).extension() != ".vtp") {
-        const Scene scene = load_scene(a.scene);
+        const Scene scene = load_scene(a.scene, SceneUse::geometry);
         return {scene.name, build_patch_set(scene.mesh)};
     }
     const std::string name =

@@ -256,6 +256,22 @@ TEST(ObjLoader, NoEmitter) {
     EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), path_end));
 }
 
+// Measuring a scene's geometry (`hmcr info`) needs no light and no materials; the other checks
+// still apply.
+TEST(ObjLoader, GeometryNeedsNoEmitterAndNoMaterial) {
+    SceneFiles files;
+    files.write("scene.mtl", kMtl);
+    LoadOptions options;
+    options.use = SceneUse::geometry;
+    const std::string head = std::string(kHeader) + "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    const PatchMesh mesh = load_obj(files.write("scene.obj", head + "f 1 2 3\n"), options);
+    EXPECT_EQ(mesh.n_faces(), 1u);
+    const auto bare = files.write("bare.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_EQ(load_obj(bare, options).n_faces(), 1u);
+    const auto bad = files.write("bad.obj", head + "v 0 nan 0\nf 1 2 4\n");
+    EXPECT_TRUE(contains(scene_error([&] { load_obj(bad, options); }), "bad.obj:"));
+}
+
 TEST(ObjLoader, NoFaces) { EXPECT_TRUE(contains(obj_error("v 0 0 0\n"), "scene.obj: no faces")); }
 
 }  // namespace

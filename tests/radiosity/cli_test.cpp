@@ -156,6 +156,20 @@ TEST_F(Cli, InfoWithGlobalLines) {
     EXPECT_EQ(bad.out, "");
 }
 
+// A bare OBJ, without materials or light: its geometry can be measured, but it cannot be
+// solved.
+TEST_F(Cli, InfoNeedsNoEmitterButSolveDoes) {
+    std::ofstream(m_dir / "dark.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                         "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                         "f 1 2 3 4\nf 5 8 7 6\n";
+    const std::string obj = (m_dir / "dark.obj").string();
+    const CliRun info = hmcr("info " + obj + " --lines 1000 --json");
+    EXPECT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_EQ(nlohmann::json::parse(info.out)["patches"], 2);
+    expect_clean_failure(hmcr("solve " + obj + " -o " + (m_dir / "out.vtp").string()),
+                         "dark.obj:9: face has no material");
+}
+
 TEST_F(Cli, QuietPrintsNothing) {
     const CliRun r = hmcr("solve plates --rays 5000 --quiet -o " + (m_dir / "q.vtp").string());
     EXPECT_EQ(r.exit_code, 0);
