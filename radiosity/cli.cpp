@@ -168,7 +168,9 @@ void add_solve(CLI::App& app, SolveArgs& args) {
         ->capture_default_str();
     cmd->add_option("--epsilon", o.epsilon, "refinement threshold (default: the oracle's)");
     cmd->add_option("--lines", o.lines, "kernel lines per link, N_s")->capture_default_str();
-    cmd->add_option("--rays", o.rays, "shooting rays over the whole solve")->capture_default_str();
+    cmd->add_option("--rays", o.rays, "shooting rays over the whole solve")
+        ->transform(count_notation())
+        ->capture_default_str();
     cmd->add_option("--seed", o.seed, "random seed")->capture_default_str();
     cmd->add_option("--threads", o.threads, "worker threads, 0 = all cores")->capture_default_str();
     cmd->add_option("--min-area", o.min_area, "smallest element area, relative to the total area")
@@ -177,7 +179,8 @@ void add_solve(CLI::App& app, SolveArgs& args) {
     cmd->add_option("--stop", o.stop, "stop when unshot power < stop * emitted power")
         ->capture_default_str();
     cmd->add_option("--budget", args.budget.leaves,
-                    "target leaf count: epsilon is found by bisection (each probe a full solve)");
+                    "target leaf count: epsilon is found by bisection (each probe a full solve)")
+        ->transform(count_notation());
     cmd->add_option("--budget-tolerance", args.budget.tolerance,
                     "accepted relative distance to the budget")
         ->capture_default_str();

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -42,6 +43,28 @@ double reference_exposure(const fs::path& dir, const std::string& view) {
 
 }  // namespace
 
+const CLI::Validator& count_notation() {
+    static const CLI::Validator validator(
+        [](std::string& text) -> std::string {
+            if (text.find_first_of("eE.") == std::string::npos) return {};  // plain digits
+            std::size_t used = 0;
+            double value = 0;
+            try {
+                value = std::stod(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used != text.size() || !(value >= 0) || value > 0x1p53 ||
+                value != std::floor(value)) {
+                return "'" + text + "' is not a whole number";
+            }
+            text = fmt::format("{:.0f}", value);
+            return {};
+        },
+        "COUNT");
+    return validator;
+}
+
 CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
     auto* cmd = app.add_subcommand("render", "render a solution (.vtp) from a view of its scene");
     cmd->add_option("solution", a.solution, "the solution's .vtp")->required();
@@ -79,7 +102,9 @@ CLI::App* add_reference_command(CLI::App& app, ReferenceArgs& a) {
     cmd->add_option("scene", a.scene, "bundled scene name, scene .json, or .obj")->required();
     cmd->add_option("-o,--output", a.output, "output folder")->required();
     cmd->add_option("--max-area", o.max_area, "largest element area, m^2")->capture_default_str();
-    cmd->add_option("--rays", o.rays, "rays per seed")->capture_default_str();
+    cmd->add_option("--rays", o.rays, "rays per seed")
+        ->transform(count_notation())
+        ->capture_default_str();
     cmd->add_option("--seed", o.seed, "first seed (the second is seed + 1)")->capture_default_str();
     cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel of the view images")
         ->capture_default_str();
@@ -122,6 +147,7 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& a) {
                                           "the bounding sphere)")
         ->capture_default_str();
     cmd->add_option("--lines", a.lines, "local rays in all, or global lines")
+        ->transform(count_notation())
         ->capture_default_str();
     cmd->add_option("--seed", a.seed, "random seed")->capture_default_str();
     cmd->add_flag("--json", a.json, "machine-readable output");
@@ -223,7 +249,9 @@ CLI::App* add_study_command(CLI::App& app, StudyArgs& a) {
     cmd->add_option("--oracles", a.oracles, "comma-separated names, or all")->capture_default_str();
     cmd->add_option("--seeds", o.seeds, "seeds per cell")->capture_default_str();
     cmd->add_option("--first-seed", o.first_seed, "the first seed")->capture_default_str();
-    cmd->add_option("--rays", o.rays, "rays per solve")->capture_default_str();
+    cmd->add_option("--rays", o.rays, "rays per solve")
+        ->transform(count_notation())
+        ->capture_default_str();
     cmd->add_option("--lines", o.lines, "N_s")->capture_default_str();
     cmd->add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
     cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();

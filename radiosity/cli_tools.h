@@ -10,6 +10,9 @@
 
 namespace hmcr {
 
+// Lets a count be written 1e7 or 2.5e6 as well as 10000000: exact whole numbers only.
+const CLI::Validator& count_notation();
+
 struct RenderArgs {
     std::string solution;      // .vtp
     std::string scene;         // for the view

@@ -57,6 +57,18 @@ TEST_F(Cli, BadNumberIsRejected) {
                          "--rays");
     expect_clean_failure(hmcr("solve plates --epsilon -3 -o " + (m_dir / "out.vtp").string()),
                          "epsilon");
+    expect_clean_failure(hmcr("solve plates --rays 1.5e0 -o " + (m_dir / "out.vtp").string()),
+                         "--rays: '1.5e0' is not a whole number");
+    expect_clean_failure(hmcr("solve plates --rays 1e400 -o " + (m_dir / "out.vtp").string()),
+                         "--rays: '1e400' is not a whole number");
+}
+
+// Counts may be written in scientific notation when they are whole numbers.
+TEST_F(Cli, CountsTakeScientificNotation) {
+    const CliRun r = hmcr("solve plates --rays 2.5e4 --quiet -o " + (m_dir / "e.vtp").string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(m_dir / "e.json");
+    EXPECT_EQ(nlohmann::json::parse(in)["options"]["rays"], 25'000);
 }
 
 TEST_F(Cli, MalformedSceneNamesFileAndLine) {
