@@ -17,7 +17,6 @@ struct Domain {
     float u0 = 0, v0 = 0, s = 1;
 
     static Domain root() { return {}; }
-    int corner_count(bool quad) const { return quad ? 4 : 3; }
 
     // Corners in parameter space, counter-clockwise like the patch's own corners.
     std::array<Vec2, 4> corners(bool quad) const {

@@ -28,7 +28,6 @@ public:
     std::size_t patch_count() const { return m_patches.patches.size(); }
     Element& root(std::size_t patch) { return m_roots[patch]; }
     const Element& root(std::size_t patch) const { return m_roots[patch]; }
-    const HierarchyLimits& limits() const { return m_limits; }
 
     bool can_subdivide(const Element& e) const;
     // Splits every element larger than max_area (m^2) until none is, within max_depth: the

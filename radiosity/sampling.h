@@ -39,9 +39,6 @@ inline Vec3 sample_cosine_hemisphere(const Vec3& n, double xi1, double xi2) {
     tangent_frame(n, t, b);
     return r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1 - xi1)) * n;
 }
-inline double cosine_hemisphere_pdf(double cos_theta) {
-    return cos_theta > 0 ? cos_theta / std::numbers::pi : 0.0;
-}
 
 // Uniform direction on the unit sphere; density 1 / (4 pi) per sr.
 inline Vec3 sample_uniform_sphere(double xi1, double xi2) {

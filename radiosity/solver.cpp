@@ -46,16 +46,8 @@ void add_iteration(SolveStats& st, const IterationOutcome& out) {
 
 }  // namespace
 
-std::string SolverOptions::to_string() const {
-    return fmt::format(
-        "oracle={} epsilon={} lines={} rays={} seed={} threads={} min_area={} max_depth={} "
-        "stop={} cache_mb={}",
-        oracle, epsilon, lines, rays, seed, threads, min_area, max_depth, stop, cache_mb);
-}
-
 double SolveStats::back_face_fraction() const {
-    double shot = 0;
-    for (const auto& it : iterations) shot += channel_sum(it.unshot_before);
+    const double shot = channel_sum(shot_power);
     return shot > 0 ? channel_sum(back_face_power) / shot : 0;
 }
 
@@ -124,6 +116,9 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
         const IterationSources sources(h);
         const double ratio = reflected_fraction(ctx, sources, it, kPilotRays);
         rec.rays = schedule.next(channel_sum(unshot), ratio);
+        // Out of rays before the stop criterion: what is unshot stays unshot (an iteration of
+        // no rays would push zero received radiosity over it and lose that power).
+        if (rec.rays == 0) break;
         const std::uint64_t done_before = st.rays;
         const auto out = shoot_iteration(ctx, sources, it, rec.rays, [&](std::uint64_t n) {
             if (progress) progress(std::min(1.0, double(done_before + n) / double(options.rays)));

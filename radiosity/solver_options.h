@@ -20,8 +20,6 @@ struct SolverOptions {
     double uniform_max_area = 0;      // > 0: a fixed uniform mesh of elements <= this (m^2),
                                       // no oracle (converged references); 0: adaptive
     double cache_mb = 32;             // link cache size for line-based oracles (0: no cache)
-
-    std::string to_string() const;
 };
 
 }  // namespace hmcr

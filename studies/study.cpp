@@ -238,14 +238,6 @@ void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResul
 
 }  // namespace
 
-std::string StudyOptions::to_string() const {
-    return fmt::format(
-        "StudyOptions[scene={}, reference={}, budgets={}, oracles={}, seeds={} from {}, rays={}, "
-        "lines={}, budget_tolerance={}, samples_per_axis={}, output={}, threads={}]",
-        scene, reference.string(), fmt::join(budgets, ","), fmt::join(oracles, ","), seeds,
-        first_seed, rays, lines, budget_tolerance, samples_per_axis, output.string(), threads);
-}
-
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,
                       std::uint64_t seed) {
     return fmt::format("{}-{}-B{}-s{}", scene, oracle, budget, seed);

@@ -49,7 +49,6 @@ struct StudyOptions {
     std::filesystem::path output;    // the study folder
     int threads = 0;                 // 0: all cores
     double crease_degrees = 30;      // Gouraud blending limit of the shaded meshes
-    std::string to_string() const;
 };
 
 struct CellResult {

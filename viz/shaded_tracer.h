@@ -46,7 +46,6 @@ class ShadedTracer {
     std::optional<Rgb> radiosity_along(const Vec3& origin, const Vec3& direction) const;
     std::optional<std::uint32_t> cell_along(const Vec3& origin, const Vec3& direction) const;
 
-    std::size_t triangle_count() const { return m_triangles.size(); }
     double offset() const { return m_scene->offset(); }  // Embree's self-hit offset, metres
 
   private:
