@@ -1,9 +1,11 @@
-// The six line-based oracles against values computed by hand (SPEC section 4.1), for small
-// kernel vectors with N_s = 4, A_i = 2, A_j = 3, A_T = 10, and the identities of section 4.2.
+// The seven oracles against values computed by hand (SPEC section 4.1): power from centre
+// geometry, the six line-based ones for small kernel vectors with N_s = 4, A_i = 2, A_j = 3,
+// A_T = 10; and the identities of section 4.2.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <vector>
 
 #include "oracles/registry.h"
@@ -27,6 +29,28 @@ void expect_values(const std::vector<double>& kernel, const std::map<std::string
     for (const auto& [name, value] : want) {
         EXPECT_NEAR(factor(name, kernel), value, 1e-12 * std::max(1.0, std::abs(value))) << name;
     }
+}
+
+// power = A_i f c_i c_j, f = A_j / (pi d^2 + A_j), c = max(cos theta, 2 f). With d^2 = 3 / pi,
+// f = 3 / (3 + 3) = 1/2, so 2 f = 1 and c = 1 whatever the cosine: near elements always count.
+// With d^2 = 27 / pi, f = 1/10, 2 f = 1/5: cos 0.6 is kept, a facing-away end (cos 0) gives
+// 1/5, not 0 (the centre line says little about which parts of two elements see each other).
+TEST(OracleFormulas, PowerFromCentreGeometry) {
+    const auto power = [](double d2, double cos_i, double cos_j) {
+        LinkGeometry g;
+        g.receiver_area = kAi;
+        g.source_area = kAj;
+        g.total_area = kAt;
+        g.centre_distance = std::sqrt(d2);
+        g.receiver_cos = cos_i;
+        g.source_cos = cos_j;
+        return find_oracle("power").geometric_factor(g);
+    };
+    const double pi = std::numbers::pi;
+    EXPECT_NEAR(power(3 / pi, 0.1, 0.0), 2 * 0.5 * 1 * 1, 1e-12);
+    EXPECT_NEAR(power(27 / pi, 0.6, 0.8), 2 * 0.1 * 0.6 * 0.8, 1e-12);
+    EXPECT_NEAR(power(27 / pi, 0.6, 0.0), 2 * 0.1 * 0.6 * 0.2, 1e-12);
+    EXPECT_NEAR(power(27 / pi, 0.0, 0.0), 2 * 0.1 * 0.2 * 0.2, 1e-12);
 }
 
 TEST(OracleFormulas, AllZeroKernelGivesZero) {
