@@ -206,7 +206,6 @@ Material face_material(const LoadedObj& obj, const LoadedFace& face, const MtlLi
         return m;
     }
     if (options.default_material) return *options.default_material;
-    if (options.use == SceneUse::geometry) return {"hmcr:grey", Eigen::Vector3d::Constant(0.5), {0, 0, 0}};
     const std::string& name = face.statement->usemtl;
     if (name.empty()) fail(where, "face has no material (no usemtl before it)");
     fail(where, fmt::format("face uses material '{}', which no loaded MTL file defines", name));
@@ -311,7 +310,12 @@ PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options)
     const std::string mtl_text = read_materials(obj, lines, mtl_lines);
     const tinyobj::ObjReader reader = parse_with_tinyobj(*text, mtl_text, path);
     const LoadedObj loaded = load_geometry(reader, lines, path);
-    const std::vector<Material> materials = validate(loaded, mtl_lines, options, path);
+    // Measuring geometry: faces without a material get a neutral one.
+    LoadOptions effective = options;
+    if (options.use == SceneUse::geometry && !options.default_material) {
+        effective.default_material = Material{"default", Eigen::Vector3d::Constant(0.5), {0, 0, 0}};
+    }
+    const std::vector<Material> materials = validate(loaded, mtl_lines, effective, path);
     return build_mesh(loaded, materials);
 }
 
