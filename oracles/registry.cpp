@@ -6,25 +6,28 @@
 
 namespace hmcr {
 
-std::unique_ptr<Oracle> make_power_oracle();
-std::unique_ptr<Oracle> make_ks_oracle();
-std::unique_ptr<Oracle> make_mi_oracle();
-std::unique_ptr<Oracle> make_kl_oracle();
-std::unique_ptr<Oracle> make_cs_oracle();
-std::unique_ptr<Oracle> make_hl_oracle();
-std::unique_ptr<Oracle> make_vt_oracle();
+// The registered oracles, in `hmcr oracles` order: adding one is its file plus one line here.
+// oracles/NAME.cpp defines make_NAME_oracle().
+#define HMCR_ORACLES(X) \
+    X(power)            \
+    X(ks)               \
+    X(mi)               \
+    X(kl)               \
+    X(cs)               \
+    X(hl)               \
+    X(vt)
+
+#define HMCR_DECLARE_ORACLE(name) std::unique_ptr<Oracle> make_##name##_oracle();
+HMCR_ORACLES(HMCR_DECLARE_ORACLE)
+#undef HMCR_DECLARE_ORACLE
 
 namespace {
 
 std::vector<std::unique_ptr<Oracle>> make_all() {
     std::vector<std::unique_ptr<Oracle>> list;
-    list.push_back(make_power_oracle());
-    list.push_back(make_ks_oracle());
-    list.push_back(make_mi_oracle());
-    list.push_back(make_kl_oracle());
-    list.push_back(make_cs_oracle());
-    list.push_back(make_hl_oracle());
-    list.push_back(make_vt_oracle());
+#define HMCR_MAKE_ORACLE(name) list.push_back(make_##name##_oracle());
+    HMCR_ORACLES(HMCR_MAKE_ORACLE)
+#undef HMCR_MAKE_ORACLE
     return list;
 }
 

@@ -74,8 +74,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& a) {
     cmd->add_option("--pfm", a.pfm, "also write the linear radiance as .pfm");
     cmd->add_option("--samples", a.options.samples_per_axis, "n x n rays per pixel")
         ->capture_default_str();
-    cmd->add_option("--exposure", a.exposure, "fixed exposure (default: from this image)");
-    cmd->add_option("--reference", a.reference, "use the exposure of this reference folder");
+    auto* exposure =
+        cmd->add_option("--exposure", a.exposure, "fixed exposure (default: from this image)");
+    cmd->add_option("--reference", a.reference, "use the exposure of this reference folder")
+        ->excludes(exposure);
     return cmd;
 }
 
