@@ -4,15 +4,16 @@
 
 namespace hmcr {
 
-AliasTable::AliasTable(const std::vector<double>& weights) : m_weights(weights) {
+AliasTable::AliasTable(const std::vector<double>& weights) {
     const std::size_t n = weights.size();
     if (n == 0) throw std::invalid_argument("alias table needs at least one weight");
-    for (double w : weights) m_total += w;
+    double total = 0;
+    for (double w : weights) total += w;
     m_bins.resize(n);
     std::vector<double> scaled(n);
     std::vector<std::uint32_t> small, large;
     for (std::size_t i = 0; i < n; ++i) {
-        scaled[i] = weights[i] * double(n) / m_total;
+        scaled[i] = weights[i] * double(n) / total;
         (scaled[i] < 1 ? small : large).push_back(std::uint32_t(i));
     }
     // Pair each under-full bin with an over-full one, which gives it the rest of its mass.

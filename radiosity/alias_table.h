@@ -12,12 +12,8 @@ class AliasTable {
 public:
     explicit AliasTable(const std::vector<double>& weights);
 
-    // Index i with probability weights[i] / total, from one uniform number in [0, 1).
+    // Index i with probability weights[i] / (sum of the weights), from one uniform in [0, 1).
     std::size_t sample(double xi) const;
-    // Probability of index i (for tests).
-    double probability(std::size_t i) const { return m_weights[i] / m_total; }
-    double total() const { return m_total; }
-    std::size_t size() const { return m_bins.size(); }
 
 private:
     struct Bin {
@@ -25,8 +21,6 @@ private:
         std::uint32_t alias;  // the index taken otherwise
     };
     std::vector<Bin> m_bins;
-    std::vector<double> m_weights;
-    double m_total = 0;
 };
 
 }  // namespace hmcr

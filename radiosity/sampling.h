@@ -1,4 +1,4 @@
-// Samplers, each beside its density, so statistical tests are short adapters.
+// Samplers; each comment states the density the tests check it against.
 #pragma once
 
 #include <cmath>
@@ -14,7 +14,6 @@ inline double sample_linear(double a, double b, double xi) {
     // Inverse CDF, rearranged to avoid cancellation when a and b are close.
     return xi * (a + b) / (a + std::sqrt((1 - xi) * a * a + xi * b * b));
 }
-inline double linear_pdf(double a, double b, double x) { return 2 * ((1 - x) * a + x * b) / (a + b); }
 
 // Uniform point of the triangle {u, v >= 0, u + v <= 1}; density 2.
 inline Vec2 sample_uniform_triangle(double xi1, double xi2) {

@@ -35,10 +35,13 @@ TEST_P(EveryRegisteredOracle, FactorIsNonNegativeAndFinite) {
     const Oracle& o = *GetParam();
     Rng rng(1, 0);
     std::vector<double> kernel(10);
+    int positive = 0;
     for (int trial = 0; trial < 5000; ++trial) {
         const double v = o.geometric_factor(geometry(rng, kernel));
         ASSERT_TRUE(std::isfinite(v) && v >= 0) << o.name() << " trial " << trial << ": " << v;
+        positive += v > 0;
     }
+    EXPECT_GT(positive, 4000) << o.name();  // zero only for all-zero kernels (1e-7 of trials)
 }
 
 TEST_P(EveryRegisteredOracle, UniformKernelGivesZero) {
@@ -52,6 +55,7 @@ TEST_P(EveryRegisteredOracle, UniformKernelGivesZero) {
         std::fill(kernel.begin(), kernel.end(), kernel[0] + 1e-3);
         kernel[0] *= 2;
         const double scale = o.geometric_factor(g);
+        ASSERT_GT(scale, 0) << trial;  // else the check below is 0 <= 0 for a dead oracle
         kernel[0] = kernel[1];
         EXPECT_LE(o.geometric_factor(g), 1e-12 * scale) << trial;
     }
@@ -66,8 +70,9 @@ TEST_P(EveryRegisteredOracle, FactorIsHomogeneousInTheKernel) {
     for (int trial = 0; trial < 100; ++trial) {
         LinkGeometry g = geometry(rng, kernel);
         const double v = o.geometric_factor(g);
+        ASSERT_GT(v, 0) << trial;  // a random kernel is not uniform: every oracle refines it
         for (double& f : kernel) f *= 7;
-        EXPECT_NEAR(o.geometric_factor(g), std::pow(7.0, degree) * v, 1e-9 * std::abs(v) + 1e-300);
+        EXPECT_NEAR(o.geometric_factor(g), std::pow(7.0, degree) * v, 1e-9 * v);
     }
 }
 

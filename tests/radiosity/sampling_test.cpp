@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <numeric>
 
 #include "radiosity/alias_table.h"
 #include "radiosity/hierarchy.h"
@@ -30,8 +31,10 @@ TEST(Sampling, LinearDensityPutsTheRightMassInEachBin) {
         ++count[std::min(kBins - 1, int(x * kBins))];
     }
     for (int i = 0; i < kBins; ++i) {
-        // Mass of bin i under the density: the pdf is linear, so the midpoint rule is exact.
-        const double p = linear_pdf(a, b, (i + 0.5) / kBins) / kBins;
+        // Mass of bin i: C(x1) - C(x0) for the CDF C(x) = (2 a x + (b - a) x^2) / (a + b) of
+        // the density 2 ((1 - x) a + x b) / (a + b).
+        const auto cdf = [&](double x) { return (2 * a * x + (b - a) * x * x) / (a + b); };
+        const double p = cdf(double(i + 1) / kBins) - cdf(double(i) / kBins);
         const double f = double(count[i]) / kSamples;
         EXPECT_TRUE(within_standard_errors("bin " + std::to_string(i), f, p,
                                            std::sqrt(p * (1 - p) / kSamples)));
@@ -121,8 +124,9 @@ TEST(Sampling, AliasTablePicksEachIndexWithItsWeightsShare) {
     Rng rng(4, 0);
     std::vector<int> count(weights.size());
     for (int k = 0; k < kSamples; ++k) ++count[table.sample(rng.uniform())];
+    const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
     for (std::size_t i = 0; i < weights.size(); ++i) {
-        const double p = table.probability(i);
+        const double p = weights[i] / total;
         if (p == 0) {
             EXPECT_EQ(count[i], 0) << i;
             continue;
