@@ -38,8 +38,8 @@ TEST(LeafPatches, CellsBecomeTheirLeavesWithTheSameArea) {
     // stays below I^c_S, each up to the standard errors and the plug-in bias bound of I_S
     // (tests/support/information.h), which the leaves' ~2,000 rays each make large.
     const LineOptions lines{LineMethod::local, 2'000'000, 16, 1};
-    const auto [coarse, coarse_bias] = measure_channel(build_patch_set(mesh), lines);
-    const auto [fine, fine_bias] = measure_channel(leaves, lines);
+    const auto [coarse, coarse_bias, coarse_open] = measure_channel(build_patch_set(mesh), lines);
+    const auto [fine, fine_bias, fine_open] = measure_channel(leaves, lines);
     EXPECT_TRUE(within_standard_errors(
         "I^c_S leaves vs patches", fine.i_cs.estimate, coarse.i_cs.estimate,
         std::hypot(fine.i_cs.standard_error, coarse.i_cs.standard_error)));

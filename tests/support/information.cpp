@@ -17,10 +17,30 @@ double plug_in_bias_bound(const PatchSet& set, const ChannelSamples& samples) {
     return bound;
 }
 
+namespace {
+
+// The share of open rays in each batch (rays of one global line are not independent, so the
+// error comes from the batches, not from a binomial count).
+Estimate open_share(const ChannelSamples& samples) {
+    std::vector<double> share;
+    for (std::uint32_t b = 0; b < samples.batches; ++b) {
+        double open = 0, all = 0;
+        for (std::size_t i = 0; i < samples.patches(); ++i) {
+            for (std::uint32_t t : samples.targets(i, b)) open += t == ChannelSamples::kNoPatch;
+            all += double(samples.targets(i, b).size());
+        }
+        share.push_back(open / all);
+    }
+    return estimate_mean(share);
+}
+
+}  // namespace
+
 MeasuredChannel measure_channel(const PatchSet& set, const LineOptions& options) {
     const EmbreeScene scene(set.patches);
     const ChannelSamples samples = trace_lines(set, scene, options);
-    return {scene_information(set, samples, options.method), plug_in_bias_bound(set, samples)};
+    return {scene_information(set, samples, options.method), plug_in_bias_bound(set, samples),
+            open_share(samples)};
 }
 
 PatchSet cube_patches(double size, int n) {

@@ -12,12 +12,14 @@
 #include "radiosity/patch.h"
 #include "studies/channel_samples.h"
 #include "studies/scene_information.h"
+#include "tests/support/statistics.h"
 
 namespace hmcr::test {
 
 struct MeasuredChannel {
     InformationMeasures measures;
     double bias_bound = 0;  // on H_S (downward), I_S and H_J (upward), in bits
+    Estimate open_share;    // of the rays with no front-face hit, with its batch-means error
 };
 
 double plug_in_bias_bound(const PatchSet& set, const ChannelSamples& samples);
