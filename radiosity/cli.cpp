@@ -51,8 +51,12 @@ void apply_scene_defaults(const Scene& scene, SolveArgs& args) {
         }
     }
     auto take = [&](const char* key, const char* flag, auto& field) {
-        if (d.contains(key) && args.app->count(flag) == 0) {
+        if (!d.contains(key) || args.app->count(flag) != 0) return;
+        try {
             field = d.at(key).get<std::remove_reference_t<decltype(field)>>();
+        } catch (const nlohmann::json::exception& e) {
+            throw SceneError(scene.source.string() + ": solver setting '" + key + "': " +
+                             e.what());
         }
     };
     take("oracle", "--oracle", args.options.oracle);
@@ -256,8 +260,6 @@ int run_cli(int argc, char** argv) {
         return fail(e.what());
     } catch (const std::invalid_argument& e) {
         return fail(e.what());
-    } catch (const nlohmann::json::exception& e) {
-        return fail(std::string("scene solver defaults: ") + e.what());
     } catch (const std::exception& e) {
         fmt::print(stderr, "hmcr: error: {}\n", e.what());
         return 1;

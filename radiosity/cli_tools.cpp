@@ -29,16 +29,13 @@ const View& find_view(const Scene& scene, const std::string& name) {
                                 names + ")");
 }
 
-// The exposure a reference folder fixed for a view (reference.json).
+// The exposure a reference folder fixed for a view.
 double reference_exposure(const fs::path& dir, const std::string& view) {
-    std::ifstream in(dir / "reference.json");
-    if (!in) throw std::invalid_argument((dir / "reference.json").string() + ": cannot read it");
-    const auto j = nlohmann::json::parse(in);
-    const auto& views = j.at("reference").at("views");
-    if (!views.contains(view)) {
+    const auto exposure = read_reference_exposures(dir);
+    if (!exposure.count(view)) {
         throw std::invalid_argument((dir / "reference.json").string() + ": no view '" + view + "'");
     }
-    return views.at(view).at("exposure").get<double>();
+    return exposure.at(view);
 }
 
 }  // namespace

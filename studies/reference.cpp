@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "studies/json_file.h"
 #include "viz/atomic_file.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
@@ -90,6 +91,16 @@ void write_reference(const std::filesystem::path& dir, const Scene& scene,
         {"seconds", ref.seconds},
         {"scene", scene.name}};
     write_text_atomically(dir / "reference.json", summary.dump(2) + "\n");
+}
+
+std::map<std::string, double> read_reference_exposures(const std::filesystem::path& dir) {
+    return read_json_file(dir / "reference.json", [](const nlohmann::json& j) {
+        std::map<std::string, double> exposure;
+        for (const auto& [view, v] : j.at("reference").at("views").items()) {
+            exposure[view] = v.at("exposure").get<double>();
+        }
+        return exposure;
+    });
 }
 
 }  // namespace hmcr

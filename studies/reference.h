@@ -63,4 +63,8 @@ void write_reference(const std::filesystem::path& dir, const Scene& scene,
                      const Reference& reference, const ReferenceOptions& options,
                      nlohmann::json summary);
 
+// The exposure fixed for each view in a reference folder's reference.json; throws
+// std::invalid_argument naming the file when it is missing or malformed.
+std::map<std::string, double> read_reference_exposures(const std::filesystem::path& dir);
+
 }  // namespace hmcr

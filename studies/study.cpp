@@ -4,12 +4,12 @@
 #include <fmt/ranges.h>
 
 #include <chrono>
-#include <fstream>
 #include <stdexcept>
 
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "radiosity/patch.h"
+#include "studies/json_file.h"
 #include "studies/reference.h"
 #include "viz/atomic_file.h"
 #include "viz/image.h"
@@ -41,31 +41,17 @@ struct StudyReference {
     std::map<std::string, double> exposure;
 };
 
-nlohmann::json read_json(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path.string() + ": cannot open");
-    try {
-        return nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw std::runtime_error(path.string() + ": " + e.what());
-    }
-}
-
 StudyReference load_reference(const std::filesystem::path& dir, const Scene& scene) {
     StudyReference ref;
     ref.mesh = read_vtp(dir / "reference.vtp");
-    const nlohmann::json summary = read_json(dir / "reference.json");
-    const nlohmann::json* views = nullptr;
-    if (summary.contains("reference") && summary["reference"].contains("views"))
-        views = &summary["reference"]["views"];
+    ref.exposure = read_reference_exposures(dir);
     for (const View& v : scene.views) {
-        if (!views || !views->contains(v.name)) {
-            throw std::runtime_error(fmt::format("{}: no exposure for view '{}' of scene '{}'",
-                                                 (dir / "reference.json").string(), v.name,
-                                                 scene.name));
+        if (!ref.exposure.count(v.name)) {
+            throw std::invalid_argument(fmt::format("{}: no exposure for view '{}' of scene '{}'",
+                                                    (dir / "reference.json").string(), v.name,
+                                                    scene.name));
         }
-        const double exposure = (*views)[v.name].at("exposure").get<double>();
-        ref.exposure[v.name] = exposure;
+        const double exposure = ref.exposure.at(v.name);
         ref.images[v.name] = quantise(read_pfm(dir / "views" / (v.name + ".pfm")), exposure);
     }
     return ref;
@@ -156,7 +142,9 @@ void StudyRunner::run() {
     for (std::size_t i = 0; i < m_tasks.size(); ++i) {
         const std::filesystem::path file = cell_file(m_tasks[i]);
         if (std::filesystem::exists(file)) {
-            cells.push_back(cell_from_json(read_json(file)));
+            cells.push_back(read_json_file(file, [](const nlohmann::json& j) {
+                return cell_from_json(j);
+            }));
             report(event(StudyProgress::Stage::kSkipped, i));
             continue;
         }

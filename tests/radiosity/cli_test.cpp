@@ -141,6 +141,23 @@ TEST_F(Cli, RenderRejectsAnUnknownViewAndAMissingSolution) {
     EXPECT_FALSE(fs::exists(m_dir / "x.png"));
 }
 
+// A broken reference.json is named as such (not as a scene's settings), with exit code 2.
+TEST_F(Cli, RenderNamesABrokenReferenceFile) {
+    const std::string vtp = (m_dir / "p.vtp").string();
+    ASSERT_EQ(hmcr("solve plates --rays 5000 --quiet -o " + vtp).exit_code, 0);
+    fs::create_directories(m_dir / "ref");
+    for (const char* text : {"{}", "{\"reference\": {\"views\": {\"side\": {\"exposure\": \"x\"}}}}",
+                             "{not json"}) {
+        std::ofstream(m_dir / "ref" / "reference.json") << text;
+        const CliRun r = hmcr("render " + vtp + " --scene plates --reference " +
+                              (m_dir / "ref").string() + " -o " + (m_dir / "x.png").string());
+        EXPECT_EQ(r.exit_code, 2) << text;
+        EXPECT_NE(r.err.find("ref/reference.json: "), std::string::npos) << r.err;
+        EXPECT_EQ(r.err.find("solver"), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(m_dir / "x.png"));
+    }
+}
+
 TEST_F(Cli, InfoPrintsTheMeasuresAndWarnsOnAnOpenScene) {
     const CliRun closed = hmcr("info furnace --lines 200000");
     EXPECT_EQ(closed.exit_code, 0) << closed.err;
