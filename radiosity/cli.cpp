@@ -175,7 +175,9 @@ void add_solve(CLI::App& app, SolveArgs& args) {
     cmd->add_option("--rays", o.rays, "shooting rays over the whole solve")
         ->transform(count_notation())
         ->capture_default_str();
-    cmd->add_option("--seed", o.seed, "random seed")->capture_default_str();
+    cmd->add_option("--seed", o.seed, "random seed")
+        ->transform(count_notation())
+        ->capture_default_str();
     cmd->add_option("--threads", o.threads, "worker threads, 0 = all cores")->capture_default_str();
     cmd->add_option("--min-area", o.min_area, "smallest element area, relative to the total area")
         ->capture_default_str();

@@ -40,22 +40,30 @@ double reference_exposure(const fs::path& dir, const std::string& view) {
 
 }  // namespace
 
+std::optional<std::uint64_t> parse_count(const std::string& text) {
+    std::size_t used = 0;
+    double value = 0;
+    // Plain digits are read exactly (up to 2^64 - 1); notation like 1e7 up to 2^53, where
+    // doubles are exact.
+    const bool plain = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+    try {
+        if (plain) return std::stoull(text);
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {  // out of range, or not a number at all
+        return std::nullopt;
+    }
+    if (used != text.size() || !(value >= 0) || value > 0x1p53 || value != std::floor(value)) {
+        return std::nullopt;
+    }
+    return std::uint64_t(value);
+}
+
 const CLI::Validator& count_notation() {
     static const CLI::Validator validator(
         [](std::string& text) -> std::string {
-            if (text.find_first_of("eE.") == std::string::npos) return {};  // plain digits
-            std::size_t used = 0;
-            double value = 0;
-            try {
-                value = std::stod(text, &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used != text.size() || !(value >= 0) || value > 0x1p53 ||
-                value != std::floor(value)) {
-                return "'" + text + "' is not a whole number";
-            }
-            text = fmt::format("{:.0f}", value);
+            const auto count = parse_count(text);
+            if (!count) return "'" + text + "' is not a whole number in range";
+            text = std::to_string(*count);
             return {};
         },
         "COUNT");
@@ -104,7 +112,9 @@ CLI::App* add_reference_command(CLI::App& app, ReferenceArgs& a) {
     cmd->add_option("--rays", o.rays, "rays per seed")
         ->transform(count_notation())
         ->capture_default_str();
-    cmd->add_option("--seed", o.seed, "first seed (the second is seed + 1)")->capture_default_str();
+    cmd->add_option("--seed", o.seed, "first seed (the second is seed + 1)")
+        ->transform(count_notation())
+        ->capture_default_str();
     cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel of the view images")
         ->capture_default_str();
     cmd->add_option("--threads", o.threads, "worker threads, 0 = all")->capture_default_str();
@@ -148,7 +158,9 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& a) {
     cmd->add_option("--lines", a.lines, "local rays in all, or global lines")
         ->transform(count_notation())
         ->capture_default_str();
-    cmd->add_option("--seed", a.seed, "random seed")->capture_default_str();
+    cmd->add_option("--seed", a.seed, "random seed")
+        ->transform(count_notation())
+        ->capture_default_str();
     cmd->add_flag("--json", a.json, "machine-readable output");
     return cmd;
 }
@@ -247,7 +259,9 @@ CLI::App* add_study_command(CLI::App& app, StudyArgs& a) {
     cmd->add_option("--budgets", a.budgets, "leaf counts, comma-separated")->required();
     cmd->add_option("--oracles", a.oracles, "comma-separated names, or all")->capture_default_str();
     cmd->add_option("--seeds", o.seeds, "seeds per cell")->capture_default_str();
-    cmd->add_option("--first-seed", o.first_seed, "the first seed")->capture_default_str();
+    cmd->add_option("--first-seed", o.first_seed, "the first seed")
+        ->transform(count_notation())
+        ->capture_default_str();
     cmd->add_option("--rays", o.rays, "rays per solve")
         ->transform(count_notation())
         ->capture_default_str();
@@ -272,17 +286,11 @@ std::vector<std::string> split_commas(const std::string& text) {
 }
 
 std::size_t parse_budget(const std::string& text) {
-    std::size_t used = 0;
-    long long v = 0;
-    try {
-        v = std::stoll(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || v <= 0) {
+    const auto count = parse_count(text);
+    if (!count || *count == 0) {
         throw std::invalid_argument("budgets: '" + text + "' is not a positive leaf count");
     }
-    return std::size_t(v);
+    return std::size_t(*count);
 }
 
 void print_study_progress(const StudyProgress& p) {

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
+#include <optional>
 #include <string>
 
 #include "studies/reference.h"
@@ -10,7 +12,9 @@
 
 namespace hmcr {
 
-// Lets a count be written 1e7 or 2.5e6 as well as 10000000: exact whole numbers only.
+// A count written 10000000, 1e7 or 2.5e6: whole numbers only, else nothing.
+std::optional<std::uint64_t> parse_count(const std::string& text);
+// The option check built on it (rewrites the text to plain digits for CLI11).
 const CLI::Validator& count_notation();
 
 struct RenderArgs {

@@ -61,6 +61,18 @@ TEST_F(Cli, BadNumberIsRejected) {
                          "--rays: '1.5e0' is not a whole number");
     expect_clean_failure(hmcr("solve plates --rays 1e400 -o " + (m_dir / "out.vtp").string()),
                          "--rays: '1e400' is not a whole number");
+    // Beyond 64 bits: refused, not saturated (which would ask for 1.8e19 rays).
+    expect_clean_failure(
+        hmcr("solve plates --rays 99999999999999999999 -o " + (m_dir / "out.vtp").string()),
+        "--rays: '99999999999999999999' is not a whole number");
+    expect_clean_failure(
+        hmcr("solve plates --seed 99999999999999999999 -o " + (m_dir / "out.vtp").string()),
+        "--seed: '99999999999999999999' is not a whole number");
+    const CliRun budgets = hmcr("study plates --reference " + (m_dir / "none").string() +
+                                " --budgets 2e1,1.5 -o " + (m_dir / "s").string());
+    EXPECT_EQ(budgets.exit_code, 2);
+    EXPECT_NE(budgets.err.find("budgets: '1.5' is not a positive leaf count"), std::string::npos)
+        << budgets.err;
 }
 
 // Counts may be written in scientific notation when they are whole numbers.
