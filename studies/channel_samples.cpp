@@ -1,5 +1,6 @@
 #include "studies/channel_samples.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,10 +24,28 @@ ChannelSamples trace_lines(const PatchSet& patches, const EmbreeScene& scene,
                                                : trace_global_lines(patches, scene, options);
 }
 
-double log_kernel(const Patch& p, const Vec3& x, const Patch& q, const Vec3& d, double total_area) {
-    const double t = q.normal.dot(q.corner[0] - x) / q.normal.dot(d);
-    const double f = point_kernel(x, p.normal, x + t * d, q.normal);
+double log_kernel(const Patch& p, const Vec3& x, const Patch& q, const Vec3& y, double total_area) {
+    const double f = point_kernel(x, p.normal, y, q.normal);
     return f > 0 ? std::log2(total_area * f) : std::nan("");
+}
+
+double log_kernel_along(const Patch& p, const Vec3& x, const Patch& q, const Vec3& d,
+                        double total_area) {
+    const double t = q.normal.dot(q.corner[0] - x) / q.normal.dot(d);
+    return log_kernel(p, x, q, x + t * d, total_area);
+}
+
+void KernelTally::merge_into(ChannelSamples& out) const {
+    out.log_kernel_sum.resize(sum.size(), 0.0);
+    out.log_kernel_count.resize(count.size(), 0);
+    for (std::size_t b = 0; b < sum.size(); ++b) {
+        out.log_kernel_sum[b] += sum[b];
+        out.log_kernel_count[b] += count[b];
+    }
+}
+
+std::uint32_t batch_count(const LineOptions& options) {
+    return std::max<std::uint32_t>(1, options.batches);
 }
 
 }  // namespace hmcr

@@ -72,6 +72,23 @@ private:
     }
 };
 
+// Per-batch sums of log2(A_T F) over the rays that land on a front face, and their counts:
+// kept per parallel block by the tracers and merged in block order (thread-count independent).
+struct KernelTally {
+    std::vector<double> sum;
+    std::vector<std::uint64_t> count;
+
+    explicit KernelTally(std::uint32_t batches = 0) : sum(batches, 0.0), count(batches, 0) {}
+    void add(std::uint32_t batch, double log_kernel) {
+        sum[batch] += log_kernel;
+        ++count[batch];
+    }
+    void merge_into(ChannelSamples& out) const;
+};
+
+// The batch count of the options (at least 1).
+std::uint32_t batch_count(const LineOptions& options);
+
 // Local rays per patch: a multiple of the batch count, at least one per batch, about N a_i.
 std::vector<std::uint64_t> local_line_counts(const PatchSet& patches, const LineOptions& options);
 
@@ -83,9 +100,12 @@ ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& sc
 ChannelSamples trace_lines(const PatchSet& patches, const EmbreeScene& scene,
                            const LineOptions& options);
 
-// log2(A_T F(x, y)) for the ray from x on p to y on q along the unit direction d: y is
-// recomputed on q's plane in double precision (Embree's distance is a float), which keeps the
-// kernel accurate near edges and the estimates scale-equivariant. NaN when the kernel is 0.
-double log_kernel(const Patch& p, const Vec3& x, const Patch& q, const Vec3& d, double total_area);
+// log2(A_T F(x, y)) between x on p and y on q; NaN when the kernel is 0.
+double log_kernel(const Patch& p, const Vec3& x, const Patch& q, const Vec3& y, double total_area);
+// The same for the ray from x along the unit direction d that hits q: y is recomputed on q's
+// plane in double precision (Embree's distance is a float), which keeps the kernel accurate
+// near edges and the estimates scale-equivariant.
+double log_kernel_along(const Patch& p, const Vec3& x, const Patch& q, const Vec3& d,
+                        double total_area);
 
 }  // namespace hmcr

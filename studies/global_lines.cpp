@@ -46,18 +46,18 @@ struct LineHit {
     double facing = 0;  // n . direction: > 0 when the front faces forward along the line
 };
 
-// The surfaces crossed by line k, in order along its direction.
-std::vector<LineHit> trace_line(const PatchSet& set, const EmbreeScene& scene, const Sphere& s,
-                                std::uint64_t seed, std::uint64_t k, Vec3& direction) {
+// The surfaces crossed by line k, in order along its direction (into `hits`, reused).
+Vec3 trace_line(const PatchSet& set, const EmbreeScene& scene, const Sphere& s,
+                std::uint64_t seed, std::uint64_t k, std::vector<LineHit>& hits) {
     Rng rng(seed, kGlobalKey, k);
     const double xi1 = rng.uniform(), xi2 = rng.uniform();
-    direction = sample_uniform_sphere(xi1, xi2);
+    const Vec3 direction = sample_uniform_sphere(xi1, xi2);
     const double xi3 = rng.uniform(), xi4 = rng.uniform();
     const Vec2 disk = sample_uniform_disk(xi3, xi4) * s.radius;
     Vec3 t, b;
     tangent_frame(direction, t, b);
     const Vec3 origin = s.centre + disk.x() * t + disk.y() * b - 2 * s.radius * direction;
-    std::vector<LineHit> hits;
+    hits.clear();
     Vec3 from = origin;
     while (hits.size() < kMaxHits) {
         const auto hit = scene.first_hit(from, direction);
@@ -69,7 +69,7 @@ std::vector<LineHit> trace_line(const PatchSet& set, const EmbreeScene& scene, c
         const double along = q.normal.dot(q.corner[0] - origin) / facing;
         hits.push_back({hit->patch, std::isfinite(along) ? origin + along * direction : from, facing});
     }
-    return hits;
+    return direction;
 }
 
 struct Record {
@@ -79,35 +79,33 @@ struct Record {
 
 struct Block {
     std::vector<Record> records;
-    std::vector<double> sums;  // per batch
-    std::vector<std::uint64_t> hits;
+    KernelTally tally;
+    std::vector<LineHit> hits;  // scratch, reused line after line
+    std::vector<char> joined;   // scratch: segment k is open with a non-zero kernel
 };
 
-// The samples of one line: one per crossed surface, from its front side to the neighbouring
-// hit on that side (when that hit's front faces back along the segment).
-void add_line(const PatchSet& set, const std::vector<LineHit>& hits, const Vec3& d,
-              std::uint32_t batches, std::uint32_t batch, Block& out) {
+// The samples of one line (block.hits): one per crossed surface, from its front side to the
+// neighbouring hit on that side (when that hit's front faces back along the segment).
+void add_line(const PatchSet& set, std::uint32_t batches, std::uint32_t batch, Block& block) {
+    const std::vector<LineHit>& hits = block.hits;
     // Segment k joins hits k and k + 1; it carries a ray both ways when both fronts face it.
-    const auto open = [&](std::size_t k) {
-        return hits[k].facing > 0 && hits[k + 1].facing < 0;
-    };
-    std::vector<bool> joined(hits.size(), false);  // segment k is open with a non-zero kernel
+    block.joined.assign(hits.size(), 0);
     for (std::size_t k = 0; k + 1 < hits.size(); ++k) {
-        if (!open(k)) continue;
+        if (!(hits[k].facing > 0 && hits[k + 1].facing < 0)) continue;
         const double v = log_kernel(set.patches[hits[k].patch], hits[k].point,
-                                    set.patches[hits[k + 1].patch], d, set.total_area);
+                                    set.patches[hits[k + 1].patch], hits[k + 1].point,
+                                    set.total_area);
         if (std::isnan(v)) continue;
-        joined[k] = true;
-        out.sums[batch] += v;
-        ++out.hits[batch];
+        block.joined[k] = 1;
+        block.tally.add(batch, v);
     }
     for (std::size_t k = 0; k < hits.size(); ++k) {
         const LineHit& h = hits[k];
-        std::uint32_t target = ChannelSamples::kNoPatch;
-        if (h.facing > 0 && k + 1 < hits.size() && joined[k]) target = hits[k + 1].patch;
-        if (h.facing < 0 && k > 0 && joined[k - 1]) target = hits[k - 1].patch;
         if (h.facing == 0) continue;  // grazing: measure zero
-        out.records.push_back({h.patch * batches + batch, target});
+        std::uint32_t target = ChannelSamples::kNoPatch;
+        if (h.facing > 0 && k + 1 < hits.size() && block.joined[k]) target = hits[k + 1].patch;
+        if (h.facing < 0 && k > 0 && block.joined[k - 1]) target = hits[k - 1].patch;
+        block.records.push_back({h.patch * batches + batch, target});
     }
 }
 
@@ -123,10 +121,7 @@ void gather(std::vector<Block>& blocks, std::size_t slots, ChannelSamples& out) 
     for (Block& block : blocks) {
         for (const Record& r : block.records) out.target[cursor[r.slot]++] = r.target;
         block.records = {};
-        for (std::uint32_t b = 0; b < out.batches; ++b) {
-            out.log_kernel_sum[b] += block.sums[b];
-            out.log_kernel_count[b] += block.hits[b];
-        }
+        block.tally.merge_into(out);
     }
 }
 
@@ -135,26 +130,24 @@ void gather(std::vector<Block>& blocks, std::size_t slots, ChannelSamples& out) 
 ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& scene,
                                   const LineOptions& options) {
     ChannelSamples out;
-    const std::uint32_t b = out.batches = std::max<std::uint32_t>(1, options.batches);
+    const std::uint32_t b = out.batches = batch_count(options);
     if (double(patches.patches.size()) * b >= double(ChannelSamples::kNoPatch)) {
         throw std::invalid_argument("too many patches x batches for global lines");
     }
     out.lines = options.lines;
-    out.log_kernel_sum.assign(b, 0.0);
-    out.log_kernel_count.assign(b, 0);
     const Sphere sphere = bounding_sphere(patches);
     std::vector<Block> blocks((options.lines + kBlock - 1) / kBlock);
     tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t i) {
         set_tracing_float_mode();
         Block& block = blocks[i];
-        block.sums.assign(b, 0.0);
-        block.hits.assign(b, 0);
+        block.tally = KernelTally(b);
         const std::uint64_t k1 = std::min<std::uint64_t>(options.lines, (i + 1) * kBlock);
         for (std::uint64_t k = i * kBlock; k < k1; ++k) {
-            Vec3 d;
-            const auto hits = trace_line(patches, scene, sphere, options.seed, k, d);
-            add_line(patches, hits, d, b, std::uint32_t(k % b), block);
+            trace_line(patches, scene, sphere, options.seed, k, block.hits);
+            add_line(patches, b, std::uint32_t(k % b), block);
         }
+        block.hits = {};
+        block.joined = {};
     });
     gather(blocks, patches.patches.size() * b, out);
     return out;

@@ -32,7 +32,7 @@ RayOutcome trace_ray(const PatchSet& set, const EmbreeScene& scene, std::uint64_
     if (!hit) return {};
     const Patch& q = set.patches[hit->patch];
     if (q.normal.dot(d) >= 0) return {};  // back face
-    const double value = log_kernel(p, x, q, d, set.total_area);
+    const double value = log_kernel_along(p, x, q, d, set.total_area);
     if (std::isnan(value)) return {};
     return {hit->patch, value};
 }
@@ -40,11 +40,12 @@ RayOutcome trace_ray(const PatchSet& set, const EmbreeScene& scene, std::uint64_
 }  // namespace
 
 std::vector<std::uint64_t> local_line_counts(const PatchSet& patches, const LineOptions& options) {
-    const double per_batch = double(options.lines) / double(options.batches);
+    const std::uint32_t batches = batch_count(options);
+    const double per_batch = double(options.lines) / double(batches);
     std::vector<std::uint64_t> n(patches.patches.size());
     for (std::size_t i = 0; i < n.size(); ++i) {
         const double share = per_batch * patches.patches[i].area / patches.total_area;
-        n[i] = options.batches * std::max<std::uint64_t>(1, std::llround(share));
+        n[i] = batches * std::max<std::uint64_t>(1, std::llround(share));
     }
     return n;
 }
@@ -52,8 +53,8 @@ std::vector<std::uint64_t> local_line_counts(const PatchSet& patches, const Line
 ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& scene,
                                  const LineOptions& options) {
     ChannelSamples out;
-    const std::uint32_t b = out.batches = std::max<std::uint32_t>(1, options.batches);
-    const auto counts = local_line_counts(patches, {options.method, options.lines, b, options.seed});
+    const std::uint32_t b = out.batches = batch_count(options);
+    const auto counts = local_line_counts(patches, options);
     // Ray k of patch i is number start[i] + k in tracing order; it goes to batch k % b, so every
     // (patch, batch) slot holds counts[i] / b rays.
     std::vector<std::uint64_t> start(counts.size() + 1, 0);
@@ -67,10 +68,8 @@ ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& sce
     out.lines = start.back();
     out.target.assign(out.lines, ChannelSamples::kNoPatch);
 
-    // Per block and batch partial sums, reduced in block order afterwards (deterministic).
     const std::uint64_t blocks = (out.lines + kBlock - 1) / kBlock;
-    std::vector<double> sums(blocks * b, 0.0);
-    std::vector<std::uint64_t> hits(blocks * b, 0);
+    std::vector<KernelTally> tallies(blocks, KernelTally(b));
     tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t block) {
         set_tracing_float_mode();
         const std::uint64_t g0 = block * kBlock, g1 = std::min(out.lines, g0 + kBlock);
@@ -80,19 +79,10 @@ ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& sce
             const std::uint64_t k = g - start[i];
             const RayOutcome r = trace_ray(patches, scene, options.seed, i, k);
             out.target[out.first[i * b + k % b] + k / b] = r.target;
-            if (r.target == ChannelSamples::kNoPatch) continue;
-            sums[block * b + k % b] += r.log_kernel;
-            ++hits[block * b + k % b];
+            if (r.target != ChannelSamples::kNoPatch) tallies[block].add(k % b, r.log_kernel);
         }
     });
-    out.log_kernel_sum.assign(b, 0.0);
-    out.log_kernel_count.assign(b, 0);
-    for (std::uint64_t block = 0; block < blocks; ++block) {
-        for (std::uint64_t s = 0; s < b; ++s) {
-            out.log_kernel_sum[s] += sums[block * b + s];
-            out.log_kernel_count[s] += hits[block * b + s];
-        }
-    }
+    for (const KernelTally& t : tallies) t.merge_into(out);  // block order: deterministic
     return out;
 }
 
