@@ -48,8 +48,9 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o,
     const Solution second = solve_uniform(scene, o, o.seed + 1);
     const ShadedMesh second_mesh = build_shaded_mesh(*second.hierarchy, scene.mesh, o.crease_degrees);
     step("comparing the two seeds");
-    ref.object_error = object_space_error(second_mesh, ref.mesh, reflected_error_options(scene.mesh));
     const ShadedTracer first_tracer(ref.mesh), second_tracer(second_mesh);
+    ref.object_error = object_space_error(second_tracer, second_mesh, ref.mesh,
+                                          reflected_error_options(scene.mesh));
     const RenderOptions render_options{o.samples_per_axis};
     for (const View& v : scene.views) {
         step("rendering view " + v.name);

@@ -221,7 +221,7 @@ void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResul
         write_png(m_options.output / "images" / (t.name + "-" + v.name + ".png"), image);
         cell.views[v.name] = image_errors(image, m_reference.images.at(v.name));
     }
-    cell.object_error = object_space_error(mesh, m_reference.mesh, m_error_options);
+    cell.object_error = object_space_error(tracer, mesh, m_reference.mesh, m_error_options);
 }
 
 }  // namespace

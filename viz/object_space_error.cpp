@@ -107,16 +107,6 @@ void check_patch_ids(const ShadedMesh& m, const char* which) {
     }
 }
 
-double bounding_diagonal(const std::vector<Vec3>& points) {
-    if (points.empty()) return 0;
-    Vec3 lo = points.front(), hi = points.front();
-    for (const Vec3& p : points) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    return (hi - lo).norm();
-}
-
 }  // namespace
 
 std::string ObjectErrorOptions::to_string() const {
@@ -132,6 +122,11 @@ std::string ObjectError::to_string() const {
 
 ObjectError object_space_error(const ShadedMesh& solution, const ShadedMesh& reference,
                                const ObjectErrorOptions& options) {
+    return object_space_error(ShadedTracer(solution), solution, reference, options);
+}
+
+ObjectError object_space_error(const ShadedTracer& tracer, const ShadedMesh& solution,
+                               const ShadedMesh& reference, const ObjectErrorOptions& options) {
     if (options.subdivisions < 1 || options.subdivisions > 64) {
         throw std::invalid_argument("subdivisions must be in [1, 64]: " + options.to_string());
     }
@@ -142,12 +137,10 @@ ObjectError object_space_error(const ShadedMesh& solution, const ShadedMesh& ref
             throw std::invalid_argument("emission has no entry for patch " + std::to_string(p));
         }
     }
-    const ShadedTracer tracer(solution);
     const std::vector<FanTriangle> triangles = fan_triangulate(reference);
     std::vector<Vec3> normals(reference.cell_count());
     for (std::size_t c = 0; c < normals.size(); ++c) normals[c] = cell_normal(reference, c);
-    const SolutionProbe probe{tracer, solution.patch_id,
-                              std::max(1e-5 * bounding_diagonal(reference.points), 1e-12)};
+    const SolutionProbe probe{tracer, solution.patch_id, 10 * tracer.offset()};
     const std::vector<Vec2> points = quadrature_points(options.subdivisions);
 
     constexpr std::size_t kBlock = 256;

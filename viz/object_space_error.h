@@ -17,8 +17,8 @@
 //
 // B_ref at a point comes from the reference triangle's own barycentric weights. B_sol comes from
 // a ShadedTracer of the solution: a ray from delta in front of the point (along the reference
-// cell's normal, delta = 1e-5 of the reference's bounding-box diagonal, ten times Embree's
-// self-hit offset) back along minus the normal. The hit must be on a solution cell of the same
+// cell's normal, delta = ten times Embree's self-hit offset, 1e-5 of the scene's bounding-box
+// diagonal) back along minus the normal. The hit must be on a solution cell of the same
 // patch; if a surface closer than delta is hit instead (an object resting on the floor), the
 // ray is cast from behind the point instead. A point neither ray finds on its patch counts with
 // B_sol = 0 and is reported as unmatched: it means the meshes do not cover the same surfaces.
@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "viz/shaded_mesh.h"
+#include "viz/shaded_tracer.h"
 
 namespace hmcr {
 
@@ -56,5 +57,8 @@ struct ObjectError {
 // Parallel over the reference with TBB; the result does not depend on the number of threads.
 ObjectError object_space_error(const ShadedMesh& solution, const ShadedMesh& reference,
                                const ObjectErrorOptions& options = {});
+// The same with a tracer of the solution already built (a study renders it too).
+ObjectError object_space_error(const ShadedTracer& solution_tracer, const ShadedMesh& solution,
+                               const ShadedMesh& reference, const ObjectErrorOptions& options = {});
 
 }  // namespace hmcr
