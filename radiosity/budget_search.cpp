@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 
@@ -129,6 +130,10 @@ BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& option
     }
     validate(options);
     return Search(mesh, options, budget, on_probe, progress).run();
+}
+
+void to_json(nlohmann::json& j, const BudgetProbe& p) {
+    j = {{"epsilon", p.epsilon}, {"leaves", p.leaves}, {"seconds", p.seconds}};
 }
 
 }  // namespace hmcr

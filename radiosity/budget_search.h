@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,8 @@ struct BudgetProbe {
     std::size_t leaves = 0;
     double seconds = 0;
 };
+// {"epsilon", "leaves", "seconds"}: how run summaries and study cells store a probe.
+void to_json(nlohmann::json& j, const BudgetProbe& p);
 
 struct BudgetResult {
     Solution solution;  // the accepted probe's solve

@@ -75,16 +75,7 @@ double seconds_since(Clock::time_point t) {
 
 void write_outputs(const fs::path& vtp, const Scene& scene, const Solution& sol, double crease) {
     const ShadedMesh mesh = build_shaded_mesh(*sol.hierarchy, scene.mesh, crease);
-    VtpMetadata meta;
-    meta.oracle = sol.options.oracle;
-    meta.epsilon = sol.stats.epsilon;
-    meta.lines = sol.options.lines;
-    meta.rays = sol.stats.rays;
-    meta.seed = sol.options.seed;
-    meta.element_count = sol.stats.leaves;
-    meta.iterations = sol.stats.iterations.size();
-    meta.time_value = double(sol.stats.iterations.size());
-    write_vtp(vtp, mesh, meta);
+    write_vtp(vtp, mesh, vtp_metadata(sol, double(sol.stats.iterations.size())));
 }
 
 // One solve at epsilon, or the probes of a budget search (each a full solve), with progress.
@@ -111,11 +102,9 @@ BudgetResult solve_scene(const Scene& scene, const SolveArgs& args, ProgressMode
 }
 
 nlohmann::json budget_json(const BudgetOptions& budget, const std::vector<BudgetProbe>& probes) {
-    auto list = nlohmann::json::array();
-    for (const auto& p : probes) {
-        list.push_back({{"epsilon", p.epsilon}, {"leaves", p.leaves}, {"seconds", p.seconds}});
-    }
-    return {{"target_leaves", budget.leaves}, {"tolerance", budget.tolerance}, {"probes", list}};
+    return {{"target_leaves", budget.leaves},
+            {"tolerance", budget.tolerance},
+            {"probes", nlohmann::json(probes)}};
 }
 
 int run_solve(SolveArgs& args, const std::string& command_line) {

@@ -22,10 +22,6 @@ Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint6
     return solve(scene.mesh, s);
 }
 
-nlohmann::json errors_json(const ImageErrors& e) {
-    return {{"rmse_a", e.rmse_a}, {"rmse_p", e.rmse_p}, {"psnr_a", e.psnr_a}, {"psnr_p", e.psnr_p}};
-}
-
 }  // namespace
 
 ObjectErrorOptions reflected_error_options(const PatchMesh& mesh) {
@@ -67,15 +63,17 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o,
 void write_reference(const std::filesystem::path& dir, const Scene& scene,
                      const Reference& ref, const ReferenceOptions& o, nlohmann::json summary) {
     const SolveStats& st = ref.solution.stats;
-    VtpMetadata meta{"uniform", 0, 0, st.rays, o.seed, st.leaves, st.iterations.size(),
-                     double(st.iterations.size())};
+    VtpMetadata meta = vtp_metadata(ref.solution, double(st.iterations.size()));
+    meta.oracle = "uniform";  // no oracle: a fixed uniform mesh
+    meta.epsilon = 0;
+    meta.lines = 0;
     write_vtp(dir / "reference.vtp", ref.mesh, meta);
     nlohmann::json views = nlohmann::json::object(), errors = nlohmann::json::object();
     for (const auto& [name, view] : ref.views) {
         write_pfm(dir / "views" / (name + ".pfm"), view.image);
         write_png(dir / "views" / (name + ".png"), view.image, view.exposure);
         views[name] = {{"exposure", view.exposure}};
-        errors[name] = errors_json(ref.view_errors.at(name));
+        errors[name] = ref.view_errors.at(name);
     }
     summary["reference"] = {
         {"max_area_m2", o.max_area},

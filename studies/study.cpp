@@ -203,16 +203,8 @@ CellResult StudyRunner::compute(std::size_t index) {
 void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResult& cell) {
     const ShadedMesh mesh =
         build_shaded_mesh(*solution.hierarchy, m_scene.mesh, m_options.crease_degrees);
-    const SolveStats& st = solution.stats;
-    const VtpMetadata meta{t.oracle,
-                           st.epsilon,
-                           std::uint64_t(solution.options.lines),
-                           st.rays,
-                           t.seed,
-                           st.leaves,
-                           st.iterations.size(),
-                           double(t.budget)};
-    write_vtp(m_options.output / "meshes" / (t.name + ".vtp"), mesh, meta);
+    write_vtp(m_options.output / "meshes" / (t.name + ".vtp"), mesh,
+              vtp_metadata(solution, double(t.budget)));
     const ShadedTracer tracer(mesh);
     const RenderOptions render_options{m_options.samples_per_axis};
     for (const View& v : m_scene.views) {

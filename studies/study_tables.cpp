@@ -211,12 +211,6 @@ Image8 error_plot(const std::vector<CellResult>& cells, const std::vector<std::s
 }  // namespace
 
 nlohmann::json cell_to_json(const CellResult& c) {
-    nlohmann::json probes = nlohmann::json::array(), views = nlohmann::json::object();
-    for (const BudgetProbe& p : c.probes)
-        probes.push_back({{"epsilon", p.epsilon}, {"leaves", p.leaves}, {"seconds", p.seconds}});
-    for (const auto& [name, e] : c.views)
-        views[name] = {
-            {"rmse_a", e.rmse_a}, {"rmse_p", e.rmse_p}, {"psnr_a", e.psnr_a}, {"psnr_p", e.psnr_p}};
     return {{"scene", c.scene},
             {"oracle", c.oracle},
             {"budget", c.budget},
@@ -226,9 +220,9 @@ nlohmann::json cell_to_json(const CellResult& c) {
             {"epsilon", c.epsilon},
             {"leaves", c.leaves},
             {"probes", c.probes.size()},
-            {"probe_history", probes},
+            {"probe_history", nlohmann::json(c.probes)},
             {"seconds", c.seconds},
-            {"views", views},
+            {"views", nlohmann::json(c.views)},
             {"object_error",
              {{"relative_l2", c.object_error.relative_l2},
               {"samples", c.object_error.samples},

@@ -1,6 +1,7 @@
 #include "viz/metrics.h"
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -59,6 +60,10 @@ std::string ImageErrors::to_string() const {
     s << "ImageErrors{rmse_a=" << rmse_a << ", rmse_p=" << rmse_p << ", psnr_a=" << psnr_a
       << ", psnr_p=" << psnr_p << "}";
     return s.str();
+}
+
+void to_json(nlohmann::json& j, const ImageErrors& e) {
+    j = {{"rmse_a", e.rmse_a}, {"rmse_p", e.rmse_p}, {"psnr_a", e.psnr_a}, {"psnr_p", e.psnr_p}};
 }
 
 }  // namespace hmcr

@@ -10,6 +10,7 @@
 // (the limit, and what keeps "higher is better" true); a study table prints it as "inf".
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 #include "viz/image.h"
@@ -22,6 +23,8 @@ struct ImageErrors {
 
     std::string to_string() const;
 };
+// {"rmse_a", "rmse_p", "psnr_a", "psnr_p"}: how references and study cells store them.
+void to_json(nlohmann::json& j, const ImageErrors& e);
 
 // Throws std::invalid_argument when the images differ in size or are empty.
 double rmse_a(const Image8& a, const Image8& b);
