@@ -219,7 +219,10 @@ Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse us
     check_mesh_extension(scene.mesh_path, file);
     if (j.contains("views")) scene.views = parse_views(j["views"], file);
     if (j.contains("solver")) {
-        if (!j["solver"].is_object()) fail(file, "\"solver\" must be an object");
+        // The settings `hmcr solve` takes from a scene (radiosity/cli.cpp applies them).
+        check_keys(j["solver"],
+                   {"oracle", "epsilon", "lines", "rays", "seed", "min_area", "max_depth", "stop"},
+                   file + ": solver");
         scene.solver_defaults = j["solver"];
     }
     LoadOptions options;

@@ -40,16 +40,7 @@ struct SolveArgs {
 
 // Scene-file defaults ("solver" object) apply unless the option was given on the command line.
 void apply_scene_defaults(const Scene& scene, SolveArgs& args) {
-    const auto& d = scene.solver_defaults;
-    static const std::set<std::string> known = {"oracle",   "epsilon",   "lines", "rays",
-                                                "seed",     "min_area",  "max_depth", "stop"};
-    for (const auto& [key, value] : d.items()) {
-        if (!known.count(key)) {
-            throw SceneError(scene.source.string() + ": unknown solver setting '" + key +
-                             "' (known: oracle, epsilon, lines, rays, seed, min_area, max_depth, "
-                             "stop)");
-        }
-    }
+    const auto& d = scene.solver_defaults;  // its keys were checked by the scene loader
     auto take = [&](const char* key, const char* flag, auto& field) {
         if (!d.contains(key) || args.app->count(flag) != 0) return;
         try {

@@ -1,16 +1,17 @@
 #include "viz/metrics.h"
 
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+
+#include "viz/tone_map.h"
 
 namespace hmcr {
 namespace {
 
 constexpr double kEqualWeights[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
-constexpr double kLuminanceWeights[3] = {0.2126, 0.7152, 0.0722};
 
 void check_same_size(const Image8& a, const Image8& b) {
     if (a.width != b.width || a.height != b.height || a.pixels.size() != b.pixels.size() ||

@@ -14,11 +14,15 @@ import sys
 import vtk
 
 
+# The optional keys of a view and their defaults, as hmcr's scene loader has them.
+VIEW_DEFAULTS = {"up": [0, 1, 0], "fov": 40, "width": 512, "height": 512}
+
+
 def load_view(scene_json, name):
-    views = {v["name"]: v for v in json.load(open(scene_json))["views"]}
+    views = {v["name"]: v for v in json.load(open(scene_json)).get("views", [])}
     if name not in views:
-        sys.exit(f"{scene_json}: no view '{name}' (views: {', '.join(views)})")
-    return views[name]
+        sys.exit(f"{scene_json}: no view '{name}' (views: {', '.join(views) or 'none'})")
+    return {**VIEW_DEFAULTS, **views[name]}
 
 
 def main(argv):

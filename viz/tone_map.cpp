@@ -6,7 +6,9 @@
 
 namespace hmcr {
 
-double luminance(const Rgb& c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
+double luminance(const Rgb& c) {
+    return kLuminanceWeights[0] * c[0] + kLuminanceWeights[1] * c[1] + kLuminanceWeights[2] * c[2];
+}
 
 double auto_exposure(const ShadedMesh& mesh) {
     double weighted = 0, area = 0;

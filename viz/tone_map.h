@@ -17,7 +17,8 @@ namespace hmcr {
 
 inline constexpr double kMiddleGrey = 0.18;
 
-// Relative luminance of linear Rec. 709 / sRGB primaries.
+// Relative luminance of linear Rec. 709 / sRGB primaries: these weights times the channels.
+inline constexpr double kLuminanceWeights[3] = {0.2126, 0.7152, 0.0722};
 double luminance(const Rgb& c);
 
 // Scale factor on radiance that maps the area-weighted mean cell luminance to kMiddleGrey;

@@ -133,6 +133,13 @@ TEST(SceneLoader, UnknownKey) {
                          "scene.json: unknown key 'veiws'"));
 }
 
+TEST(SceneLoader, UnknownSolverSetting) {
+    SceneFiles files;
+    const auto json = write_scene(files, R"({"mesh": "tri.obj", "solver": {"ray": 5}})");
+    EXPECT_TRUE(contains(scene_error([&] { load_scene(json.string()); }),
+                         "scene.json: solver: unknown key 'ray' (known: epsilon, lines"));
+}
+
 TEST(SceneLoader, BadViews) {
     const auto view_error = [](const std::string& view) {
         SceneFiles files;

@@ -197,6 +197,17 @@ TEST_F(Cli, InfoWithGlobalLines) {
     EXPECT_EQ(bad.out, "");
 }
 
+// A scene's solver setting of the wrong type is named with its file and key.
+TEST_F(Cli, SceneSolverSettingOfTheWrongTypeIsNamed) {
+    fs::copy(fs::path(HMCR_SCENE_DIR) / "plates", m_dir / "plates");
+    const fs::path json = m_dir / "plates" / "plates.json";
+    auto j = nlohmann::json::parse(slurp(json));
+    j["solver"] = {{"rays", "many"}};
+    std::ofstream(json) << j.dump();
+    expect_clean_failure(hmcr("solve " + json.string() + " -o " + (m_dir / "out.vtp").string()),
+                         "plates.json: solver setting 'rays': ");
+}
+
 // A bare OBJ, without materials or light: its geometry can be measured, but it cannot be
 // solved.
 TEST_F(Cli, InfoNeedsNoEmitterButSolveDoes) {
