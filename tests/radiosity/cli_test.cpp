@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "tests/support/temp_dir.h"
 
@@ -20,21 +19,14 @@ struct CliRun {
     std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 class Cli : public testing::Test {
 protected:
     CliRun hmcr(const std::string& args) const {
         const std::string cmd = std::string(HMCR_BINARY) + " " + args + " >" +
                                 (m_dir / "stdout").string() + " 2>" + (m_dir / "stderr").string();
         const int status = std::system(cmd.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(m_dir / "stdout"),
-                slurp(m_dir / "stderr")};
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(m_dir / "stdout"),
+                read_file(m_dir / "stderr")};
     }
     void expect_clean_failure(const CliRun& r, const std::string& needle) const {
         EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -106,7 +98,7 @@ TEST_F(Cli, SolveWritesTheMeshAndASummaryWithCountsAndTimings) {
     const CliRun r = hmcr("solve plates --rays 20000 --seed 4 --threads 2 -o " + vtp.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(fs::exists(vtp));
-    const auto summary = nlohmann::json::parse(slurp(m_dir / "sub" / "plates.json"));
+    const auto summary = nlohmann::json::parse(read_file(m_dir / "sub" / "plates.json"));
     EXPECT_EQ(summary["options"]["seed"], 4);
     EXPECT_EQ(summary["options"]["threads"], 2);
     EXPECT_NEAR(summary["counts"]["rays"].get<double>(), 20000, 400);
@@ -134,7 +126,7 @@ TEST_F(Cli, RenderAndReferenceWriteTheirFiles) {
     for (const char* f : {"reference.vtp", "reference.json", "views/side.pfm", "views/side.png"}) {
         EXPECT_TRUE(fs::exists(m_dir / "ref" / f)) << f;
     }
-    const auto summary = nlohmann::json::parse(slurp(m_dir / "ref" / "reference.json"));
+    const auto summary = nlohmann::json::parse(read_file(m_dir / "ref" / "reference.json"));
     EXPECT_GT(summary["reference"]["views"]["side"]["exposure"].get<double>(), 0);
     EXPECT_TRUE(summary["reference"]["convergence"].contains("object_space_relative_l2"));
 }
@@ -201,7 +193,7 @@ TEST_F(Cli, InfoWithGlobalLines) {
 TEST_F(Cli, SceneSolverSettingOfTheWrongTypeIsNamed) {
     fs::copy(fs::path(HMCR_SCENE_DIR) / "plates", m_dir / "plates");
     const fs::path json = m_dir / "plates" / "plates.json";
-    auto j = nlohmann::json::parse(slurp(json));
+    auto j = nlohmann::json::parse(read_file(json));
     j["solver"] = {{"rays", "many"}};
     std::ofstream(json) << j.dump();
     expect_clean_failure(hmcr("solve " + json.string() + " -o " + (m_dir / "out.vtp").string()),

@@ -8,8 +8,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "tests/support/temp_dir.h"
@@ -30,12 +28,6 @@ int run(const std::string& args, const fs::path& log) {
     const std::string cmd = std::string(HMCR_BINARY) + " " + args + " >/dev/null 2>" + log.string();
     const int status = std::system(cmd.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string slurp(const fs::path& p) {
-    std::stringstream s;
-    s << std::ifstream(p).rdbuf();
-    return s.str();
 }
 
 TEST(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
@@ -66,7 +58,7 @@ TEST(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
     EXPECT_FALSE(fs::exists(out / "table.md"));
 
     ASSERT_EQ(run(study, dir.path() / "rerun.log"), 0);
-    const std::string log = slurp(dir.path() / "rerun.log");
+    const std::string log = read_file(dir.path() / "rerun.log");
     std::size_t skipped = 0;
     for (std::size_t at = 0; (at = log.find("done before, skipped", at)) != std::string::npos; ++at) {
         ++skipped;

@@ -3,9 +3,9 @@
 // and reproduces the tables, the recomputed cell's timing aside.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <sstream>
 
+#include "studies/plot.h"
 #include "studies/reference.h"
 #include "studies/study.h"
 #include "tests/support/temp_dir.h"
@@ -13,13 +13,6 @@
 
 namespace hmcr::test {
 namespace {
-
-std::string read_text(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> out;
@@ -104,7 +97,7 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
     EXPECT_EQ(first.skipped, 0);
     const std::filesystem::path out = o.output;
 
-    const nlohmann::json table = nlohmann::json::parse(read_text(out / "table.json"));
+    const nlohmann::json table = nlohmann::json::parse(read_file(out / "table.json"));
     ASSERT_EQ(table.at("cells").size(), 4u);
     EXPECT_EQ(table.at("views"), nlohmann::json({"camera", "corner"}));
     for (const auto& c : table["cells"]) {
@@ -113,6 +106,8 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
             EXPECT_TRUE(c.contains(key)) << key;
         ASSERT_EQ(c["status"], "ok") << c["message"];
         EXPECT_NEAR(double(c["leaves"]), 200, 2.0);
+        // Computed: an all-black solution would score exactly 1, a missing one NaN.
+        EXPECT_GT(double(c["object_error"]["relative_l2"]), 0.0);
         EXPECT_LT(double(c["object_error"]["relative_l2"]), 1.0);
         for (const char* view : {"camera", "corner"}) {
             for (const char* key : {"rmse_a", "rmse_p", "psnr_a", "psnr_p"})
@@ -125,14 +120,14 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
             EXPECT_EQ(read_png(out / "images" / (name + "-" + view + ".png")).width, 512);
     }
 
-    const std::vector<std::string> csv = lines_of(read_text(out / "table.csv"));
+    const std::vector<std::string> csv = lines_of(read_file(out / "table.csv"));
     ASSERT_EQ(csv.size(), 1u + 4 * 2);  // header, one row per cell and view
     EXPECT_EQ(csv[0].rfind("scene,oracle,budget,seed,status,epsilon,leaves,probes,seconds,view,"
                            "rmse_a,rmse_p,psnr_a,psnr_p,object_error",
                            0),
               0u);
 
-    const std::string md = read_text(out / "table.md");
+    const std::string md = read_file(out / "table.md");
     int rows = 0;
     for (const std::string& line : lines_of(md))
         rows += line.rfind("| power | 2/2 |", 0) == 0 || line.rfind("| kl | 2/2 |", 0) == 0;
@@ -140,7 +135,8 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
     EXPECT_NE(md.find("**"), std::string::npos) << md;  // the best values are bold
 
     const Image8 plot = read_png(out / "plots" / "error_vs_elements.png");
-    EXPECT_GT(plot.width, 0);
+    EXPECT_EQ(plot.width, LogLogPlot{}.width);
+    EXPECT_EQ(plot.height, LogLogPlot{}.height);
 
     // Resume: only the deleted cell is computed again.
     const std::string deleted = cell_name("cornell", "kl", 200, 2);
@@ -150,9 +146,9 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
     EXPECT_EQ(second.computed, 1);
     EXPECT_EQ(second.skipped, 3);
     EXPECT_EQ(second.computed_cells, std::vector<std::string>{deleted});
-    const nlohmann::json again = nlohmann::json::parse(read_text(out / "table.json"));
+    const nlohmann::json again = nlohmann::json::parse(read_file(out / "table.json"));
     EXPECT_EQ(without_timing(again, deleted), without_timing(table, deleted));
-    EXPECT_EQ(without_last_column(read_text(out / "table.md")), without_last_column(md));
+    EXPECT_EQ(without_last_column(read_file(out / "table.md")), without_last_column(md));
 }
 
 TEST_F(TinyStudy, RecordsAnUnreachableBudgetAsAFailedCell) {
@@ -163,11 +159,11 @@ TEST_F(TinyStudy, RecordsAnUnreachableBudgetAsAFailedCell) {
     Counts counts;
     run_study(o, counting(counts));
     EXPECT_EQ(counts.computed, 1);
-    const nlohmann::json table = nlohmann::json::parse(read_text(o.output / "table.json"));
+    const nlohmann::json table = nlohmann::json::parse(read_file(o.output / "table.json"));
     ASSERT_EQ(table.at("cells").size(), 1u);
     EXPECT_EQ(table["cells"][0]["status"], "failed");
     EXPECT_FALSE(std::string(table["cells"][0]["message"]).empty());
-    EXPECT_NE(read_text(o.output / "table.md").find("| power | 0/1 |"), std::string::npos);
+    EXPECT_NE(read_file(o.output / "table.md").find("| power | 0/1 |"), std::string::npos);
 }
 
 }  // namespace

@@ -3,20 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "tests/support/temp_dir.h"
 
 namespace hmcr::test {
 namespace {
-
-std::string read_all(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 TEST(AtomicFile, WritesThroughATempFileAndCreatesParents) {
     TempDir dir;
@@ -29,7 +21,7 @@ TEST(AtomicFile, WritesThroughATempFileAndCreatesParents) {
         std::ofstream(tmp) << "new";
         EXPECT_FALSE(std::filesystem::exists(target));  // not visible before the rename
     });
-    EXPECT_EQ(read_all(target), "new");
+    EXPECT_EQ(read_file(target), "new");
     EXPECT_FALSE(std::filesystem::exists(seen));
     EXPECT_EQ(dir.files(), std::vector<std::string>{"a/b/out.txt"});
 }
@@ -39,7 +31,7 @@ TEST(AtomicFile, ReplacesExistingFile) {
     const auto target = dir.path() / "out.txt";
     write_text_atomically(target, "old");
     write_text_atomically(target, std::string("n\0ew", 4));
-    EXPECT_EQ(read_all(target), std::string("n\0ew", 4));
+    EXPECT_EQ(read_file(target), std::string("n\0ew", 4));
     EXPECT_EQ(dir.files(), std::vector<std::string>{"out.txt"});
 }
 
@@ -52,7 +44,7 @@ TEST(AtomicFile, FailedWriteLeavesOldFileAndNoTemp) {
         throw std::runtime_error("disk on fire");
     };
     EXPECT_THROW(write_file_atomically(target, failing), std::runtime_error);
-    EXPECT_EQ(read_all(target), "old");
+    EXPECT_EQ(read_file(target), "old");
     EXPECT_EQ(dir.files(), std::vector<std::string>{"out.txt"});
 }
 

@@ -3,7 +3,6 @@
 
 #include <bit>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -15,6 +14,7 @@
 namespace hmcr {
 namespace {
 
+using test::read_file;
 using test::TempDir;
 
 // A 3 x 2 image whose every value is distinct and float-representable (so a PFM round trip is
@@ -85,11 +85,6 @@ std::string hand_made_pfm(const Image& im, bool little_endian) {
     return out;
 }
 
-std::string file_bytes(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 TEST(ImageIo, PngReaderFollowsTheFormat) {
     TempDir dir;
     const auto file = dir.write("hand.png", hand_made_png(test_image8()));
@@ -125,7 +120,7 @@ TEST(ImageIo, PfmRoundTripIsExactAndLittleEndian) {
     TempDir dir;
     const auto file = dir.path() / "a.pfm";
     write_pfm(file, test_image());
-    EXPECT_EQ(file_bytes(file), hand_made_pfm(test_image(), true));
+    EXPECT_EQ(read_file(file), hand_made_pfm(test_image(), true));
     EXPECT_TRUE(test::identical(read_pfm(file), test_image()));
     EXPECT_EQ(dir.files(), std::vector<std::string>{"a.pfm"});
 }
