@@ -41,14 +41,11 @@ double longest_edge(const PatchSet& set) {
     return h;
 }
 
-double plogp(double p) { return p * std::log2(p); }
-
 TEST(SceneInformation, CubeFormFactorsMatchExactValues) {
     const PatchSet set = cube(1, 1);
     const EmbreeScene scene(set.patches);
     const SparseFormFactors f = form_factors(trace_local_lines(set, scene, lines(320'000)));
-    const double opposite = parallel_rectangles(1, 1, 1);
-    const double adjacent = perpendicular_rectangles(1, 1, 1);
+    const auto [opposite, adjacent, h_p, h_s, i_s] = empty_cube();
     for (std::size_t j = 1; j < 6; ++j) {
         const bool facing = set.patches[0].normal.dot(set.patches[j].normal) < -0.5;
         const double exact = facing ? opposite : adjacent;
@@ -60,15 +57,10 @@ TEST(SceneInformation, CubeFormFactorsMatchExactValues) {
 }
 
 TEST(SceneInformation, EmptyCubeMatchesExactMeasures) {
-    const double opposite = parallel_rectangles(1, 1, 1);
-    const double adjacent = perpendicular_rectangles(1, 1, 1);
+    const auto [opposite, adjacent, h_p, h_s, i_s] = empty_cube();
     EXPECT_NEAR(opposite, 0.19982, 5e-6);
     EXPECT_NEAR(adjacent, 0.20004, 5e-6);
     EXPECT_NEAR(opposite + 4 * adjacent, 1.0, 1e-9);  // row sum of a closed scene
-
-    const double h_p = std::log2(6.0);
-    const double h_s = -(plogp(opposite) + 4 * plogp(adjacent));  // every row alike
-    const double i_s = h_p - h_s;
 
     const PatchSet set = cube(1, 1);
     const LineOptions options = lines(1'600'000);

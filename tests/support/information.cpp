@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "meshes/scene.h"
+#include "tests/support/analytic.h"
 #include "tests/support/test_scenes.h"
 
 namespace hmcr::test {
@@ -41,6 +42,17 @@ MeasuredChannel measure_channel(const PatchSet& set, const LineOptions& options)
     const ChannelSamples samples = trace_lines(set, scene, options);
     return {scene_information(set, samples, options.method), plug_in_bias_bound(set, samples),
             open_share(samples)};
+}
+
+EmptyCube empty_cube() {
+    EmptyCube c;
+    c.opposite = parallel_rectangles(1, 1, 1);
+    c.adjacent = perpendicular_rectangles(1, 1, 1);
+    const auto plogp = [](double p) { return p * std::log2(p); };
+    c.h_p = std::log2(6.0);
+    c.h_s = -(plogp(c.opposite) + 4 * plogp(c.adjacent));  // every row alike
+    c.i_s = c.h_p - c.h_s;
+    return c;
 }
 
 PatchSet cube_patches(double size, int n) {
