@@ -54,9 +54,11 @@ std::string bundled_list() {
     return fmt::format("{}", fmt::join(names, ", "));
 }
 
+// The definition of bundled_scene_names(), for one name.
 bool is_bundled(const std::string& name) {
-    const auto names = bundled_scene_names();
-    return std::find(names.begin(), names.end(), name) != names.end();
+    std::error_code ec;
+    return !name.empty() && name.find('/') == std::string::npos &&
+           fs::is_regular_file(scene_directory() / name / (name + ".json"), ec);
 }
 
 std::string read_text(const fs::path& path) {

@@ -16,6 +16,7 @@
 #include "radiosity/progress.h"
 #include "radiosity/run_summary.h"
 #include "radiosity/solver.h"
+#include "radiosity/stopwatch.h"
 #include "viz/atomic_file.h"
 #include "viz/shaded_mesh.h"
 #include "viz/vtk_export.h"
@@ -58,10 +59,6 @@ void apply_scene_defaults(const Scene& scene, SolveArgs& args) {
     take("min_area", "--min-area", args.options.min_area);
     take("max_depth", "--max-depth", args.options.max_depth);
     take("stop", "--stop", args.options.stop);
-}
-
-double seconds_since(Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
 void write_outputs(const fs::path& vtp, const Scene& scene, const Solution& sol, double crease) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "radiosity/run_summary.h"
+#include "radiosity/stopwatch.h"
 #include "studies/leaf_patches.h"
 #include "studies/scene_information.h"
 #include "viz/vtk_import.h"
@@ -233,8 +234,7 @@ int run_info(const InfoArgs& a) {
     const InfoTarget target = info_target(a);
     const auto start = std::chrono::steady_clock::now();
     const InformationMeasures m = scene_information(target.patches, o);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = seconds_since(start);
     const double open = double(m.samples_open) / double(std::max<std::size_t>(1, m.samples));
     if (a.json) {
         nlohmann::json j = to_json(m);

@@ -41,10 +41,6 @@ void ProgressReporter::finish() {
     if (m_mode == ProgressMode::bar) fmt::print(stderr, "\n");
 }
 
-}  // namespace hmcr
-
-namespace hmcr {
-
 void ProgressReporter::restart() {
     m_last_decile = 0;
     m_last_percent = -1;

@@ -13,15 +13,12 @@
 #include "radiosity/link_cache.h"
 #include "radiosity/ray_schedule.h"
 #include "radiosity/shooting.h"
+#include "radiosity/stopwatch.h"
 
 namespace hmcr {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
 // Pilot rays per iteration for the ray schedule's decay estimate: a standard error of about
 // 0.005 on the reflected fraction, for well under a millisecond.
 constexpr std::uint64_t kPilotRays = 4096;

@@ -9,6 +9,7 @@
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "radiosity/patch.h"
+#include "radiosity/stopwatch.h"
 #include "studies/json_file.h"
 #include "studies/reference.h"
 #include "viz/atomic_file.h"
@@ -28,10 +29,6 @@ StudyProgress event(StudyProgress::Stage stage, std::size_t cell_index) {
     p.stage = stage;
     p.cell_index = cell_index;
     return p;
-}
-
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 // What every cell is measured against, loaded once.
