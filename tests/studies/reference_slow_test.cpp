@@ -4,7 +4,7 @@
 // Reference: the Cornell box on a uniform mesh of elements <= 1e-3 m^2 (about 3,800 elements),
 // 20 M rays per seed. Solution: power at 2,000 leaves (budget search), 2.684 M rays. Object-
 // space error relative to the reflected radiosity (viz/object_space_error.h). Measured: the
-// seeds differ by 0.0086; the power solution is off by 0.064, 7.4 times more. Required: a
+// seeds differ by 0.0086; the power solution is off by 0.054, 6.3 times more. Required: a
 // factor of 3. The seed difference is sqrt(2) times the reference's own noise, so a factor 3 on
 // the difference is above 4 on the noise the reference adds to a study's numbers. (At 5 M rays
 // on 9,408 elements the seeds differed by 0.025 and the factor was only 2.7: noise per element
