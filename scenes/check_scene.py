@@ -142,7 +142,7 @@ def main(argv):
     room = '--room' in flags
     closed = '--closed' in flags
     obj = args[0]
-    errors, warnings = [], []
+    errors = []
     verts, faces, mtllibs = parse_obj(obj, errors)
     mats = {}
     for lib in mtllibs:
@@ -340,8 +340,6 @@ def main(argv):
               'no_material', 'unknown_material', 'emitting_faces', 't_junctions',
               'back_face_hits', 'escaped_rays', 'shell_faces', 'shell_facing_out'):
         print('  %-18s %d' % (k, counts[k]))
-    for w in warnings:
-        print('  warning: ' + w)
     for e in errors[:50]:
         print('  ERROR: ' + e)
     if len(errors) > 50:
