@@ -10,7 +10,6 @@
 #include <span>
 #include <string_view>
 
-#include "radiosity/types.h"
 
 namespace hmcr {
 
@@ -54,10 +53,5 @@ private:
     double m_epsilon;
     bool m_lines;
 };
-
-// w_ij of SPEC section 4.
-inline double link_weight(const Rgb& receiver_reflectance, const Rgb& source_radiosity) {
-    return (receiver_reflectance * source_radiosity).maxCoeff();
-}
 
 }  // namespace hmcr

@@ -9,7 +9,7 @@
 
 #include <array>
 
-#include "radiosity/types.h"
+#include "common/types.h"
 
 namespace hmcr {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "radiosity/domain.h"
-#include "radiosity/types.h"
+#include "common/types.h"
 
 namespace hmcr {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "meshes/patch_mesh.h"
-#include "radiosity/types.h"
+#include "common/types.h"
 
 namespace hmcr {
 

@@ -10,6 +10,11 @@
 namespace hmcr {
 namespace {
 
+// w_ij of SPEC section 4: the largest share of the source's radiosity the receiver reflects.
+double link_weight(const Rgb& receiver_reflectance, const Rgb& source_radiosity) {
+    return (receiver_reflectance * source_radiosity).maxCoeff();
+}
+
 std::uint64_t element_key(const ElementId& id) {
     return Rng(id.patch, id.path, id.depth).next_u64();
 }

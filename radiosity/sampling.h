@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "radiosity/types.h"
+#include "common/types.h"
 
 namespace hmcr {
 

@@ -13,7 +13,7 @@
 #include "radiosity/link_cache.h"
 #include "radiosity/ray_schedule.h"
 #include "radiosity/shooting.h"
-#include "radiosity/stopwatch.h"
+#include "common/stopwatch.h"
 
 namespace hmcr {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <chrono>
 
-#include "studies/json_file.h"
-#include "viz/atomic_file.h"
+#include "common/json_file.h"
+#include "common/atomic_file.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
 #include "viz/vtk_export.h"

@@ -19,8 +19,8 @@
 #include "meshes/scene.h"
 #include "radiosity/solver.h"
 #include "viz/image.h"
-#include "viz/metrics.h"
-#include "viz/object_space_error.h"
+#include "studies/metrics.h"
+#include "studies/object_space_error.h"
 #include "viz/shaded_mesh.h"
 
 namespace hmcr {

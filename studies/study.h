@@ -30,8 +30,8 @@
 #include <vector>
 
 #include "radiosity/budget_search.h"
-#include "viz/metrics.h"
-#include "viz/object_space_error.h"
+#include "studies/metrics.h"
+#include "studies/object_space_error.h"
 
 namespace hmcr {
 

@@ -9,7 +9,7 @@
 
 #include "studies/plot.h"
 #include "studies/study.h"
-#include "viz/atomic_file.h"
+#include "common/atomic_file.h"
 #include "viz/image.h"
 
 namespace hmcr {

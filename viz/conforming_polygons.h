@@ -22,7 +22,7 @@
 
 #include "meshes/patch_mesh.h"
 #include "radiosity/hierarchy.h"
-#include "radiosity/types.h"
+#include "common/types.h"
 
 namespace hmcr {
 

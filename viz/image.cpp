@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "viz/atomic_file.h"
+#include "common/atomic_file.h"
 #include "viz/tone_map.h"
 
 namespace hmcr {

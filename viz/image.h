@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "radiosity/types.h"
+#include "common/types.h"
 
 namespace hmcr {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "radiosity/embree_scene.h"
-#include "radiosity/types.h"
+#include "common/types.h"
 #include "viz/shaded_mesh.h"
 
 namespace hmcr {

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "radiosity/types.h"
+#include "common/types.h"
 #include "viz/shaded_mesh.h"
 
 namespace hmcr {

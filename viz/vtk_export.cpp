@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "radiosity/solver.h"
-#include "viz/atomic_file.h"
+#include "common/atomic_file.h"
 #include "viz/tone_map.h"
 
 #ifndef HMCR_VERSION

@@ -10,8 +10,8 @@
 #pragma once
 
 #include "radiosity/patch.h"
-#include "studies/channel_samples.h"
-#include "studies/scene_information.h"
+#include "information/channel_samples.h"
+#include "information/scene_information.h"
 #include "tests/support/statistics.h"
 
 namespace hmcr::test {

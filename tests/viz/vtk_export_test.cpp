@@ -17,7 +17,7 @@
 
 #include "tests/support/temp_dir.h"
 #include "tests/viz/viz_test_scenes.h"
-#include "viz/atomic_file.h"
+#include "common/atomic_file.h"
 #include "viz/tone_map.h"
 
 namespace hmcr::test {

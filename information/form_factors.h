@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "studies/channel_samples.h"
+#include "information/channel_samples.h"
 
 namespace hmcr {
 

@@ -1,4 +1,4 @@
-#include "studies/leaf_patches.h"
+#include "information/leaf_patches.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,4 @@
-#include "studies/scene_information.h"
+#include "information/scene_information.h"
 
 #include <tbb/parallel_for.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "studies/form_factors.h"
+#include "information/form_factors.h"
 
 namespace hmcr {
 namespace {

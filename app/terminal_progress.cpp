@@ -1,4 +1,4 @@
-#include "radiosity/progress.h"
+#include "app/terminal_progress.h"
 
 #include <fmt/core.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "studies/channel_samples.h"
+#include "information/channel_samples.h"
 
 #include <algorithm>
 #include <cmath>

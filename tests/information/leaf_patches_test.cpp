@@ -1,11 +1,11 @@
 // A solution's leaves as a discretisation: its cells reduced to their triangles and quads, and
 // the information measures of that discretisation (SPEC section 7).
-#include "studies/leaf_patches.h"
+#include "information/leaf_patches.h"
 
 #include <gtest/gtest.h>
 
 #include "radiosity/solver.h"
-#include "studies/scene_information.h"
+#include "information/scene_information.h"
 #include "tests/support/information.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"

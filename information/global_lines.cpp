@@ -9,7 +9,7 @@
 
 #include "radiosity/rng.h"
 #include "radiosity/sampling.h"
-#include "studies/channel_samples.h"
+#include "information/channel_samples.h"
 
 namespace hmcr {
 namespace {

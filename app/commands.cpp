@@ -1,4 +1,4 @@
-#include "radiosity/cli_tools.h"
+#include "app/commands.h"
 
 #include <fmt/core.h>
 
@@ -7,10 +7,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "radiosity/run_summary.h"
-#include "radiosity/stopwatch.h"
-#include "studies/leaf_patches.h"
-#include "studies/scene_information.h"
+#include "app/run_summary.h"
+#include "common/stopwatch.h"
+#include "information/leaf_patches.h"
+#include "information/scene_information.h"
 #include "viz/vtk_import.h"
 
 namespace hmcr {

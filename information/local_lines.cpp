@@ -7,7 +7,7 @@
 #include "radiosity/kernel.h"
 #include "radiosity/rng.h"
 #include "radiosity/sampling.h"
-#include "studies/channel_samples.h"
+#include "information/channel_samples.h"
 
 namespace hmcr {
 namespace {

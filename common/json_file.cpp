@@ -1,4 +1,4 @@
-#include "studies/json_file.h"
+#include "common/json_file.h"
 
 #include <fstream>
 #include <stdexcept>

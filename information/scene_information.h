@@ -24,7 +24,7 @@
 
 #include "radiosity/embree_scene.h"
 #include "radiosity/patch.h"
-#include "studies/channel_samples.h"
+#include "information/channel_samples.h"
 
 namespace hmcr {
 

@@ -1,4 +1,4 @@
-#include "radiosity/run_summary.h"
+#include "app/run_summary.h"
 
 #include <sys/resource.h>
 

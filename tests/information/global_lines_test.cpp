@@ -10,9 +10,9 @@
 
 #include <cmath>
 
-#include "studies/channel_samples.h"
-#include "studies/form_factors.h"
-#include "studies/scene_information.h"
+#include "information/channel_samples.h"
+#include "information/form_factors.h"
+#include "information/scene_information.h"
 #include "tests/support/analytic.h"
 #include "tests/support/information.h"
 #include "tests/support/statistics.h"

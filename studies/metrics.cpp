@@ -1,4 +1,4 @@
-#include "viz/metrics.h"
+#include "studies/metrics.h"
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "studies/form_factors.h"
+#include "information/form_factors.h"
 
 #include <tbb/parallel_for.h>
 

@@ -1,4 +1,4 @@
-#include "viz/object_space_error.h"
+#include "studies/object_space_error.h"
 
 #include <tbb/parallel_for.h>
 

@@ -3,8 +3,8 @@
 //
 // Tolerances: z = 4 batch-means standard errors, plus, where the plug-in entropy's bias
 // matters, Paninski's bound (tests/support/information.h).
-#include "studies/scene_information.h"
-#include "studies/form_factors.h"
+#include "information/scene_information.h"
+#include "information/form_factors.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
