@@ -2,6 +2,8 @@
 
 #include <sys/resource.h>
 
+#include "radiosity/solver_settings.h"
+
 namespace hmcr {
 namespace {
 
@@ -19,11 +21,12 @@ nlohmann::json iterations_json(const SolveStats& st) {
     return list;
 }
 
+// Every setting, with the epsilon and thread count actually used.
 nlohmann::json options_json(const SolverOptions& o, const SolveStats& st) {
-    return {{"oracle", o.oracle},     {"epsilon", st.epsilon},      {"lines", o.lines},
-            {"rays", o.rays},         {"seed", o.seed},             {"threads", st.threads},
-            {"min_area", o.min_area}, {"max_depth", o.max_depth},   {"stop", o.stop},
-            {"cache_mb", o.cache_mb},   {"uniform_max_area", o.uniform_max_area}};
+    nlohmann::json j = settings_json(o);
+    j["epsilon"] = st.epsilon;
+    j["threads"] = st.threads;
+    return j;
 }
 
 nlohmann::json power_json(const SolveStats& st) {
@@ -46,6 +49,12 @@ nlohmann::json cache_json(const SolveStats& st) {
 }
 
 }  // namespace
+
+nlohmann::json budget_json(const BudgetOptions& budget, const std::vector<BudgetProbe>& probes) {
+    return {{"target_leaves", budget.leaves},
+            {"tolerance", budget.tolerance},
+            {"probes", nlohmann::json(probes)}};
+}
 
 std::size_t peak_memory_bytes() {
     rusage usage{};

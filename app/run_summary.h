@@ -5,7 +5,7 @@
 #include <string>
 
 #include "meshes/scene.h"
-#include "radiosity/solver.h"
+#include "radiosity/budget_search.h"
 
 namespace hmcr {
 
@@ -17,6 +17,9 @@ struct RunTimings {
 
 nlohmann::json run_summary(const Scene& scene, const Solution& solution, const RunTimings& timings,
                            const std::string& command_line, const std::string& output);
+
+// The summary's "budget": the target, the tolerance and every probe of the search.
+nlohmann::json budget_json(const BudgetOptions& budget, const std::vector<BudgetProbe>& probes);
 
 // Peak resident memory of this process so far, bytes.
 std::size_t peak_memory_bytes();

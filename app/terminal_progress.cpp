@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <stdexcept>
+
+#include "common/error.h"
+#include "common/stopwatch.h"
 
 namespace hmcr {
 
@@ -13,38 +15,51 @@ ProgressMode progress_mode_for(const std::string& requested, bool quiet) {
     if (requested == "bar") return ProgressMode::bar;
     if (requested == "lines") return ProgressMode::lines;
     if (requested == "auto") return isatty(STDERR_FILENO) ? ProgressMode::bar : ProgressMode::lines;
-    throw std::invalid_argument("progress must be auto, bar, lines or none, got '" + requested + "'");
+    throw InputError("progress must be auto, bar, lines or none, got " + quote(requested));
 }
 
-ProgressReporter::ProgressReporter(ProgressMode mode, std::string label)
+TerminalProgress::TerminalProgress(ProgressMode mode, std::string label)
     : m_mode(mode), m_label(std::move(label)) {}
 
-void ProgressReporter::update(double fraction) {
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+std::string TerminalProgress::prefix() const {
+    return m_stage.empty() ? m_label : m_label + ": " + m_stage;
+}
+
+void TerminalProgress::stage(std::string_view label) {
+    end_bar();
+    m_stage = label;
+    m_last_decile = 0;
+    m_last_percent = -1;
+    m_start = std::chrono::steady_clock::now();
+}
+
+void TerminalProgress::advance(double fraction) {
+    const double elapsed = seconds_since(m_start);
     const int percent = int(fraction * 100);
     if (m_mode == ProgressMode::bar && percent != m_last_percent) {
         m_last_percent = percent;
         const int filled = percent * 30 / 100;
         const double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
-        fmt::print(stderr, "\r{} [{:<30}] {:3d}%  {:.1f} s, ~{:.0f} s left ", m_label,
+        fmt::print(stderr, "\r{} [{:<30}] {:3d}%  {:.1f} s, ~{:.0f} s left ", prefix(),
                    std::string(std::size_t(filled), '#'), percent, elapsed, eta);
         std::fflush(stderr);
+        m_bar_open = true;
     } else if (m_mode == ProgressMode::lines && percent / 10 > m_last_decile) {
         m_last_decile = percent / 10;
-        fmt::print(stderr, "{}: {}% of the rays shot, {:.1f} s\n", m_label, m_last_decile * 10,
-                   elapsed);
+        fmt::print(stderr, "{}: {}%, {:.1f} s\n", prefix(), m_last_decile * 10, elapsed);
     }
 }
 
-void ProgressReporter::finish() {
-    if (m_mode == ProgressMode::bar) fmt::print(stderr, "\n");
+void TerminalProgress::note(std::string_view line) {
+    if (m_mode == ProgressMode::none) return;
+    end_bar();
+    fmt::print(stderr, "{}: {}\n", m_label, line);
 }
 
-void ProgressReporter::restart() {
-    m_last_decile = 0;
-    m_last_percent = -1;
-    m_start = std::chrono::steady_clock::now();
+void TerminalProgress::end_bar() {
+    if (!m_bar_open) return;
+    fmt::print(stderr, "\n");
+    m_bar_open = false;
 }
 
 }  // namespace hmcr

@@ -1,28 +1,40 @@
-// Progress on stderr (SPEC section 5): a live bar on a terminal, a line every 10% otherwise.
+// Progress on stderr (SPEC section 5): a live bar on a terminal, a line every 10% otherwise;
+// notes are lines in both modes. Every line starts with the task's label ("hmcr cornell").
 #pragma once
 
 #include <chrono>
 #include <string>
 
+#include "common/progress.h"
+
 namespace hmcr {
 
 enum class ProgressMode { none, bar, lines };
 
-// auto: a bar when stderr is a terminal, lines otherwise.
+// "auto" (a bar when stderr is a terminal, lines otherwise), "bar", "lines" or "none"; none
+// whenever quiet.
 ProgressMode progress_mode_for(const std::string& requested, bool quiet);
 
-class ProgressReporter {
+class TerminalProgress final : public Progress {
 public:
-    ProgressReporter(ProgressMode mode, std::string label);
-    void update(double fraction);  // in [0, 1]
-    void finish();
-    void restart();  // a new run of the same task (the next budget probe)
+    TerminalProgress(ProgressMode mode, std::string label);
+    ~TerminalProgress() override { end_bar(); }
+    TerminalProgress(const TerminalProgress&) = delete;
+    TerminalProgress& operator=(const TerminalProgress&) = delete;
+
+    void stage(std::string_view label) override;
+    void advance(double fraction) override;
+    void note(std::string_view line) override;
 
 private:
+    void end_bar();
+    std::string prefix() const;  // "hmcr cornell: budget probe 2"
+
     ProgressMode m_mode;
-    std::string m_label;
+    std::string m_label, m_stage;
     int m_last_decile = 0;  // 0% is not worth a line
     int m_last_percent = -1;
+    bool m_bar_open = false;
     std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
 

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+#include <tbb/parallel_for.h>
 
+#include "common/error.h"
 #include "radiosity/kernel.h"
 
 namespace hmcr {
@@ -11,7 +12,7 @@ namespace hmcr {
 LineMethod parse_line_method(const std::string& name) {
     if (name == "local") return LineMethod::local;
     if (name == "global") return LineMethod::global;
-    throw std::invalid_argument("unknown line method '" + name + "' (local or global)");
+    throw InputError("unknown line method " + quote(name) + " (local or global)");
 }
 
 const char* line_method_name(LineMethod method) {
@@ -19,9 +20,20 @@ const char* line_method_name(LineMethod method) {
 }
 
 ChannelSamples trace_lines(const PatchSet& patches, const EmbreeScene& scene,
-                           const LineOptions& options) {
-    return options.method == LineMethod::local ? trace_local_lines(patches, scene, options)
-                                               : trace_global_lines(patches, scene, options);
+                           const LineOptions& options, Progress& progress) {
+    return options.method == LineMethod::local
+               ? trace_local_lines(patches, scene, options, progress)
+               : trace_global_lines(patches, scene, options, progress);
+}
+
+void parallel_blocks(std::uint64_t blocks, Progress& progress,
+                     const std::function<void(std::uint64_t)>& f) {
+    constexpr std::uint64_t kRound = 256;  // blocks between two reports
+    for (std::uint64_t first = 0; first < blocks; first += kRound) {
+        const std::uint64_t last = std::min(blocks, first + kRound);
+        tbb::parallel_for(first, last, [&](std::uint64_t block) { f(block); });
+        progress.advance(double(last) / double(blocks));
+    }
 }
 
 double log_kernel(const Patch& p, const Vec3& x, const Patch& q, const Vec3& y, double total_area) {

@@ -18,11 +18,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "common/progress.h"
 #include "radiosity/embree_scene.h"
 #include "radiosity/patch.h"
 
@@ -30,7 +32,7 @@ namespace hmcr {
 
 enum class LineMethod { local, global };
 
-// "local" or "global"; throws std::invalid_argument naming the value otherwise.
+// "local" or "global"; throws InputError naming the value otherwise.
 LineMethod parse_line_method(const std::string& name);
 const char* line_method_name(LineMethod method);
 
@@ -92,13 +94,19 @@ std::uint32_t batch_count(const LineOptions& options);
 // Local rays per patch: a multiple of the batch count, at least one per batch, about N a_i.
 std::vector<std::uint64_t> local_line_counts(const PatchSet& patches, const LineOptions& options);
 
+// The tracers report the fraction of lines traced to `progress`.
 ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& scene,
-                                 const LineOptions& options);
+                                 const LineOptions& options, Progress& progress = no_progress());
 ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& scene,
-                                  const LineOptions& options);
+                                  const LineOptions& options, Progress& progress = no_progress());
 // By options.method.
 ChannelSamples trace_lines(const PatchSet& patches, const EmbreeScene& scene,
-                           const LineOptions& options);
+                           const LineOptions& options, Progress& progress = no_progress());
+
+// Runs f(block) for every block in [0, blocks) on all cores, in rounds between which the
+// calling thread reports the fraction done.
+void parallel_blocks(std::uint64_t blocks, Progress& progress,
+                     const std::function<void(std::uint64_t)>& f);
 
 // log2(A_T F(x, y)) between x on p and y on q; NaN when the kernel is 0.
 double log_kernel(const Patch& p, const Vec3& x, const Patch& q, const Vec3& y, double total_area);

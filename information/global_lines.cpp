@@ -1,7 +1,6 @@
 // Global lines: uniformly distributed lines through the scene's bounding sphere (a uniform
 // direction, then a uniform point of the disk across the sphere perpendicular to it). Each
 // line is followed through every surface it crosses.
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -128,7 +127,7 @@ void gather(std::vector<Block>& blocks, std::size_t slots, ChannelSamples& out) 
 }  // namespace
 
 ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& scene,
-                                  const LineOptions& options) {
+                                  const LineOptions& options, Progress& progress) {
     ChannelSamples out;
     const std::uint32_t b = out.batches = batch_count(options);
     if (double(patches.patches.size()) * b >= double(ChannelSamples::kNoPatch)) {
@@ -137,7 +136,7 @@ ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& sc
     out.lines = options.lines;
     const Sphere sphere = bounding_sphere(patches);
     std::vector<Block> blocks((options.lines + kBlock - 1) / kBlock);
-    tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t i) {
+    parallel_blocks(blocks.size(), progress, [&](std::uint64_t i) {
         set_tracing_float_mode();
         Block& block = blocks[i];
         block.tally = KernelTally(b);

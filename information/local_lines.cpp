@@ -1,6 +1,4 @@
 // Local lines: n_i cosine-distributed rays from area-uniform points of each patch i.
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -51,7 +49,7 @@ std::vector<std::uint64_t> local_line_counts(const PatchSet& patches, const Line
 }
 
 ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& scene,
-                                 const LineOptions& options) {
+                                 const LineOptions& options, Progress& progress) {
     ChannelSamples out;
     const std::uint32_t b = out.batches = batch_count(options);
     const auto counts = local_line_counts(patches, options);
@@ -70,7 +68,7 @@ ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& sce
 
     const std::uint64_t blocks = (out.lines + kBlock - 1) / kBlock;
     std::vector<KernelTally> tallies(blocks, KernelTally(b));
-    tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t block) {
+    parallel_blocks(blocks, progress, [&](std::uint64_t block) {
         set_tracing_float_mode();
         const std::uint64_t g0 = block * kBlock, g1 = std::min(out.lines, g0 + kBlock);
         auto i = std::uint32_t(std::upper_bound(start.begin(), start.end(), g0) - start.begin() - 1);

@@ -70,9 +70,11 @@ InformationMeasures::Value batch_value(double estimate, const std::vector<double
 
 }  // namespace
 
-InformationMeasures scene_information(const PatchSet& patches, const LineOptions& options) {
+InformationMeasures scene_information(const PatchSet& patches, const LineOptions& options,
+                                      Progress& progress) {
     const EmbreeScene scene(patches.patches);
-    return scene_information(patches, trace_lines(patches, scene, options), options.method);
+    return scene_information(patches, trace_lines(patches, scene, options, progress),
+                             options.method);
 }
 
 InformationMeasures scene_information(const PatchSet& patches, const ChannelSamples& samples,

@@ -47,7 +47,8 @@ struct InformationMeasures {
 };
 
 // The measures of the discretisation given by the patches, from freshly traced lines.
-InformationMeasures scene_information(const PatchSet& patches, const LineOptions& options);
+InformationMeasures scene_information(const PatchSet& patches, const LineOptions& options,
+                                      Progress& progress = no_progress());
 // The same from samples already traced on these patches.
 InformationMeasures scene_information(const PatchSet& patches, const ChannelSamples& samples,
                                       LineMethod method);

@@ -15,14 +15,7 @@ namespace hmcr {
 namespace {
 
 [[noreturn]] void fail(const std::string& path, int line, const std::string& message) {
-    throw SceneError(fmt::format("{}:{}: {}", path, line, message));
-}
-
-// Quotes a token for a message, cut short so a binary blob cannot flood the terminal.
-std::string quoted(std::string_view token) {
-    constexpr std::size_t kMax = 40;
-    if (token.size() > kMax) return fmt::format("'{}...'", token.substr(0, kMax));
-    return fmt::format("'{}'", token);
+    throw InputError(at(path, line), message);
 }
 
 // A finite decimal number; tinyobjloader's own parser reads "nan", "inf" and "1x" as 0, so they
@@ -37,13 +30,13 @@ double parse_number(std::string_view token, const std::string& path, int line) {
         ec = std::errc::invalid_argument;  // "+-1": tinyobjloader would read 0
     }
     if (ec == std::errc::result_out_of_range) {
-        fail(path, line, fmt::format("number {} is out of range", quoted(token)));
+        fail(path, line, fmt::format("number {} is out of range", quote(token)));
     }
     if (ec != std::errc{} || ptr != end) {
-        fail(path, line, fmt::format("cannot parse number {}", quoted(token)));
+        fail(path, line, fmt::format("cannot parse number {}", quote(token)));
     }
     if (!std::isfinite(value)) {
-        fail(path, line, fmt::format("{} is not a finite number", quoted(token)));
+        fail(path, line, fmt::format("{} is not a finite number", quote(token)));
     }
     return value;
 }
@@ -59,7 +52,7 @@ long parse_index(std::string_view text, std::string_view token, const std::strin
     if (digits.empty() || double_sign || ec != std::errc{} || ptr != end || value == 0 ||
         value > INT_MAX || value < -INT_MAX) {
         fail(path, line,
-             fmt::format("bad vertex reference {} (indices are non-zero integers)", quoted(token)));
+             fmt::format("bad vertex reference {} (indices are non-zero integers)", quote(token)));
     }
     return value;
 }
@@ -77,7 +70,7 @@ void check_reference(std::string_view token, int vertices_so_far, int vertex_tot
     }
     parts.push_back(token.substr(start));
     const bool shape_ok = parts.size() <= 3 && !(parts.size() == 2 && parts[1].empty());
-    if (!shape_ok) fail(path, line, fmt::format("bad vertex reference {}", quoted(token)));
+    if (!shape_ok) fail(path, line, fmt::format("bad vertex reference {}", quote(token)));
     for (std::size_t i = 1; i < parts.size(); ++i) {
         if (i == 1 && parts[i].empty()) continue;  // "v//n"
         parse_index(parts[i], token, path, line);
@@ -85,7 +78,7 @@ void check_reference(std::string_view token, int vertices_so_far, int vertex_tot
     const long v = parse_index(parts[0], token, path, line);
     if (v > vertex_total || -v > vertices_so_far) {
         fail(path, line,
-             fmt::format("vertex reference {} is out of range ({} vertices)", quoted(token),
+             fmt::format("vertex reference {} is out of range ({} vertices)", quote(token),
                          v > 0 ? vertex_total : vertices_so_far));
     }
 }
@@ -145,7 +138,7 @@ void scan_obj_statement(const std::vector<std::string_view>& tokens, int vertex_
             out.mtllibs.push_back({line, {tokens.begin() + 1, tokens.end()}});
         }
     } else if (key != "o" && key != "g" && key != "s") {
-        fail(path, line, fmt::format("unknown OBJ statement {}", quoted(key)));
+        fail(path, line, fmt::format("unknown OBJ statement {}", quote(key)));
     }
 }
 

@@ -48,13 +48,13 @@ void for_each_line(std::string_view text, const std::function<void(int, std::str
 // Splits a line at spaces and tabs (the only separators tinyobjloader knows).
 std::vector<std::string_view> split_tokens(std::string_view line);
 
-// Scans OBJ text; throws SceneError "path:line: message" on the first bad statement: unknown
+// Scans OBJ text; throws InputError "path:line: message" on the first bad statement: unknown
 // keyword, unparsable or non-finite number, bad vertex index, polygon with fewer than 3 or more
 // than 4 vertices.
 ObjLines scan_obj(std::string_view text, const std::string& path);
 
 // Scans MTL text and adds its materials to `lines` (the first definition of a name wins, as in
-// tinyobjloader); throws SceneError on a Kd/Ke statement that is not three finite numbers.
+// tinyobjloader); throws InputError on a Kd/Ke statement that is not three finite numbers.
 void scan_mtl(std::string_view text, const std::string& path, MtlLines& lines);
 
 }  // namespace hmcr

@@ -13,11 +13,12 @@
 #include <OpenMesh/Core/System/omstream.hh>
 #include <array>
 #include <cmath>
-#include <fstream>
+#include <algorithm>
 #include <map>
+#include <set>
 #include <numbers>
-#include <sstream>
 
+#include "common/text_file.h"
 #include "meshes/obj_lines.h"
 #include "meshes/scene.h"
 #include "meshes/validation.h"
@@ -42,53 +43,43 @@ struct LoadedObj {
 };
 
 [[noreturn]] void fail(const std::string& where, const std::string& message) {
-    throw SceneError(fmt::format("{}: {}", where, message));
-}
-
-std::string at(const std::string& path, int line) { return fmt::format("{}:{}", path, line); }
-
-// Whole file as text, or nothing when it cannot be read (`why` says why).
-std::optional<std::string> read_file(const fs::path& path, std::string& why) {
-    std::error_code ec;
-    if (!fs::exists(path, ec) || fs::is_directory(path, ec)) {
-        why = fs::is_directory(path, ec) ? "is a directory" : "no such file";
-        return std::nullopt;
-    }
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    if (in) text << in.rdbuf();
-    if (!in || in.bad()) {
-        why = "cannot be read";
-        return std::nullopt;
-    }
-    return text.str();
+    throw InputError(where, message);
 }
 
 // Reads the first readable file of every mtllib statement (tinyobjloader's rule) and returns
 // their concatenated text for tinyobjloader; records where each material was defined.
+// The text of a material library named by an mtllib statement; its problems are reported at
+// the statement.
+std::string read_library(const fs::path& path, const fs::path& obj, int line) {
+    try {
+        return read_text_file(path);
+    } catch (const InputError& e) {
+        fail(at(obj, line), fmt::format("material library: {}", e.what()));
+    }
+}
+
+// Reads the first existing file of every mtllib statement (tinyobjloader's rule) and returns
+// their concatenated text for tinyobjloader; records where each material was defined.
 std::string read_materials(const fs::path& obj, const ObjLines& lines, MtlLines& mtl_lines) {
     std::string text;
-    std::map<std::string, bool> loaded;
+    std::set<std::string> loaded;
     for (const MtllibStatement& statement : lines.mtllibs) {
-        bool found = false;
-        for (const std::string& name : statement.files) {
-            if (loaded.count(name) != 0) {
-                found = true;
-                break;
-            }
-            const fs::path path = obj.parent_path() / name;
-            std::string why;
-            if (auto mtl = read_file(path, why)) {
-                scan_mtl(*mtl, path.string(), mtl_lines);
-                text += *mtl + "\n";
-                loaded[name] = found = true;
-                break;
-            }
+        const auto name = std::find_if(statement.files.begin(), statement.files.end(),
+                                       [&](const std::string& n) {
+                                           std::error_code ec;
+                                           return loaded.count(n) != 0 ||
+                                                  fs::exists(obj.parent_path() / n, ec);
+                                       });
+        if (name == statement.files.end()) {
+            fail(at(obj, statement.line),
+                 fmt::format("cannot read material library {}: no such file",
+                             quote(statement.files.front())));
         }
-        if (!found) {
-            fail(at(obj.string(), statement.line),
-                 fmt::format("cannot read material library '{}'", statement.files.front()));
-        }
+        if (!loaded.insert(*name).second) continue;
+        const fs::path path = obj.parent_path() / *name;
+        const std::string mtl = read_library(path, obj, statement.line);
+        scan_mtl(mtl, path.string(), mtl_lines);
+        text += mtl + "\n";
     }
     return text;
 }
@@ -302,13 +293,11 @@ PatchMesh build_mesh(const LoadedObj& obj, const std::vector<Material>& material
 
 PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options) {
     const std::string path = obj.string();
-    std::string why;
-    const std::optional<std::string> text = read_file(obj, why);
-    if (!text) fail(path, why);
-    const ObjLines lines = scan_obj(*text, path);
+    const std::string text = read_text_file(obj);
+    const ObjLines lines = scan_obj(text, path);
     MtlLines mtl_lines;
     const std::string mtl_text = read_materials(obj, lines, mtl_lines);
-    const tinyobj::ObjReader reader = parse_with_tinyobj(*text, mtl_text, path);
+    const tinyobj::ObjReader reader = parse_with_tinyobj(text, mtl_text, path);
     const LoadedObj loaded = load_geometry(reader, lines, path);
     // Measuring geometry: faces without a material get a neutral one.
     LoadOptions effective = options;

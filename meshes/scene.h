@@ -5,19 +5,13 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "common/error.h"
 #include "meshes/patch_mesh.h"
 
 namespace hmcr {
-
-// A user-facing input error; what() is one line, "file:line: what" when a line is known.
-class SceneError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 struct Material {
     std::string name;
@@ -55,11 +49,14 @@ struct Scene {
 };
 
 // Reads an OBJ (+MTL) file through tinyobjloader, validates it (SPEC section 1) and returns
-// the patch mesh. Throws SceneError on any problem.
+// the patch mesh. Throws InputError on any problem.
 PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options = {});
 
 // Accepts a bundled scene name ("cornell"), a JSON scene file, or a mesh file (.obj).
 Scene load_scene(const std::string& name_or_path, SceneUse use = SceneUse::solve);
+
+// The view called name (the first view for ""); throws InputError listing the views.
+const View& find_view(const Scene& scene, const std::string& name);
 
 // Names of the bundled scenes (folders of the scene directory holding NAME/NAME.json).
 std::vector<std::string> bundled_scene_names();

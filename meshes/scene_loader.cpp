@@ -26,11 +26,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <numbers>
 #include <set>
-#include <sstream>
 
+#include "common/text_file.h"
 #include "meshes/scene.h"
 #include "meshes/validation.h"
 
@@ -45,7 +44,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 [[noreturn]] void fail(const std::string& where, const std::string& message) {
-    throw SceneError(fmt::format("{}: {}", where, message));
+    throw InputError(where, message);
 }
 
 std::string bundled_list() {
@@ -59,37 +58,6 @@ bool is_bundled(const std::string& name) {
     std::error_code ec;
     return !name.empty() && name.find('/') == std::string::npos &&
            fs::is_regular_file(scene_directory() / name / (name + ".json"), ec);
-}
-
-std::string read_text(const fs::path& path) {
-    std::error_code ec;
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    if (in && !fs::is_directory(path, ec)) text << in.rdbuf();
-    if (!in || in.bad() || fs::is_directory(path, ec)) fail(path.string(), "cannot be read");
-    return text.str();
-}
-
-// nlohmann reports the byte offset of a parse error; users want the line.
-int line_of_byte(const std::string& text, std::size_t byte) {
-    const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
-    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + end, '\n'));
-}
-
-// nlohmann's message without its "[json.exception.parse_error.101] " tag.
-std::string plain_message(const std::exception& e) {
-    const std::string what = e.what();
-    const std::size_t tag_end = what.rfind("] ", what.find(' '));
-    return tag_end == std::string::npos || what.front() != '[' ? what : what.substr(tag_end + 2);
-}
-
-json parse_json(const fs::path& path) {
-    const std::string text = read_text(path);
-    try {
-        return json::parse(text);
-    } catch (const json::parse_error& e) {
-        fail(fmt::format("{}:{}", path.string(), line_of_byte(text, e.byte)), plain_message(e));
-    }
 }
 
 void check_keys(const json& object, const std::set<std::string>& known, const std::string& where) {
@@ -208,7 +176,7 @@ void check_mesh_extension(const fs::path& mesh, const std::string& where) {
 
 Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse use) {
     const std::string file = path.string();
-    const json j = parse_json(path);
+    const json j = read_json_file(path);
     check_keys(j, {"mesh", "description", "views", "solver", "default_material"}, file);
     if (!j.contains("mesh") || !j["mesh"].is_string()) fail(file, "needs a \"mesh\" string");
     if (j.contains("description") && !j["description"].is_string()) {
@@ -221,10 +189,8 @@ Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse us
     check_mesh_extension(scene.mesh_path, file);
     if (j.contains("views")) scene.views = parse_views(j["views"], file);
     if (j.contains("solver")) {
-        // The settings `hmcr solve` takes from a scene (radiosity/cli.cpp applies them).
-        check_keys(j["solver"],
-                   {"oracle", "epsilon", "lines", "rays", "seed", "min_area", "max_depth", "stop"},
-                   file + ": solver");
+        // Checked, key by key, by the engine's settings table where a command applies them.
+        if (!j["solver"].is_object()) fail(file + ": solver", "must be a JSON object");
         scene.solver_defaults = j["solver"];
     }
     LoadOptions options;
@@ -260,6 +226,18 @@ Scene load_file(const fs::path& path, SceneUse use) {
 }
 
 }  // namespace
+
+const View& find_view(const Scene& scene, const std::string& name) {
+    if (scene.views.empty()) throw InputError(scene.name + " has no views");
+    if (name.empty()) return scene.views.front();
+    std::string names;
+    for (const View& v : scene.views) {
+        if (v.name == name) return v;
+        names += (names.empty() ? "" : ", ") + v.name;
+    }
+    throw InputError(fmt::format("scene {} has no view {} (views: {})", scene.name,
+                                 quote(name), names));
+}
 
 fs::path scene_directory() {
     const char* env = std::getenv("HMCR_SCENES");

@@ -43,14 +43,23 @@ const std::vector<const Oracle*>& all_oracles() {
     return view;
 }
 
-const Oracle& find_oracle(std::string_view name) {
-    std::string valid;
+const Oracle* oracle_named(std::string_view name) {
     for (const Oracle* o : all_oracles()) {
-        if (o->name() == name) return *o;
-        valid += (valid.empty() ? "" : ", ") + std::string(o->name());
+        if (o->name() == name) return o;
     }
-    throw std::invalid_argument("unknown oracle '" + std::string(name) + "' (valid: " + valid +
-                                ")");
+    return nullptr;
+}
+
+std::string oracle_names() {
+    std::string names;
+    for (const Oracle* o : all_oracles()) names += (names.empty() ? "" : ", ") + std::string(o->name());
+    return names;
+}
+
+const Oracle& find_oracle(std::string_view name) {
+    if (const Oracle* o = oracle_named(name)) return *o;
+    throw std::invalid_argument("unknown oracle '" + std::string(name) + "' (valid: " +
+                                oracle_names() + ")");
 }
 
 }  // namespace hmcr

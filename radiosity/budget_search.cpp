@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "oracles/registry.h"
+#include "radiosity/solver_settings.h"
 
 namespace hmcr {
 namespace {
@@ -17,9 +18,8 @@ namespace {
 class Search {
 public:
     Search(const PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-           const ProbeFn& on_probe, const ProgressFn& progress)
-        : m_mesh(mesh), m_options(options), m_budget(budget), m_on_probe(on_probe),
-          m_progress(progress) {}
+           Progress& progress)
+        : m_mesh(mesh), m_options(options), m_budget(budget), m_progress(progress) {}
 
     BudgetResult run();
 
@@ -36,8 +36,7 @@ private:
     const PatchMesh& m_mesh;
     SolverOptions m_options;
     BudgetOptions m_budget;
-    const ProbeFn& m_on_probe;
-    const ProgressFn& m_progress;
+    Progress& m_progress;
     BudgetResult m_result;
     std::optional<double> m_lo, m_hi;           // log epsilon bounds
     std::size_t m_lo_leaves = 0, m_hi_leaves = 0;
@@ -47,10 +46,13 @@ private:
 std::size_t Search::probe(double x) {
     SolverOptions o = m_options;
     o.epsilon = std::exp(x);
+    const std::size_t k = m_result.probes.size() + 1;
+    m_progress.stage(fmt::format("budget probe {}", k));
     Solution sol = solve(m_mesh, o, m_progress);
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
     m_result.probes.push_back(p);
-    if (m_on_probe) m_on_probe(p, int(m_result.probes.size()));
+    m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves ({:.1f} s)", k,
+                                p.epsilon, p.leaves, p.seconds));
     const double distance = std::abs(double(p.leaves) - double(m_budget.leaves));
     if (distance < m_best_distance) {
         m_best_distance = distance;
@@ -78,8 +80,8 @@ double Search::next_point() const {
 }
 
 void Search::fail(const std::string& why) const {
-    throw std::invalid_argument(fmt::format("budget of {} leaves (+-{}%) not reached: {}",
-                                            m_budget.leaves, 100 * m_budget.tolerance, why));
+    throw BudgetNotReached(fmt::format("budget of {} leaves (+-{}%) not reached: {}",
+                                       m_budget.leaves, 100 * m_budget.tolerance, why));
 }
 
 BudgetResult Search::run() {
@@ -121,15 +123,14 @@ BudgetResult Search::run() {
 }  // namespace
 
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
-                              const BudgetOptions& budget, const ProbeFn& on_probe,
-                              const ProgressFn& progress) {
-    if (budget.leaves == 0) throw std::invalid_argument("budget must be a positive leaf count");
+                              const BudgetOptions& budget, Progress& progress) {
+    if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
     if (!(budget.tolerance > 0 && budget.tolerance < 1)) {
-        throw std::invalid_argument(
+        throw InputError(
             fmt::format("budget-tolerance must be in (0, 1), got {}", budget.tolerance));
     }
     validate(options);
-    return Search(mesh, options, budget, on_probe, progress).run();
+    return Search(mesh, options, budget, progress).run();
 }
 
 void to_json(nlohmann::json& j, const BudgetProbe& p) {

@@ -4,11 +4,11 @@
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
+#include "common/error.h"
 #include "radiosity/solver.h"
 
 namespace hmcr {
@@ -32,14 +32,18 @@ struct BudgetResult {
     std::vector<BudgetProbe> probes;
 };
 
-// Called after each probe (for progress).
-using ProbeFn = std::function<void(const BudgetProbe&, int probe_index)>;
+// The budget cannot be reached with these settings: a result of a study cell, an error of a
+// solve.
+class BudgetNotReached : public InputError {
+public:
+    using InputError::InputError;
+};
 
-// Starts from options.epsilon (or the oracle's default). Throws std::invalid_argument with a
-// one-line explanation when the budget cannot be reached: below the patch count, above what the
-// area/depth limits and the rays allow, or not within the tolerance after max_probes.
+// Starts from options.epsilon (or the oracle's default). Each probe is a stage of `progress`,
+// and its result a note. Throws BudgetNotReached with a one-line explanation when the budget
+// cannot be reached: below the patch count, above what the area/depth limits and the rays
+// allow, or not within the tolerance after max_probes; InputError on bad options.
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
-                              const BudgetOptions& budget, const ProbeFn& on_probe = {},
-                              const ProgressFn& progress = {});
+                              const BudgetOptions& budget, Progress& progress = no_progress());
 
 }  // namespace hmcr

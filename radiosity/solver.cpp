@@ -1,6 +1,5 @@
 #include "radiosity/solver.h"
 
-#include <fmt/format.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -8,12 +7,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/error.h"
+#include "common/stopwatch.h"
 #include "oracles/registry.h"
 #include "radiosity/embree_scene.h"
 #include "radiosity/link_cache.h"
 #include "radiosity/ray_schedule.h"
 #include "radiosity/shooting.h"
-#include "common/stopwatch.h"
+#include "radiosity/solver_settings.h"
 
 namespace hmcr {
 namespace {
@@ -48,28 +49,7 @@ double SolveStats::back_face_fraction() const {
     return shot > 0 ? channel_sum(back_face_power) / shot : 0;
 }
 
-void validate(const SolverOptions& o) {
-    find_oracle(o.oracle);  // throws with the list of valid names
-    auto require = [](bool ok, const std::string& what) {
-        if (!ok) throw std::invalid_argument(what);
-    };
-    require(std::isnan(o.epsilon) || (o.epsilon > 0 && std::isfinite(o.epsilon)),
-            fmt::format("epsilon must be a positive number, got {}", o.epsilon));
-    require(o.lines >= 1 && o.lines <= 4096, fmt::format("lines must be in 1..4096, got {}", o.lines));
-    require(o.rays >= 1, "rays must be at least 1");
-    require(o.threads >= 0, fmt::format("threads must be 0 (all) or more, got {}", o.threads));
-    require(o.min_area >= 0 && o.min_area < 1,
-            fmt::format("min-area is relative to the total area, in [0, 1), got {}", o.min_area));
-    require(o.max_depth >= 0 && o.max_depth <= 24,
-            fmt::format("max-depth must be in 0..24, got {}", o.max_depth));
-    require(o.stop > 0 && o.stop < 1, fmt::format("stop must be in (0, 1), got {}", o.stop));
-    require(o.uniform_max_area >= 0,
-            fmt::format("max-area must be positive, got {}", o.uniform_max_area));
-    require(o.cache_mb >= 0 && o.cache_mb <= 1 << 20,
-            fmt::format("cache-mb must be in [0, 1048576], got {}", o.cache_mb));
-}
-
-Solution solve(const PatchMesh& mesh, const SolverOptions& options, const ProgressFn& progress) {
+Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& progress) {
     validate(options);
     const auto start = Clock::now();
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
@@ -83,7 +63,7 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
     st.threads = threads;
 
     PatchSet patches = build_patch_set(mesh);
-    if (patches.max_emitted_power <= 0) throw std::invalid_argument("the scene emits no light");
+    if (patches.max_emitted_power <= 0) throw InputError("the scene emits no light");
     st.emitted_power = patches.emitted_power;
     const EmbreeScene scene(patches.patches);
     sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
@@ -118,7 +98,7 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
         if (rec.rays == 0) break;
         const std::uint64_t done_before = st.rays;
         const auto out = shoot_iteration(ctx, sources, it, rec.rays, [&](std::uint64_t n) {
-            if (progress) progress(std::min(1.0, double(done_before + n) / double(options.rays)));
+            progress.advance(std::min(1.0, double(done_before + n) / double(options.rays)));
         });
         st.shooting_seconds += seconds_since(t0);
         const auto t1 = Clock::now();
@@ -132,7 +112,7 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, const Progre
         st.iterations.push_back(rec);
     }
     st.unshot_power = unshot;
-    if (progress) progress(1.0);
+    progress.advance(1.0);
     st.elements = h.element_count();
     st.leaves = h.leaf_count();
     st.hierarchy_bytes = h.bytes();

@@ -2,10 +2,10 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <vector>
 
+#include "common/progress.h"
 #include "meshes/patch_mesh.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/solver_options.h"
@@ -49,12 +49,9 @@ struct Solution {
     SolveStats stats;
 };
 
-// Progress: fraction of the ray budget shot so far, called from the calling thread.
-using ProgressFn = std::function<void(double)>;
-
-// Throws std::invalid_argument on a bad option (unknown oracle, non-positive rays, ...).
-Solution solve(const PatchMesh& mesh, const SolverOptions& options, const ProgressFn& progress = {});
-
-void validate(const SolverOptions& options);
+// Throws InputError on a bad option (unknown oracle, no rays, ...) or a scene without light.
+// Reports the fraction of the rays shot to `progress`.
+Solution solve(const PatchMesh& mesh, const SolverOptions& options,
+               Progress& progress = no_progress());
 
 }  // namespace hmcr

@@ -1,25 +1,62 @@
-// Everything a solve can be told; the command line fills it.
+// Every setting of a solve, declared once. The list below generates SolverOptions; the command
+// line's flags (app/), a scene file's "solver" keys and the run summary's "options" are all
+// read off it, so a new setting is one line here plus its use in the engine.
+//
+// Columns: type, name (the field, the scene-file and summary key, and the flag --name with '-'
+// for '_'), default, the condition on a value v, that condition in words, where it may be set,
+// and the help text.
+//   scene_file:   the command line and a scene file's "solver" object
+//   command_line: the command line only (a property of the run, not of the scene)
+//   internal:     set by hmcr itself (a reference's uniform mesh); shown in the summary
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
 
 namespace hmcr {
 
+enum class SettingScope { scene_file, command_line, internal };
+
+// clang-format off
+#define HMCR_SOLVER_SETTINGS(X)                                                                   \
+    X(std::string,   oracle,    "kl",       is_oracle_name(v),       "one of " + oracle_names(),       \
+      scene_file, "refinement oracle (`hmcr oracles` lists them)")                                \
+    X(double,        epsilon,   kOracleDefault, std::isnan(v) || v > 0, "positive",             \
+      scene_file, "refinement threshold; a link is accepted when value / Phi_max < epsilon "     \
+                  "(default: the oracle's)")                                                     \
+    X(int,           lines,     10,         v >= 1 && v <= 4096,     "in 1..4096",                \
+      scene_file, "kernel lines per link, N_s, for the line-based oracles")                      \
+    X(std::uint64_t, rays,      2'684'000,  v >= 1,                  "at least 1",                \
+      scene_file, "shooting rays over the whole solve (shot within 2%)")                         \
+    X(std::uint64_t, seed,      1,          true,                    "a count",                   \
+      scene_file, "keys every random stream")                                                    \
+    X(int,           threads,   0,          v >= 0 && v <= 4096,     "0 (all cores) to 4096",     \
+      command_line, "worker threads, 0 = all cores; results do not depend on it")                \
+    X(double,        min_area,  1e-6,       v >= 0 && v < 1,         "in [0, 1)",                 \
+      scene_file, "elements at or below this area, relative to the total, are not split")        \
+    X(int,           max_depth, 16,         v >= 0 && v <= 24,       "in 0..24",                  \
+      scene_file, "quadtree depth limit")                                                        \
+    X(double,        stop,      0.01,       v > 0 && v < 1,          "in (0, 1)",                 \
+      scene_file, "stop when the unshot power is below stop x the emitted power")                \
+    X(double,        cache_mb,  32,         v >= 0 && v <= 1 << 20,  "in [0, 1048576]",           \
+      command_line, "link cache for the line-based oracles, MiB (0: none); results do not "      \
+                    "depend on it")                                                              \
+    X(double, uniform_max_area, 0,          v >= 0,                  "not negative",              \
+      internal,   "> 0: a fixed uniform mesh of elements no larger (m^2), no oracle")
+// clang-format on
+
+// epsilon's default: the oracle's own (Oracle::default_epsilon).
+inline constexpr double kOracleDefault = std::numeric_limits<double>::quiet_NaN();
+
+bool is_oracle_name(const std::string& name);
+std::string oracle_names();
+
 struct SolverOptions {
-    std::string oracle = "kl";     // refinement oracle (`hmcr oracles` lists them)
-    double epsilon = std::numeric_limits<double>::quiet_NaN();  // NaN: the oracle's default
-    int lines = 10;                   // N_s, kernel lines per link for line-based oracles
-    std::uint64_t rays = 2'684'000;   // shooting rays over the whole solve (within 2%)
-    std::uint64_t seed = 1;           // keys every random stream
-    int threads = 0;                  // 0: all cores
-    double min_area = 1e-6;           // relative to A_T: elements at or below are not split
-    int max_depth = 16;               // quadtree depth limit (at most 24)
-    double stop = 0.01;               // stop when unshot power < stop * emitted power
-    double uniform_max_area = 0;      // > 0: a fixed uniform mesh of elements <= this (m^2),
-                                      // no oracle (converged references); 0: adaptive
-    double cache_mb = 32;             // link cache size for line-based oracles (0: no cache)
+#define HMCR_FIELD(type, name, default_value, ...) type name = default_value;
+    HMCR_SOLVER_SETTINGS(HMCR_FIELD)
+#undef HMCR_FIELD
 };
 
 }  // namespace hmcr

@@ -2,24 +2,23 @@
 
 #include <chrono>
 
-#include "common/json_file.h"
+#include "common/text_file.h"
 #include "common/atomic_file.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
-#include "viz/vtk_export.h"
+#include "viz/solution_file.h"
 
 namespace hmcr {
 namespace {
 
-Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint64_t seed) {
-    SolverOptions s;
+Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint64_t seed,
+                       Progress& progress) {
+    SolverOptions s = o.solver;
     s.uniform_max_area = o.max_area;
-    s.rays = o.rays;
     s.seed = seed;
-    s.threads = o.threads;
-    s.min_area = 0;   // the uniform mesh decides; limits only cap the depth
+    s.min_area = 0;  // the uniform mesh decides; limits only cap the depth
     s.max_depth = 24;
-    return solve(scene.mesh, s);
+    return solve(scene.mesh, s, progress);
 }
 
 }  // namespace
@@ -30,26 +29,23 @@ ObjectErrorOptions reflected_error_options(const PatchMesh& mesh) {
     return o;
 }
 
-Reference compute_reference(const Scene& scene, const ReferenceOptions& o,
-                            const ReferenceProgress& progress) {
+Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    auto step = [&](const std::string& s) {
-        if (progress) progress(s);
-    };
+    const std::uint64_t seed = o.solver.seed;
     Reference ref;
-    step("solving with seed " + std::to_string(o.seed));
-    ref.solution = solve_uniform(scene, o, o.seed);
-    ref.mesh = build_shaded_mesh(*ref.solution.hierarchy, scene.mesh, o.crease_degrees);
-    step("solving with seed " + std::to_string(o.seed + 1) + " for the convergence report");
-    const Solution second = solve_uniform(scene, o, o.seed + 1);
-    const ShadedMesh second_mesh = build_shaded_mesh(*second.hierarchy, scene.mesh, o.crease_degrees);
-    step("comparing the two seeds");
+    progress.stage("solving with seed " + std::to_string(seed));
+    ref.solution = solve_uniform(scene, o, seed, progress);
+    ref.mesh = shade(ref.solution, scene.mesh, o.crease_degrees);
+    progress.stage("solving with seed " + std::to_string(seed + 1) + " for the convergence report");
+    const Solution second = solve_uniform(scene, o, seed + 1, progress);
+    const ShadedMesh second_mesh = shade(second, scene.mesh, o.crease_degrees);
+    progress.stage("comparing the two seeds");
     const ShadedTracer first_tracer(ref.mesh), second_tracer(second_mesh);
     ref.object_error = object_space_error(second_tracer, second_mesh, ref.mesh,
                                           reflected_error_options(scene.mesh));
     const RenderOptions render_options{o.samples_per_axis};
     for (const View& v : scene.views) {
-        step("rendering view " + v.name);
+        progress.stage("rendering view " + v.name);
         Image image = render(first_tracer, v, render_options);
         const double exposure = exposure_from(image);
         const Image other = render(second_tracer, v, render_options);
@@ -63,11 +59,7 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o,
 void write_reference(const std::filesystem::path& dir, const Scene& scene,
                      const Reference& ref, const ReferenceOptions& o, nlohmann::json summary) {
     const SolveStats& st = ref.solution.stats;
-    VtpMetadata meta = vtp_metadata(ref.solution, double(st.iterations.size()));
-    meta.oracle = "uniform";  // no oracle: a fixed uniform mesh
-    meta.epsilon = 0;
-    meta.lines = 0;
-    write_vtp(dir / "reference.vtp", ref.mesh, meta);
+    write_solution(dir / "reference.vtp", ref.mesh, ref.solution, double(st.iterations.size()));
     nlohmann::json views = nlohmann::json::object(), errors = nlohmann::json::object();
     for (const auto& [name, view] : ref.views) {
         write_pfm(dir / "views" / (name + ".pfm"), view.image);
@@ -77,8 +69,8 @@ void write_reference(const std::filesystem::path& dir, const Scene& scene,
     }
     summary["reference"] = {
         {"max_area_m2", o.max_area},
-        {"rays_per_seed", o.rays},
-        {"seeds", {o.seed, o.seed + 1}},
+        {"rays_per_seed", o.solver.rays},
+        {"seeds", {o.solver.seed, o.solver.seed + 1}},
         {"samples_per_axis", o.samples_per_axis},
         {"views", views},
         {"convergence",

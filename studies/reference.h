@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/progress.h"
 #include "meshes/scene.h"
 #include "radiosity/solver.h"
 #include "viz/image.h"
@@ -26,11 +27,15 @@
 namespace hmcr {
 
 struct ReferenceOptions {
-    double max_area = 1e-4;           // m^2: every patch cut to elements no larger
-    std::uint64_t rays = 200'000'000;
-    std::uint64_t seed = 1;           // the second solve uses seed + 1
-    int samples_per_axis = 2;         // supersampling of the view images
-    int threads = 0;
+    double max_area = 1e-4;  // m^2: every patch cut to elements no larger
+    // The two solves: rays per seed, the first seed (the second is seed + 1), threads, stop.
+    // The mesh settings (oracle, epsilon, limits) are the uniform mesh's own.
+    SolverOptions solver = [] {
+        SolverOptions s;
+        s.rays = 200'000'000;
+        return s;
+    }();
+    int samples_per_axis = 2;  // supersampling of the view images
     double crease_degrees = 30;
 };
 
@@ -49,10 +54,9 @@ struct Reference {
     double seconds = 0;
 };
 
-using ReferenceProgress = std::function<void(const std::string& step)>;
-
+// Each solve, the comparison and each view's image are stages of `progress`.
 Reference compute_reference(const Scene& scene, const ReferenceOptions& options,
-                            const ReferenceProgress& progress = {});
+                            Progress& progress = no_progress());
 
 // Object-space error options relative to the reflected radiosity B - E of the scene's patches
 // (viz/object_space_error.h): how references and studies compare solutions.
@@ -64,7 +68,7 @@ void write_reference(const std::filesystem::path& dir, const Scene& scene,
                      nlohmann::json summary);
 
 // The exposure fixed for each view in a reference folder's reference.json; throws
-// std::invalid_argument naming the file when it is missing or malformed.
+// InputError naming the file when it is missing or malformed.
 std::map<std::string, double> read_reference_exposures(const std::filesystem::path& dir);
 
 }  // namespace hmcr

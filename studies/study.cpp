@@ -9,14 +9,15 @@
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "radiosity/patch.h"
+#include "radiosity/solver_settings.h"
 #include "common/stopwatch.h"
-#include "common/json_file.h"
+#include "common/text_file.h"
 #include "studies/reference.h"
 #include "common/atomic_file.h"
 #include "viz/image.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
-#include "viz/vtk_export.h"
+#include "viz/solution_file.h"
 #include "viz/vtk_import.h"
 
 namespace hmcr {
@@ -24,12 +25,19 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-StudyProgress event(StudyProgress::Stage stage, std::size_t cell_index) {
-    StudyProgress p;
-    p.stage = stage;
-    p.cell_index = cell_index;
-    return p;
-}
+// A cell's budget search as notes of the study: "[3/21] CELL: budget probe 2: ...". The
+// solves' own fractions are not shown: a study is hundreds of them.
+class CellNotes final : public Progress {
+public:
+    CellNotes(Progress& study, std::string prefix) : m_study(study), m_prefix(std::move(prefix)) {}
+    void stage(std::string_view) override {}
+    void advance(double) override {}
+    void note(std::string_view line) override { m_study.note(m_prefix + std::string(line)); }
+
+private:
+    Progress& m_study;
+    std::string m_prefix;
+};
 
 // What every cell is measured against, loaded once.
 struct StudyReference {
@@ -44,9 +52,9 @@ StudyReference load_reference(const std::filesystem::path& dir, const Scene& sce
     ref.exposure = read_reference_exposures(dir);
     for (const View& v : scene.views) {
         if (!ref.exposure.count(v.name)) {
-            throw std::invalid_argument(fmt::format("{}: no exposure for view '{}' of scene '{}'",
-                                                    (dir / "reference.json").string(), v.name,
-                                                    scene.name));
+            throw InputError((dir / "reference.json").string(),
+                             fmt::format("no exposure for view '{}' of scene '{}'", v.name,
+                                         scene.name));
         }
         const double exposure = ref.exposure.at(v.name);
         ref.images[v.name] = quantise(read_pfm(dir / "views" / (v.name + ".pfm")), exposure);
@@ -60,17 +68,22 @@ std::vector<std::string> expand_oracles(const std::vector<std::string>& names) {
         if (n == "all") {
             for (const Oracle* o : all_oracles()) out.emplace_back(o->name());
         } else {
-            out.emplace_back(find_oracle(n).name());  // throws naming the valid ones
+            if (!oracle_named(n)) {
+                throw InputError(fmt::format("unknown oracle {} (valid: {})", quote(n),
+                                             oracle_names()));
+            }
+            out.push_back(n);
         }
     }
     return out;
 }
 
 void validate(const StudyOptions& o, const std::vector<std::string>& oracles) {
-    if (o.budgets.empty()) throw std::invalid_argument("study: no budget given");
-    if (oracles.empty()) throw std::invalid_argument("study: no oracle given");
-    if (o.seeds < 1) throw std::invalid_argument("study: seeds must be at least 1");
-    if (o.output.empty()) throw std::invalid_argument("study: no output folder given");
+    if (o.budgets.empty()) throw InputError("study: no budget given");
+    if (oracles.empty()) throw InputError("study: no oracle given");
+    if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    if (o.output.empty()) throw InputError("study: no output folder given");
+    validate(o.solver);
 }
 
 // One cell to run, and where its result lives.
@@ -83,16 +96,16 @@ struct CellTask {
 
 class StudyRunner {
 public:
-    StudyRunner(const StudyOptions& o, const StudyProgressFn& progress)
+    StudyRunner(const Scene& scene, const StudyOptions& o, Progress& progress)
         : m_options(o),
           m_progress(progress),
-          m_scene(load_scene(o.scene)),
+          m_scene(scene),
           m_oracles(expand_oracles(o.oracles)) {
         validate(o, m_oracles);
         for (std::size_t b : o.budgets)
             for (const std::string& oracle : m_oracles)
                 for (int s = 0; s < o.seeds; ++s) {
-                    const std::uint64_t seed = o.first_seed + std::uint64_t(s);
+                    const std::uint64_t seed = o.solver.seed + std::uint64_t(s);
                     m_tasks.push_back({oracle, b, seed, cell_name(m_scene.name, oracle, b, seed)});
                 }
         m_error_options = reflected_error_options(m_scene.mesh);
@@ -106,11 +119,12 @@ private:
     }
     CellResult compute(std::size_t index);
     void measure(const CellTask& t, const Solution& solution, CellResult& cell);
-    void report(StudyProgress p) const;
+    std::string where(std::size_t index) const;
+    std::string time_left() const;
 
     const StudyOptions& m_options;
-    const StudyProgressFn& m_progress;
-    Scene m_scene;
+    Progress& m_progress;
+    const Scene& m_scene;
     std::vector<std::string> m_oracles;
     std::vector<CellTask> m_tasks;
     ObjectErrorOptions m_error_options;
@@ -120,16 +134,15 @@ private:
     double m_compute_seconds = 0;
 };
 
-void StudyRunner::report(StudyProgress p) const {
-    if (!m_progress) return;
-    p.cell_count = m_tasks.size();
-    p.cell = m_tasks[p.cell_index].name;
-    p.elapsed_seconds = seconds_since(m_start);
-    if (m_computed > 0) {
-        const double per_cell = m_compute_seconds / double(m_computed);
-        p.remaining_seconds = per_cell * double(m_to_compute - m_computed);
-    }
-    m_progress(p);
+std::string StudyRunner::where(std::size_t index) const {
+    return fmt::format("[{}/{}] {}", index + 1, m_tasks.size(), m_tasks[index].name);
+}
+
+// ", about 40 s left", from the cells computed so far; nothing before the first.
+std::string StudyRunner::time_left() const {
+    if (m_computed == 0) return {};
+    const double per_cell = m_compute_seconds / double(m_computed);
+    return fmt::format(", about {:.0f} s left", per_cell * double(m_to_compute - m_computed));
 }
 
 void StudyRunner::run() {
@@ -142,7 +155,7 @@ void StudyRunner::run() {
             cells.push_back(read_json_file(file, [](const nlohmann::json& j) {
                 return cell_from_json(j);
             }));
-            report(event(StudyProgress::Stage::kSkipped, i));
+            m_progress.note(where(i) + ": done before, skipped");
             continue;
         }
         const auto start = Clock::now();
@@ -152,11 +165,14 @@ void StudyRunner::run() {
         cells.push_back(cell_from_json(j));  // exactly what a resumed run reads back
         m_compute_seconds += seconds_since(start);
         ++m_computed;
-        report(event(cell.ok() ? StudyProgress::Stage::kDone : StudyProgress::Stage::kFailed, i));
+        m_progress.note(where(i) + (cell.ok() ? fmt::format(": done ({:.0f} s elapsed{})",
+                                                             seconds_since(m_start), time_left())
+                                              : ": budget not reached, recorded as failed" +
+                                                    time_left()));
     }
     std::vector<std::string> views;
     for (const View& v : m_scene.views) views.push_back(v.name);
-    write_study_tables(m_options, views, cells);
+    write_study_tables(m_scene.name, m_options, views, cells);
 }
 
 CellResult StudyRunner::compute(std::size_t index) {
@@ -166,29 +182,22 @@ CellResult StudyRunner::compute(std::size_t index) {
     cell.oracle = t.oracle;
     cell.budget = t.budget;
     cell.seed = t.seed;
-    SolverOptions so;
+    SolverOptions so = m_options.solver;
     so.oracle = t.oracle;
-    so.lines = m_options.lines;
-    so.rays = m_options.rays;
+    so.epsilon = kOracleDefault;
     so.seed = t.seed;
-    so.threads = m_options.threads;
-    const ProbeFn on_probe = [&](const BudgetProbe& p, int probe) {
-        StudyProgress sp = event(StudyProgress::Stage::kProbe, index);
-        sp.probe = probe;
-        sp.last_probe = p;
-        report(sp);
-    };
+    CellNotes notes(m_progress, where(index) + ": ");
     const auto start = Clock::now();
     try {
         const BudgetResult r =
-            solve_for_budget(m_scene.mesh, so, {t.budget, m_options.budget_tolerance}, on_probe);
+            solve_for_budget(m_scene.mesh, so, {t.budget, m_options.budget_tolerance}, notes);
         cell.seconds = seconds_since(start);
         cell.probes = r.probes;
         cell.epsilon = r.solution.stats.epsilon;
         cell.leaves = r.solution.stats.leaves;
-        report(event(StudyProgress::Stage::kMeasuring, index));
+        notes.note("rendering and measuring");
         measure(t, r.solution, cell);
-    } catch (const std::invalid_argument& e) {
+    } catch (const BudgetNotReached& e) {
         cell.seconds = seconds_since(start);
         cell.status = "failed";
         cell.message = e.what();
@@ -198,10 +207,9 @@ CellResult StudyRunner::compute(std::size_t index) {
 
 // The mesh file, the images and the metrics of a solved cell.
 void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResult& cell) {
-    const ShadedMesh mesh =
-        build_shaded_mesh(*solution.hierarchy, m_scene.mesh, m_options.crease_degrees);
-    write_vtp(m_options.output / "meshes" / (t.name + ".vtp"), mesh,
-              vtp_metadata(solution, double(t.budget)));
+    const ShadedMesh mesh = write_solution(m_options.output / "meshes" / (t.name + ".vtp"),
+                                           solution, m_scene.mesh, m_options.crease_degrees,
+                                           double(t.budget));
     const ShadedTracer tracer(mesh);
     const RenderOptions render_options{m_options.samples_per_axis};
     for (const View& v : m_scene.views) {
@@ -220,8 +228,8 @@ std::string cell_name(const std::string& scene, const std::string& oracle, std::
     return fmt::format("{}-{}-B{}-s{}", scene, oracle, budget, seed);
 }
 
-void run_study(const StudyOptions& options, const StudyProgressFn& progress) {
-    StudyRunner(options, progress).run();
+void run_study(const Scene& scene, const StudyOptions& options, Progress& progress) {
+    StudyRunner(scene, options, progress).run();
 }
 
 }  // namespace hmcr

@@ -16,19 +16,20 @@
 //                                  seeds, best error of each column in bold
 //   OUT/plots/error_vs_elements.png  object-space error against leaves, log-log, per oracle
 //
-// A failed budget search (std::invalid_argument) is a result, not an error: the cell is written
+// A failed budget search (BudgetNotReached) is a result, not an error: the cell is written
 // with status "failed" and its message, and the tables leave it out of the means.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "common/progress.h"
+#include "meshes/scene.h"
 #include "radiosity/budget_search.h"
 #include "studies/metrics.h"
 #include "studies/object_space_error.h"
@@ -36,19 +37,15 @@
 namespace hmcr {
 
 struct StudyOptions {
-    std::string scene;                 // bundled name or scene file
     std::filesystem::path reference;   // folder written by write_reference
     std::vector<std::size_t> budgets;  // target leaf counts
     std::vector<std::string> oracles;  // names; "all" expands to every registered oracle
-    int seeds = 3;                     // seeds first_seed .. first_seed + seeds - 1
-    std::uint64_t first_seed = 1;
-    std::uint64_t rays = 2'684'000;  // shooting rays of every solve
-    int lines = 10;                  // N_s
-    double budget_tolerance = 0.01;  // relative distance to the budget accepted
-    int samples_per_axis = 2;        // supersampling of the images
-    std::filesystem::path output;    // the study folder
-    int threads = 0;                 // 0: all cores
-    double crease_degrees = 30;      // Gouraud blending limit of the shaded meshes
+    int seeds = 3;                     // seeds solver.seed .. solver.seed + seeds - 1
+    SolverOptions solver;              // every cell's solve; oracle, epsilon, seed set per cell
+    double budget_tolerance = 0.01;    // relative distance to the budget accepted
+    int samples_per_axis = 2;          // supersampling of the images
+    std::filesystem::path output;      // the study folder
+    double crease_degrees = 30;        // Gouraud blending limit of the shaded meshes
 };
 
 struct CellResult {
@@ -66,23 +63,11 @@ struct CellResult {
     bool ok() const { return status == "ok"; }
 };
 
-struct StudyProgress {
-    enum class Stage { kSkipped, kProbe, kMeasuring, kDone, kFailed };
-    Stage stage = Stage::kProbe;
-    std::size_t cell_index = 0;  // 0-based, in the order budget x oracle x seed
-    std::size_t cell_count = 0;
-    std::string cell;               // its name, CELL above
-    int probe = 0;                  // kProbe: 1-based index of the probe just finished
-    BudgetProbe last_probe;         // kProbe: its epsilon, leaves and time
-    double elapsed_seconds = 0;     // since run_study started
-    double remaining_seconds = -1;  // estimate from the cells computed so far; < 0: unknown
-};
-
-using StudyProgressFn = std::function<void(const StudyProgress&)>;
-
-// Runs (or resumes) the study. Throws std::invalid_argument on bad options (unknown oracle,
-// no budget, seeds < 1) and std::runtime_error naming the file when the reference is unusable.
-void run_study(const StudyOptions& options, const StudyProgressFn& progress = {});
+// Runs (or resumes) the study; each cell is a note of `progress` (skipped, its probes, done or
+// failed, the time left). Throws InputError on bad options (unknown oracle, no budget, seeds < 1)
+// or an unusable reference.
+void run_study(const Scene& scene, const StudyOptions& options,
+               Progress& progress = no_progress());
 
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,
                       std::uint64_t seed);
@@ -92,7 +77,7 @@ nlohmann::json cell_to_json(const CellResult& cell);
 CellResult cell_from_json(const nlohmann::json& j);
 
 // table.json, table.csv, table.md and the plot, from every cell of the study in order.
-void write_study_tables(const StudyOptions& options, const std::vector<std::string>& views,
-                        const std::vector<CellResult>& cells);
+void write_study_tables(const std::string& scene, const StudyOptions& options,
+                        const std::vector<std::string>& views, const std::vector<CellResult>& cells);
 
 }  // namespace hmcr

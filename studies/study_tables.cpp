@@ -136,9 +136,8 @@ std::string md_budget_table(std::size_t budget, const std::vector<CellResult>& c
     return out;
 }
 
-std::string md_table(const StudyOptions& o, const std::vector<std::string>& views,
-                     const std::vector<CellResult>& cells) {
-    const std::string scene = cells.empty() ? o.scene : cells.front().scene;
+std::string md_table(const std::string& scene, const StudyOptions& o,
+                     const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     std::string out = fmt::format("# Meshing study: {}\n\n", scene);
     out += fmt::format(
         "{} rays, N_s = {}, budget tolerance {}%, {} seeds from {}. Mean ± standard error over "
@@ -146,7 +145,7 @@ std::string md_table(const StudyOptions& o, const std::vector<std::string>& view
         "PSNR in dB, each averaged over the {} views ({}); object error: the area-weighted "
         "relative L2 error of the reflected radiosity against the reference; seconds: the "
         "budget search. The best mean of each error column is in bold.\n\n",
-        o.rays, o.lines, 100 * o.budget_tolerance, o.seeds, o.first_seed, views.size(),
+        o.solver.rays, o.solver.lines, 100 * o.budget_tolerance, o.seeds, o.solver.seed, views.size(),
         fmt::join(views, ", "));
     for (std::size_t b : o.budgets) out += md_budget_table(b, cells) + "\n";
     return out;
@@ -252,18 +251,18 @@ CellResult cell_from_json(const nlohmann::json& j) {
     return c;
 }
 
-void write_study_tables(const StudyOptions& o, const std::vector<std::string>& views,
-                        const std::vector<CellResult>& cells) {
+void write_study_tables(const std::string& scene, const StudyOptions& o,
+                        const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     nlohmann::json all = nlohmann::json::array();
     for (const CellResult& c : cells) all.push_back(cell_to_json(c));
-    const nlohmann::json table = {{"scene", cells.empty() ? o.scene : cells.front().scene},
+    const nlohmann::json table = {{"scene", scene},
                                   {"options",
                                    {{"budgets", o.budgets},
                                     {"oracles", oracle_order(cells)},
                                     {"seeds", o.seeds},
-                                    {"first_seed", o.first_seed},
-                                    {"rays", o.rays},
-                                    {"lines", o.lines},
+                                    {"first_seed", o.solver.seed},
+                                    {"rays", o.solver.rays},
+                                    {"lines", o.solver.lines},
                                     {"budget_tolerance", o.budget_tolerance},
                                     {"samples_per_axis", o.samples_per_axis},
                                     {"reference", o.reference.string()}}},
@@ -271,7 +270,7 @@ void write_study_tables(const StudyOptions& o, const std::vector<std::string>& v
                                   {"cells", all}};
     write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
     write_text_atomically(o.output / "table.csv", csv_table(views, cells));
-    write_text_atomically(o.output / "table.md", md_table(o, views, cells));
+    write_text_atomically(o.output / "table.md", md_table(scene, o, views, cells));
     write_png(o.output / "plots" / "error_vs_elements.png", error_plot(cells, o.budgets));
 }
 

@@ -22,7 +22,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "radiosity/solver.h"
 #include "common/atomic_file.h"
 #include "viz/tone_map.h"
 
@@ -168,18 +167,6 @@ void write_vtp(const std::filesystem::path& path, const ShadedMesh& mesh, const 
     } catch (const std::filesystem::filesystem_error& e) {
         throw std::runtime_error("cannot write " + path.string() + ": " + e.what());
     }
-}
-
-VtpMetadata vtp_metadata(const Solution& solution, double time_value) {
-    const SolveStats& st = solution.stats;
-    return {solution.options.oracle,
-            st.epsilon,
-            std::uint64_t(solution.options.lines),
-            st.rays,
-            solution.options.seed,
-            st.leaves,
-            st.iterations.size(),
-            time_value};
 }
 
 }  // namespace hmcr

@@ -22,10 +22,6 @@ struct VtpMetadata {
     double time_value = 0;            // TimeValue (ParaView's time of this file)
 };
 
-struct Solution;
-// The metadata of a solve: its oracle, epsilon, lines, rays, seed, leaves and iterations.
-VtpMetadata vtp_metadata(const Solution& solution, double time_value);
-
 // Writes `mesh` atomically; RadiosityColor is tone-mapped with auto_exposure(mesh). Throws
 // std::runtime_error naming the file on failure, leaving no file behind.
 void write_vtp(const std::filesystem::path& path, const ShadedMesh& mesh, const VtpMetadata& meta);

@@ -10,13 +10,15 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include <stdexcept>
+
+#include "common/error.h"
 #include <string>
 
 namespace hmcr {
 namespace {
 
 vtkDataArray* require(vtkDataArray* a, const std::filesystem::path& path, const char* name) {
-    if (!a) throw std::invalid_argument(path.string() + ": not an hmcr solution (no " + name + ")");
+    if (!a) throw InputError(path.string(), std::string("not an hmcr solution (no ") + name + ")");
     return a;
 }
 
@@ -24,7 +26,7 @@ vtkDataArray* require(vtkDataArray* a, const std::filesystem::path& path, const 
 
 ShadedMesh read_vtp(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path)) {
-        throw std::invalid_argument(path.string() + ": no such file");
+        throw InputError(path.string(), "no such file");
     }
     vtkObject::GlobalWarningDisplayOff();  // our one-line error says it; VTK's would be many
     auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
@@ -32,7 +34,7 @@ ShadedMesh read_vtp(const std::filesystem::path& path) {
     reader->Update();
     vtkPolyData* data = reader->GetOutput();
     if (reader->GetErrorCode() != 0 || !data || data->GetNumberOfPoints() == 0) {
-        throw std::invalid_argument(path.string() + ": cannot read it as VTK PolyData");
+        throw InputError(path.string(), "cannot read it as VTK PolyData");
     }
     vtkDataArray* b = require(data->GetPointData()->GetArray("Radiosity"), path, "Radiosity");
     vtkDataArray* eb = require(data->GetCellData()->GetArray("ElementRadiosity"), path,

@@ -41,7 +41,7 @@ protected:
 
 TEST_F(Cli, UnknownOracleListsTheValidOnes) {
     expect_clean_failure(hmcr("solve plates --oracle nope -o " + (m_dir / "out.vtp").string()),
-                         "unknown oracle 'nope' (valid: power");
+                         "oracle must be one of power, ks, mi, kl, cs, hl, vt, got 'nope'");
 }
 
 TEST_F(Cli, BadNumberIsRejected) {
@@ -106,7 +106,7 @@ TEST_F(Cli, SolveWritesTheMeshAndASummaryWithCountsAndTimings) {
     EXPECT_GE(summary["timings_s"]["total"].get<double>(), summary["timings_s"]["solve"].get<double>());
     EXPECT_GT(summary["memory"]["peak_bytes"].get<double>(), 0);
     // Without a terminal, progress is a line every 10%.
-    EXPECT_NE(r.err.find("100% of the rays shot"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("shooting rays: 100%"), std::string::npos) << r.err;
     for (const auto& e : fs::directory_iterator(m_dir / "sub")) {
         EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
     }
@@ -156,7 +156,7 @@ TEST_F(Cli, RenderNamesABrokenReferenceFile) {
         const CliRun r = hmcr("render " + vtp + " --scene plates --reference " +
                               (m_dir / "ref").string() + " -o " + (m_dir / "x.png").string());
         EXPECT_EQ(r.exit_code, 2) << text;
-        EXPECT_NE(r.err.find("ref/reference.json: "), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("ref/reference.json:"), std::string::npos) << r.err;
         EXPECT_EQ(r.err.find("solver"), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(m_dir / "x.png"));
     }
@@ -197,7 +197,21 @@ TEST_F(Cli, SceneSolverSettingOfTheWrongTypeIsNamed) {
     j["solver"] = {{"rays", "many"}};
     std::ofstream(json) << j.dump();
     expect_clean_failure(hmcr("solve " + json.string() + " -o " + (m_dir / "out.vtp").string()),
-                         "plates.json: solver setting 'rays': ");
+                         "plates.json: solver.rays: must be a whole number in range, got \"many\"");
+}
+
+// A scene file's bad setting is an error even when the command line overrides it: the file is
+// wrong whatever is given with it.
+TEST_F(Cli, BadSceneSettingIsRefusedEvenWhenOverridden) {
+    fs::copy(fs::path(HMCR_SCENE_DIR) / "plates", m_dir / "plates");
+    const fs::path json = m_dir / "plates" / "plates.json";
+    auto j = nlohmann::json::parse(read_file(json));
+    j["solver"] = {{"rays", -5}};
+    std::ofstream(json) << j.dump();
+    const std::string out = " -o " + (m_dir / "out.vtp").string();
+    expect_clean_failure(hmcr("solve " + json.string() + out), "plates.json: solver.rays: ");
+    expect_clean_failure(hmcr("solve " + json.string() + " --rays 1000" + out),
+                         "plates.json: solver.rays: ");
 }
 
 // A bare OBJ, without materials or light: its geometry can be measured, but it cannot be

@@ -3,7 +3,7 @@
 // Input: OBJ text, optionally followed by a NUL byte and MTL text. The parts are written to
 // fuzz.obj and fuzz.mtl in a private temporary directory (an OBJ reaches the MTL through
 // `mtllib fuzz.mtl`, as the seeds do) and loaded with and without a default material. The
-// loader may reject any input, but only with a SceneError; anything else, or a loaded mesh that
+// loader may reject any input, but only with a InputError; anything else, or a loaded mesh that
 // breaks the loader's guarantees, aborts so that libFuzzer records the input.
 #include <stdlib.h>
 #include <unistd.h>
@@ -64,9 +64,9 @@ void load(const fs::path& obj, const hmcr::LoadOptions& options) {
     try {
         hmcr::PatchMesh mesh = hmcr::load_obj(obj, options);
         check_mesh(mesh);
-    } catch (const hmcr::SceneError& e) {
+    } catch (const hmcr::InputError& e) {
         const std::string what = e.what();
-        if (what.empty() || what.find('\n') != std::string::npos) crash("multi-line SceneError");
+        if (what.empty() || what.find('\n') != std::string::npos) crash("multi-line InputError");
     } catch (const std::exception& e) {
         std::fprintf(stderr, "obj_loader_fuzz: unexpected exception: %s\n", e.what());
         std::abort();

@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+#include "common/error.h"
 #include "information/channel_samples.h"
 #include "information/form_factors.h"
 #include "information/scene_information.h"
@@ -118,7 +119,7 @@ TEST(GlobalLines, UnknownMethodIsNamed) {
     try {
         parse_line_method("globl");
         FAIL() << "no throw";
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("'globl'"), std::string::npos) << e.what();
     }
 }

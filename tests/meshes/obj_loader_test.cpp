@@ -1,5 +1,5 @@
 // load_obj: a good file gives the right patches, materials and adjacency; every validation
-// error of SPEC section 1 throws a SceneError naming the right `file:line`.
+// error of SPEC section 1 throws a InputError naming the right `file:line`.
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -26,7 +26,7 @@ constexpr const char* kHeader =
     "mtllib scene.mtl\n"
     "usemtl white\n";
 
-// The SceneError message of loading kHeader + body with the given MTL.
+// The InputError message of loading kHeader + body with the given MTL.
 std::string obj_error(const std::string& body, const std::string& mtl = kMtl) {
     SceneFiles files;
     files.write("scene.mtl", mtl);

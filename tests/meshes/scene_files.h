@@ -22,15 +22,15 @@ inline testing::AssertionResult contains(const std::string& text, const std::str
     return testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
 }
 
-// The message of the SceneError that `load` throws, or a failure note when it throws none.
+// The message of the InputError that `load` throws, or a failure note when it throws none.
 template <typename Load>
 std::string scene_error(Load&& load) {
     try {
         load();
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
         return e.what();
     }
-    return "<no SceneError thrown>";
+    return "<no InputError thrown>";
 }
 
 }  // namespace hmcr::test

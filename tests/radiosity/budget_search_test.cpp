@@ -45,7 +45,7 @@ TEST_P(BudgetForEveryOracle, ReachesAThousandLeavesOnTheCornellBoxWithinOnePerce
         BudgetResult r;
         try {
             r = solve_for_budget(scene.mesh, o, {1000, 0.01});
-        } catch (const std::invalid_argument& e) {
+        } catch (const BudgetNotReached& e) {
             expect_genuine_jump(e.what(), 1000);
             continue;
         }
@@ -67,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(Registry, BudgetForEveryOracle, testing::ValuesIn(all_o
 std::string failure(const SolverOptions& o, std::size_t leaves) {
     try {
         solve_for_budget(load_scene("cornell").mesh, o, {leaves, 0.01});
-    } catch (const std::invalid_argument& e) {
+    } catch (const BudgetNotReached& e) {
         return e.what();
     }
     return "no failure";

@@ -8,6 +8,7 @@
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "radiosity/solver.h"
+#include "radiosity/solver_settings.h"
 #include "tests/support/analytic.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
@@ -191,12 +192,12 @@ TEST(SolverOptions, BadValuesAreRejectedWithTheirName) {
         spoil(o);
         try {
             validate(o);
-        } catch (const std::invalid_argument& e) {
+        } catch (const InputError& e) {
             return std::string(e.what());
         }
         return std::string("accepted");
     };
-    EXPECT_NE(message([](auto& o) { o.oracle = "nope"; }).find("valid: power"), std::string::npos);
+    EXPECT_NE(message([](auto& o) { o.oracle = "nope"; }).find("one of power, ks"), std::string::npos);
     EXPECT_NE(message([](auto& o) { o.epsilon = -1; }).find("epsilon"), std::string::npos);
     EXPECT_NE(message([](auto& o) { o.stop = 0; }).find("stop"), std::string::npos);
     EXPECT_NE(message([](auto& o) { o.max_depth = 30; }).find("max-depth"), std::string::npos);

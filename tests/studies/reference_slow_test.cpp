@@ -24,7 +24,7 @@ TEST(Reference, SeedsDifferMuchLessThanA2000ElementPowerSolutionErrs) {
     const Scene scene = load_scene("cornell");
     ReferenceOptions ro;
     ro.max_area = 1e-3;
-    ro.rays = 20'000'000;
+    ro.solver.rays = 20'000'000;
     const Reference ref = compute_reference(scene, ro);
     EXPECT_LT(double(ref.object_error.unmatched), 1e-3 * double(ref.object_error.samples));
 

@@ -27,16 +27,29 @@ struct Counts {
     std::vector<std::string> computed_cells;
 };
 
-StudyProgressFn counting(Counts& counts) {
-    return [&counts](const StudyProgress& p) {
-        EXPECT_LT(p.cell_index, p.cell_count);
-        if (p.stage == StudyProgress::Stage::kSkipped) ++counts.skipped;
-        if (p.stage == StudyProgress::Stage::kDone || p.stage == StudyProgress::Stage::kFailed) {
-            ++counts.computed;
-            counts.computed_cells.push_back(p.cell);
+// Reads the study's notes: "[i/n] CELL: done before, skipped", "[i/n] CELL: done (...)",
+// "[i/n] CELL: budget not reached, ...".
+class Counting final : public Progress {
+public:
+    explicit Counting(Counts& counts) : m_counts(counts) {}
+    void stage(std::string_view) override {}
+    void advance(double) override {}
+    void note(std::string_view line) override {
+        const std::string s(line);
+        const auto close = s.find("] "), colon = s.find(": ");
+        ASSERT_EQ(s.front(), '[') << s;
+        ASSERT_NE(colon, std::string::npos) << s;
+        const std::string cell = s.substr(close + 2, colon - close - 2), what = s.substr(colon + 2);
+        if (what == "done before, skipped") ++m_counts.skipped;
+        if (what.rfind("done (", 0) == 0 || what.rfind("budget not reached", 0) == 0) {
+            ++m_counts.computed;
+            m_counts.computed_cells.push_back(cell);
         }
-    };
-}
+    }
+
+private:
+    Counts& m_counts;
+};
 
 // table.json without the timings of one cell (every "seconds", the probes' included).
 nlohmann::json without_timing(nlohmann::json table, const std::string& cell) {
@@ -63,36 +76,43 @@ class TinyStudy : public testing::Test {
 protected:
     static void SetUpTestSuite() {
         s_dir = new TempDir;
-        const Scene scene = load_scene("cornell");
+        s_cornell = new Scene(load_scene("cornell"));
+        const Scene& scene = *s_cornell;
         ReferenceOptions ro;
         ro.max_area = 4e-3;
-        ro.rays = 2'000'000;
+        ro.solver.rays = 2'000'000;
         write_reference(s_dir->path() / "ref", scene, compute_reference(scene, ro), ro, {});
     }
-    static void TearDownTestSuite() { delete s_dir; }
+    static void TearDownTestSuite() {
+        delete s_dir;
+        delete s_cornell;
+    }
+    static const Scene& s_scene() { return *s_cornell; }
 
     StudyOptions options() const {
         StudyOptions o;
-        o.scene = "cornell";
         o.reference = s_dir->path() / "ref";
         o.budgets = {200};
         o.oracles = {"power", "kl"};
         o.seeds = 2;
-        o.rays = 200'000;
+        o.solver.rays = 200'000;
         o.output = m_out.path();
         return o;
     }
 
     static TempDir* s_dir;
+    static Scene* s_cornell;
     TempDir m_out;
 };
 
 TempDir* TinyStudy::s_dir = nullptr;
+Scene* TinyStudy::s_cornell = nullptr;
 
 TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
     const StudyOptions o = options();
     Counts first;
-    run_study(o, counting(first));
+    Counting first_notes(first);
+    run_study(s_scene(), o, first_notes);
     EXPECT_EQ(first.computed, 4);
     EXPECT_EQ(first.skipped, 0);
     const std::filesystem::path out = o.output;
@@ -142,7 +162,8 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
     const std::string deleted = cell_name("cornell", "kl", 200, 2);
     std::filesystem::remove(out / "cells" / (deleted + ".json"));
     Counts second;
-    run_study(o, counting(second));
+    Counting second_notes(second);
+    run_study(s_scene(), o, second_notes);
     EXPECT_EQ(second.computed, 1);
     EXPECT_EQ(second.skipped, 3);
     EXPECT_EQ(second.computed_cells, std::vector<std::string>{deleted});
@@ -157,7 +178,8 @@ TEST_F(TinyStudy, RecordsAnUnreachableBudgetAsAFailedCell) {
     o.oracles = {"power"};
     o.seeds = 1;
     Counts counts;
-    run_study(o, counting(counts));
+    Counting counts_notes(counts);
+    run_study(s_scene(), o, counts_notes);
     EXPECT_EQ(counts.computed, 1);
     const nlohmann::json table = nlohmann::json::parse(read_file(o.output / "table.json"));
     ASSERT_EQ(table.at("cells").size(), 1u);

@@ -1,4 +1,5 @@
 // A solution read back from its .vtp is the mesh that was written (to float precision).
+#include "common/error.h"
 #include "viz/vtk_import.h"
 
 #include <gtest/gtest.h>
@@ -38,14 +39,14 @@ TEST(VtkImport, NamesTheFileWhenItIsMissingOrNotASolution) {
     try {
         read_vtp(dir.path() / "none.vtp");
         FAIL();
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("none.vtp: no such file"), std::string::npos);
     }
     const auto junk = dir.write("junk.vtp", "<VTKFile>nonsense");
     try {
         read_vtp(junk);
         FAIL();
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("junk.vtp"), std::string::npos);
     }
 }

@@ -1,0 +1,147 @@
+// `hmcr info SCENE|SOLUTION.vtp`: the information measures of a discretisation (SPEC section 7).
+#include <fmt/core.h>
+
+#include <cmath>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "app/command.h"
+#include "app/count.h"
+#include "app/terminal_progress.h"
+#include "common/stopwatch.h"
+#include "information/leaf_patches.h"
+#include "information/scene_information.h"
+#include "meshes/scene.h"
+#include "viz/vtk_import.h"
+
+namespace hmcr {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct InfoArgs {
+    std::string scene;             // a scene, or a solution's .vtp
+    std::string solution_scene;    // with a .vtp: the scene's name, for the report
+    std::string method = "local";  // local or global lines
+    std::uint64_t lines = 1'000'000;
+    std::uint64_t seed = 1;
+    bool json = false;
+};
+
+// The discretisation `hmcr info` measures: a scene's patches, or a solution's leaves.
+struct InfoTarget {
+    std::string label;
+    PatchSet patches;
+};
+
+InfoTarget info_target(const InfoArgs& a) {
+    if (fs::path(a.scene).extension() != ".vtp") {
+        const Scene scene = load_scene(a.scene, SceneUse::geometry);
+        return {scene.name, build_patch_set(scene.mesh)};
+    }
+    const std::string name =
+        a.solution_scene.empty() ? fs::path(a.scene).stem().string() : a.solution_scene;
+    return {name + " (leaves of " + fs::path(a.scene).filename().string() + ")",
+            leaf_patches(read_vtp(a.scene))};
+}
+
+void print_table(const InfoTarget& t, const InformationMeasures& m, double seconds) {
+    fmt::print("{}: {} patches, {} {} lines, {} rays ({} open), {:.1f} s; bits, +- one standard "
+               "error, bias to subtract (1/n extrapolation)\n",
+               t.label, t.patches.patches.size(), m.lines, line_method_name(m.method), m.samples,
+               m.samples_open, seconds);
+    const std::pair<const char*, InformationMeasures::Value> rows[] = {
+        {"H_P   positional entropy", m.h_p},     {"H_S   visibility entropy", m.h_s},
+        {"I_S   mutual information", m.i_s},     {"H_J   joint entropy", m.h_j},
+        {"I^c_S continuous mutual information", m.i_cs},
+        {"I^c_S - I_S discretisation error", m.discretisation_error}};
+    for (const auto& [name, v] : rows) {
+        fmt::print("  {:<38} {:10.5f} +- {:.5f}   bias {:+.5f}\n", name, v.estimate,
+                   v.standard_error, v.bias);
+    }
+}
+
+void print_json(const InfoTarget& t, const InformationMeasures& m, double open, double seconds) {
+    nlohmann::json j = to_json(m);
+    j["open_fraction"] = open;
+    j["scene"] = t.label;
+    j["patches"] = t.patches.patches.size();
+    j["seconds"] = seconds;
+    fmt::print("{}\n", j.dump(2));
+}
+
+// The measures describe a closed scene's channel, with every row of F sampled.
+void warn_assumptions(const InformationMeasures& m, double open, std::size_t patches) {
+    if (open > 0.01) {
+        fmt::print(stderr,
+                   "hmcr: warning: {:.1f}% of the rays leave the scene or hit a back face; the "
+                   "measures assume a closed scene (rows of F summing to 1)\n",
+                   100 * open);
+    }
+    if (std::abs(m.i_s.bias) > m.i_s.standard_error) {
+        fmt::print(stderr,
+                   "hmcr: warning: I_S has not converged: its plug-in bias (about {:+.4f} bits, "
+                   "likely more) exceeds its standard error; raise --lines\n",
+                   m.i_s.bias);
+    }
+    if (m.patches_unsampled > 0) {
+        fmt::print(stderr,
+                   "hmcr: warning: no line crossed {} of the {} patches; their rows of F are "
+                   "missing (use more lines)\n",
+                   m.patches_unsampled, patches);
+    }
+}
+
+// A bar only on a terminal: the output (a table or JSON) goes to stdout and warnings to stderr,
+// where a log of percentages would bury the warnings.
+InformationMeasures measure(const InfoTarget& target, const LineOptions& o) {
+    const bool terminal = progress_mode_for("auto", false) == ProgressMode::bar;
+    TerminalProgress progress(terminal ? ProgressMode::bar : ProgressMode::none, "hmcr info");
+    progress.stage(fmt::format("{} lines", line_method_name(o.method)));
+    return scene_information(target.patches, o, progress);
+}
+
+int run_info(const InfoArgs& a) {
+    LineOptions o;
+    o.method = parse_line_method(a.method);
+    o.lines = a.lines;
+    o.seed = a.seed;
+    if (a.lines < 16) throw InputError("lines must be at least 16");
+    const InfoTarget target = info_target(a);
+    const auto start = std::chrono::steady_clock::now();
+    const InformationMeasures m = measure(target, o);
+    const double seconds = seconds_since(start);
+    const double open = double(m.samples_open) / double(std::max<std::size_t>(1, m.samples));
+    if (a.json) {
+        print_json(target, m, open, seconds);
+    } else {
+        print_table(target, m, seconds);
+    }
+    warn_assumptions(m, open, target.patches.patches.size());
+    return 0;
+}
+
+}  // namespace
+
+Command info_command(CLI::App& app) {
+    auto a = std::make_shared<InfoArgs>();
+    auto* cmd = app.add_subcommand(
+        "info", "information measures of a scene's patches (entropies, mutual information)");
+    cmd->add_option("scene", a->scene,
+                    "bundled scene name, scene .json, .obj, or a solution's .vtp (its leaves)")
+        ->required();
+    cmd->add_option("--scene", a->solution_scene, "with a .vtp: the scene it solves (its name)");
+    cmd->add_option("--method", a->method,
+                    "local (rays from each patch) or global (lines through the bounding sphere)")
+        ->capture_default_str();
+    cmd->add_option("--lines", a->lines, "local rays in all, or global lines")
+        ->transform(count_notation())
+        ->capture_default_str();
+    cmd->add_option("--seed", a->seed, "random seed")
+        ->transform(count_notation())
+        ->capture_default_str();
+    cmd->add_flag("--json", a->json, "machine-readable output");
+    return {cmd, [a] { return run_info(*a); }};
+}
+
+}  // namespace hmcr

@@ -1,0 +1,64 @@
+// `hmcr reference SCENE -o DIR`: a converged reference (studies/reference.h).
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "app/command.h"
+#include "app/run_summary.h"
+#include "app/solver_flags.h"
+#include "app/terminal_progress.h"
+#include "studies/reference.h"
+
+namespace hmcr {
+namespace {
+
+struct ReferenceArgs {
+    std::string scene;
+    std::string output;
+    ReferenceOptions options;
+    SolverFlags flags;
+    bool quiet = false;
+};
+
+int run_reference(ReferenceArgs& a, const std::string& command_line) {
+    if (!(a.options.max_area > 0)) throw InputError("max-area must be positive");
+    const Scene scene = load_scene(a.scene);
+    apply_scene_settings(a.flags, scene, a.options.solver);
+    TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr reference " + scene.name);
+    const Reference ref = compute_reference(scene, a.options, progress);
+    RunTimings timings;
+    timings.total_seconds = ref.seconds;
+    const std::filesystem::path dir(a.output);
+    write_reference(dir, scene, ref, a.options,
+                    run_summary(scene, ref.solution, timings, command_line,
+                                (dir / "reference.vtp").string()));
+    if (!a.quiet) {
+        fmt::print("{}: reference of {} elements, 2 x {} rays, {:.1f} s; seeds differ by {:.4f} "
+                   "(object-space relative L2) -> {}\n",
+                   scene.name, ref.solution.stats.leaves, a.options.solver.rays, ref.seconds,
+                   ref.object_error.relative_l2, dir.string());
+    }
+    return 0;
+}
+
+}  // namespace
+
+Command reference_command(CLI::App& app, const std::string& command_line) {
+    auto a = std::make_shared<ReferenceArgs>();
+    auto* cmd = app.add_subcommand(
+        "reference", "a converged reference: uniform mesh, many rays, two seeds compared");
+    ReferenceOptions& o = a->options;
+    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj")->required();
+    cmd->add_option("-o,--output", a->output, "output folder")->required();
+    cmd->add_option("--max-area", o.max_area, "largest element area, m^2")->capture_default_str();
+    // The uniform mesh has no oracle and no limits; rays and seeds are the reference's own.
+    a->flags = add_solver_flags(*cmd, o.solver,
+                                {"oracle", "epsilon", "lines", "min_area", "max_depth", "cache_mb"},
+                                {"rays", "seed"});
+    cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel of the view images")
+        ->capture_default_str();
+    cmd->add_flag("-q,--quiet", a->quiet, "print only errors");
+    return {cmd, [a, command_line] { return run_reference(*a, command_line); }};
+}
+
+}  // namespace hmcr

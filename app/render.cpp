@@ -1,0 +1,67 @@
+// `hmcr render SOLUTION.vtp --scene SCENE`: an image of a solution from one of the scene's views.
+#include <memory>
+
+#include "app/command.h"
+#include "studies/reference.h"
+#include "viz/renderer.h"
+#include "viz/vtk_import.h"
+
+namespace hmcr {
+namespace {
+
+struct RenderArgs {
+    std::string solution;   // .vtp
+    std::string scene;      // for the view
+    std::string view;       // empty: the scene's first view
+    std::string output;     // .png
+    std::string pfm;        // optional linear image
+    std::string reference;  // optional reference folder: its exposure for this view
+    double exposure = 0;    // > 0: fixed exposure
+    RenderOptions options;
+};
+
+// The exposure a reference folder fixed for a view.
+double reference_exposure(const std::filesystem::path& dir, const std::string& view) {
+    const auto exposure = read_reference_exposures(dir);
+    if (!exposure.count(view)) {
+        throw InputError((dir / "reference.json").string(), "no view " + quote(view));
+    }
+    return exposure.at(view);
+}
+
+int run_render(const RenderArgs& a) {
+    if (a.options.samples_per_axis < 1 || a.options.samples_per_axis > 16) {
+        throw InputError("samples must be in 1..16");
+    }
+    const Scene scene = load_scene(a.scene);
+    const View& view = find_view(scene, a.view);
+    double exposure = a.exposure;
+    if (!a.reference.empty()) exposure = reference_exposure(a.reference, view.name);
+    const ShadedMesh mesh = read_vtp(a.solution);
+    const Image image = render(mesh, view, a.options);
+    if (exposure <= 0) exposure = exposure_from(image);
+    write_png(a.output, image, exposure);
+    if (!a.pfm.empty()) write_pfm(a.pfm, image);
+    return 0;
+}
+
+}  // namespace
+
+Command render_command(CLI::App& app) {
+    auto a = std::make_shared<RenderArgs>();
+    auto* cmd = app.add_subcommand("render", "render a solution (.vtp) from a view of its scene");
+    cmd->add_option("solution", a->solution, "the solution's .vtp")->required();
+    cmd->add_option("--scene", a->scene, "the scene it solves (for its views)")->required();
+    cmd->add_option("--view", a->view, "view name (default: the scene's first)");
+    cmd->add_option("-o,--output", a->output, "8-bit sRGB .png")->required();
+    cmd->add_option("--pfm", a->pfm, "also write the linear radiance as .pfm");
+    cmd->add_option("--samples", a->options.samples_per_axis, "n x n rays per pixel")
+        ->capture_default_str();
+    auto* exposure =
+        cmd->add_option("--exposure", a->exposure, "fixed exposure (default: from this image)");
+    cmd->add_option("--reference", a->reference, "use the exposure of this reference folder")
+        ->excludes(exposure);
+    return {cmd, [a] { return run_render(*a); }};
+}
+
+}  // namespace hmcr

@@ -1,0 +1,27 @@
+// Errors by audience (README: Bad input). An InputError is something the user can fix: a bad
+// option, scene, file or folder; its what() is one line, "where: what" ("cornell.obj:12: ...").
+// The command line answers it with exit code 2. Any other exception is a fault of hmcr (exit 1).
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace hmcr {
+
+class InputError : public std::runtime_error {
+public:
+    explicit InputError(const std::string& message) : std::runtime_error(message) {}
+    InputError(std::string_view where, std::string_view message)
+        : std::runtime_error(std::string(where) + ": " + std::string(message)) {}
+};
+
+// "path:line", the place of a statement in a text file.
+std::string at(const std::filesystem::path& path, int line);
+
+// A token of user input for a message, in single quotes and cut short: a binary blob or a
+// megabyte-long name must not flood the terminal.
+std::string quote(std::string_view token);
+
+}  // namespace hmcr

@@ -1,0 +1,119 @@
+#include "radiosity/solver_settings.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "common/error.h"
+#include "oracles/registry.h"
+
+namespace hmcr {
+namespace {
+
+using nlohmann::json;
+
+// A value as messages show it.
+template <class T>
+std::string shown(const T& value) {
+    if constexpr (std::is_same_v<T, std::string>) {
+        return quote(value);
+    } else {
+        return fmt::format("{}", value);
+    }
+}
+
+// The JSON value as T, or a one-line reason it is not one.
+template <class T>
+T json_value(const json& j) {
+    if constexpr (std::is_same_v<T, std::string>) {
+        if (!j.is_string()) throw InputError("must be a string");
+        return j.get<std::string>();
+    } else if constexpr (std::is_floating_point_v<T>) {
+        if (!j.is_number() || !std::isfinite(j.get<double>())) {
+            throw InputError("must be a finite number, got " + j.dump());
+        }
+        return j.get<T>();
+    } else {
+        // Whole numbers only: 2.5, 1e30 (a float to JSON) and -5 for a count are refused, not
+        // rounded or wrapped.
+        const bool whole = j.is_number_integer() &&
+                           (j.is_number_unsigned() || j.get<std::int64_t>() >= 0 ||
+                            std::numeric_limits<T>::is_signed);
+        if (!whole) throw InputError("must be a whole number in range, got " + j.dump());
+        if constexpr (std::is_signed_v<T>) {
+            const auto v = j.is_number_unsigned() ? std::numeric_limits<std::int64_t>::max()
+                                                  : j.get<std::int64_t>();
+            if (v < std::numeric_limits<T>::min() || v > std::numeric_limits<T>::max()) {
+                throw InputError("must be a whole number in range, got " + j.dump());
+            }
+        }
+        return j.get<T>();
+    }
+}
+
+template <class T>
+void check(const Setting<T>& s, const T& value) {
+    if (s.valid(value)) return;
+    std::string name(s.name);
+    std::replace(name.begin(), name.end(), '_', '-');
+    throw InputError(fmt::format("{} must be {}, got {}", name, s.range, shown(value)));
+}
+
+}  // namespace
+
+template <class T>
+std::string Setting<T>::flag() const {
+    std::string f = "--" + std::string(name);
+    std::replace(f.begin(), f.end(), '_', '-');
+    return f;
+}
+template struct Setting<std::string>;
+template struct Setting<double>;
+template struct Setting<int>;
+template struct Setting<std::uint64_t>;
+
+bool is_oracle_name(const std::string& name) { return oracle_named(name) != nullptr; }
+
+void validate(const SolverOptions& options) {
+    for_each_setting([](const auto& setting, const auto& value) { check(setting, value); },
+                     options);
+}
+
+void apply_scene_settings(const json& solver, const std::string& where, SolverOptions& options) {
+    if (!solver.is_object()) throw InputError(where + ": solver", "must be a JSON object");
+    std::set<std::string> known;
+    for_each_setting(
+        [&](const auto& setting, auto& field) {
+            using T = std::remove_reference_t<decltype(field)>;
+            if (setting.scope != SettingScope::scene_file) return;
+            known.emplace(setting.name);
+            const std::string key(setting.name);
+            if (!solver.contains(key)) return;
+            const std::string place = fmt::format("{}: solver.{}", where, setting.name);
+            try {
+                field = json_value<T>(solver.at(key));
+                check(setting, field);
+            } catch (const InputError& e) {
+                throw InputError(place, e.what());
+            }
+        },
+        options);
+    for (const auto& [key, value] : solver.items()) {
+        if (known.count(key) == 0) {
+            throw InputError(where + ": solver", fmt::format("unknown setting {} (settings: {})",
+                                                             quote(key), fmt::join(known, ", ")));
+        }
+    }
+}
+
+json settings_json(const SolverOptions& options) {
+    json j = json::object();
+    for_each_setting([&](const auto& setting, const auto& value) { j[std::string(setting.name)] = value; },
+                     options);
+    return j;
+}
+
+}  // namespace hmcr

@@ -1,0 +1,31 @@
+// A solution as ParaView reads it (SPEC section 5): the hierarchy's leaves as a conforming
+// Gouraud mesh, written to a .vtp with the run's metadata. The one way solve, reference and
+// study write their solutions.
+#pragma once
+
+#include <filesystem>
+
+#include "meshes/patch_mesh.h"
+#include "radiosity/solver.h"
+#include "viz/shaded_mesh.h"
+#include "viz/vtk_export.h"
+
+namespace hmcr {
+
+// The metadata of a solve: its oracle ("uniform" for a fixed uniform mesh, which has no
+// epsilon and no lines), epsilon, lines, rays, seed, leaves and iterations. time_value is
+// ParaView's time of the file (a study puts the budget there, to step through budgets).
+VtpMetadata vtp_metadata(const Solution& solution, double time_value);
+
+// The shaded leaves of the solution of `mesh` (patches meeting at crease_degrees or more are
+// not blended).
+ShadedMesh shade(const Solution& solution, const PatchMesh& mesh, double crease_degrees);
+
+// Writes the shaded mesh of the solution atomically.
+void write_solution(const std::filesystem::path& vtp, const ShadedMesh& shaded,
+                    const Solution& solution, double time_value);
+// shade() then write_solution(); returns the mesh for whoever measures it next.
+ShadedMesh write_solution(const std::filesystem::path& vtp, const Solution& solution,
+                          const PatchMesh& mesh, double crease_degrees, double time_value);
+
+}  // namespace hmcr
