@@ -4,10 +4,12 @@
 #include <memory>
 #include <sstream>
 
+#include "app/scene_input.h"
 #include "app/command.h"
 #include "app/count.h"
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
+#include "common/output_paths.h"
 #include "studies/study.h"
 
 namespace hmcr {
@@ -26,7 +28,8 @@ std::vector<std::string> split_commas(const std::string& text) {
     std::vector<std::string> out;
     std::stringstream in(text);
     for (std::string item; std::getline(in, item, ',');) {
-        if (!item.empty()) out.push_back(item);
+        if (item.empty()) throw InputError("empty item in the list " + quote(text));
+        out.push_back(item);
     }
     return out;
 }
@@ -42,8 +45,12 @@ std::size_t parse_budget(const std::string& text) {
 int run_study(StudyArgs& a) {
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
     a.options.oracles = split_commas(a.oracles);
-    const Scene scene = load_scene(a.scene);
+    const Scene scene = load_scene_reporting(a.scene, a.quiet);
     apply_scene_settings(a.flags, scene, a.options.solver);
+    const std::filesystem::path& out = a.options.output;
+    refuse_nested_dirs(out, a.options.reference);
+    refuse_overwriting({out / "table.json", out / "table.csv", out / "table.md"}, scene.inputs);
+    prepare_output_dir(out);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_study(scene, a.options, progress);
     if (!a.quiet) fmt::print("study written to {}\n", a.options.output.string());
@@ -70,6 +77,8 @@ Command study_command(CLI::App& app) {
     cmd->add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
     cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();
     cmd->add_option("-o,--output", o.output, "output folder (rerunning resumes)")->required();
+    cmd->add_flag("--redo", o.redo_other_settings,
+                  "compute again the cells of the output folder made with other settings");
     cmd->add_flag("-q,--quiet", a->quiet, "print only errors");
     return {cmd, [a] { return run_study(*a); }};
 }

@@ -39,17 +39,30 @@ struct LoadOptions {
     SceneUse use = SceneUse::solve;
 };
 
+// A mesh file as loaded: the validated patch mesh, every file read for it (the mesh and its
+// material libraries) and the warnings of the readers, one line each.
+struct MeshFile {
+    PatchMesh mesh;
+    std::vector<std::filesystem::path> files;
+    std::vector<std::string> warnings;
+};
+
 struct Scene {
     std::string name;                   // bundled name, or the file's stem
     std::filesystem::path source;       // the file given by the user (JSON or mesh)
     std::filesystem::path mesh_path;    // the mesh file actually read
+    std::vector<std::filesystem::path> inputs;  // every file read: no output may replace one
+    std::vector<std::string> warnings;  // the loaders' warnings ("file:line: what")
     PatchMesh mesh;                     // validated, with the hmcr:* face properties
     std::vector<View> views;
     nlohmann::json solver_defaults = nlohmann::json::object();  // "solver" object of the file
 };
 
-// Reads an OBJ (+MTL) file through tinyobjloader, validates it (SPEC section 1) and returns
-// the patch mesh. Throws InputError on any problem.
+// Reads a mesh file (by extension: .obj with its MTL files), validates it (SPEC section 1) and
+// returns the patch mesh. Throws InputError on any problem.
+MeshFile load_mesh(const std::filesystem::path& path, const LoadOptions& options = {});
+// An OBJ file whatever its extension, and its mesh alone.
+MeshFile load_obj_file(const std::filesystem::path& obj, const LoadOptions& options = {});
 PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options = {});
 
 // Accepts a bundled scene name ("cornell"), a JSON scene file, or a mesh file (.obj).

@@ -30,6 +30,7 @@
 #include <set>
 
 #include "common/text_file.h"
+#include "meshes/obj_reader.h"
 #include "meshes/scene.h"
 #include "meshes/validation.h"
 
@@ -174,6 +175,12 @@ void check_mesh_extension(const fs::path& mesh, const std::string& where) {
     }
 }
 
+void take_mesh(Scene& scene, MeshFile file) {
+    scene.mesh = std::move(file.mesh);
+    scene.inputs.insert(scene.inputs.end(), file.files.begin(), file.files.end());
+    scene.warnings = std::move(file.warnings);
+}
+
 Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse use) {
     const std::string file = path.string();
     const json j = read_json_file(path);
@@ -185,6 +192,7 @@ Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse us
     Scene scene;
     scene.name = name;
     scene.source = path;
+    scene.inputs.push_back(path);
     scene.mesh_path = path.parent_path() / j["mesh"].get<std::string>();
     check_mesh_extension(scene.mesh_path, file);
     if (j.contains("views")) scene.views = parse_views(j["views"], file);
@@ -198,7 +206,7 @@ Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse us
     if (j.contains("default_material")) {
         options.default_material = parse_default_material(j["default_material"], file);
     }
-    scene.mesh = load_obj(scene.mesh_path, options);
+    take_mesh(scene, load_mesh(scene.mesh_path, options));
     if (scene.views.empty()) scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
@@ -211,7 +219,7 @@ Scene load_mesh_scene(const fs::path& path, SceneUse use) {
     scene.mesh_path = path;
     LoadOptions options;
     options.use = use;
-    scene.mesh = load_obj(path, options);
+    take_mesh(scene, load_mesh(path, options));
     scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
@@ -237,6 +245,27 @@ const View& find_view(const Scene& scene, const std::string& name) {
     }
     throw InputError(fmt::format("scene {} has no view {} (views: {})", scene.name,
                                  quote(name), names));
+}
+
+MeshFile load_mesh(const fs::path& path, const LoadOptions& options) {
+    if (path.extension() != ".obj") {
+        throw InputError(path.string(), "hmcr reads .obj meshes");
+    }
+    return load_obj_file(path, options);
+}
+
+MeshFile load_obj_file(const fs::path& path, const LoadOptions& options) {
+    PolygonSoup soup = read_obj(path);
+    LoadOptions effective = options;
+    // Measuring geometry: faces without a material get a neutral one.
+    if (options.use == SceneUse::geometry && !options.default_material) {
+        effective.default_material = Material{"default", Eigen::Vector3d::Constant(0.5), {0, 0, 0}};
+    }
+    return {build_patch_mesh(soup, effective), soup.files, std::move(soup.warnings)};
+}
+
+PatchMesh load_obj(const fs::path& obj, const LoadOptions& options) {
+    return load_obj_file(obj, options).mesh;
 }
 
 fs::path scene_directory() {

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 
 #include "meshes/scene.h"
@@ -12,16 +14,28 @@
 #include "radiosity/solver_settings.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
+#include "common/hash.h"
 #include "studies/reference.h"
 #include "common/atomic_file.h"
 #include "viz/image.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
 #include "viz/solution_file.h"
-#include "viz/vtk_import.h"
 
 namespace hmcr {
 namespace {
+
+// "rays 100000 here, 200000 in the file": the settings that differ.
+std::string settings_difference(const nlohmann::json& old_settings, const nlohmann::json& now) {
+    if (!old_settings.is_object()) return "the file records none";
+    std::string out;
+    for (const auto& entry : nlohmann::json::diff(old_settings, now)) {
+        const std::string path = entry.value("path", "");
+        out += (out.empty() ? "" : ", ") + path.substr(1) + " " +
+               (entry.contains("value") ? entry["value"].dump() : "(none)") + " now";
+    }
+    return out;
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -48,7 +62,7 @@ struct StudyReference {
 
 StudyReference load_reference(const std::filesystem::path& dir, const Scene& scene) {
     StudyReference ref;
-    ref.mesh = read_vtp(dir / "reference.vtp");
+    ref.mesh = read_solution(dir / "reference.vtp", scene).mesh;
     ref.exposure = read_reference_exposures(dir);
     for (const View& v : scene.views) {
         if (!ref.exposure.count(v.name)) {
@@ -82,6 +96,16 @@ void validate(const StudyOptions& o, const std::vector<std::string>& oracles) {
     if (o.budgets.empty()) throw InputError("study: no budget given");
     if (oracles.empty()) throw InputError("study: no oracle given");
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    for (std::size_t i = 0; i < o.budgets.size(); ++i) {
+        if (std::count(o.budgets.begin(), o.budgets.begin() + i, o.budgets[i])) {
+            throw InputError(fmt::format("study: budget {} is given twice", o.budgets[i]));
+        }
+    }
+    for (std::size_t i = 0; i < oracles.size(); ++i) {
+        if (std::count(oracles.begin(), oracles.begin() + i, oracles[i])) {
+            throw InputError(fmt::format("study: oracle {} is given twice", oracles[i]));
+        }
+    }
     if (o.output.empty()) throw InputError("study: no output folder given");
     validate(o.solver);
 }
@@ -109,11 +133,14 @@ public:
                     m_tasks.push_back({oracle, b, seed, cell_name(m_scene.name, oracle, b, seed)});
                 }
         m_error_options = reflected_error_options(m_scene.mesh);
+        m_settings = study_settings(m_scene, m_options);
     }
 
     void run();
 
 private:
+    std::vector<std::optional<CellResult>> previous_cells();
+    std::optional<CellResult> previous_cell(std::size_t index);
     std::filesystem::path cell_file(const CellTask& t) const {
         return m_options.output / "cells" / (t.name + ".json");
     }
@@ -128,6 +155,7 @@ private:
     std::vector<std::string> m_oracles;
     std::vector<CellTask> m_tasks;
     ObjectErrorOptions m_error_options;
+    nlohmann::json m_settings;
     StudyReference m_reference;
     Clock::time_point m_start = Clock::now();
     std::size_t m_to_compute = 0, m_computed = 0;
@@ -145,23 +173,58 @@ std::string StudyRunner::time_left() const {
     return fmt::format(", about {:.0f} s left", per_cell * double(m_to_compute - m_computed));
 }
 
+// A cell file of this study from an earlier run, if it is usable: an unreadable or foreign
+// one is computed again (a truncated write, an edited file); one made with other settings is
+// refused unless options.redo_other_settings.
+std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
+    const CellTask& t = m_tasks[index];
+    const std::filesystem::path file = cell_file(t);
+    if (!std::filesystem::exists(file)) return std::nullopt;
+    CellResult cell;
+    try {
+        cell = read_json_file(file, [](const nlohmann::json& j) { return cell_from_json(j); });
+    } catch (const InputError& e) {
+        m_progress.note(where(index) + ": unreadable (" + e.what() + "); computing it again");
+        return std::nullopt;
+    }
+    if (cell.scene != m_scene.name || cell.oracle != t.oracle || cell.budget != t.budget ||
+        cell.seed != t.seed) {
+        m_progress.note(where(index) + ": the file holds another cell; computing it again");
+        return std::nullopt;
+    }
+    if (cell.settings == m_settings) return cell;
+    if (m_options.redo_other_settings) {
+        m_progress.note(where(index) + ": made with other settings; computing it again");
+        return std::nullopt;
+    }
+    throw InputError(file.string(),
+                     fmt::format("made with other settings ({}); use another output folder, or "
+                                 "--redo to compute such cells again",
+                                 settings_difference(cell.settings, m_settings)));
+}
+
+// Every earlier cell, read before anything is computed: a refusal loses no work.
+std::vector<std::optional<CellResult>> StudyRunner::previous_cells() {
+    std::vector<std::optional<CellResult>> cells;
+    for (std::size_t i = 0; i < m_tasks.size(); ++i) cells.push_back(previous_cell(i));
+    for (const auto& c : cells) m_to_compute += c ? 0 : 1;
+    return cells;
+}
+
 void StudyRunner::run() {
     m_reference = load_reference(m_options.reference, m_scene);
-    for (const CellTask& t : m_tasks) m_to_compute += std::filesystem::exists(cell_file(t)) ? 0 : 1;
+    const std::vector<std::optional<CellResult>> previous = previous_cells();
     std::vector<CellResult> cells;
     for (std::size_t i = 0; i < m_tasks.size(); ++i) {
-        const std::filesystem::path file = cell_file(m_tasks[i]);
-        if (std::filesystem::exists(file)) {
-            cells.push_back(read_json_file(file, [](const nlohmann::json& j) {
-                return cell_from_json(j);
-            }));
+        if (previous[i]) {
+            cells.push_back(*previous[i]);
             m_progress.note(where(i) + ": done before, skipped");
             continue;
         }
         const auto start = Clock::now();
         CellResult cell = compute(i);
         const nlohmann::json j = cell_to_json(cell);
-        write_text_atomically(file, j.dump(2) + "\n");
+        write_text_atomically(cell_file(m_tasks[i]), j.dump(2) + "\n");
         cells.push_back(cell_from_json(j));  // exactly what a resumed run reads back
         m_compute_seconds += seconds_since(start);
         ++m_computed;
@@ -178,6 +241,7 @@ void StudyRunner::run() {
 CellResult StudyRunner::compute(std::size_t index) {
     const CellTask& t = m_tasks[index];
     CellResult cell;
+    cell.settings = m_settings;
     cell.scene = m_scene.name;
     cell.oracle = t.oracle;
     cell.budget = t.budget;
@@ -208,7 +272,7 @@ CellResult StudyRunner::compute(std::size_t index) {
 // The mesh file, the images and the metrics of a solved cell.
 void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResult& cell) {
     const ShadedMesh mesh = write_solution(m_options.output / "meshes" / (t.name + ".vtp"),
-                                           solution, m_scene.mesh, m_options.crease_degrees,
+                                           solution, m_scene, m_options.crease_degrees,
                                            double(t.budget));
     const ShadedTracer tracer(mesh);
     const RenderOptions render_options{m_options.samples_per_axis};
@@ -222,6 +286,23 @@ void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResul
 }
 
 }  // namespace
+
+nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
+    nlohmann::json solve = settings_json(o.solver);
+    for (const char* per_cell_or_no_effect :
+         {"oracle", "epsilon", "seed", "threads", "cache_mb", "uniform_max_area"}) {
+        solve.erase(per_cell_or_no_effect);
+    }
+    const std::string reference_json = read_text_file(o.reference / "reference.json");
+    return {{"scene", scene.name},
+            {"geometry", geometry_hash(scene.mesh)},
+            {"reference", std::filesystem::absolute(o.reference).lexically_normal().string()},
+            {"reference_json_hash", text_hash(reference_json)},
+            {"solve", solve},
+            {"budget_tolerance", o.budget_tolerance},
+            {"samples_per_axis", o.samples_per_axis},
+            {"crease_degrees", o.crease_degrees}};
+}
 
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,
                       std::uint64_t seed) {

@@ -214,6 +214,7 @@ nlohmann::json cell_to_json(const CellResult& c) {
             {"oracle", c.oracle},
             {"budget", c.budget},
             {"seed", c.seed},
+            {"settings", c.settings},
             {"status", c.status},
             {"message", c.message},
             {"epsilon", c.epsilon},
@@ -234,6 +235,7 @@ CellResult cell_from_json(const nlohmann::json& j) {
     c.oracle = j.at("oracle").get<std::string>();
     c.budget = j.at("budget").get<std::size_t>();
     c.seed = j.at("seed").get<std::uint64_t>();
+    c.settings = j.value("settings", nlohmann::json());
     c.status = j.at("status").get<std::string>();
     c.message = j.value("message", "");
     c.epsilon = number(j, "epsilon", kNaN);

@@ -131,6 +131,9 @@ void set_metadata(vtkPolyData* pd, const VtpMetadata& meta) {
     add_value<vtkTypeUInt64Array>(fd, "Iterations", meta.iterations);
     add_string(fd, "HmcrVersion", HMCR_VERSION);
     add_value<vtkDoubleArray>(fd, "TimeValue", meta.time_value);
+    add_string(fd, "Scene", meta.scene);
+    add_value<vtkTypeUInt64Array>(fd, "PatchCount", meta.patch_count);
+    add_string(fd, "GeometryHash", meta.geometry_hash);
 }
 
 void write_polydata(vtkPolyData* pd, const std::filesystem::path& file,
