@@ -1,6 +1,10 @@
 #include "common/output_paths.h"
 
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <algorithm>
 
@@ -22,7 +26,12 @@ void require_writable_dir(const fs::path& dir, const fs::path& target) {
     if (!fs::is_directory(d, ec)) {
         cannot_write(target, (ec ? ec.message() : "not a folder") + ": " + d.string());
     }
-    if (::access(d.c_str(), W_OK | X_OK) != 0) cannot_write(target, "the folder is not writable");
+    // A file made and removed: the one test that also holds for root, /proc and full quotas.
+    const fs::path probe = d / (".hmcr-probe-" + std::to_string(::getpid()));
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+    if (fd < 0) cannot_write(target, std::strerror(errno));
+    ::close(fd);
+    fs::remove(probe, ec);
 }
 
 // One spelling for one file: absolute, links resolved as far as the path exists.

@@ -15,6 +15,7 @@
 #include "common/stopwatch.h"
 #include "common/text_file.h"
 #include "common/hash.h"
+#include "common/interrupt.h"
 #include "studies/reference.h"
 #include "common/atomic_file.h"
 #include "viz/image.h"
@@ -221,6 +222,7 @@ void StudyRunner::run() {
             m_progress.note(where(i) + ": done before, skipped");
             continue;
         }
+        throw_if_interrupted();
         const auto start = Clock::now();
         CellResult cell = compute(i);
         const nlohmann::json j = cell_to_json(cell);

@@ -1,5 +1,6 @@
 #include "viz/image.h"
 
+#include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
@@ -16,6 +17,7 @@
 #include <string>
 
 #include "common/atomic_file.h"
+#include "common/text_file.h"
 #include "viz/tone_map.h"
 
 namespace hmcr {
@@ -29,8 +31,8 @@ void check_shape(int width, int height, std::size_t pixel_count) {
     }
 }
 
-std::runtime_error file_error(const std::filesystem::path& path, const std::string& what) {
-    return std::runtime_error(path.string() + ": " + what);
+InputError file_error(const std::filesystem::path& path, const std::string& what) {
+    return InputError(path.string(), what);
 }
 
 // VTK images have their origin at the bottom left: memory row r is VTK row height - 1 - r.
@@ -38,10 +40,9 @@ std::size_t vtk_index(int width, int height, int x, int row) {
     return std::size_t(height - 1 - row) * width + x;
 }
 
+// A PFM of 16384 x 16384 pixels is 3 GB; larger files are refused unread.
 std::string read_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw file_error(path, "cannot open");
-    return std::string(std::istreambuf_iterator<char>(in), {});
+    return read_text_file(path, std::uint64_t(3) << 30);
 }
 
 void append_float_le(std::string& out, float f) {
@@ -86,7 +87,10 @@ void write_png(const std::filesystem::path& path, const Image8& image) {
         writer->SetFileName(tmp.string().c_str());
         writer->SetInputData(data);
         writer->Write();
-        if (writer->GetErrorCode() != 0) throw file_error(path, "cannot write the PNG");
+        if (writer->GetErrorCode() != 0) {
+            throw InputError("cannot write " + path.string(),
+                             vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()));
+        }
     });
 }
 

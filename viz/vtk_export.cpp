@@ -4,6 +4,7 @@
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkExecutive.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "common/atomic_file.h"
+#include "common/error.h"
 #include "viz/tone_map.h"
 
 #ifndef HMCR_VERSION
@@ -151,9 +153,11 @@ void write_polydata(vtkPolyData* pd, const std::filesystem::path& file,
     const int ok = writer->Write();
     if (ok != 1 || writer->GetErrorCode() != 0 || !errors->message().empty() ||
         !pipeline->message().empty()) {
-        throw std::runtime_error(
-            "cannot write " + target.string() + ": " +
-            (errors->message().empty() ? "VTK writer failed" : errors->message()));
+        // VTK's own text names its source file and line; say it in hmcr's words.
+        const unsigned long code = writer->GetErrorCode();
+        throw InputError("cannot write " + target.string(),
+                         code != 0 ? std::string(vtkErrorCode::GetStringFromErrorCode(code))
+                                   : "the VTK writer failed");
     }
 }
 
@@ -164,12 +168,8 @@ void write_vtp(const std::filesystem::path& path, const ShadedMesh& mesh, const 
     set_geometry(pd, mesh);
     set_attributes(pd, mesh);
     set_metadata(pd, meta);
-    try {
-        write_file_atomically(
-            path, [&](const std::filesystem::path& tmp) { write_polydata(pd, tmp, path); });
-    } catch (const std::filesystem::filesystem_error& e) {
-        throw std::runtime_error("cannot write " + path.string() + ": " + e.what());
-    }
+    write_file_atomically(path,
+                          [&](const std::filesystem::path& tmp) { write_polydata(pd, tmp, path); });
 }
 
 }  // namespace hmcr
