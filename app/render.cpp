@@ -1,4 +1,6 @@
 // `hmcr render SOLUTION.vtp --scene SCENE`: an image of a solution from one of the scene's views.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <memory>
 
@@ -55,7 +57,7 @@ int run_render(const RenderArgs& a) {
         throw InputError("samples must be in 1..16");
     }
     if (a.exposure_given && !(a.exposure > 0 && std::isfinite(a.exposure))) {
-        throw InputError("exposure must be a positive number, got " + std::to_string(a.exposure));
+        throw InputError(fmt::format("exposure must be a positive number, got {}", a.exposure));
     }
     const Scene scene = load_scene_reporting(a.scene, false);
     check_outputs(a, scene);

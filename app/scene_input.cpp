@@ -5,11 +5,10 @@
 namespace hmcr {
 
 Scene load_scene_reporting(const std::string& name_or_path, bool quiet, SceneUse use) {
-    Scene scene = load_scene(name_or_path, use);
-    if (!quiet) {
-        for (const std::string& w : scene.warnings) fmt::print(stderr, "hmcr: warning: {}\n", w);
-    }
-    return scene;
+    const auto warn = [quiet](const std::string& w) {
+        if (!quiet) fmt::print(stderr, "hmcr: warning: {}\n", w);
+    };
+    return load_scene(name_or_path, use, warn);
 }
 
 }  // namespace hmcr

@@ -45,6 +45,7 @@ std::size_t parse_budget(const std::string& text) {
 int run_study(StudyArgs& a) {
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
     a.options.oracles = split_commas(a.oracles);
+    validate_study(a.options);
     const Scene scene = load_scene_reporting(a.scene, a.quiet);
     apply_scene_settings(a.flags, scene, a.options.solver);
     const std::filesystem::path& out = a.options.output;

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -34,9 +35,14 @@ struct View {
 // faces without a material get a neutral grey (the other checks all apply).
 enum class SceneUse { solve, geometry };
 
+// Told each warning of the readers ("file:line: what") as soon as it is found, so that it is
+// seen even when the load then fails (a typo that turned a light off, then "no emitter").
+using WarningFn = std::function<void(const std::string&)>;
+
 struct LoadOptions {
     std::optional<Material> default_material;  // used by faces without a material
     SceneUse use = SceneUse::solve;
+    WarningFn warn;                             // optional
 };
 
 // A mesh file as loaded: the validated patch mesh, every file read for it (the mesh and its
@@ -66,7 +72,8 @@ MeshFile load_obj_file(const std::filesystem::path& obj, const LoadOptions& opti
 PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options = {});
 
 // Accepts a bundled scene name ("cornell"), a JSON scene file, or a mesh file (.obj).
-Scene load_scene(const std::string& name_or_path, SceneUse use = SceneUse::solve);
+Scene load_scene(const std::string& name_or_path, SceneUse use = SceneUse::solve,
+                 const WarningFn& warn = {});
 
 // The view called name (the first view for ""); throws InputError listing the views.
 const View& find_view(const Scene& scene, const std::string& name);

@@ -181,7 +181,8 @@ void take_mesh(Scene& scene, MeshFile file) {
     scene.warnings = std::move(file.warnings);
 }
 
-Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse use) {
+Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse use,
+                      const WarningFn& warn) {
     const std::string file = path.string();
     const json j = read_json_file(path);
     check_keys(j, {"mesh", "description", "views", "solver", "default_material"}, file);
@@ -203,6 +204,7 @@ Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse us
     }
     LoadOptions options;
     options.use = use;
+    options.warn = warn;
     if (j.contains("default_material")) {
         options.default_material = parse_default_material(j["default_material"], file);
     }
@@ -211,7 +213,7 @@ Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse us
     return scene;
 }
 
-Scene load_mesh_scene(const fs::path& path, SceneUse use) {
+Scene load_mesh_scene(const fs::path& path, SceneUse use, const WarningFn& warn) {
     check_mesh_extension(path, path.string());
     Scene scene;
     scene.name = path.stem().string();
@@ -219,15 +221,16 @@ Scene load_mesh_scene(const fs::path& path, SceneUse use) {
     scene.mesh_path = path;
     LoadOptions options;
     options.use = use;
+    options.warn = warn;
     take_mesh(scene, load_mesh(path, options));
     scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
 
-Scene load_file(const fs::path& path, SceneUse use) {
+Scene load_file(const fs::path& path, SceneUse use, const WarningFn& warn) {
     const std::string extension = path.extension().string();
-    if (extension == ".json") return load_json_scene(path, path.stem().string(), use);
-    if (extension == ".obj") return load_mesh_scene(path, use);
+    if (extension == ".json") return load_json_scene(path, path.stem().string(), use, warn);
+    if (extension == ".obj") return load_mesh_scene(path, use, warn);
     fail(path.string(), fmt::format("unknown extension '{}': give a .json scene, an .obj mesh "
                                     "or a bundled scene name ({})",
                                     extension, bundled_list()));
@@ -256,6 +259,9 @@ MeshFile load_mesh(const fs::path& path, const LoadOptions& options) {
 
 MeshFile load_obj_file(const fs::path& path, const LoadOptions& options) {
     PolygonSoup soup = read_obj(path);
+    if (options.warn) {
+        for (const std::string& w : soup.warnings) options.warn(w);
+    }
     LoadOptions effective = options;
     // Measuring geometry: faces without a material get a neutral one.
     if (options.use == SceneUse::geometry && !options.default_material) {
@@ -287,13 +293,13 @@ std::vector<std::string> bundled_scene_names() {
     return names;
 }
 
-Scene load_scene(const std::string& name_or_path, SceneUse use) {
+Scene load_scene(const std::string& name_or_path, SceneUse use, const WarningFn& warn) {
     const fs::path path(name_or_path);
     std::error_code ec;
-    if (fs::is_regular_file(path, ec)) return load_file(path, use);
+    if (fs::is_regular_file(path, ec)) return load_file(path, use, warn);
     if (is_bundled(name_or_path)) {
         return load_json_scene(scene_directory() / name_or_path / (name_or_path + ".json"),
-                               name_or_path, use);
+                               name_or_path, use, warn);
     }
     fail(name_or_path,
          fmt::format("no such file or bundled scene (bundled scenes: {})", bundled_list()));

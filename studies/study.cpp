@@ -32,7 +32,7 @@ std::string settings_difference(const nlohmann::json& old_settings, const nlohma
     std::string out;
     for (const auto& entry : nlohmann::json::diff(old_settings, now)) {
         const std::string path = entry.value("path", "");
-        out += (out.empty() ? "" : ", ") + path.substr(1) + " " +
+        out += (out.empty() ? "" : ", ") + path.substr(1) + " is " +
                (entry.contains("value") ? entry["value"].dump() : "(none)") + " now";
     }
     return out;
@@ -288,6 +288,8 @@ void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResul
 }
 
 }  // namespace
+
+void validate_study(const StudyOptions& options) { validate(options, expand_oracles(options.oracles)); }
 
 nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
     nlohmann::json solve = settings_json(o.solver);

@@ -67,6 +67,10 @@ struct CellResult {
     bool ok() const { return status == "ok"; }
 };
 
+// Throws InputError on options no study can run with (no budget, an unknown or repeated oracle or
+// budget, seeds < 1, a bad solver setting): checked before anything is read or written.
+void validate_study(const StudyOptions& options);
+
 // Runs (or resumes) the study; each cell is a note of `progress` (skipped, its probes, done or
 // failed, the time left). Throws InputError on bad options (unknown oracle, no budget, seeds < 1)
 // or an unusable reference.

@@ -19,6 +19,7 @@
 #include "common/atomic_file.h"
 #include "common/text_file.h"
 #include "viz/tone_map.h"
+#include "viz/vtk_console.h"
 
 namespace hmcr {
 namespace {
@@ -71,6 +72,7 @@ Image8 quantise(const Image& image, double exposure) {
 }
 
 void write_png(const std::filesystem::path& path, const Image8& image) {
+    silence_vtk_console();
     check_shape(image.width, image.height, image.pixels.size());
     vtkNew<vtkImageData> data;
     data->SetDimensions(image.width, image.height, 1);
@@ -99,6 +101,7 @@ void write_png(const std::filesystem::path& path, const Image& image, double exp
 }
 
 Image8 read_png(const std::filesystem::path& path) {
+    silence_vtk_console();
     if (!std::filesystem::is_regular_file(path)) throw file_error(path, "no such file");
     vtkNew<vtkPNGReader> reader;
     if (!reader->CanReadFile(path.string().c_str())) throw file_error(path, "not a PNG file");

@@ -26,6 +26,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "viz/tone_map.h"
+#include "viz/vtk_console.h"
 
 #ifndef HMCR_VERSION
 #error "HMCR_VERSION must be defined by the build"
@@ -164,6 +165,7 @@ void write_polydata(vtkPolyData* pd, const std::filesystem::path& file,
 }  // namespace
 
 void write_vtp(const std::filesystem::path& path, const ShadedMesh& mesh, const VtpMetadata& meta) {
+    silence_vtk_console();
     vtkNew<vtkPolyData> pd;
     set_geometry(pd, mesh);
     set_attributes(pd, mesh);

@@ -21,6 +21,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "viz/vtk_console.h"
 
 namespace hmcr {
 namespace {
@@ -66,6 +67,7 @@ private:
 
 // Reads the XML with VTK's own messages kept off the console: our one line says it.
 vtkSmartPointer<vtkPolyData> read_polydata(const fs::path& path, const VtpChecker& check) {
+    silence_vtk_console();
     auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     bool failed = false;
     auto on_error = vtkSmartPointer<vtkCallbackCommand>::New();
@@ -96,9 +98,6 @@ void read_points(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
 }
 
 void read_cells(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
-    if (data->GetNumberOfVerts() || data->GetNumberOfLines() || data->GetNumberOfStrips()) {
-        check.fail("has cells that are not polygons (vertices, lines or strips)");
-    }
     const vtkIdType points = data->GetNumberOfPoints();
     auto ids = vtkSmartPointer<vtkIdList>::New();
     vtkCellArray* polys = data->GetPolys();
@@ -188,8 +187,11 @@ ShadedMesh read_vtp(const fs::path& path, VtpMetadata* metadata) {
     if (!fs::exists(path, ec)) check.fail("no such file");
     if (!fs::is_regular_file(path, ec)) check.fail("is not a regular file");
     const vtkSmartPointer<vtkPolyData> data = read_polydata(path, check);
+    if (data->GetNumberOfVerts() || data->GetNumberOfLines() || data->GetNumberOfStrips()) {
+        check.fail("has cells that are not polygons (vertices, lines or strips)");
+    }
     if (data->GetNumberOfPoints() < 3 || data->GetNumberOfPolys() < 1) {
-        check.fail("has no polygons: not an hmcr solution");
+        check.fail("holds no polygons: not an hmcr solution");
     }
     const VtpMetadata meta = read_metadata(data, check);
     ShadedMesh m;
