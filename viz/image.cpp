@@ -1,5 +1,6 @@
 #include "viz/image.h"
 
+#include <fmt/format.h>
 #include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -9,6 +10,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -162,7 +164,14 @@ Image read_pfm(const std::filesystem::path& path) {
     std::size_t at = start;
     for (int row = out.height - 1; row >= 0; --row) {
         for (int x = 0; x < out.width; ++x, at += 12) {
-            for (int k = 0; k < 3; ++k) out.at(x, row)[k] = float_at(bytes, at + 4 * k, scale < 0);
+            for (int k = 0; k < 3; ++k) {
+                const float v = float_at(bytes, at + 4 * k, scale < 0);
+                // Radiance is finite and not negative; anything else is a broken file.
+                if (!(v >= 0 && std::isfinite(v))) {
+                    throw file_error(path, fmt::format("pixel ({}, {}) has radiance {}", x, row, v));
+                }
+                out.at(x, row)[k] = v;
+            }
         }
     }
     return out;
