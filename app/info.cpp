@@ -27,6 +27,7 @@ struct InfoArgs {
     std::uint64_t lines = 1'000'000;
     std::uint64_t seed = 1;
     bool json = false;
+    SceneFlags scene_flags;
 };
 
 // The discretisation `hmcr info` measures: a scene's patches, or a solution's leaves.
@@ -37,14 +38,15 @@ struct InfoTarget {
 
 InfoTarget info_target(const InfoArgs& a) {
     if (fs::path(a.scene).extension() != ".vtp") {
-        const Scene scene = load_scene_reporting(a.scene, false, SceneUse::geometry);
+        const Scene scene = load_scene_reporting(a.scene, false, SceneUse::geometry, a.scene_flags);
         return {scene.name, build_patch_set(scene.mesh)};
     }
     // With --scene the solution must be of that scene; without, it names its own.
     const SolutionFile solution =
         a.solution_scene.empty()
             ? read_solution(a.scene)
-            : read_solution(a.scene, load_scene_reporting(a.solution_scene, false, SceneUse::geometry));
+            : read_solution(a.scene, load_scene_reporting(a.solution_scene, false,
+                                                          SceneUse::geometry, a.scene_flags));
     return {solution.meta.scene + " (leaves of " + fs::path(a.scene).filename().string() + ")",
             leaf_patches(solution.mesh)};
 }
@@ -132,10 +134,12 @@ Command info_command(CLI::App& app) {
     auto* cmd = app.add_subcommand(
         "info", "information measures of a scene's patches (entropies, mutual information)");
     cmd->add_option("scene", a->scene,
-                    "bundled scene name, scene .json, .obj, or a solution's .vtp (its leaves)")
+                    "bundled scene name, scene .json, .obj, .mgf, or a solution's .vtp (its "
+                    "leaves)")
         ->required();
     cmd->add_option("--scene", a->solution_scene,
                     "with a .vtp: the scene it solves (checked against the solution)");
+    add_scene_flags(*cmd, a->scene_flags);
     cmd->add_option("--method", a->method,
                     "local (rays from each patch) or global (lines through the bounding sphere)")
         ->capture_default_str();

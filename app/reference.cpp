@@ -20,11 +20,12 @@ struct ReferenceArgs {
     ReferenceOptions options;
     SolverFlags flags;
     bool quiet = false;
+    SceneFlags scene_flags;
 };
 
 int run_reference(ReferenceArgs& a, const std::string& command_line) {
     if (!(a.options.max_area > 0)) throw InputError("max-area must be positive");
-    const Scene scene = load_scene_reporting(a.scene, a.quiet);
+    const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     apply_scene_settings(a.flags, scene, a.options.solver);
     const std::filesystem::path dir(a.output);
     refuse_overwriting(reference_files(dir, scene), scene.inputs);
@@ -52,8 +53,9 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
     auto* cmd = app.add_subcommand(
         "reference", "a converged reference: uniform mesh, many rays, two seeds compared");
     ReferenceOptions& o = a->options;
-    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj")->required();
+    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, .obj or .mgf")->required();
     cmd->add_option("-o,--output", a->output, "output folder")->required();
+    add_scene_flags(*cmd, a->scene_flags);
     cmd->add_option("--max-area", o.max_area, "largest element area, m^2")->capture_default_str();
     // The uniform mesh has no oracle and no limits; rays and seeds are the reference's own.
     a->flags = add_solver_flags(*cmd, o.solver,

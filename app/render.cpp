@@ -24,6 +24,7 @@ struct RenderArgs {
     double exposure = 0;    // fixed exposure, when given
     bool exposure_given = false;
     RenderOptions options;
+    SceneFlags scene_flags;
 };
 
 // The exposure a reference folder fixed for a view.
@@ -59,7 +60,7 @@ int run_render(const RenderArgs& a) {
     if (a.exposure_given && !(a.exposure > 0 && std::isfinite(a.exposure))) {
         throw InputError(fmt::format("exposure must be a positive number, got {}", a.exposure));
     }
-    const Scene scene = load_scene_reporting(a.scene, false);
+    const Scene scene = load_scene_reporting(a.scene, false, SceneUse::solve, a.scene_flags);
     check_outputs(a, scene);
     const View& view = find_view(scene, a.view);
     double exposure = a.exposure;
@@ -80,6 +81,7 @@ Command render_command(CLI::App& app) {
     cmd->add_option("solution", a->solution, "the solution's .vtp")->required();
     cmd->add_option("--scene", a->scene, "the scene it solves (for its views)")->required();
     cmd->add_option("--view", a->view, "view name (default: the scene's first)");
+    add_scene_flags(*cmd, a->scene_flags);
     cmd->add_option("-o,--output", a->output, "8-bit sRGB .png")->required();
     cmd->add_option("--pfm", a->pfm, "also write the linear radiance as .pfm");
     cmd->add_option("--samples", a->options.samples_per_axis, "n x n rays per pixel")

@@ -69,6 +69,8 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
           {"source", scene.source.string()},
           {"mesh", scene.mesh_path.string()},
           {"patches", h.patch_count()},
+          {"strict", scene.strict},
+          {"repairs", scene.repairs.to_json()},
           {"total_area_m2", h.patch_set().total_area},
           {"max_emitted_power_w", h.patch_set().max_emitted_power}}},
         {"options", options_json(solution.options, st)},

@@ -4,11 +4,33 @@
 
 namespace hmcr {
 
-Scene load_scene_reporting(const std::string& name_or_path, bool quiet, SceneUse use) {
-    const auto warn = [quiet](const std::string& w) {
+void add_scene_flags(CLI::App& command, SceneFlags& flags) {
+    command.add_flag("--strict", flags.strict,
+                     "refuse polygons and materials that hmcr would otherwise repair "
+                     "(README: Repairs)");
+    command
+        .add_option("--mgf-segments", flags.mgf_segments,
+                    fmt::format("segments per circle of MGF's curved surfaces (default: the scene "
+                                "file's, else {})",
+                                kDefaultCurveSegments))
+        ->check(CLI::Range(kMinCurveSegments, kMaxCurveSegments));
+}
+
+Scene load_scene_reporting(const std::string& name_or_path, bool quiet, SceneUse use,
+                           const SceneFlags& flags) {
+    LoadOptions options;
+    options.use = use;
+    options.strict = flags.strict;
+    if (flags.mgf_segments > 0) options.curve_segments = flags.mgf_segments;
+    options.warn = [quiet](const std::string& w) {
         if (!quiet) fmt::print(stderr, "hmcr: warning: {}\n", w);
     };
-    return load_scene(name_or_path, use, warn);
+    Scene scene = load_scene(name_or_path, options);
+    if (!quiet && !scene.repairs.empty()) {
+        fmt::print(stderr, "hmcr: repaired {}: {} (--strict refuses them)\n",
+                   scene.mesh_path.string(), scene.repairs.summary());
+    }
+    return scene;
 }
 
 }  // namespace hmcr

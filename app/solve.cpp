@@ -29,6 +29,7 @@ struct SolveArgs {
     double crease_degrees = 30;
     std::string progress = "auto";
     bool quiet = false;
+    SceneFlags scene_flags;
 };
 
 // One solve at epsilon, or the probes of a budget search (each a full solve).
@@ -80,7 +81,8 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
                                      args.crease_degrees));
     }
     const ProgressMode mode = progress_mode_for(args.progress, args.quiet);
-    const Scene scene = load_scene_reporting(args.scene, args.quiet);
+    const Scene scene =
+        load_scene_reporting(args.scene, args.quiet, SceneUse::solve, args.scene_flags);
     apply_scene_settings(args.flags, scene, args.options);
     const fs::path vtp = output_path(args, scene);
     fs::path json = vtp;
@@ -110,10 +112,12 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
 Command solve_command(CLI::App& app, const std::string& command_line) {
     auto args = std::make_shared<SolveArgs>();
     auto* cmd = app.add_subcommand("solve", "solve a scene and write its Gouraud mesh (.vtp + .json)");
-    cmd->add_option("scene", args->scene, "bundled scene name, scene .json, or .obj file")->required();
+    cmd->add_option("scene", args->scene, "bundled scene name, scene .json, or .obj or .mgf file")
+        ->required();
     cmd->add_option("-o,--output", args->output,
                     "output .vtp (default out/SCENE.vtp); the summary goes beside it as .json");
     args->flags = add_solver_flags(*cmd, args->options);
+    add_scene_flags(*cmd, args->scene_flags);
     cmd->add_option("--budget", args->budget.leaves,
                     "target leaf count: epsilon is found by bisection (each probe a full solve)")
         ->transform(count_notation());

@@ -22,6 +22,7 @@ struct StudyArgs {
     std::string budgets;  // "2000,5000,19000"
     std::string oracles = "all";
     bool quiet = false;
+    SceneFlags scene_flags;
 };
 
 std::vector<std::string> split_commas(const std::string& text) {
@@ -46,7 +47,7 @@ int run_study(StudyArgs& a) {
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
     a.options.oracles = split_commas(a.oracles);
     validate_study(a.options);
-    const Scene scene = load_scene_reporting(a.scene, a.quiet);
+    const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     apply_scene_settings(a.flags, scene, a.options.solver);
     const std::filesystem::path& out = a.options.output;
     refuse_nested_dirs(out, a.options.reference);
@@ -65,7 +66,7 @@ Command study_command(CLI::App& app) {
     auto* cmd = app.add_subcommand(
         "study", "every oracle x budget x seed against a reference: tables, images, plots");
     StudyOptions& o = a->options;
-    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj")->required();
+    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, .obj or .mgf")->required();
     cmd->add_option("--reference", o.reference, "folder written by `hmcr reference`")->required();
     cmd->add_option("--budgets", a->budgets, "leaf counts, comma-separated")->required();
     cmd->add_option("--oracles", a->oracles, "comma-separated names, or all")->capture_default_str();
@@ -75,6 +76,7 @@ Command study_command(CLI::App& app) {
         ->capture_default_str();
     // Every cell sets its oracle, epsilon (by the budget search) and seed.
     a->flags = add_solver_flags(*cmd, o.solver, {"oracle", "epsilon", "seed"});
+    add_scene_flags(*cmd, a->scene_flags);
     cmd->add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
     cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();
     cmd->add_option("-o,--output", o.output, "output folder (rerunning resumes)")->required();

@@ -107,12 +107,7 @@ void check_face(const std::vector<std::string_view>& tokens, const VertexCounts&
                 const VertexCounts& total, const std::string& path, int line) {
     const int n = static_cast<int>(tokens.size()) - 1;
     for (int i = 1; i <= n; ++i) check_reference(tokens[i], so_far, total, path, line);
-    if (n < 3 || n > 4) {
-        fail(path, line,
-             fmt::format("polygon with {} vertices: hmcr reads triangles and convex "
-                         "quads; triangulate it",
-                         n));
-    }
+    if (n < 3) fail(path, line, fmt::format("polygon with {} vertices: a face needs 3", n));
 }
 
 // The OBJ scan's state: counts so far and in all, the material in effect, the result.

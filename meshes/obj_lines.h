@@ -53,7 +53,7 @@ std::vector<std::string_view> split_tokens(std::string_view line);
 
 // Scans OBJ text; throws InputError "path:line: message" on the first bad statement: unknown
 // keyword, unparsable or non-finite number, a v, vt or vn index out of range, polygon with
-// fewer than 3 or more than 4 vertices.
+// fewer than 3 vertices (more than 4 are triangulated by the repairs, or refused by --strict).
 ObjLines scan_obj(std::string_view text, const std::string& path);
 
 // Scans MTL text, adds its materials to `lines` and returns the text for tinyobjloader. Throws

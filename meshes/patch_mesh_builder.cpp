@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 
 #include <OpenMesh/Core/System/omstream.hh>
+#include <algorithm>
 #include <array>
 #include <map>
 #include <numbers>
 
 #include "meshes/polygon_soup.h"
 #include "meshes/validation.h"
+#include "meshes/weld.h"
 
 namespace hmcr {
 namespace {
@@ -19,19 +21,6 @@ struct WeldedFace {
     std::vector<Eigen::Vector3d> corners;
 };
 
-// Welds exactly equal positions: faces that share a corner position share a vertex id, which
-// becomes one OpenMesh vertex, so neighbouring patches are adjacent in the mesh.
-std::vector<int> weld(const std::vector<Eigen::Vector3d>& positions, std::size_t& welded_count) {
-    std::map<std::array<double, 3>, int> index;
-    std::vector<int> id(positions.size());
-    for (std::size_t k = 0; k < positions.size(); ++k) {
-        const Eigen::Vector3d& p = positions[k];
-        id[k] = index.try_emplace({p.x(), p.y(), p.z()}, int(index.size())).first->second;
-    }
-    welded_count = index.size();
-    return id;
-}
-
 WeldedFace welded_face(const PolygonSoup& soup, std::size_t k, const std::vector<int>& id) {
     WeldedFace face;
     for (std::uint32_t c : soup.corners(k)) {
@@ -41,8 +30,11 @@ WeldedFace welded_face(const PolygonSoup& soup, std::size_t k, const std::vector
     return face;
 }
 
-void check_material(const PolygonSoup& soup, const SoupMaterial& m) {
-    if (auto error = check_reflectance(m.material)) throw InputError(soup.where(m.kd), *error);
+// Reflectance 1 is refused only by a strict load (the repairs accepted it with a warning).
+void check_material(const PolygonSoup& soup, const SoupMaterial& m, const LoadOptions& options) {
+    if (auto error = check_reflectance(m.material, !options.strict)) {
+        throw InputError(soup.where(m.kd), *error);
+    }
     if (auto error = check_emission(m.material)) throw InputError(soup.where(m.ke), *error);
 }
 
@@ -51,7 +43,7 @@ Material face_material(const PolygonSoup& soup, std::size_t k, const LoadOptions
     const std::int32_t id = soup.material[k];
     if (id != PolygonSoup::kNoMaterial && soup.materials[std::size_t(id)].defined) {
         const SoupMaterial& m = soup.materials[std::size_t(id)];
-        check_material(soup, m);
+        check_material(soup, m, options);
         return m.material;
     }
     if (options.default_material) return *options.default_material;
@@ -64,12 +56,24 @@ Material face_material(const PolygonSoup& soup, std::size_t k, const LoadOptions
 
 void check_default_material(const LoadOptions& options, const std::string& path) {
     if (!options.default_material) return;
-    if (auto error = check_reflectance(*options.default_material)) {
+    if (auto error = check_reflectance(*options.default_material, !options.strict)) {
         throw InputError(path, "default " + *error);
     }
     if (auto error = check_emission(*options.default_material)) {
         throw InputError(path, "default " + *error);
     }
+}
+
+// Why a duplicate has no safe repair (the repairs drop one in the same order and material).
+std::string duplicate_detail(const PolygonSoup& soup, const std::vector<WeldedFace>& faces,
+                             std::size_t later, std::size_t earlier) {
+    const auto cyclic = [](std::vector<int> ids) {
+        std::rotate(ids.begin(), std::min_element(ids.begin(), ids.end()), ids.end());
+        return ids;
+    };
+    if (soup.material[later] != soup.material[earlier]) return ", with another material";
+    if (cyclic(faces[later].ids) != cyclic(faces[earlier].ids)) return ", facing the other way";
+    return "";
 }
 
 void check_duplicates(const PolygonSoup& soup, const std::vector<WeldedFace>& faces) {
@@ -78,10 +82,11 @@ void check_duplicates(const PolygonSoup& soup, const std::vector<WeldedFace>& fa
     if (auto duplicate = find_duplicate_face(ids)) {
         const auto [later, earlier] = *duplicate;
         const SourcePlace a = soup.place[later], b = soup.place[earlier];
-        throw InputError(soup.where(a),
-                         a.file == b.file
-                             ? fmt::format("duplicate face: same vertices as the face on line {}", b.line)
-                             : fmt::format("duplicate face: same vertices as the face at {}", soup.where(b)));
+        const std::string earlier_at =
+            a.file == b.file ? fmt::format("on line {}", b.line) : "at " + soup.where(b);
+        throw InputError(soup.where(a), fmt::format("duplicate face: same vertices as the face {}{}",
+                                                    earlier_at,
+                                                    duplicate_detail(soup, faces, later, earlier)));
     }
 }
 

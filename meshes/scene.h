@@ -11,6 +11,7 @@
 
 #include "common/error.h"
 #include "meshes/patch_mesh.h"
+#include "meshes/repair_report.h"
 
 namespace hmcr {
 
@@ -39,10 +40,18 @@ enum class SceneUse { solve, geometry };
 // seen even when the load then fails (a typo that turned a light off, then "no emitter").
 using WarningFn = std::function<void(const std::string&)>;
 
+// Segments per full circle of MGF's curved surfaces (sph, cyl, cone, ring, torus) when neither
+// the command line nor the scene file sets it (README: MGF).
+inline constexpr int kDefaultCurveSegments = 24;
+inline constexpr int kMinCurveSegments = 4;
+inline constexpr int kMaxCurveSegments = 256;
+
 struct LoadOptions {
     std::optional<Material> default_material;  // used by faces without a material
     SceneUse use = SceneUse::solve;
     WarningFn warn;                             // optional
+    bool strict = false;          // refuse what the repairs would fix (README: Repairs)
+    std::optional<int> curve_segments;  // MGF tessellation; a scene file's value, else the default
 };
 
 // A mesh file as loaded: the validated patch mesh, every file read for it (the mesh and its
@@ -51,6 +60,7 @@ struct MeshFile {
     PatchMesh mesh;
     std::vector<std::filesystem::path> files;
     std::vector<std::string> warnings;
+    RepairReport repairs;  // empty for a strict load
 };
 
 struct Scene {
@@ -59,21 +69,27 @@ struct Scene {
     std::filesystem::path mesh_path;    // the mesh file actually read
     std::vector<std::filesystem::path> inputs;  // every file read: no output may replace one
     std::vector<std::string> warnings;  // the loaders' warnings ("file:line: what")
+    RepairReport repairs;               // what the load repaired (README: Repairs)
+    bool strict = false;                // loaded with --strict or a scene file's "strict": true
+    int curve_segments = kDefaultCurveSegments;  // MGF tessellation used
     PatchMesh mesh;                     // validated, with the hmcr:* face properties
     std::vector<View> views;
     nlohmann::json solver_defaults = nlohmann::json::object();  // "solver" object of the file
 };
 
-// Reads a mesh file (by extension: .obj with its MTL files), validates it (SPEC section 1) and
-// returns the patch mesh. Throws InputError on any problem.
+// Reads a mesh file (by extension: .obj with its MTL files, .mgf with its includes), repairs it
+// unless options.strict, validates it (SPEC section 1) and returns the patch mesh. Throws
+// InputError on any problem.
 MeshFile load_mesh(const std::filesystem::path& path, const LoadOptions& options = {});
 // An OBJ file whatever its extension, and its mesh alone.
 MeshFile load_obj_file(const std::filesystem::path& obj, const LoadOptions& options = {});
 PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options = {});
 
-// Accepts a bundled scene name ("cornell"), a JSON scene file, or a mesh file (.obj).
+// Accepts a bundled scene name ("cornell"), a JSON scene file, or a mesh file (.obj, .mgf).
 Scene load_scene(const std::string& name_or_path, SceneUse use = SceneUse::solve,
                  const WarningFn& warn = {});
+// The same with every load option (default_material is ignored: a scene file sets it).
+Scene load_scene(const std::string& name_or_path, const LoadOptions& options);
 
 // The view called name (the first view for ""); throws InputError listing the views.
 const View& find_view(const Scene& scene, const std::string& name);

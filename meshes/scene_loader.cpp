@@ -2,7 +2,7 @@
 //
 // JSON scene file (keys other than these are an error, to catch typos):
 //   {
-//     "mesh": "cornell.obj",              required; relative to the JSON file; .obj only
+//     "mesh": "cornell.obj",              required; relative to the JSON file; .obj or .mgf
 //     "description": "...",               optional string
 //     "views": [                          optional; each view:
 //       {"name": "camera",                  required, unique
@@ -16,6 +16,8 @@
 //     "default_material": {"kd": [r, g, b], "ke": [r, g, b]}
 //                                         optional; used by faces without a material;
 //                                         kd defaults to 0.5 grey, ke to 0
+//     "strict": true,                     optional; refuse what the repairs would fix
+//     "mgf_segments": 24                  optional; segments per circle of MGF curved surfaces
 //   }
 // A scene without views (a bare .obj, or a JSON file without "views") gets one view named
 // "default": 40 degrees, 512x512, on the +z side of the bounding box looking along -z, far
@@ -30,7 +32,9 @@
 #include <set>
 
 #include "common/text_file.h"
+#include "meshes/mgf_reader.h"
 #include "meshes/obj_reader.h"
+#include "meshes/repairs.h"
 #include "meshes/scene.h"
 #include "meshes/validation.h"
 
@@ -137,7 +141,7 @@ std::vector<View> parse_views(const json& views, const std::string& file) {
     return out;
 }
 
-Material parse_default_material(const json& j, const std::string& file) {
+Material parse_default_material(const json& j, const std::string& file, bool strict) {
     const std::string where = file + ": default_material";
     check_keys(j, {"kd", "ke"}, where);
     Material m;
@@ -145,7 +149,7 @@ Material parse_default_material(const json& j, const std::string& file) {
     m.kd = Eigen::Vector3d::Constant(0.5);
     if (j.contains("kd")) m.kd = vector3(j["kd"], where + ": kd");
     if (j.contains("ke")) m.ke = vector3(j["ke"], where + ": ke");
-    if (auto error = check_reflectance(m)) fail(where, *error);
+    if (auto error = check_reflectance(m, !strict)) fail(where, *error);
     if (auto error = check_emission(m)) fail(where, *error);
     return m;
 }
@@ -169,23 +173,48 @@ View default_view(const PatchMesh& mesh) {
     return v;
 }
 
+bool is_mesh_extension(const fs::path& path) {
+    return path.extension() == ".obj" || path.extension() == ".mgf";
+}
+
 void check_mesh_extension(const fs::path& mesh, const std::string& where) {
-    if (mesh.extension() != ".obj") {
-        fail(where, fmt::format("mesh '{}': hmcr reads .obj meshes", mesh.string()));
+    if (!is_mesh_extension(mesh)) {
+        fail(where, fmt::format("mesh '{}': hmcr reads .obj and .mgf meshes", mesh.string()));
     }
 }
 
-void take_mesh(Scene& scene, MeshFile file) {
+void take_mesh(Scene& scene, MeshFile file, const LoadOptions& options) {
     scene.mesh = std::move(file.mesh);
     scene.inputs.insert(scene.inputs.end(), file.files.begin(), file.files.end());
     scene.warnings = std::move(file.warnings);
+    scene.repairs = std::move(file.repairs);
+    scene.strict = options.strict;
+    scene.curve_segments = options.curve_segments.value_or(kDefaultCurveSegments);
 }
 
-Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse use,
-                      const WarningFn& warn) {
+// A scene file's "strict" and "mgf_segments"; the command line's segment count wins.
+void apply_load_keys(const json& j, const std::string& file, LoadOptions& options) {
+    if (j.contains("strict")) {
+        if (!j["strict"].is_boolean()) fail(file + ": strict", "must be true or false");
+        options.strict = options.strict || j["strict"].get<bool>();
+    }
+    if (j.contains("mgf_segments") && !options.curve_segments) {
+        const json& n = j["mgf_segments"];
+        if (!n.is_number_integer() || n.get<long long>() < kMinCurveSegments ||
+            n.get<long long>() > kMaxCurveSegments) {
+            fail(file + ": mgf_segments", fmt::format("must be an integer in [{}, {}]",
+                                                      kMinCurveSegments, kMaxCurveSegments));
+        }
+        options.curve_segments = n.get<int>();
+    }
+}
+
+Scene load_json_scene(const fs::path& path, const std::string& name, LoadOptions options) {
     const std::string file = path.string();
     const json j = read_json_file(path);
-    check_keys(j, {"mesh", "description", "views", "solver", "default_material"}, file);
+    check_keys(j, {"mesh", "description", "views", "solver", "default_material", "strict",
+                   "mgf_segments"},
+               file);
     if (!j.contains("mesh") || !j["mesh"].is_string()) fail(file, "needs a \"mesh\" string");
     if (j.contains("description") && !j["description"].is_string()) {
         fail(file, "\"description\" must be a string");
@@ -202,38 +231,59 @@ Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse us
         if (!j["solver"].is_object()) fail(file + ": solver", "must be a JSON object");
         scene.solver_defaults = j["solver"];
     }
-    LoadOptions options;
-    options.use = use;
-    options.warn = warn;
+    apply_load_keys(j, file, options);
+    options.default_material.reset();
     if (j.contains("default_material")) {
-        options.default_material = parse_default_material(j["default_material"], file);
+        options.default_material =
+            parse_default_material(j["default_material"], file, options.strict);
     }
-    take_mesh(scene, load_mesh(scene.mesh_path, options));
+    take_mesh(scene, load_mesh(scene.mesh_path, options), options);
     if (scene.views.empty()) scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
 
-Scene load_mesh_scene(const fs::path& path, SceneUse use, const WarningFn& warn) {
+Scene load_mesh_scene(const fs::path& path, LoadOptions options) {
     check_mesh_extension(path, path.string());
     Scene scene;
     scene.name = path.stem().string();
     scene.source = path;
     scene.mesh_path = path;
-    LoadOptions options;
-    options.use = use;
-    options.warn = warn;
-    take_mesh(scene, load_mesh(path, options));
+    options.default_material.reset();
+    take_mesh(scene, load_mesh(path, options), options);
     scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
 
-Scene load_file(const fs::path& path, SceneUse use, const WarningFn& warn) {
+Scene load_file(const fs::path& path, const LoadOptions& options) {
     const std::string extension = path.extension().string();
-    if (extension == ".json") return load_json_scene(path, path.stem().string(), use, warn);
-    if (extension == ".obj") return load_mesh_scene(path, use, warn);
-    fail(path.string(), fmt::format("unknown extension '{}': give a .json scene, an .obj mesh "
-                                    "or a bundled scene name ({})",
+    if (extension == ".json") return load_json_scene(path, path.stem().string(), options);
+    if (is_mesh_extension(path)) return load_mesh_scene(path, options);
+    fail(path.string(), fmt::format("unknown extension '{}': give a .json scene, an .obj or .mgf "
+                                    "mesh or a bundled scene name ({})",
                                     extension, bundled_list()));
+}
+
+// Tells the reader's warnings, repairs the soup unless strict (telling the repairs' warnings),
+// and builds the patch mesh.
+MeshFile load_soup(PolygonSoup soup, const LoadOptions& options) {
+    const auto tell = [&](std::size_t from) {
+        if (!options.warn) return;
+        for (std::size_t w = from; w < soup.warnings.size(); ++w) options.warn(soup.warnings[w]);
+    };
+    tell(0);
+    RepairReport repairs;
+    if (!options.strict) {
+        const std::size_t told = soup.warnings.size();
+        repairs = repair_soup(soup);
+        tell(told);
+    }
+    LoadOptions effective = options;
+    // Measuring geometry: faces without a material get a neutral one.
+    if (options.use == SceneUse::geometry && !options.default_material) {
+        effective.default_material = Material{"default", Eigen::Vector3d::Constant(0.5), {0, 0, 0}};
+    }
+    PatchMesh mesh = build_patch_mesh(soup, effective);
+    return {std::move(mesh), soup.files, std::move(soup.warnings), std::move(repairs)};
 }
 
 }  // namespace
@@ -251,23 +301,19 @@ const View& find_view(const Scene& scene, const std::string& name) {
 }
 
 MeshFile load_mesh(const fs::path& path, const LoadOptions& options) {
+    if (path.extension() == ".mgf") {
+        MgfOptions mgf;
+        mgf.curve_segments = options.curve_segments.value_or(kDefaultCurveSegments);
+        return load_soup(read_mgf(path, mgf), options);
+    }
     if (path.extension() != ".obj") {
-        throw InputError(path.string(), "hmcr reads .obj meshes");
+        throw InputError(path.string(), "hmcr reads .obj and .mgf meshes");
     }
     return load_obj_file(path, options);
 }
 
 MeshFile load_obj_file(const fs::path& path, const LoadOptions& options) {
-    PolygonSoup soup = read_obj(path);
-    if (options.warn) {
-        for (const std::string& w : soup.warnings) options.warn(w);
-    }
-    LoadOptions effective = options;
-    // Measuring geometry: faces without a material get a neutral one.
-    if (options.use == SceneUse::geometry && !options.default_material) {
-        effective.default_material = Material{"default", Eigen::Vector3d::Constant(0.5), {0, 0, 0}};
-    }
-    return {build_patch_mesh(soup, effective), soup.files, std::move(soup.warnings)};
+    return load_soup(read_obj(path), options);
 }
 
 PatchMesh load_obj(const fs::path& obj, const LoadOptions& options) {
@@ -294,12 +340,19 @@ std::vector<std::string> bundled_scene_names() {
 }
 
 Scene load_scene(const std::string& name_or_path, SceneUse use, const WarningFn& warn) {
+    LoadOptions options;
+    options.use = use;
+    options.warn = warn;
+    return load_scene(name_or_path, options);
+}
+
+Scene load_scene(const std::string& name_or_path, const LoadOptions& options) {
     const fs::path path(name_or_path);
     std::error_code ec;
-    if (fs::is_regular_file(path, ec)) return load_file(path, use, warn);
+    if (fs::is_regular_file(path, ec)) return load_file(path, options);
     if (is_bundled(name_or_path)) {
         return load_json_scene(scene_directory() / name_or_path / (name_or_path + ".json"),
-                               name_or_path, use, warn);
+                               name_or_path, options);
     }
     fail(name_or_path,
          fmt::format("no such file or bundled scene (bundled scenes: {})", bundled_list()));

@@ -60,12 +60,16 @@ std::optional<std::string> check_area(const std::vector<Eigen::Vector3d>& p) {
     return std::nullopt;
 }
 
-// Distance of the 4th corner from the plane of the first three.
-std::optional<std::string> check_planar(const std::vector<Eigen::Vector3d>& p) {
+// Distance of the 4th corner from the plane of the first three, and the tolerance for it.
+std::pair<double, double> off_plane(const std::vector<Eigen::Vector3d>& p) {
     const Eigen::Vector3d normal = corner_turn(p, 1).normalized();
     const double distance = std::abs((p[3] - p[0]).dot(normal));
     const double diagonal = std::max((p[2] - p[0]).norm(), (p[3] - p[1]).norm());
-    const double tolerance = kPlanarityRatio * diagonal;
+    return {distance, kPlanarityRatio * diagonal};
+}
+
+std::optional<std::string> check_planar(const std::vector<Eigen::Vector3d>& p) {
+    const auto [distance, tolerance] = off_plane(p);
     if (distance <= tolerance) return std::nullopt;
     return fmt::format(
         "non-planar quad: the 4th vertex is {:.3g} mm off the plane of the other three "
@@ -106,8 +110,18 @@ std::optional<std::string> check_channels(const Material& m, const Eigen::Vector
 
 }  // namespace
 
+bool quad_is_planar(const std::vector<Eigen::Vector3d>& corners) {
+    const auto [distance, tolerance] = off_plane(corners);
+    return distance <= tolerance;
+}
+
 std::optional<std::string> check_face_geometry(const std::vector<Eigen::Vector3d>& corners,
                                                const std::vector<int>& ids) {
+    if (corners.size() > 4) {
+        return fmt::format("polygon with {} vertices: --strict reads triangles and convex quads "
+                           "only (without it hmcr triangulates the polygon)",
+                           corners.size());
+    }
     if (auto error = check_repeated(ids)) return error;
     if (auto error = check_area(corners)) return error;
     if (corners.size() != 4) return std::nullopt;
@@ -127,7 +141,10 @@ std::optional<std::pair<std::size_t, std::size_t>> find_duplicate_face(
     return std::nullopt;
 }
 
-std::optional<std::string> check_reflectance(const Material& m) {
+std::optional<std::string> check_reflectance(const Material& m, bool allow_one) {
+    if (allow_one) {
+        return check_channels(m, m.kd, "reflectance", std::nextafter(1.0, 2.0), "above 1");
+    }
     return check_channels(m, m.kd, "reflectance", 1.0, "not below 1");
 }
 

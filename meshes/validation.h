@@ -20,9 +20,13 @@ inline constexpr double kPlanarityRatio = 1e-4;        // off-plane distance / d
 // values overflow the sums of power into infinities (a solve that never ends).
 inline constexpr double kMaxRadiance = 1e20;
 
+// Whether the 4th corner of a quad lies within kPlanarityRatio x its longer diagonal of the plane
+// of the other three.
+bool quad_is_planar(const std::vector<Eigen::Vector3d>& corners);
+
 // Checks one polygon given by its corners (counter-clockwise, welded: equal positions are the
 // same index in `ids`): 3 or 4 distinct corners, no zero-area corner, and for a quad planarity
-// and convexity.
+// and convexity. (Without --strict the repairs have made every polygon pass.)
 std::optional<std::string> check_face_geometry(const std::vector<Eigen::Vector3d>& corners,
                                                const std::vector<int>& ids);
 
@@ -31,8 +35,9 @@ std::optional<std::string> check_face_geometry(const std::vector<Eigen::Vector3d
 std::optional<std::pair<std::size_t, std::size_t>> find_duplicate_face(
     const std::vector<std::vector<int>>& faces);
 
-// Checks Kd in [0, 1) and Ke in [0, kMaxRadiance) per channel; names the material.
-std::optional<std::string> check_reflectance(const Material& m);
+// Checks Kd in [0, 1) (or [0, 1] when allow_one) and Ke in [0, kMaxRadiance) per channel;
+// names the material.
+std::optional<std::string> check_reflectance(const Material& m, bool allow_one = false);
 std::optional<std::string> check_emission(const Material& m);
 
 }  // namespace hmcr

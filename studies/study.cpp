@@ -300,6 +300,9 @@ nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
     const std::string reference_json = read_text_file(o.reference / "reference.json");
     return {{"scene", scene.name},
             {"geometry", geometry_hash(scene.mesh)},
+            // Whether the scene was repaired (a strict load of it would be refused) and how.
+            {"repaired", !scene.repairs.empty()},
+            {"repairs", scene.repairs.to_json()},
             {"reference", std::filesystem::absolute(o.reference).lexically_normal().string()},
             {"reference_json_hash", text_hash(reference_json)},
             {"solve", solve},

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -110,6 +111,30 @@ TEST_F(Cli, SolveWritesTheMeshAndASummaryWithCountsAndTimings) {
     for (const auto& e : fs::directory_iterator(m_dir / "sub")) {
         EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
     }
+}
+
+// An MGF file solves like an OBJ: a one-sided lamp over a floor, with a non-diffuse statement
+// told once; --mgf-segments sets the tessellation of its sphere.
+TEST_F(Cli, SolveReadsAnMgfFile) {
+    std::ofstream(m_dir / "lamp.mgf") << "m floor =\n sides 1\n rd 0.5\n rs 0.1 0\n"
+                                         "v a =\n p 0 0 0\nv b =\n p 1 0 0\nv c =\n p 1 1 0\n"
+                                         "v d =\n p 0 1 0\nf a b c d\n"
+                                         "m bulb =\n sides 1\n ed 100\nv o =\n p 0.5 0.5 1\n"
+                                         "sph o 0.1\n";
+    const CliRun r = hmcr("solve " + (m_dir / "lamp.mgf").string() +
+                          " --mgf-segments 8 --rays 20000 -q -o " + (m_dir / "lamp.vtp").string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto summary = nlohmann::json::parse(read_file(m_dir / "lamp.json"));
+    EXPECT_EQ(summary["scene"]["patches"], 1 + 8 * 4);
+    // ed times the tessellated sphere's area, below the true one by at most (pi / 8)^2.
+    const double sphere = 4 * M_PI * 0.01, emitted = summary["power"]["emitted_w"][0];
+    EXPECT_LT(emitted, 100 * sphere);
+    EXPECT_GT(emitted, 100 * sphere * (1 - (M_PI / 8) * (M_PI / 8)));
+    const CliRun loud = hmcr("solve " + (m_dir / "lamp.mgf").string() + " --rays 20000 -o " +
+                             (m_dir / "lamp.vtp").string());
+    EXPECT_NE(loud.err.find("ignored (hmcr reads diffuse reflection rd and emission ed): rs 1 time"),
+              std::string::npos)
+        << loud.err;
 }
 
 TEST_F(Cli, RenderAndReferenceWriteTheirFiles) {

@@ -1,8 +1,8 @@
 // libFuzzer target: OBJ and MTL (README.md in this folder says how to build and run it).
 //
 // Input: OBJ text, optionally followed by a NUL byte and MTL text, written to fuzz.obj and
-// fuzz.mtl (the seeds reach the MTL with `mtllib fuzz.mtl`), loaded with and without a default
-// material. A loaded mesh must keep the loader's guarantees.
+// fuzz.mtl (the seeds reach the MTL with `mtllib fuzz.mtl`), loaded with and without the
+// repairs and a default material. A loaded mesh must keep the loader's guarantees.
 #include <cmath>
 #include <cstdint>
 
@@ -22,7 +22,8 @@ void check_mesh(PatchMesh& mesh) {
         const auto valence = mesh.valence(fh);
         if (valence < 3 || valence > 4) crash("face that is neither a triangle nor a quad");
         for (int c = 0; c < 3; ++c) {
-            if (!(reflectance[fh][c] >= 0 && reflectance[fh][c] < 1)) crash("bad reflectance");
+            // 1 is accepted with a warning (README: Repairs), above is refused.
+            if (!(reflectance[fh][c] >= 0 && reflectance[fh][c] <= 1)) crash("bad reflectance");
             if (!(emission[fh][c] >= 0 && std::isfinite(emission[fh][c]))) crash("bad emission");
             emitted += emission[fh][c];
         }
@@ -48,6 +49,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     write("fuzz.obj", input.substr(0, split));
     write("fuzz.mtl", split == std::string::npos ? "" : input.substr(split + 1));
     load({});
+    hmcr::LoadOptions strict;
+    strict.strict = true;
+    load(strict);
     hmcr::LoadOptions options;
     options.default_material = hmcr::Material{"default", {0.5, 0.5, 0.5}, {1, 1, 1}};
     load(options);

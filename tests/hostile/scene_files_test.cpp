@@ -22,11 +22,10 @@ TEST_F(Hostile, EveryClassOfBadObjIsRefusedWithItsLine) {
         {with(kPlatesObj, "f 1 2 3 4", "f 1 2 3 9"), "plates.obj:11: vertex reference '9'"},
         {with(kPlatesObj, "f 1 2 3 4", "f 1/5 2 3 4"), "texture coordinate reference '1/5'"},
         {with(kPlatesObj, "f 1 2 3 4", "f 1//2 2 3 4"), "normal reference '1//2'"},
-        {with(kPlatesObj, "f 1 2 3 4", "f 1 2 2"), "plates.obj:11: degenerate face"},
-        {with(kPlatesObj, "v 0 1 0", "v 0 1 0.5"), "plates.obj:11: non-planar quad"},
-        {with(kPlatesObj, "v 0 1 0", "v 0.8 0.2 0"), "plates.obj:11: non-convex quad"},
-        {with(kPlatesObj, "f 1 2 3 4", "f 1 2 3 4 5"), "plates.obj:11: polygon with 5 vertices"},
+        // The light's only face has no area: the repairs drop it, leaving no light.
+        {with(kPlatesObj, "f 1 2 3 4", "f 1 2 2"), "plates.obj: no face emits light"},
         {std::string(kPlatesObj) + "f 4 3 2 1\n", "plates.obj:14: duplicate face"},
+        {with(kPlatesObj, "f 1 2 3 4", "f 1 3 2 4"), "plates.obj:11: self-intersecting"},
         {with(kPlatesObj, "usemtl emitter\n", ""), "plates.obj:10: face has no material"},
         {with(kPlatesObj, "usemtl emitter", "usemtl emiter"), "material 'emiter', which no"},
         {with(kPlatesObj, "mtllib plates.mtl", "mtllib none.mtl"), "plates.obj:1: cannot read "
@@ -40,9 +39,58 @@ TEST_F(Hostile, EveryClassOfBadObjIsRefusedWithItsLine) {
     }
 }
 
+// What the repairs fix (README: Repairs) is refused as before with --strict, or a scene file's
+// "strict": true.
+TEST_F(Hostile, StrictRefusesWhatTheRepairsFix) {
+    const std::pair<std::string, std::string> cases[] = {
+        {with(kPlatesObj, "f 1 2 3 4", "f 1 2 2"), "plates.obj:11: degenerate face"},
+        {with(kPlatesObj, "v 0 1 0", "v 0 1 0.5"), "plates.obj:11: non-planar quad"},
+        {with(kPlatesObj, "v 0 1 0", "v 0.8 0.2 0"), "plates.obj:11: non-convex quad"},
+        {with(kPlatesObj, "f 1 2 3 4", "f 1 2 3 4 5"), "plates.obj:11: polygon with 5 vertices"},
+        {std::string(kPlatesObj) + "f 1 2 3 4\n", "plates.obj:14: duplicate face"},
+    };
+    for (const auto& [obj, needle] : cases) {
+        plates(obj);
+        refused("solve plates.obj --strict -o out.vtp", needle);
+    }
+    plates(kPlatesObj, with(kPlatesMtl, "Kd 0.5 0.5 0.5", "Kd 1 1 1"));
+    refused("solve plates.obj --strict -o out.vtp", "plates.mtl:5: reflectance 1 of material");
+    plates(with(kPlatesObj, "v 0 1 0", "v 0 1 0.5"), kPlatesMtl,
+           with(kPlatesJson, R"({"mesh": "plates.obj", )",
+                R"({"mesh": "plates.obj", "strict": true, )"));
+    refused("solve plates.json -o out.vtp", "plates.obj:11: non-planar quad");
+}
+
+// Without --strict the same files are repaired and solved, and the repairs are said in one line
+// on stderr and counted in the summary.
+TEST_F(Hostile, RepairsAreMadeAndSaidInOneLine) {
+    const std::pair<std::string, std::string> cases[] = {
+        {with(kPlatesObj, "v 0 1 0", "v 0 1 0.5"), "1 non-planar quad split (plates.obj:11)"},
+        {with(kPlatesObj, "v 0 1 0", "v 0.8 0.2 0"), "1 polygon triangulated (plates.obj:11)"},
+        {std::string(kPlatesObj) + "f 5 8 7 6\n", "1 duplicate face dropped (plates.obj:14)"},
+    };
+    for (const auto& [obj, what] : cases) {
+        plates(obj);
+        const CliRun r = accepted("solve plates.obj --rays 2000 -o out.vtp");
+        EXPECT_NE(r.err.find("hmcr: repaired plates.obj: " + what + " (--strict refuses them)\n"),
+                  std::string::npos)
+            << r.err;
+        const auto summary = nlohmann::json::parse(read_file(dir() / "out.json"));
+        EXPECT_EQ(summary["scene"]["repairs"]["count"], 1) << what;
+        EXPECT_EQ(summary["scene"]["strict"], false);
+    }
+    plates(kPlatesObj, with(kPlatesMtl, "Kd 0.5 0.5 0.5", "Kd 1 1 1"));
+    const CliRun r = accepted("solve plates.obj --rays 2000 -o out.vtp");
+    EXPECT_NE(r.err.find("warning: plates.mtl:5: reflectance 1 of material 'receiver' accepted"),
+              std::string::npos)
+        << r.err;
+}
+
 TEST_F(Hostile, EveryClassOfBadMaterialIsRefusedWithItsLine) {
     const std::pair<std::string, std::string> cases[] = {
         {with(kPlatesMtl, "Kd 0.5 0.5 0.5", "Kd 1.2 0.5 0.5"), "plates.mtl:5: reflectance 1.2"},
+        {with(kPlatesMtl, "Kd 0.5 0.5 0.5", "Kd 1.0001 0.5 0.5"),
+         "plates.mtl:5: reflectance 1.0001 of material 'receiver' is above 1"},
         {with(kPlatesMtl, "Ke 0.3 0.3 0.3", "Ke -1 0.3 0.3"), "plates.mtl:3: emission -1"},
         {with(kPlatesMtl, "Ke 0.3 0.3 0.3", "Ke 0 0 0"), "plates.obj: no face emits light"},
         // Once a solve that never ended: the powers overflowed to infinity.
@@ -108,7 +156,7 @@ TEST_F(Hostile, BadSceneFilesAreRefusedWithFileAndPlace) {
         {R"({"mesh": "plates.obj", "solver": {"stop": 2}})", "plates.json: solver.stop: "},
         {R"({"mesh": "plates.obj", "solver": {"threads": 2}})", "unknown setting 'threads'"},
         {R"({"mesh": "none.obj"})", "none.obj: no such file"},
-        {R"({"mesh": "plates.ply"})", "hmcr reads .obj meshes"},
+        {R"({"mesh": "plates.ply"})", "hmcr reads .obj and .mgf meshes"},
     };
     for (const auto& [json, needle] : cases) {
         plates(kPlatesObj, kPlatesMtl, json);

@@ -27,11 +27,18 @@ constexpr const char* kHeader =
     "usemtl white\n";
 
 // The InputError message of loading kHeader + body with the given MTL.
-std::string obj_error(const std::string& body, const std::string& mtl = kMtl) {
+std::string obj_error(const std::string& body, const std::string& mtl = kMtl, bool strict = false) {
     SceneFiles files;
     files.write("scene.mtl", mtl);
     const auto obj = files.write("scene.obj", kHeader + body);
-    return scene_error([&] { load_obj(obj); });
+    LoadOptions options;
+    options.strict = strict;
+    return scene_error([&] { load_obj(obj, options); });
+}
+
+// The same with --strict: what the repairs would fix (repairs_test.cpp) is refused as it was.
+std::string strict_error(const std::string& body, const std::string& mtl = kMtl) {
+    return obj_error(body, mtl, true);
 }
 
 // Two unit quads side by side in z = 0 (normal +z), sharing the edge x = 1; the second one
@@ -146,9 +153,9 @@ TEST(ObjLoader, ParseErrorLineNumbersCountCarriageReturns) {
 
 TEST(ObjLoader, PolygonWithMoreThanFourVertices) {
     const std::string pentagon = "v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nf 1 2 3 4 5\n";
-    EXPECT_TRUE(contains(obj_error(pentagon),
-                         "scene.obj:8: polygon with 5 vertices: hmcr reads triangles and "
-                         "convex quads; triangulate it"));
+    EXPECT_TRUE(contains(strict_error(pentagon),
+                         "scene.obj:8: polygon with 5 vertices: --strict reads triangles and "
+                         "convex quads only"));
 }
 
 TEST(ObjLoader, PolygonWithFewerThanThreeVertices) {
@@ -164,27 +171,27 @@ TEST(ObjLoader, NanOrInfCoordinate) {
 }
 
 TEST(ObjLoader, ZeroAreaTriangle) {
-    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"),
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"),
                          "scene.obj:6: degenerate face"));
 }
 
 TEST(ObjLoader, TinyAreaRelativeToSize) {
     // Area 5e-13 m^2 against a largest edge of 1 m: below 1e-12 x 1^2.
-    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0.5 1e-12 0\nf 1 2 3\n"),
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 0.5 1e-12 0\nf 1 2 3\n"),
                          "scene.obj:6: degenerate face"));
 }
 
 TEST(ObjLoader, RepeatedVertex) {
-    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"),
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"),
                          "scene.obj:6: degenerate face: corners 2 and 3 are the same point"));
     // Two `v` statements at the same position are one vertex after welding.
-    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0 0\nf 1 2 3 4\n"),
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0 0\nf 1 2 3 4\n"),
                          "scene.obj:7: degenerate face: corners 2 and 4 are the same point"));
 }
 
 TEST(ObjLoader, NonPlanarQuad) {
     // The 4th vertex is 1 mm above the plane z = 0; the tolerance is 1e-4 x 1.414 m.
-    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0.001\nf 1 2 3 4\n"),
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0.001\nf 1 2 3 4\n"),
                          "scene.obj:7: non-planar quad: the 4th vertex is 1 mm off the plane "
                          "of the other three (tolerance 0.141 mm"));
 }
@@ -200,10 +207,10 @@ TEST(ObjLoader, NearlyPlanarQuadLoads) {
 
 TEST(ObjLoader, NonConvexQuad) {
     // A dart: the corner at (0.3, 0.3) turns clockwise, the others counter-clockwise.
-    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0.3 0.3 0\nv 0 1 0\nf 1 2 3 4\n"),
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 0.3 0.3 0\nv 0 1 0\nf 1 2 3 4\n"),
                          "scene.obj:7: non-convex quad: corner 3 turns the other way"));
     // A bow-tie, whose vector area is zero.
-    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4\n"),
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4\n"),
                          "scene.obj:7: non-convex quad"));
 }
 
@@ -227,9 +234,12 @@ TEST(ObjLoader, FaceWithoutMaterial) {
 TEST(ObjLoader, ReflectanceNotBelowOne) {
     const std::string mtl = "# grey\nnewmtl white\nKd 0.5 1.2 0.5\nKe 1 1 1\n";
     EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mtl),
+                         "scene.mtl:3: reflectance 1.2 of material 'white' is above 1"));
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mtl),
                          "scene.mtl:3: reflectance 1.2 of material 'white' is not below 1"));
+    // 1 itself is a repair (accepted with a warning), refused only by --strict.
     const std::string white = "newmtl white\nKe 1 1 1\nKd 1 1 1\n";
-    EXPECT_TRUE(contains(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", white),
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", white),
                          "scene.mtl:3: reflectance 1 of material 'white' is not below 1"));
 }
 

@@ -166,8 +166,11 @@ TEST(SceneLoader, MeshErrorsNameTheMeshFile) {
     SceneFiles files;
     files.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
     const auto json = files.write("scene.json", R"({"mesh": "tri.obj"})");
+    // A degenerate face: dropped by the repairs (leaving no face), refused by a strict load.
+    EXPECT_TRUE(contains(scene_error([&] { load_scene(json.string()); }), "tri.obj: no faces"));
+    const auto strict = files.write("strict.json", R"({"mesh": "tri.obj", "strict": true})");
     EXPECT_TRUE(
-        contains(scene_error([&] { load_scene(json.string()); }), "tri.obj:4: degenerate face"));
+        contains(scene_error([&] { load_scene(strict.string()); }), "tri.obj:4: degenerate face"));
 }
 
 TEST(SceneLoader, BundledSceneByName) {

@@ -1,0 +1,33 @@
+// MGF, the Materials and Geometry Format (Ward, LBNL, 1995; version 2.0 of the specification):
+// RenderPark's and Radiance's scene format. Written from the public specification.
+//
+// Read: o, xf (-t -rx -ry -rz -s -mx -my -mz -i -a), i (relative to the including file, with a
+// transformation), c with cxy, cspec, cct and cmix, m with rd, ed and sides, v with p and n, f
+// (seams included), and the surfaces sph, cyl, cone, ring, torus and prism tessellated as
+// meshes/mgf_shapes.h says. Colours become RGB as meshes/mgf_color.h says; `ed` (lm/m^2)
+// becomes the emitted radiosity E with that luminance, so an MGF scene's radiosity is in
+// lm/m^2 where an OBJ scene's is in W/m^2. hmcr is diffuse only: rs, ts, td, ir and ies are
+// ignored with one warning naming them. Faces are one-sided in hmcr: a two-sided material's
+// faces (`sides 2`, MGF's default) face the way their corners turn, with one warning.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+
+#include "meshes/polygon_soup.h"
+
+namespace hmcr {
+
+struct MgfOptions {
+    int curve_segments = 24;  // segments per full circle of a curved surface
+    // Statements executed at most, arrays and includes expanded: a file of a few lines can
+    // ask for 10^18 instances.
+    std::uint64_t max_statements = 100'000'000;
+    std::size_t max_polygons = 50'000'000;
+};
+
+// The polygons and materials of an MGF file and the files it includes. Throws InputError
+// "file:line: why" on anything that is not valid MGF or cannot be read.
+PolygonSoup read_mgf(const std::filesystem::path& mgf, const MgfOptions& options = {});
+
+}  // namespace hmcr

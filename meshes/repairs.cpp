@@ -1,0 +1,192 @@
+// The repair pass: per polygon, take out repeated and collinear corners, drop what has no area
+// left, cut what is not a triangle or a planar convex quad into triangles; then drop exact
+// duplicates, and accept reflectance 1.
+#include "meshes/repairs.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <map>
+#include <set>
+
+#include "meshes/triangulate.h"
+#include "meshes/validation.h"
+#include "meshes/weld.h"
+
+namespace hmcr {
+namespace {
+
+// One polygon's corners: soup position indices, welded ids and positions.
+struct Corners {
+    std::vector<std::uint32_t> soup;
+    std::vector<int> ids;
+    std::vector<Eigen::Vector3d> p;
+
+    std::size_t size() const { return soup.size(); }
+    void erase(std::size_t i) {
+        soup.erase(soup.begin() + std::ptrdiff_t(i));
+        ids.erase(ids.begin() + std::ptrdiff_t(i));
+        p.erase(p.begin() + std::ptrdiff_t(i));
+    }
+    Corners pick(std::initializer_list<std::size_t> which) const {
+        Corners out;
+        for (std::size_t i : which) {
+            out.soup.push_back(soup[i]);
+            out.ids.push_back(ids[i]);
+            out.p.push_back(p[i]);
+        }
+        return out;
+    }
+};
+
+Corners corners_of(const PolygonSoup& soup, std::size_t k, const std::vector<int>& welded) {
+    Corners c;
+    for (std::uint32_t s : soup.corners(k)) {
+        c.soup.push_back(s);
+        c.ids.push_back(welded[s]);
+        c.p.push_back(soup.positions[s]);
+    }
+    return c;
+}
+
+double largest_edge(const Corners& c) {
+    double longest = 0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        longest = std::max(longest, (c.p[(i + 1) % c.size()] - c.p[i]).norm());
+    }
+    return longest;
+}
+
+// Corner i repeats the next one, or spans no area with its neighbours (the tolerance of the
+// patch checks, relative to the polygon's largest edge).
+bool corner_is_degenerate(const Corners& c, std::size_t i, double limit) {
+    const std::size_t n = c.size(), prev = (i + n - 1) % n, next = (i + 1) % n;
+    if (c.ids[i] == c.ids[next]) return true;
+    return 0.5 * (c.p[i] - c.p[prev]).cross(c.p[next] - c.p[i]).norm() < limit;
+}
+
+// Takes such corners out until none is left; true when any was.
+bool remove_degenerate_corners(Corners& c) {
+    const double edge = largest_edge(c);
+    const double limit = kDegenerateAreaRatio * edge * edge;
+    bool removed = false, changed = true;
+    while (changed) {
+        changed = false;
+        for (std::size_t i = 0; c.size() >= 3 && i < c.size();) {
+            if (!corner_is_degenerate(c, i, limit)) {
+                ++i;
+                continue;
+            }
+            c.erase(i);
+            removed = changed = true;
+        }
+    }
+    return removed;
+}
+
+Eigen::Vector3d triangle_normal(const Corners& c, std::size_t a, std::size_t b, std::size_t d) {
+    return (c.p[b] - c.p[a]).cross(c.p[d] - c.p[a]);
+}
+
+// Split along diagonal 0-2 (first) or 1-3: both halves must face the way the quad does.
+std::optional<std::vector<Corners>> split_quad(const Corners& c) {
+    const Eigen::Vector3d facing = triangle_normal(c, 0, 1, 2) + triangle_normal(c, 0, 2, 3);
+    const auto valid = [&](std::size_t a) {
+        const std::size_t b = (a + 1) % 4, d = (a + 2) % 4, e = (a + 3) % 4;
+        return triangle_normal(c, a, b, d).dot(facing) > 0 &&
+               triangle_normal(c, a, d, e).dot(facing) > 0;
+    };
+    const bool first_shorter = (c.p[2] - c.p[0]).norm() <= (c.p[3] - c.p[1]).norm();
+    for (std::size_t a :
+         first_shorter ? std::array<std::size_t, 2>{0, 1} : std::array<std::size_t, 2>{1, 0}) {
+        if (valid(a))
+            return std::vector<Corners>{c.pick({a, (a + 1) % 4, (a + 2) % 4}),
+                                        c.pick({a, (a + 2) % 4, (a + 3) % 4})};
+    }
+    return std::nullopt;
+}
+
+std::vector<Corners> ear_clip(const Corners& c, const std::string& where) {
+    const Triangulation t = triangulate(c.p, c.ids);
+    if (!t.error.empty()) throw InputError(where, t.error);
+    std::vector<Corners> out;
+    for (const CornerTriangle& tri : t.triangles) out.push_back(c.pick({tri[0], tri[1], tri[2]}));
+    return out;
+}
+
+// What one polygon becomes, and the repairs that took.
+std::vector<Corners> repair_polygon(Corners c, const std::string& where, RepairReport& report) {
+    if (remove_degenerate_corners(c)) {
+        if (c.size() < 3) {
+            report.add(RepairKind::degenerate_dropped, where);
+            return {};
+        }
+        report.add(RepairKind::corners_removed, where);
+    }
+    if (c.size() == 3 || (c.size() == 4 && !check_face_geometry(c.p, c.ids))) return {c};
+    if (c.size() == 4 && !quad_is_planar(c.p)) {
+        std::optional<std::vector<Corners>> halves = split_quad(c);
+        if (!halves) throw InputError(where, "self-intersecting quad: its edges cross");
+        report.add(RepairKind::quad_split, where);
+        return *halves;
+    }
+    report.add(RepairKind::triangulated, where);
+    return ear_clip(c, where);
+}
+
+// The ids in the same cyclic order, starting at the smallest: equal for the same face written
+// from another corner, different for the reversed face.
+std::vector<int> cyclic_key(const std::vector<int>& ids) {
+    std::vector<int> key(ids);
+    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+    return key;
+}
+
+void accept_reflectance_one(PolygonSoup& soup, RepairReport& report) {
+    std::vector<bool> used(soup.materials.size(), false);
+    for (std::int32_t m : soup.material) {
+        if (m != PolygonSoup::kNoMaterial) used[std::size_t(m)] = true;
+    }
+    std::set<std::string> told;  // one material read twice (MGF) is told once
+    for (std::size_t m = 0; m < soup.materials.size(); ++m) {
+        const SoupMaterial& sm = soup.materials[m];
+        const Eigen::Vector3d& kd = sm.material.kd;
+        if (!used[m] || !sm.defined || kd.maxCoeff() != 1.0 || kd.minCoeff() < 0) continue;
+        const std::string where = soup.where(sm.kd);
+        if (!told.insert(where).second) continue;
+        report.add(RepairKind::reflectance_one, where);
+        soup.warnings.push_back(fmt::format(
+            "{}: reflectance 1 of material {} accepted: it absorbs no light, so a closed scene "
+            "may run out of rays before the stop rule",
+            where, quote(sm.material.name)));
+    }
+}
+
+}  // namespace
+
+RepairReport repair_soup(PolygonSoup& soup) {
+    RepairReport report;
+    std::size_t welded_count = 0;
+    const std::vector<int> welded = weld(soup.positions, welded_count);
+    PolygonSoup out;
+    std::map<std::vector<int>, std::size_t> seen;  // cyclic key -> output polygon
+    for (std::size_t k = 0; k < soup.polygon_count(); ++k) {
+        const std::string where = soup.where(soup.place[k]);
+        for (const Corners& c : repair_polygon(corners_of(soup, k, welded), where, report)) {
+            const auto [it, fresh] = seen.try_emplace(cyclic_key(c.ids), out.polygon_count());
+            if (!fresh && out.material[it->second] == soup.material[k]) {
+                report.add(RepairKind::duplicate_dropped, where);
+                continue;
+            }
+            out.add_polygon(c.soup, soup.material[k], soup.place[k]);
+        }
+    }
+    soup.corner_offsets = std::move(out.corner_offsets);
+    soup.corner_ids = std::move(out.corner_ids);
+    soup.material = std::move(out.material);
+    soup.place = std::move(out.place);
+    accept_reflectance_one(soup, report);
+    return report;
+}
+
+}  // namespace hmcr

@@ -1,0 +1,78 @@
+// libFuzzer target: MGF (README.md in this folder says how to build and run it).
+//
+// Input: MGF text written to fuzz.mgf, with a NUL byte separating a second file, part.mgf,
+// that fuzz.mgf can include (`i part.mgf`). Read with a small statement budget (arrays of
+// 10^9 instances must end in an error, not a timeout), then repaired (or not: --strict) and
+// built into a patch mesh as the loader does. What the reader returns must hold finite positions
+// and valid corner and material indices; a loaded mesh, triangles and quads with reflectance in [0,
+// 1].
+#include <cmath>
+#include <cstdint>
+
+#include "meshes/mgf_reader.h"
+#include "meshes/repairs.h"
+#include "meshes/scene.h"
+#include "tests/fuzz/fuzz_support.h"
+
+namespace hmcr::fuzz {
+namespace {
+
+void check_soup(const PolygonSoup& soup) {
+    for (const Eigen::Vector3d& p : soup.positions) {
+        if (!p.allFinite()) crash("a position that is not finite");
+    }
+    for (std::size_t k = 0; k < soup.polygon_count(); ++k) {
+        if (soup.corners(k).size() < 3) crash("a polygon of fewer than 3 corners");
+        for (std::uint32_t c : soup.corners(k)) {
+            if (c >= soup.positions.size()) crash("a corner index out of range");
+        }
+        const std::int32_t m = soup.material[k];
+        if (m < 0 || std::size_t(m) >= soup.materials.size())
+            crash("a material index out of range");
+    }
+}
+
+void check_mesh(PatchMesh& mesh) {
+    auto reflectance = reflectance_prop(mesh);
+    for (auto fh : mesh.faces()) {
+        if (mesh.valence(fh) < 3 || mesh.valence(fh) > 4)
+            crash("face that is neither a triangle nor a quad");
+        for (int c = 0; c < 3; ++c) {
+            if (!(reflectance[fh][c] >= 0 && reflectance[fh][c] <= 1)) crash("bad reflectance");
+        }
+    }
+}
+
+MgfOptions small_budget() {
+    MgfOptions options;
+    options.max_statements = 100'000;
+    options.max_polygons = 100'000;
+    options.curve_segments = 8;
+    return options;
+}
+
+}  // namespace
+}  // namespace hmcr::fuzz
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    using namespace hmcr::fuzz;
+    const std::string input(reinterpret_cast<const char*>(data), size);
+    const std::size_t split = input.find('\0');
+    write("fuzz.mgf", input.substr(0, split));
+    write("part.mgf", split == std::string::npos ? "" : input.substr(split + 1));
+    // The loader's steps (meshes/scene_loader.cpp) on the budgeted read.
+    for (bool strict : {false, true}) {
+        expect_only_input_errors([&] {
+            hmcr::PolygonSoup soup = hmcr::read_mgf(work_dir() / "fuzz.mgf", small_budget());
+            check_soup(soup);
+            if (!strict) hmcr::repair_soup(soup);
+            hmcr::LoadOptions options;
+            options.strict = strict;
+            options.use = hmcr::SceneUse::geometry;
+            options.default_material = hmcr::Material{"default", {0.5, 0.5, 0.5}, {0, 0, 0}};
+            hmcr::PatchMesh mesh = hmcr::build_patch_mesh(soup, options);
+            check_mesh(mesh);
+        });
+    }
+    return 0;
+}
