@@ -13,6 +13,7 @@
 #include "common/output_paths.h"
 #include "common/stopwatch.h"
 #include "radiosity/budget_search.h"
+#include "viz/paraview_state.h"
 #include "viz/solution_file.h"
 
 namespace hmcr {
@@ -51,14 +52,14 @@ fs::path output_path(const SolveArgs& args, const Scene& scene) {
 }
 
 void report(const Scene& scene, const Solution& sol, const RunTimings& timings,
-            const fs::path& vtp, const fs::path& json) {
+            const fs::path& vtp, const fs::path& json, const fs::path& pvsm) {
     if (sol.stats.back_face_fraction() > 0.01) {
         fmt::print(stderr, "hmcr: warning: {:.1f}% of the shot power hit back faces "
                            "(flipped normals?)\n", 100 * sol.stats.back_face_fraction());
     }
-    fmt::print("{}: {} leaves, {} rays in {} iterations, {:.2f} s -> {} and {}\n", scene.name,
-               sol.stats.leaves, sol.stats.rays, sol.stats.iterations.size(),
-               timings.total_seconds, vtp.string(), json.string());
+    fmt::print("{}: {} leaves, {} rays in {} iterations, {:.2f} s -> {}, {} and {}\n",
+               scene.name, sol.stats.leaves, sol.stats.rays, sol.stats.iterations.size(),
+               timings.total_seconds, vtp.string(), json.string(), pvsm.string());
 }
 
 // The budget options are checked whether or not a budget is given: a bad value is a mistake
@@ -85,9 +86,10 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
         load_scene_reporting(args.scene, args.quiet, SceneUse::solve, args.scene_flags);
     apply_scene_settings(args.flags, scene, args.options);
     const fs::path vtp = output_path(args, scene);
-    fs::path json = vtp;
+    fs::path json = vtp, pvsm = vtp;
     json.replace_extension(".json");
-    refuse_overwriting({vtp, json}, scene.inputs);
+    pvsm.replace_extension(".pvsm");  // ParaView's view of the .vtp (viz/paraview_state.h)
+    refuse_overwriting({vtp, json, pvsm}, scene.inputs);
     prepare_output_file(vtp);
     RunTimings timings;
     timings.load_seconds = seconds_since(start);
@@ -98,12 +100,13 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
 
     const auto t_out = std::chrono::steady_clock::now();
     write_solution(vtp, sol, scene, args.crease_degrees, double(sol.stats.iterations.size()));
+    write_paraview_state(pvsm, vtp, find_view(scene, ""));
     timings.output_seconds = seconds_since(t_out);
     timings.total_seconds = seconds_since(start);
     auto summary = run_summary(scene, sol, timings, command_line, vtp.string());
     if (args.budget.leaves > 0) summary["budget"] = budget_json(args.budget, found.probes);
     write_text_atomically(json, summary.dump(2) + "\n");
-    if (!args.quiet) report(scene, sol, timings, vtp, json);
+    if (!args.quiet) report(scene, sol, timings, vtp, json, pvsm);
     return 0;
 }
 
@@ -111,11 +114,12 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
 
 Command solve_command(CLI::App& app, const std::string& command_line) {
     auto args = std::make_shared<SolveArgs>();
-    auto* cmd = app.add_subcommand("solve", "solve a scene and write its Gouraud mesh (.vtp + .json)");
+    auto* cmd = app.add_subcommand("solve", "solve a scene and write its Gouraud mesh (.vtp + .json + .pvsm)");
     cmd->add_option("scene", args->scene, "bundled scene name, scene .json, or .obj or .mgf file")
         ->required();
     cmd->add_option("-o,--output", args->output,
-                    "output .vtp (default out/SCENE.vtp); the summary goes beside it as .json");
+                    "output .vtp (default out/SCENE.vtp); the summary (.json) and a ParaView state "
+                    "(.pvsm) go beside it");
     args->flags = add_solver_flags(*cmd, args->options);
     add_scene_flags(*cmd, args->scene_flags);
     cmd->add_option("--budget", args->budget.leaves,

@@ -51,7 +51,8 @@ int run_study(StudyArgs& a) {
     apply_scene_settings(a.flags, scene, a.options.solver);
     const std::filesystem::path& out = a.options.output;
     refuse_nested_dirs(out, a.options.reference);
-    refuse_overwriting({out / "table.json", out / "table.csv", out / "table.md"}, scene.inputs);
+    refuse_overwriting({out / "table.json", out / "table.csv", out / "table.md", out / "meshes.pvd"},
+                       scene.inputs);
     prepare_output_dir(out);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_study(scene, a.options, progress);

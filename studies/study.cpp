@@ -19,6 +19,7 @@
 #include "studies/reference.h"
 #include "common/atomic_file.h"
 #include "viz/image.h"
+#include "viz/paraview_collection.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
 #include "viz/solution_file.h"
@@ -147,6 +148,7 @@ private:
     }
     CellResult compute(std::size_t index);
     void measure(const CellTask& t, const Solution& solution, CellResult& cell);
+    void write_mesh_collection() const;
     std::string where(std::size_t index) const;
     std::string time_left() const;
 
@@ -238,6 +240,20 @@ void StudyRunner::run() {
     std::vector<std::string> views;
     for (const View& v : m_scene.views) views.push_back(v.name);
     write_study_tables(m_scene.name, m_options, views, cells);
+    write_mesh_collection();
+}
+
+// meshes.pvd: every cell's mesh as one time step, to step through them in one ParaView session.
+void StudyRunner::write_mesh_collection() const {
+    std::vector<CollectionEntry> entries;
+    for (const CellTask& t : m_tasks) {
+        const std::filesystem::path mesh = std::filesystem::path("meshes") / (t.name + ".vtp");
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(m_options.output / mesh, ec)) {
+            entries.push_back({mesh, t.name});
+        }
+    }
+    write_paraview_collection(m_options.output / "meshes.pvd", entries);
 }
 
 CellResult StudyRunner::compute(std::size_t index) {

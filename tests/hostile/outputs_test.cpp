@@ -5,6 +5,12 @@
 namespace hmcr::test {
 namespace {
 
+std::string with_mtllib(const std::string& name) {
+    std::string obj = kPlatesObj;
+    obj.replace(obj.find("plates.mtl"), 10, name);
+    return obj;
+}
+
 TEST_F(Hostile, NoCommandWritesOverItsInputs) {
     plates();
     // solve's summary goes beside the .vtp: plates.vtp would put it over plates.json.
@@ -16,6 +22,10 @@ TEST_F(Hostile, NoCommandWritesOverItsInputs) {
     refused("render p.vtp --scene plates.json -o x.png --pfm x.png", "must be a .pfm file");
     std::filesystem::create_symlink(dir() / "p.vtp", dir() / "link.pfm");
     refused("render p.vtp --scene plates.json -o x.png --pfm link.pfm", "is an input");
+    // The ParaView state goes beside the .vtp too: never over a material library of that name.
+    plates(with_mtllib("m.pvsm"));
+    m_temp.write("m.pvsm", kPlatesMtl);
+    refused("solve plates.obj -o m.vtp", "is an input of this command");
 }
 
 TEST_F(Hostile, AStudyMayNotWriteIntoItsReference) {

@@ -154,6 +154,14 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
     EXPECT_EQ(rows, 2) << md;
     EXPECT_NE(md.find("**"), std::string::npos) << md;  // the best values are bold
 
+    // meshes.pvd: every cell's mesh, one ParaView time step each, named relative to the study.
+    const std::string pvd = read_file(out / "meshes.pvd");
+    for (const auto& c : table["cells"]) {
+        const std::string name = cell_name(c["scene"], c["oracle"], c["budget"], c["seed"]);
+        EXPECT_NE(pvd.find("file=\"meshes/" + name + ".vtp\""), std::string::npos) << pvd;
+    }
+    EXPECT_NE(pvd.find("timestep=\"3\""), std::string::npos) << pvd;
+
     const Image8 plot = read_png(out / "plots" / "error_vs_elements.png");
     EXPECT_EQ(plot.width, LogLogPlot{}.width);
     EXPECT_EQ(plot.height, LogLogPlot{}.height);

@@ -1,0 +1,29 @@
+// A ParaView state file (.pvsm) that opens a solution as hmcr means it to be seen: the .vtp
+// through ParaView's XMLPolyDataReader, coloured by RadiosityColor with Map Scalars off (the
+// array is already sRGB), Gouraud interpolation, and no lighting (ambient 1, diffuse 0, the
+// light kit off), so that the colours on screen are the radiosity; the camera is a view of the
+// scene. `paraview --state=out/cornell.pvsm` opens it.
+//
+// Only the proxies and properties that differ from ParaView's defaults are written; ParaView
+// (checked with 5.11) fills in the rest when it loads the state.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "meshes/scene.h"
+
+namespace hmcr {
+
+// The state XML for the solution file (named by its absolute path: ParaView reads a state's
+// file names as they are) seen from the view.
+std::string paraview_state(const std::filesystem::path& vtp, const View& view);
+
+// Writes paraview_state() atomically.
+void write_paraview_state(const std::filesystem::path& pvsm, const std::filesystem::path& vtp,
+                          const View& view);
+
+// Characters of text that XML gives a meaning (& < > " ') as entities.
+std::string xml_escape(const std::string& text);
+
+}  // namespace hmcr
