@@ -28,8 +28,10 @@ $(BUILD)/CMakeCache.txt:
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
-# Solves the bundled Cornell box: out/cornell.vtp (open it in ParaView) and out/cornell.json.
-run: build
+# Builds hmcr alone (not the test suite) and solves the bundled Cornell box: out/cornell.vtp,
+# its summary out/cornell.json and out/cornell.pvsm (`paraview --state=out/cornell.pvsm`).
+run: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target hmcr
 	$(BUILD)/hmcr solve cornell -o out/cornell.vtp
 
 # The whole suite, statistical tests included (label `slow`).
