@@ -21,6 +21,7 @@ struct StudyArgs {
     SolverFlags flags;
     std::string budgets;  // "2000,5000,19000"
     std::string oracles = "all";
+    std::string mesh_rays;  // empty: the default, 50 x the cell's rays
     bool quiet = false;
     SceneFlags scene_flags;
 };
@@ -46,6 +47,13 @@ std::size_t parse_budget(const std::string& text) {
 int run_study(StudyArgs& a) {
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
     a.options.oracles = split_commas(a.oracles);
+    if (!a.mesh_rays.empty()) {
+        const auto rays = parse_count(a.mesh_rays);
+        if (!rays || *rays > kMaxRays) {
+            throw InputError("mesh-rays: " + quote(a.mesh_rays) + " is not a count up to 1e15");
+        }
+        a.options.mesh_rays = *rays;
+    }
     validate_study(a.options);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     apply_scene_settings(a.flags, scene, a.options.solver);
@@ -78,6 +86,13 @@ Command study_command(CLI::App& app) {
     // Every cell sets its oracle, epsilon (by the budget search) and seed.
     a->flags = add_solver_flags(*cmd, o.solver, {"oracle", "epsilon", "seed"});
     add_scene_flags(*cmd, a->scene_flags);
+    cmd->add_option("--rays-per-leaf", o.rays_per_leaf,
+                    "give each budget this many rays per leaf instead of --rays (0: --rays)")
+        ->transform(count_notation())
+        ->capture_default_str();
+    cmd->add_option("--mesh-rays", a->mesh_rays,
+                    "rays of each cell's frozen re-solve, the mesh error (default: 50 x the "
+                    "cell's rays; 0: none)");
     cmd->add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
     cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();
     cmd->add_option("-o,--output", o.output, "output folder (rerunning resumes)")->required();
