@@ -394,8 +394,12 @@ void MgfReader::add(std::vector<MgfPolygon> polygons, bool reverse) {
         if (reverse) std::reverse(polygon.begin(), polygon.end());
         ids.clear();
         for (const Eigen::Vector3d& p : polygon) {
+            const Eigen::Vector3d q = m_transform * p;
+            if (!q.allFinite()) {
+                throw InputError(m_where, "a coordinate is not finite after the transformation");
+            }
             ids.push_back(std::uint32_t(m_soup.positions.size()));
-            m_soup.positions.push_back(m_transform * p);
+            m_soup.positions.push_back(q);
         }
         m_soup.add_polygon(ids, material, m_at);
     }

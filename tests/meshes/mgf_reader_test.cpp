@@ -189,6 +189,9 @@ TEST(MgfReader, TransformationsActInOrderInnerFirst) {
     EXPECT_TRUE(contains(read_error("xf\n"), "scene.mgf:1: xf ends no transformation"));
     EXPECT_TRUE(contains(read_error("xf -q 1\nxf\n"), "scene.mgf:1: unknown transformation"));
     EXPECT_TRUE(contains(read_error("xf -s 0\nxf\n"), "scene.mgf:1: -s 0"));
+    EXPECT_TRUE(contains(
+        read_error(std::string(kSquareVertices) + "xf -s 1e300 -s 1e300\nf q0 q1 q2\nxf\n"),
+        "scene.mgf:10: a coordinate is not finite"));
 }
 
 TEST(MgfReader, MirrorsKeepFacesFacingOutward) {
