@@ -22,5 +22,7 @@ Command study_command(CLI::App& app);
 Command info_command(CLI::App& app);
 Command oracles_command(CLI::App& app);
 Command scenes_command(CLI::App& app);
+Command trace_command(CLI::App& app, const std::string& command_line);
+Command samplers_command(CLI::App& app);
 
 }  // namespace hmcr

@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "app/command.h"
-#include "studies/reference.h"
+#include "app/exposure.h"
 #include "viz/renderer.h"
 #include "viz/vtk_import.h"
 
@@ -10,24 +10,14 @@ namespace hmcr {
 namespace {
 
 struct RenderArgs {
-    std::string solution;   // .vtp
-    std::string scene;      // for the view
-    std::string view;       // empty: the scene's first view
-    std::string output;     // .png
-    std::string pfm;        // optional linear image
-    std::string reference;  // optional reference folder: its exposure for this view
-    double exposure = 0;    // > 0: fixed exposure
+    std::string solution;     // .vtp
+    std::string scene;        // for the view
+    std::string view;         // empty: the scene's first view
+    std::string output;       // .png
+    std::string pfm;          // optional linear image
+    ExposureChoice exposure;  // fixed, from a reference folder, or from the image
     RenderOptions options;
 };
-
-// The exposure a reference folder fixed for a view.
-double reference_exposure(const std::filesystem::path& dir, const std::string& view) {
-    const auto exposure = read_reference_exposures(dir);
-    if (!exposure.count(view)) {
-        throw InputError((dir / "reference.json").string(), "no view " + quote(view));
-    }
-    return exposure.at(view);
-}
 
 int run_render(const RenderArgs& a) {
     if (a.options.samples_per_axis < 1 || a.options.samples_per_axis > 16) {
@@ -35,12 +25,10 @@ int run_render(const RenderArgs& a) {
     }
     const Scene scene = load_scene(a.scene);
     const View& view = find_view(scene, a.view);
-    double exposure = a.exposure;
-    if (!a.reference.empty()) exposure = reference_exposure(a.reference, view.name);
+    const double exposure = fixed_exposure(a.exposure, view.name);
     const ShadedMesh mesh = read_vtp(a.solution);
     const Image image = render(mesh, view, a.options);
-    if (exposure <= 0) exposure = exposure_from(image);
-    write_png(a.output, image, exposure);
+    write_png(a.output, image, image_exposure(exposure, image));
     if (!a.pfm.empty()) write_pfm(a.pfm, image);
     return 0;
 }
@@ -57,9 +45,10 @@ Command render_command(CLI::App& app) {
     cmd->add_option("--pfm", a->pfm, "also write the linear radiance as .pfm");
     cmd->add_option("--samples", a->options.samples_per_axis, "n x n rays per pixel")
         ->capture_default_str();
-    auto* exposure =
-        cmd->add_option("--exposure", a->exposure, "fixed exposure (default: from this image)");
-    cmd->add_option("--reference", a->reference, "use the exposure of this reference folder")
+    auto* exposure = cmd->add_option("--exposure", a->exposure.exposure,
+                                     "fixed exposure (default: from this image)");
+    cmd->add_option("--reference", a->exposure.reference,
+                    "use the exposure of this reference folder")
         ->excludes(exposure);
     return {cmd, [a] { return run_render(*a); }};
 }

@@ -1,0 +1,90 @@
+// `hmcr trace` and `hmcr samplers` as a user meets them: the image, its density map and its
+// summary; bad input gets one line, exit code 2 and no file, before any tracing.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/cli_run.h"
+#include "tests/support/temp_dir.h"
+#include "viz/image.h"
+
+namespace hmcr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TraceCli : public testing::Test {
+protected:
+    CliRun hmcr(const std::string& args) const { return run_hmcr(args, m_dir); }
+    std::string out() const { return " -o " + (m_dir / "im.png").string(); }
+    void expect_clean_failure(const std::string& args, const std::string& needle) const {
+        const CliRun r = hmcr(args + out());
+        EXPECT_EQ(r.exit_code, 2) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(m_dir / "im.png"));
+        EXPECT_FALSE(fs::exists(m_dir / "im.json"));
+    }
+    TempDir m_temp;
+    const fs::path& m_dir = m_temp.path();
+};
+
+TEST_F(TraceCli, WritesTheImageItsDensityMapAndASummary) {
+    const CliRun r = hmcr(
+        "trace cornell --view corner --width 24 --sampler srhe --spp 12 "
+        "--seed 4 --pfm " +
+        (m_dir / "im.pfm").string() + out());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(read_png(m_dir / "im.png").width, 24);
+    EXPECT_EQ(read_png(m_dir / "im-density.png").height, 24);
+    EXPECT_EQ(read_pfm(m_dir / "im.pfm").width, 24);
+    const auto j = nlohmann::json::parse(read_file(m_dir / "im.json"));
+    EXPECT_EQ(j["scene"], "cornell");
+    EXPECT_EQ(j["view"], "corner");
+    EXPECT_EQ(j["sampler"], "srhe");
+    EXPECT_EQ(j["spp"]["target"], 12.0);
+    EXPECT_NEAR(j["spp"]["achieved"].get<double>(), 12, 0.24);
+    EXPECT_LE(j["spp"]["min"].get<double>(), j["spp"]["achieved"].get<double>());
+    EXPECT_GE(j["spp"]["max"].get<double>(), j["spp"]["achieved"].get<double>());
+    EXPECT_GT(j["threshold"].get<double>(), 0);
+    EXPECT_FALSE(j["threshold_probes"].empty());
+    EXPECT_GE(j["rays"]["traced"].get<double>(), j["rays"]["image"].get<double>());
+    EXPECT_GT(j["seconds"].get<double>(), 0);
+    EXPECT_EQ(j["seed"], 4);
+}
+
+TEST_F(TraceCli, UniformHasNoThreshold) {
+    ASSERT_EQ(hmcr("trace plates --width 16 --spp 3 --exposure 2" + out()).exit_code, 0);
+    const auto j = nlohmann::json::parse(read_file(m_dir / "im.json"));
+    EXPECT_TRUE(j["threshold"].is_null());
+    EXPECT_EQ(j["spp"]["min"], 3);
+    EXPECT_EQ(j["spp"]["max"], 3);
+    EXPECT_EQ(j["exposure"], 2.0);
+}
+
+TEST_F(TraceCli, BadInputIsOneLineAndNoFile) {
+    expect_clean_failure("trace plates --sampler nope",
+                         "unknown sampler 'nope' (valid: uniform, cc, var, entropy, "
+                         "binary-entropy, kl, cs, he, srkl, srcs, srhe)");
+    expect_clean_failure("trace plates --sampler kl --spp 3",
+                         "spp must be in 8..24 for sampler kl");
+    expect_clean_failure("trace plates --estimator fast", "estimator must be mis, nee or bsdf");
+    expect_clean_failure("trace plates --view top", "view");
+    expect_clean_failure("trace plates --reference " + (m_dir / "none").string(), "reference.json");
+    const CliRun jpg = hmcr("trace plates -o " + (m_dir / "im.jpg").string());
+    EXPECT_EQ(jpg.exit_code, 2);
+    EXPECT_NE(jpg.err.find("output must be a .png file"), std::string::npos) << jpg.err;
+}
+
+TEST_F(TraceCli, SamplersAreListed) {
+    const CliRun r = hmcr("samplers");
+    ASSERT_EQ(r.exit_code, 0);
+    for (const char* name : {"uniform", "cc", "var", "entropy", "binary-entropy", "kl", "cs", "he",
+                             "srkl", "srcs", "srhe"}) {
+        EXPECT_NE(r.out.find(std::string(name) + " "), std::string::npos) << name;
+    }
+}
+
+}  // namespace
+}  // namespace hmcr::test
