@@ -46,7 +46,9 @@ int main(int argc, char** argv) {
                                            oracles_command(app),
                                            scenes_command(app),
                                            trace_command(app, command_line),
-                                           samplers_command(app)};
+                                           samplers_command(app),
+                                           trace_reference_command(app, command_line),
+                                           trace_study_command(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -56,7 +56,9 @@ void add_trace_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
     cmd.add_option("--estimator", flags.estimator,
                    "mis (next-event + BSDF sampling), nee or bsdf alone")
         ->capture_default_str();
-    cmd.add_option("--width", flags.width, "render at this width (the view's aspect kept)");
+    if (wanted(except, "width")) {
+        cmd.add_option("--width", flags.width, "render at this width (the view's aspect kept)");
+    }
 }
 
 void apply_trace_flags(const TraceFlags& flags, TraceOptions& o) {

@@ -18,7 +18,7 @@ struct TraceFlags {
 };
 
 // Adds every trace flag to `command`, bound to `options` and `flags`, except those named in
-// `except` ("sampler", "spp", "seed", "threshold": a command that sets them itself).
+// `except` ("sampler", "spp", "seed", "threshold", "width": what a command sets itself).
 void add_trace_flags(CLI::App& command, TraceOptions& options, TraceFlags& flags,
                      const std::set<std::string>& except = {});
 

@@ -77,6 +77,25 @@ TEST_F(TraceCli, BadInputIsOneLineAndNoFile) {
     EXPECT_NE(jpg.err.find("output must be a .png file"), std::string::npos) << jpg.err;
 }
 
+// A traced reference folder serves `trace --reference` (its exposure) and `trace-study`.
+TEST_F(TraceCli, TraceReferenceAndTraceStudyWriteTheirFiles) {
+    const std::string ref = (m_dir / "ref").string(), study = (m_dir / "study").string();
+    ASSERT_EQ(hmcr("trace-reference plates --width 10 --spp 16 -o " + ref).exit_code, 0);
+    const auto j = nlohmann::json::parse(read_file(m_dir / "ref" / "reference.json"));
+    EXPECT_EQ(j["reference"]["kind"], "traced");
+    EXPECT_EQ(j["reference"]["spp"], 16.0);
+    const double exposure = j["reference"]["views"]["oblique"]["exposure"].get<double>();
+    EXPECT_EQ(read_pfm(m_dir / "ref" / "views" / "side.pfm").width, 10);
+    ASSERT_EQ(hmcr("trace plates --view oblique --width 10 --reference " + ref + out()).exit_code,
+              0);
+    EXPECT_EQ(nlohmann::json::parse(read_file(m_dir / "im.json"))["exposure"], exposure);
+    const CliRun r = hmcr("trace-study plates --reference " + ref +
+                          " --samplers uniform,srhe --spp 8 --seeds 1 -q -o " + study);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(m_dir / "study" / "cells" / "plates-srhe-spp8-s1.json"));
+    EXPECT_NE(read_file(m_dir / "study" / "table.md").find("| srhe | 1/1 |"), std::string::npos);
+}
+
 TEST_F(TraceCli, SamplersAreListed) {
     const CliRun r = hmcr("samplers");
     ASSERT_EQ(r.exit_code, 0);
