@@ -18,8 +18,8 @@ TracedReference compute_traced_reference(const Scene& scene, const std::vector<V
     const PathTracer tracer(build_patch_set(scene.mesh), options.path);
     TracedReference ref;
     for (const View& v : views) {
-        progress.stage("view " + v.name);
-        TraceResult r = trace_image(tracer, v, options, progress);
+        PrefixedProgress view_progress(progress, "view " + v.name + ": ");
+        TraceResult r = trace_image(tracer, v, options, view_progress);
         const double exposure = exposure_from(r.image);
         ref.views[v.name] = {std::move(r.image), exposure, r.rays, r.seconds};
     }
