@@ -7,9 +7,11 @@ SANITIZE ?= OFF
 # Debian 12 packages hmcr builds against (README: "Dependencies" says why each is there).
 DEPS := g++ cmake make pkg-config zlib1g-dev libembree-dev libopenmesh-dev libvtk9-dev \
         libeigen3-dev libtbb-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev \
-        libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
+        libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
 
-.PHONY: deps build run test test-quick bench format clean
+SANITIZE_BUILD ?= build-sanitize
+
+.PHONY: deps build run test test-quick test-sanitize bench format clean
 
 # Installs only what is missing, so it is quick when everything is present.
 deps:
@@ -38,6 +40,15 @@ test: build
 test-quick: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 
+# The fast suite again under AddressSanitizer and UBSan (clang), and a short run of every fuzz
+# target (tests/fuzz): what CI runs after `make test`.
+test-sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_COMPILER=clang++ -DHMCR_FUZZ=ON
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
+	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -L fuzz
+
 bench: build
 	$(BUILD)/hmcr_bench
 
@@ -45,4 +56,4 @@ format:
 	clang-format -i $$(git ls-files '*.cpp' '*.h')
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD)

@@ -25,6 +25,5 @@ Command scenes_command(CLI::App& app);
 Command trace_command(CLI::App& app, const std::string& command_line);
 Command samplers_command(CLI::App& app);
 Command trace_reference_command(CLI::App& app, const std::string& command_line);
-Command trace_study_command(CLI::App& app);
 
 }  // namespace hmcr

@@ -5,6 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "app/scene_input.h"
 #include "app/command.h"
 #include "app/count.h"
 #include "app/terminal_progress.h"
@@ -12,7 +13,7 @@
 #include "information/leaf_patches.h"
 #include "information/scene_information.h"
 #include "meshes/scene.h"
-#include "viz/vtk_import.h"
+#include "viz/solution_file.h"
 
 namespace hmcr {
 namespace {
@@ -36,13 +37,16 @@ struct InfoTarget {
 
 InfoTarget info_target(const InfoArgs& a) {
     if (fs::path(a.scene).extension() != ".vtp") {
-        const Scene scene = load_scene(a.scene, SceneUse::geometry);
+        const Scene scene = load_scene_reporting(a.scene, false, SceneUse::geometry);
         return {scene.name, build_patch_set(scene.mesh)};
     }
-    const std::string name =
-        a.solution_scene.empty() ? fs::path(a.scene).stem().string() : a.solution_scene;
-    return {name + " (leaves of " + fs::path(a.scene).filename().string() + ")",
-            leaf_patches(read_vtp(a.scene))};
+    // With --scene the solution must be of that scene; without, it names its own.
+    const SolutionFile solution =
+        a.solution_scene.empty()
+            ? read_solution(a.scene)
+            : read_solution(a.scene, load_scene_reporting(a.solution_scene, false, SceneUse::geometry));
+    return {solution.meta.scene + " (leaves of " + fs::path(a.scene).filename().string() + ")",
+            leaf_patches(solution.mesh)};
 }
 
 void print_table(const InfoTarget& t, const InformationMeasures& m, double seconds) {
@@ -130,7 +134,8 @@ Command info_command(CLI::App& app) {
     cmd->add_option("scene", a->scene,
                     "bundled scene name, scene .json, .obj, or a solution's .vtp (its leaves)")
         ->required();
-    cmd->add_option("--scene", a->solution_scene, "with a .vtp: the scene it solves (its name)");
+    cmd->add_option("--scene", a->solution_scene,
+                    "with a .vtp: the scene it solves (checked against the solution)");
     cmd->add_option("--method", a->method,
                     "local (rays from each patch) or global (lines through the bounding sphere)")
         ->capture_default_str();

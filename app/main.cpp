@@ -6,6 +6,7 @@
 
 #include "app/command.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 
 namespace {
 
@@ -25,6 +26,9 @@ int run(const hmcr::Command& command) {
         return command.run();
     } catch (const hmcr::InputError& e) {
         return fail(2, e.what());
+    } catch (const hmcr::Interrupted& e) {
+        // What was complete is kept (a study's cells); nothing partial is left.
+        return fail(128 + e.signal(), std::string(e.what()) + "; no partial output left");
     } catch (const std::exception& e) {
         return fail(1, std::string("internal error: ") + e.what());
     }
@@ -38,6 +42,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("hmcr ") + HMCR_VERSION);
     app.require_subcommand(1);
     const std::string command_line = join_args(argc, argv);
+    install_interrupt_handlers();
     const std::vector<Command> commands = {solve_command(app, command_line),
                                            render_command(app),
                                            reference_command(app, command_line),
@@ -47,8 +52,7 @@ int main(int argc, char** argv) {
                                            scenes_command(app),
                                            trace_command(app, command_line),
                                            samplers_command(app),
-                                           trace_reference_command(app, command_line),
-                                           trace_study_command(app)};
+                                           trace_reference_command(app, command_line)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

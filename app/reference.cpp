@@ -3,10 +3,12 @@
 
 #include <memory>
 
+#include "app/scene_input.h"
 #include "app/command.h"
 #include "app/run_summary.h"
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
+#include "common/output_paths.h"
 #include "studies/reference.h"
 
 namespace hmcr {
@@ -22,13 +24,15 @@ struct ReferenceArgs {
 
 int run_reference(ReferenceArgs& a, const std::string& command_line) {
     if (!(a.options.max_area > 0)) throw InputError("max-area must be positive");
-    const Scene scene = load_scene(a.scene);
+    const Scene scene = load_scene_reporting(a.scene, a.quiet);
     apply_scene_settings(a.flags, scene, a.options.solver);
+    const std::filesystem::path dir(a.output);
+    refuse_overwriting(reference_files(dir, scene), scene.inputs);
+    prepare_output_dir(dir);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr reference " + scene.name);
     const Reference ref = compute_reference(scene, a.options, progress);
     RunTimings timings;
     timings.total_seconds = ref.seconds;
-    const std::filesystem::path dir(a.output);
     write_reference(dir, scene, ref, a.options,
                     run_summary(scene, ref.solution, timings, command_line,
                                 (dir / "reference.vtp").string()));

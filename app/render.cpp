@@ -3,8 +3,10 @@
 
 #include "app/command.h"
 #include "app/exposure.h"
+#include "app/scene_input.h"
+#include "common/output_paths.h"
 #include "viz/renderer.h"
-#include "viz/vtk_import.h"
+#include "viz/solution_file.h"
 
 namespace hmcr {
 namespace {
@@ -19,14 +21,33 @@ struct RenderArgs {
     RenderOptions options;
 };
 
+// Every file the render reads, and the outputs checked before any work.
+void check_outputs(const RenderArgs& a, const Scene& scene) {
+    if (std::filesystem::path(a.output).extension() != ".png") {
+        throw InputError("output must be a .png file, got " + quote(a.output));
+    }
+    if (!a.pfm.empty() && std::filesystem::path(a.pfm).extension() != ".pfm") {
+        throw InputError("pfm must be a .pfm file, got " + quote(a.pfm));
+    }
+    std::vector<std::filesystem::path> inputs = scene.inputs;
+    inputs.push_back(a.solution);
+    for (const auto& in : exposure_inputs(a.exposure)) inputs.push_back(in);
+    std::vector<std::filesystem::path> outputs{a.output};
+    if (!a.pfm.empty()) outputs.push_back(a.pfm);
+    refuse_overwriting(outputs, inputs);
+    for (const auto& out : outputs) prepare_output_file(out);
+}
+
 int run_render(const RenderArgs& a) {
     if (a.options.samples_per_axis < 1 || a.options.samples_per_axis > 16) {
         throw InputError("samples must be in 1..16");
     }
-    const Scene scene = load_scene(a.scene);
+    check_exposure(a.exposure);
+    const Scene scene = load_scene_reporting(a.scene, false);
+    check_outputs(a, scene);
     const View& view = find_view(scene, a.view);
     const double exposure = fixed_exposure(a.exposure, view.name);
-    const ShadedMesh mesh = read_vtp(a.solution);
+    const ShadedMesh mesh = read_solution(a.solution, scene).mesh;
     const Image image = render(mesh, view, a.options);
     write_png(a.output, image, image_exposure(exposure, image));
     if (!a.pfm.empty()) write_pfm(a.pfm, image);
@@ -45,12 +66,11 @@ Command render_command(CLI::App& app) {
     cmd->add_option("--pfm", a->pfm, "also write the linear radiance as .pfm");
     cmd->add_option("--samples", a->options.samples_per_axis, "n x n rays per pixel")
         ->capture_default_str();
-    auto* exposure = cmd->add_option("--exposure", a->exposure.exposure,
-                                     "fixed exposure (default: from this image)");
-    cmd->add_option("--reference", a->exposure.reference,
-                    "use the exposure of this reference folder")
-        ->excludes(exposure);
-    return {cmd, [a] { return run_render(*a); }};
+    add_exposure_flags(*cmd, a->exposure);
+    return {cmd, [a, cmd] {
+                note_exposure_given(*cmd, a->exposure);
+                return run_render(*a);
+            }};
 }
 
 }  // namespace hmcr

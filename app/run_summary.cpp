@@ -1,7 +1,6 @@
 #include "app/run_summary.h"
 
-#include <sys/resource.h>
-
+#include "common/memory.h"
 #include "radiosity/solver_settings.h"
 
 namespace hmcr {
@@ -56,11 +55,6 @@ nlohmann::json budget_json(const BudgetOptions& budget, const std::vector<Budget
             {"probes", nlohmann::json(probes)}};
 }
 
-std::size_t peak_memory_bytes() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return std::size_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
-}
 
 nlohmann::json run_summary(const Scene& scene, const Solution& solution, const RunTimings& timings,
                            const std::string& command_line, const std::string& output) {

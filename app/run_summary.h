@@ -21,7 +21,5 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
 // The summary's "budget": the target, the tolerance and every probe of the search.
 nlohmann::json budget_json(const BudgetOptions& budget, const std::vector<BudgetProbe>& probes);
 
-// Peak resident memory of this process so far, bytes.
-std::size_t peak_memory_bytes();
 
 }  // namespace hmcr

@@ -3,12 +3,14 @@
 
 #include <memory>
 
+#include "app/scene_input.h"
 #include "app/command.h"
 #include "app/count.h"
 #include "app/run_summary.h"
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
 #include "common/atomic_file.h"
+#include "common/output_paths.h"
 #include "common/stopwatch.h"
 #include "radiosity/budget_search.h"
 #include "viz/solution_file.h"
@@ -58,16 +60,33 @@ void report(const Scene& scene, const Solution& sol, const RunTimings& timings,
                timings.total_seconds, vtp.string(), json.string());
 }
 
+// The budget options are checked whether or not a budget is given: a bad value is a mistake
+// either way.
+void check_budget(const SolveArgs& args, const CLI::App& cmd) {
+    if (cmd.count("--budget") && args.budget.leaves == 0) {
+        throw InputError("budget must be a positive leaf count, got 0");
+    }
+    if (!(args.budget.tolerance > 0 && args.budget.tolerance < 1)) {
+        throw InputError(fmt::format("budget-tolerance must be in (0, 1), got {}",
+                                     args.budget.tolerance));
+    }
+}
+
 int run_solve(SolveArgs& args, const std::string& command_line) {
     const auto start = std::chrono::steady_clock::now();
+    check_budget(args, *args.flags.command);
     if (!(args.crease_degrees >= 0 && args.crease_degrees <= 180)) {
         throw InputError(fmt::format("crease-angle must be in [0, 180] degrees, got {}",
                                      args.crease_degrees));
     }
     const ProgressMode mode = progress_mode_for(args.progress, args.quiet);
-    const Scene scene = load_scene(args.scene);
+    const Scene scene = load_scene_reporting(args.scene, args.quiet);
     apply_scene_settings(args.flags, scene, args.options);
     const fs::path vtp = output_path(args, scene);
+    fs::path json = vtp;
+    json.replace_extension(".json");
+    refuse_overwriting({vtp, json}, scene.inputs);
+    prepare_output_file(vtp);
     RunTimings timings;
     timings.load_seconds = seconds_since(start);
 
@@ -76,11 +95,9 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     const Solution& sol = found.solution;
 
     const auto t_out = std::chrono::steady_clock::now();
-    write_solution(vtp, sol, scene.mesh, args.crease_degrees, double(sol.stats.iterations.size()));
+    write_solution(vtp, sol, scene, args.crease_degrees, double(sol.stats.iterations.size()));
     timings.output_seconds = seconds_since(t_out);
     timings.total_seconds = seconds_since(start);
-    fs::path json = vtp;
-    json.replace_extension(".json");
     auto summary = run_summary(scene, sol, timings, command_line, vtp.string());
     if (args.budget.leaves > 0) summary["budget"] = budget_json(args.budget, found.probes);
     write_text_atomically(json, summary.dump(2) + "\n");

@@ -30,6 +30,7 @@ void TerminalProgress::stage(std::string_view label) {
     m_stage = label;
     m_last_decile = 0;
     m_last_percent = -1;
+    m_last_line = 0;
     m_start = std::chrono::steady_clock::now();
 }
 
@@ -44,9 +45,16 @@ void TerminalProgress::advance(double fraction) {
                    std::string(std::size_t(filled), '#'), percent, elapsed, eta);
         std::fflush(stderr);
         m_bar_open = true;
-    } else if (m_mode == ProgressMode::lines && percent / 10 > m_last_decile) {
+    } else if (m_mode == ProgressMode::lines &&
+               (percent / 10 > m_last_decile || elapsed - m_last_line > kLinePeriod)) {
+        // Every 10%, and every half minute in between: a long run says how long it will take.
         m_last_decile = percent / 10;
-        fmt::print(stderr, "{}: {}%, {:.1f} s\n", prefix(), m_last_decile * 10, elapsed);
+        m_last_line = elapsed;
+        const std::string left =
+            fraction > 0 && fraction < 1
+                ? fmt::format(", about {:.0f} s left", elapsed * (1 - fraction) / fraction)
+                : std::string();
+        fmt::print(stderr, "{}: {}%, {:.1f} s{}\n", prefix(), percent, elapsed, left);
     }
 }
 

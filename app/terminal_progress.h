@@ -34,6 +34,8 @@ private:
     std::string m_label, m_stage;
     int m_last_decile = 0;  // 0% is not worth a line
     int m_last_percent = -1;
+    double m_last_line = 0;  // seconds into the stage of the last line printed
+    static constexpr double kLinePeriod = 30;
     bool m_bar_open = false;
     std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };

@@ -11,7 +11,10 @@
 #include "app/run_summary.h"
 #include "app/terminal_progress.h"
 #include "app/trace_flags.h"
+#include "app/scene_input.h"
 #include "common/atomic_file.h"
+#include "common/memory.h"
+#include "common/output_paths.h"
 #include "common/stopwatch.h"
 #include "viz/density_map.h"
 
@@ -72,13 +75,37 @@ nlohmann::json summary(const TraceArgs& a, const Scene& scene, const View& view,
             {"peak_memory_bytes", peak_memory_bytes()}};
 }
 
+// The files a trace writes: IMAGE.png, IMAGE-density.png, IMAGE.json and the optional .pfm.
+std::vector<fs::path> outputs(const TraceArgs& a) {
+    const fs::path png(a.output);
+    std::vector<fs::path> out{png, beside(png, "-density", ".png"), beside(png, "", ".json")};
+    if (!a.pfm.empty()) out.emplace_back(a.pfm);
+    return out;
+}
+
+// Every option and output checked before any work: a bad run is refused with nothing written.
+void check_outputs(const TraceArgs& a, const Scene& scene) {
+    if (fs::path(a.output).extension() != ".png") {
+        throw InputError("output must be a .png file, got " + quote(a.output));
+    }
+    if (!a.pfm.empty() && fs::path(a.pfm).extension() != ".pfm") {
+        throw InputError("pfm must be a .pfm file, got " + quote(a.pfm));
+    }
+    std::vector<fs::path> inputs = scene.inputs;
+    for (const auto& in : exposure_inputs(a.exposure)) inputs.push_back(in);
+    const std::vector<fs::path> out = outputs(a);
+    refuse_overwriting(out, inputs);
+    for (const auto& file : out) prepare_output_file(file);
+}
+
 int run_trace(TraceArgs& a, const std::string& command_line) {
     apply_trace_flags(a.flags, a.options);
-    const fs::path png(a.output);
-    if (png.extension() != ".png")
-        throw InputError("output must be a .png file, got " + quote(a.output));
+    validate_trace_options(a.options);
+    check_exposure(a.exposure);
     const ProgressMode mode = progress_mode_for(a.progress, a.quiet);
-    const Scene scene = load_scene(a.scene);
+    const Scene scene = load_scene_reporting(a.scene, a.quiet);
+    check_outputs(a, scene);
+    const fs::path png(a.output);
     const View view = sized_view(find_view(scene, a.view), a.flags);
     const double fixed = fixed_exposure(a.exposure, view.name);
     const PathTracer tracer(build_patch_set(scene.mesh), a.options.path);
@@ -110,14 +137,13 @@ Command trace_command(CLI::App& app, const std::string& command_line) {
         ->required();
     cmd->add_option("--pfm", a->pfm, "also write the linear radiance as .pfm");
     add_trace_flags(*cmd, a->options, a->flags);
-    auto* exposure = cmd->add_option("--exposure", a->exposure.exposure,
-                                     "fixed exposure (default: from this image)");
-    cmd->add_option("--reference", a->exposure.reference,
-                    "use the exposure of this reference folder")
-        ->excludes(exposure);
+    add_exposure_flags(*cmd, a->exposure);
     cmd->add_option("--progress", a->progress, "auto, bar, lines or none")->capture_default_str();
     cmd->add_flag("-q,--quiet", a->quiet, "print only errors");
-    return {cmd, [a, command_line] { return run_trace(*a, command_line); }};
+    return {cmd, [a, cmd, command_line] {
+                note_exposure_given(*cmd, a->exposure);
+                return run_trace(*a, command_line);
+            }};
 }
 
 }  // namespace hmcr

@@ -35,6 +35,15 @@ void add_sampling_flags(CLI::App& cmd, TraceOptions& o, const std::set<std::stri
     cmd.add_option("--max-spp", o.max_spp, "most samples in one pixel (default 8 x spp)");
     cmd.add_option("--tree-depth", o.tree_depth, "subpixel quadtree depth limit (entropy samplers)")
         ->capture_default_str();
+    if (wanted(except, "criterion-exposure")) {
+        cmd.add_option("--criterion-exposure", o.criterion_exposure,
+                       "adaptive samplers judge radiance x this, clamped to [0, 1] (display "
+                       "values); 0: physical radiance")
+            ->capture_default_str();
+    }
+    cmd.add_flag("--fresh", o.fresh,
+                 "adaptive samplers: the image from fresh samples at the chosen counts "
+                 "(unbiased, about twice the rays)");
 }
 
 }  // namespace
@@ -47,11 +56,12 @@ void add_trace_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
             ->transform(count_notation())
             ->capture_default_str();
     }
-    cmd.add_option("--threads", o.threads,
-                   "worker threads, 0 = all cores; images do not "
-                   "depend on it")
-        ->capture_default_str();
-    cmd.add_option("--max-depth", o.path.max_depth, "most bounces of a path")
+    if (wanted(except, "threads")) {
+        cmd.add_option("--threads", o.threads,
+                       "worker threads, 0 = all cores; images do not depend on it")
+            ->capture_default_str();
+    }
+    cmd.add_option("--bounces", o.path.max_depth, "most bounces of a path")
         ->capture_default_str();
     cmd.add_option("--estimator", flags.estimator,
                    "mis (next-event + BSDF sampling), nee or bsdf alone")
@@ -69,7 +79,7 @@ void apply_trace_flags(const TraceFlags& flags, TraceOptions& o) {
         throw InputError(e.what());
     }
     if (o.path.max_depth < 0 || o.path.max_depth > 100000) {
-        throw InputError("max-depth must be in 0..100000");
+        throw InputError("bounces must be in 0..100000");
     }
     if (o.threads < 0 || o.threads > 4096) throw InputError("threads must be in 0..4096");
     if (flags.width < 0 || flags.width > 16384) throw InputError("width must be in 1..16384");

@@ -1,5 +1,5 @@
 // The path tracer's options (viz/trace_image.h) on the command line, shared by `trace`,
-// `trace-reference` and `trace-study`.
+// `trace-reference` and the sampling study (`study --samplers`).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -18,7 +18,8 @@ struct TraceFlags {
 };
 
 // Adds every trace flag to `command`, bound to `options` and `flags`, except those named in
-// `except` ("sampler", "spp", "seed", "threshold", "width": what a command sets itself).
+// `except` ("sampler", "spp", "seed", "threshold", "width", "threads", "criterion-exposure":
+// what a command sets itself).
 void add_trace_flags(CLI::App& command, TraceOptions& options, TraceFlags& flags,
                      const std::set<std::string>& except = {});
 

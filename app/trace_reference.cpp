@@ -5,8 +5,10 @@
 #include <memory>
 
 #include "app/command.h"
+#include "app/scene_input.h"
 #include "app/terminal_progress.h"
 #include "app/trace_flags.h"
+#include "common/output_paths.h"
 #include "studies/traced_reference.h"
 
 namespace hmcr {
@@ -25,7 +27,12 @@ struct TraceReferenceArgs {
 
 int run_trace_reference(TraceReferenceArgs& a, const std::string& command_line) {
     apply_trace_flags(a.flags, a.options);
-    const Scene scene = load_scene(a.scene);
+    a.options.sampler = "uniform";
+    validate_trace_options(a.options);
+    const Scene scene = load_scene_reporting(a.scene, a.quiet);
+    const std::filesystem::path dir(a.output);
+    refuse_overwriting(traced_reference_files(dir, scene), scene.inputs);
+    prepare_output_dir(dir);
     std::vector<View> views;
     for (const View& v : scene.views) views.push_back(sized_view(v, a.flags));
     TerminalProgress progress(progress_mode_for("auto", a.quiet),

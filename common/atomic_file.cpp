@@ -1,10 +1,16 @@
 #include "common/atomic_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <atomic>
 #include <fstream>
 #include <stdexcept>
+
+#include "common/error.h"
 
 namespace hmcr {
 namespace {
@@ -22,11 +28,19 @@ std::filesystem::path temp_path_for(const std::filesystem::path& target) {
 void write_file_atomically(const std::filesystem::path& target,
                            const std::function<void(const std::filesystem::path& tmp)>& write) {
     const std::filesystem::path parent = target.parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
+    std::error_code ec;
+    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+    if (ec) throw InputError("cannot write " + target.string(), ec.message());
     const std::filesystem::path tmp = temp_path_for(target);
+    // Creating the temp file ourselves names the reason (permission, no such folder, a /proc
+    // that takes no files) in our words; the writer then fills it.
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+    if (fd < 0) throw InputError("cannot write " + target.string(), std::strerror(errno));
+    ::close(fd);
     try {
         write(tmp);
-        std::filesystem::rename(tmp, target);
+        std::filesystem::rename(tmp, target, ec);
+        if (ec) throw InputError("cannot write " + target.string(), ec.message());
     } catch (...) {
         std::error_code ignored;
         std::filesystem::remove(tmp, ignored);
@@ -39,7 +53,7 @@ void write_text_atomically(const std::filesystem::path& target, const std::strin
         std::ofstream out(tmp, std::ios::binary);
         out.write(text.data(), std::streamsize(text.size()));
         out.close();
-        if (!out) throw std::runtime_error("cannot write " + target.string());
+        if (!out) throw InputError("cannot write " + target.string(), std::strerror(errno));
     });
 }
 

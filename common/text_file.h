@@ -24,14 +24,16 @@ std::string read_text_file(const std::filesystem::path& path,
 // The parsed JSON file; a syntax error is "PATH:LINE: why".
 nlohmann::json read_json_file(const std::filesystem::path& path);
 
-// Runs `read` on the parsed file; a missing key or a wrong type becomes the same one-line
-// error naming the file.
+// Runs `read` on the parsed file; a missing key, a wrong type, or an InputError of `read`
+// becomes a one-line error naming the file.
 template <typename Read>
 auto read_json_file(const std::filesystem::path& path, Read&& read) {
     const nlohmann::json j = read_json_file(path);
     try {
         return read(j);
     } catch (const nlohmann::json::exception& e) {
+        throw InputError(path.string(), e.what());
+    } catch (const InputError& e) {
         throw InputError(path.string(), e.what());
     }
 }

@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "radiosity/kernel.h"
 
 namespace hmcr {
@@ -33,6 +34,7 @@ void parallel_blocks(std::uint64_t blocks, Progress& progress,
         const std::uint64_t last = std::min(blocks, first + kRound);
         tbb::parallel_for(first, last, [&](std::uint64_t block) { f(block); });
         progress.advance(double(last) / double(blocks));
+        throw_if_interrupted();
     }
 }
 

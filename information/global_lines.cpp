@@ -2,10 +2,13 @@
 // direction, then a uniform point of the disk across the sphere perpendicular to it). Each
 // line is followed through every surface it crosses.
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "common/memory.h"
 #include "radiosity/rng.h"
 #include "radiosity/sampling.h"
 #include "information/channel_samples.h"
@@ -134,6 +137,9 @@ ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& sc
         throw std::invalid_argument("too many patches x batches for global lines");
     }
     out.lines = options.lines;
+    // About two samples a line in a closed scene, each a record (8 bytes) and a target (4):
+    // refused before it is allocated.
+    require_memory(24.0 * double(options.lines), fmt::format("{} global lines", options.lines));
     const Sphere sphere = bounding_sphere(patches);
     std::vector<Block> blocks((options.lines + kBlock - 1) / kBlock);
     parallel_blocks(blocks.size(), progress, [&](std::uint64_t i) {

@@ -1,7 +1,10 @@
 // Local lines: n_i cosine-distributed rays from area-uniform points of each patch i.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
+#include "common/memory.h"
 #include "radiosity/kernel.h"
 #include "radiosity/rng.h"
 #include "radiosity/sampling.h"
@@ -52,6 +55,9 @@ ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& sce
                                  const LineOptions& options, Progress& progress) {
     ChannelSamples out;
     const std::uint32_t b = out.batches = batch_count(options);
+    // One target (4 bytes) per ray, and the slot table: refused before it is allocated.
+    require_memory(4.0 * double(options.lines) + 8.0 * double(patches.patches.size()) * b,
+                   fmt::format("{} local lines", options.lines));
     const auto counts = local_line_counts(patches, options);
     // Ray k of patch i is number start[i] + k in tracing order; it goes to batch k % b, so every
     // (patch, batch) slot holds counts[i] / b rays.

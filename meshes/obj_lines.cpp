@@ -57,9 +57,19 @@ long parse_index(std::string_view text, std::string_view token, const std::strin
     return value;
 }
 
+// How many v, vt and vn statements: in the whole file, or read so far.
+struct VertexCounts {
+    int positions = 0, texcoords = 0, normals = 0;
+
+    int of(std::size_t part) const { return part == 0 ? positions : part == 1 ? texcoords : normals; }
+};
+
+constexpr const char* kAttributeNames[3] = {"vertex", "texture coordinate", "normal"};
+constexpr const char* kAttributePlurals[3] = {"vertices", "texture coordinates", "normals"};
+
 // Checks one "v", "v/t", "v//n" or "v/t/n" reference. Negative indices count back from the
-// vertices read so far; positive ones may not exceed the file's vertex count.
-void check_reference(std::string_view token, int vertices_so_far, int vertex_total,
+// statements read so far; positive ones may not exceed the file's count of that kind.
+void check_reference(std::string_view token, const VertexCounts& so_far, const VertexCounts& total,
                      const std::string& path, int line) {
     std::vector<std::string_view> parts;
     std::size_t start = 0;
@@ -71,15 +81,15 @@ void check_reference(std::string_view token, int vertices_so_far, int vertex_tot
     parts.push_back(token.substr(start));
     const bool shape_ok = parts.size() <= 3 && !(parts.size() == 2 && parts[1].empty());
     if (!shape_ok) fail(path, line, fmt::format("bad vertex reference {}", quote(token)));
-    for (std::size_t i = 1; i < parts.size(); ++i) {
+    for (std::size_t i = 0; i < parts.size(); ++i) {
         if (i == 1 && parts[i].empty()) continue;  // "v//n"
-        parse_index(parts[i], token, path, line);
-    }
-    const long v = parse_index(parts[0], token, path, line);
-    if (v > vertex_total || -v > vertices_so_far) {
-        fail(path, line,
-             fmt::format("vertex reference {} is out of range ({} vertices)", quote(token),
-                         v > 0 ? vertex_total : vertices_so_far));
+        const long k = parse_index(parts[i], token, path, line);
+        if (k > total.of(i) || -k > so_far.of(i)) {
+            fail(path, line,
+                 fmt::format("{} reference {} is out of range ({} {})", kAttributeNames[i],
+                             quote(token), k > 0 ? total.of(i) : so_far.of(i),
+                             kAttributePlurals[i]));
+        }
     }
 }
 
@@ -93,13 +103,10 @@ void check_numbers(const std::vector<std::string_view>& tokens, std::size_t min,
     for (std::size_t i = 1; i < tokens.size(); ++i) parse_number(tokens[i], path, line);
 }
 
-void check_face(const std::vector<std::string_view>& tokens, const ObjLines& lines,
-                int vertex_total, const std::string& path, int line) {
+void check_face(const std::vector<std::string_view>& tokens, const VertexCounts& so_far,
+                const VertexCounts& total, const std::string& path, int line) {
     const int n = static_cast<int>(tokens.size()) - 1;
-    for (int i = 1; i <= n; ++i) {
-        check_reference(tokens[i], static_cast<int>(lines.vertex_lines.size()), vertex_total, path,
-                        line);
-    }
+    for (int i = 1; i <= n; ++i) check_reference(tokens[i], so_far, total, path, line);
     if (n < 3 || n > 4) {
         fail(path, line,
              fmt::format("polygon with {} vertices: hmcr reads triangles and convex "
@@ -108,46 +115,54 @@ void check_face(const std::vector<std::string_view>& tokens, const ObjLines& lin
     }
 }
 
-bool is_blank_or_comment(const std::vector<std::string_view>& tokens) {
-    return tokens.empty() || tokens[0].front() == '#';
-}
+// The OBJ scan's state: counts so far and in all, the material in effect, the result.
+struct ObjScan {
+    const std::string& path;
+    VertexCounts total, so_far;
+    std::string usemtl;
+    ObjLines out;
+};
 
-// Handles one OBJ statement; `usemtl` is the material in effect, updated here.
-void scan_obj_statement(const std::vector<std::string_view>& tokens, int vertex_total,
-                        const std::string& path, int line, std::string& usemtl, ObjLines& out) {
+// Handles one OBJ statement.
+void scan_obj_statement(const std::vector<std::string_view>& tokens, int line, ObjScan& scan) {
     const std::string_view key = tokens[0];
+    const std::string& path = scan.path;
     if (key == "v") {
         check_numbers(tokens, 3, 7, path, line);  // x y z [w] or x y z r g b
-        out.vertex_lines.push_back(line);
+        ++scan.so_far.positions;
     } else if (key == "vt" || key == "vn" || key == "vp") {
         check_numbers(tokens, 1, 4, path, line);
+        if (key == "vt") ++scan.so_far.texcoords;
+        if (key == "vn") ++scan.so_far.normals;
     } else if (key == "f") {
-        check_face(tokens, out, vertex_total, path, line);
-        out.faces.push_back({line, static_cast<int>(tokens.size()) - 1, usemtl});
+        check_face(tokens, scan.so_far, scan.total, path, line);
+        scan.out.faces.push_back({line, scan.usemtl});
     } else if (key == "l" || key == "p") {
         // Ignored by hmcr, but tinyobjloader rejects bad references in them without a line.
         for (std::size_t i = 1; i < tokens.size(); ++i) {
-            check_reference(tokens[i], static_cast<int>(out.vertex_lines.size()), vertex_total,
-                            path, line);
+            check_reference(tokens[i], scan.so_far, scan.total, path, line);
         }
     } else if (key == "usemtl" || key == "mtllib") {
         if (tokens.size() < 2) fail(path, line, fmt::format("'{}' needs a name", key));
         if (key == "usemtl") {
-            usemtl = std::string(tokens[1]);
+            scan.usemtl = std::string(tokens[1]);
         } else {
-            out.mtllibs.push_back({line, {tokens.begin() + 1, tokens.end()}});
+            scan.out.mtllibs.push_back({line, {tokens.begin() + 1, tokens.end()}});
         }
     } else if (key != "o" && key != "g" && key != "s") {
         fail(path, line, fmt::format("unknown OBJ statement {}", quote(key)));
     }
 }
 
-// Counts `v` statements first: positive indices may refer to vertices defined further down.
-int count_vertices(std::string_view text) {
-    int count = 0;
+// Counts the statements of each kind first: positive indices may refer further down.
+VertexCounts count_vertices(std::string_view text) {
+    VertexCounts count;
     for_each_line(text, [&](int, std::string_view line) {
         const auto tokens = split_tokens(line);
-        if (!tokens.empty() && tokens[0] == "v") ++count;
+        if (tokens.empty()) return;
+        if (tokens[0] == "v") ++count.positions;
+        if (tokens[0] == "vt") ++count.texcoords;
+        if (tokens[0] == "vn") ++count.normals;
     });
     return count;
 }
@@ -159,14 +174,58 @@ void reject_nul(std::string_view line, const std::string& path, int line_number)
 }
 
 // tinyobjloader names a material by the rest of the `newmtl` line after one separator; we
-// insist on a single word so that `usemtl NAME` (which reads one word) can find it.
-std::string material_name(const std::vector<std::string_view>& tokens, std::string_view line,
-                          const std::string& path, int line_number) {
-    const std::size_t after_key = tokens[0].data() - line.data() + tokens[0].size();
-    if (tokens.size() != 2 || tokens[1].data() != line.data() + after_key + 1) {
-        fail(path, line_number, "newmtl needs one material name without spaces");
+// insist on a single word so that `usemtl NAME` (which reads one word) can find it. A name
+// defined twice is refused: tinyobjloader would silently keep the first.
+MtlMaterialLines& define_material(const std::vector<std::string_view>& tokens, int line,
+                                  const std::string& path, MtlLines& lines) {
+    if (tokens.size() != 2) fail(path, line, "newmtl needs one material name without spaces");
+    const std::string name(tokens[1]);
+    auto [it, inserted] = lines.try_emplace(name, MtlMaterialLines{path, line, 0, 0});
+    if (!inserted) {
+        fail(path, line, fmt::format("material {} is defined again (first at {})", quote(name),
+                                     at(it->second.file, it->second.newmtl_line)));
     }
-    return std::string(tokens[1]);
+    return it->second;
+}
+
+// The MTL statements of the common readers; hmcr uses Kd and Ke and ignores the others.
+bool is_known_mtl_statement(std::string_view key) {
+    static constexpr std::string_view kKnown[] = {
+        "Ka", "Ks", "Kt", "Tf", "Ns", "Ni", "d", "Tr", "illum", "sharpness", "bump", "disp",
+        "decal", "refl", "norm", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor"};
+    if (key.rfind("map_", 0) == 0) return true;
+    return std::find(std::begin(kKnown), std::end(kKnown), key) != std::end(kKnown);
+}
+
+std::string_view without_bom(std::string_view text) {
+    constexpr std::string_view kBom = "\xEF\xBB\xBF";
+    return text.substr(0, kBom.size()) == kBom ? text.substr(kBom.size()) : text;
+}
+
+// The tokens of a line up to a comment: '#' at the start of a token starts one.
+std::vector<std::string_view> statement_tokens(std::string_view line) {
+    std::vector<std::string_view> tokens = split_tokens(line);
+    const auto comment = std::find_if(tokens.begin(), tokens.end(),
+                                      [](std::string_view t) { return t.front() == '#'; });
+    tokens.erase(comment, tokens.end());
+    return tokens;
+}
+
+// Calls visit(number, tokens) for every line of the text without its byte-order mark and its
+// comments, and appends the cleaned line (its tokens) to `clean`.
+void for_each_clean_line(
+    std::string_view text, const std::string& path,
+    const std::function<void(int, const std::vector<std::string_view>&)>& visit,
+    std::string& clean) {
+    for_each_line(without_bom(text), [&](int number, std::string_view line) {
+        reject_nul(line, path, number);
+        const auto tokens = statement_tokens(line);
+        visit(number, tokens);
+        for (std::size_t i = 0; i < tokens.size(); ++i) {
+            clean.append(i ? " " : "").append(tokens[i]);
+        }
+        clean.push_back('\n');
+    });
 }
 
 }  // namespace
@@ -196,40 +255,34 @@ std::vector<std::string_view> split_tokens(std::string_view line) {
 }
 
 ObjLines scan_obj(std::string_view text, const std::string& path) {
-    ObjLines out;
-    std::string usemtl;
-    const int vertex_total = count_vertices(text);
-    for_each_line(text, [&](int number, std::string_view line) {
-        reject_nul(line, path, number);
-        const auto tokens = split_tokens(line);
-        if (!is_blank_or_comment(tokens)) {
-            scan_obj_statement(tokens, vertex_total, path, number, usemtl, out);
-        }
-    });
-    return out;
+    ObjScan scan{path, count_vertices(without_bom(text)), {}, {}, {}};
+    for_each_clean_line(text, path, [&](int number, const std::vector<std::string_view>& tokens) {
+        if (!tokens.empty()) scan_obj_statement(tokens, number, scan);
+    }, scan.out.clean_text);
+    return std::move(scan.out);
 }
 
-void scan_mtl(std::string_view text, const std::string& path, MtlLines& lines) {
-    // Statements before the first newmtl, or in a repeated definition of a name, set nothing
-    // that tinyobjloader keeps (the first definition of a name wins): they go to `ignored`.
-    MtlMaterialLines ignored;
+std::string scan_mtl(std::string_view text, const std::string& path, MtlLines& lines,
+                     std::vector<std::string>& warnings) {
+    MtlMaterialLines ignored;  // statements before the first newmtl set nothing
     MtlMaterialLines* current = &ignored;
-    for_each_line(text, [&](int number, std::string_view line) {
-        reject_nul(line, path, number);
-        const auto tokens = split_tokens(line);
-        if (is_blank_or_comment(tokens)) return;
+    std::string clean;
+    for_each_clean_line(text, path, [&](int number, const std::vector<std::string_view>& tokens) {
+        if (tokens.empty()) return;
         if (tokens[0] == "newmtl") {
-            auto [it, inserted] = lines.try_emplace(material_name(tokens, line, path, number),
-                                                    MtlMaterialLines{path, number, 0, 0});
-            current = inserted ? &it->second : &ignored;
+            current = &define_material(tokens, number, path, lines);
         } else if (tokens[0] == "Kd" || tokens[0] == "Ke") {
             if (tokens.size() != 4) {
                 fail(path, number, fmt::format("'{}' needs three numbers (r g b)", tokens[0]));
             }
             for (std::size_t i = 1; i < 4; ++i) parse_number(tokens[i], path, number);
             (tokens[0] == "Kd" ? current->kd_line : current->ke_line) = number;
+        } else if (!is_known_mtl_statement(tokens[0])) {
+            warnings.push_back(fmt::format("{}: unknown MTL statement {} ignored", at(path, number),
+                                           quote(tokens[0])));
         }
-    });
+    }, clean);
+    return clean;
 }
 
 }  // namespace hmcr

@@ -1,8 +1,12 @@
-// A light lexical pre-scan of OBJ and MTL text. tinyobjloader is tolerant (it reads "nan" or
-// "1x" as 0, skips unknown keywords) and reports no line numbers for most problems, so before
-// handing the text to it we check every statement ourselves and remember the line of every
-// `v` and `f` statement and of every material's Kd and Ke: the loader maps tinyobjloader's
-// k-th vertex and face back to them to report `file:line` errors.
+// A lexical pre-scan of OBJ and MTL text. tinyobjloader is tolerant (it reads "nan" or "1x" as
+// 0, skips unknown keywords) and reports no line numbers for most problems, so before handing
+// the text to it we check every statement ourselves and remember the line of every `f`
+// statement and of every material's Kd and Ke: the loader maps tinyobjloader's k-th face back
+// to them to report `file:line` errors.
+//
+// The scan also cleans the text for tinyobjloader, line for line (so both count the same
+// lines): a UTF-8 byte-order mark at the start is dropped, and so is a comment after data
+// (`Kd 0.5 0.5 0.5 # grey`), which tinyobjloader would read as more data.
 #pragma once
 
 #include <functional>
@@ -15,9 +19,8 @@ namespace hmcr {
 
 // One `f` statement, in file order.
 struct FaceStatement {
-    int line = 0;          // 1-based line of the `f` statement
-    int vertex_count = 0;  // always 3 or 4 after a successful scan
-    std::string usemtl;    // name of the `usemtl` in effect ("" before the first one)
+    int line = 0;        // 1-based line of the `f` statement
+    std::string usemtl;  // name of the `usemtl` in effect ("" before the first one)
 };
 
 // One `mtllib` statement: the material library files it names, as written.
@@ -27,7 +30,7 @@ struct MtllibStatement {
 };
 
 struct ObjLines {
-    std::vector<int> vertex_lines;     // line of the k-th `v` statement
+    std::string clean_text;            // the text for tinyobjloader
     std::vector<FaceStatement> faces;  // the `f` statements, in file order
     std::vector<MtllibStatement> mtllibs;
 };
@@ -49,12 +52,15 @@ void for_each_line(std::string_view text, const std::function<void(int, std::str
 std::vector<std::string_view> split_tokens(std::string_view line);
 
 // Scans OBJ text; throws InputError "path:line: message" on the first bad statement: unknown
-// keyword, unparsable or non-finite number, bad vertex index, polygon with fewer than 3 or more
-// than 4 vertices.
+// keyword, unparsable or non-finite number, a v, vt or vn index out of range, polygon with
+// fewer than 3 or more than 4 vertices.
 ObjLines scan_obj(std::string_view text, const std::string& path);
 
-// Scans MTL text and adds its materials to `lines` (the first definition of a name wins, as in
-// tinyobjloader); throws InputError on a Kd/Ke statement that is not three finite numbers.
-void scan_mtl(std::string_view text, const std::string& path, MtlLines& lines);
+// Scans MTL text, adds its materials to `lines` and returns the text for tinyobjloader. Throws
+// InputError on a Kd/Ke statement that is not three finite numbers and on a material defined
+// twice (in this file or an earlier one); adds a "path:line: ..." warning for every statement
+// hmcr does not know (a typo such as `KE` would otherwise silently turn a light off).
+std::string scan_mtl(std::string_view text, const std::string& path, MtlLines& lines,
+                     std::vector<std::string>& warnings);
 
 }  // namespace hmcr

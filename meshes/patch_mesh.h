@@ -31,4 +31,8 @@ inline auto source_line_prop(PatchMesh& m) {
     return OpenMesh::getOrMakeProperty<OpenMesh::FaceHandle, int>(m, kSourceLineProp);
 }
 
+// A fingerprint of the patches' geometry (corner count and the exact bits of every corner, in
+// face order): a solution records it, so that it is never read with another scene.
+std::string geometry_hash(const PatchMesh& mesh);
+
 }  // namespace hmcr

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -34,26 +35,45 @@ struct View {
 // faces without a material get a neutral grey (the other checks all apply).
 enum class SceneUse { solve, geometry };
 
+// Told each warning of the readers ("file:line: what") as soon as it is found, so that it is
+// seen even when the load then fails (a typo that turned a light off, then "no emitter").
+using WarningFn = std::function<void(const std::string&)>;
+
 struct LoadOptions {
     std::optional<Material> default_material;  // used by faces without a material
     SceneUse use = SceneUse::solve;
+    WarningFn warn;                             // optional
+};
+
+// A mesh file as loaded: the validated patch mesh, every file read for it (the mesh and its
+// material libraries) and the warnings of the readers, one line each.
+struct MeshFile {
+    PatchMesh mesh;
+    std::vector<std::filesystem::path> files;
+    std::vector<std::string> warnings;
 };
 
 struct Scene {
     std::string name;                   // bundled name, or the file's stem
     std::filesystem::path source;       // the file given by the user (JSON or mesh)
     std::filesystem::path mesh_path;    // the mesh file actually read
+    std::vector<std::filesystem::path> inputs;  // every file read: no output may replace one
+    std::vector<std::string> warnings;  // the loaders' warnings ("file:line: what")
     PatchMesh mesh;                     // validated, with the hmcr:* face properties
     std::vector<View> views;
     nlohmann::json solver_defaults = nlohmann::json::object();  // "solver" object of the file
 };
 
-// Reads an OBJ (+MTL) file through tinyobjloader, validates it (SPEC section 1) and returns
-// the patch mesh. Throws InputError on any problem.
+// Reads a mesh file (by extension: .obj with its MTL files), validates it (SPEC section 1) and
+// returns the patch mesh. Throws InputError on any problem.
+MeshFile load_mesh(const std::filesystem::path& path, const LoadOptions& options = {});
+// An OBJ file whatever its extension, and its mesh alone.
+MeshFile load_obj_file(const std::filesystem::path& obj, const LoadOptions& options = {});
 PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options = {});
 
 // Accepts a bundled scene name ("cornell"), a JSON scene file, or a mesh file (.obj).
-Scene load_scene(const std::string& name_or_path, SceneUse use = SceneUse::solve);
+Scene load_scene(const std::string& name_or_path, SceneUse use = SceneUse::solve,
+                 const WarningFn& warn = {});
 
 // The view called name (the first view for ""); throws InputError listing the views.
 const View& find_view(const Scene& scene, const std::string& name);

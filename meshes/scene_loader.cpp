@@ -30,6 +30,7 @@
 #include <set>
 
 #include "common/text_file.h"
+#include "meshes/obj_reader.h"
 #include "meshes/scene.h"
 #include "meshes/validation.h"
 
@@ -174,7 +175,14 @@ void check_mesh_extension(const fs::path& mesh, const std::string& where) {
     }
 }
 
-Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse use) {
+void take_mesh(Scene& scene, MeshFile file) {
+    scene.mesh = std::move(file.mesh);
+    scene.inputs.insert(scene.inputs.end(), file.files.begin(), file.files.end());
+    scene.warnings = std::move(file.warnings);
+}
+
+Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse use,
+                      const WarningFn& warn) {
     const std::string file = path.string();
     const json j = read_json_file(path);
     check_keys(j, {"mesh", "description", "views", "solver", "default_material"}, file);
@@ -185,6 +193,7 @@ Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse us
     Scene scene;
     scene.name = name;
     scene.source = path;
+    scene.inputs.push_back(path);
     scene.mesh_path = path.parent_path() / j["mesh"].get<std::string>();
     check_mesh_extension(scene.mesh_path, file);
     if (j.contains("views")) scene.views = parse_views(j["views"], file);
@@ -195,15 +204,16 @@ Scene load_json_scene(const fs::path& path, const std::string& name, SceneUse us
     }
     LoadOptions options;
     options.use = use;
+    options.warn = warn;
     if (j.contains("default_material")) {
         options.default_material = parse_default_material(j["default_material"], file);
     }
-    scene.mesh = load_obj(scene.mesh_path, options);
+    take_mesh(scene, load_mesh(scene.mesh_path, options));
     if (scene.views.empty()) scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
 
-Scene load_mesh_scene(const fs::path& path, SceneUse use) {
+Scene load_mesh_scene(const fs::path& path, SceneUse use, const WarningFn& warn) {
     check_mesh_extension(path, path.string());
     Scene scene;
     scene.name = path.stem().string();
@@ -211,15 +221,16 @@ Scene load_mesh_scene(const fs::path& path, SceneUse use) {
     scene.mesh_path = path;
     LoadOptions options;
     options.use = use;
-    scene.mesh = load_obj(path, options);
+    options.warn = warn;
+    take_mesh(scene, load_mesh(path, options));
     scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
 
-Scene load_file(const fs::path& path, SceneUse use) {
+Scene load_file(const fs::path& path, SceneUse use, const WarningFn& warn) {
     const std::string extension = path.extension().string();
-    if (extension == ".json") return load_json_scene(path, path.stem().string(), use);
-    if (extension == ".obj") return load_mesh_scene(path, use);
+    if (extension == ".json") return load_json_scene(path, path.stem().string(), use, warn);
+    if (extension == ".obj") return load_mesh_scene(path, use, warn);
     fail(path.string(), fmt::format("unknown extension '{}': give a .json scene, an .obj mesh "
                                     "or a bundled scene name ({})",
                                     extension, bundled_list()));
@@ -237,6 +248,30 @@ const View& find_view(const Scene& scene, const std::string& name) {
     }
     throw InputError(fmt::format("scene {} has no view {} (views: {})", scene.name,
                                  quote(name), names));
+}
+
+MeshFile load_mesh(const fs::path& path, const LoadOptions& options) {
+    if (path.extension() != ".obj") {
+        throw InputError(path.string(), "hmcr reads .obj meshes");
+    }
+    return load_obj_file(path, options);
+}
+
+MeshFile load_obj_file(const fs::path& path, const LoadOptions& options) {
+    PolygonSoup soup = read_obj(path);
+    if (options.warn) {
+        for (const std::string& w : soup.warnings) options.warn(w);
+    }
+    LoadOptions effective = options;
+    // Measuring geometry: faces without a material get a neutral one.
+    if (options.use == SceneUse::geometry && !options.default_material) {
+        effective.default_material = Material{"default", Eigen::Vector3d::Constant(0.5), {0, 0, 0}};
+    }
+    return {build_patch_mesh(soup, effective), soup.files, std::move(soup.warnings)};
+}
+
+PatchMesh load_obj(const fs::path& obj, const LoadOptions& options) {
+    return load_obj_file(obj, options).mesh;
 }
 
 fs::path scene_directory() {
@@ -258,13 +293,13 @@ std::vector<std::string> bundled_scene_names() {
     return names;
 }
 
-Scene load_scene(const std::string& name_or_path, SceneUse use) {
+Scene load_scene(const std::string& name_or_path, SceneUse use, const WarningFn& warn) {
     const fs::path path(name_or_path);
     std::error_code ec;
-    if (fs::is_regular_file(path, ec)) return load_file(path, use);
+    if (fs::is_regular_file(path, ec)) return load_file(path, use, warn);
     if (is_bundled(name_or_path)) {
         return load_json_scene(scene_directory() / name_or_path / (name_or_path + ".json"),
-                               name_or_path, use);
+                               name_or_path, use, warn);
     }
     fail(name_or_path,
          fmt::format("no such file or bundled scene (bundled scenes: {})", bundled_list()));

@@ -97,9 +97,9 @@ std::optional<std::string> check_channels(const Material& m, const Eigen::Vector
     for (int c = 0; c < 3; ++c) {
         const double v = value[c];
         if (std::isnan(v) || v >= bound) {
-            return fmt::format("{} {} of material '{}' is {}", what, v, m.name, bound_text);
+            return fmt::format("{} {} of material {} is {}", what, v, quote(m.name), bound_text);
         }
-        if (v < 0) return fmt::format("{} {} of material '{}' is negative", what, v, m.name);
+        if (v < 0) return fmt::format("{} {} of material {} is negative", what, v, quote(m.name));
     }
     return std::nullopt;
 }
@@ -132,7 +132,8 @@ std::optional<std::string> check_reflectance(const Material& m) {
 }
 
 std::optional<std::string> check_emission(const Material& m) {
-    return check_channels(m, m.ke, "emission", INFINITY, "not finite");
+    return check_channels(m, m.ke, "emission", kMaxRadiance,
+                          fmt::format("not below {:g} W/(sr m^2)", kMaxRadiance).c_str());
 }
 
 }  // namespace hmcr

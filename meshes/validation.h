@@ -16,6 +16,9 @@ namespace hmcr {
 // Relative tolerances of the geometric checks.
 inline constexpr double kDegenerateAreaRatio = 1e-12;  // area / (largest edge)^2 below: zero
 inline constexpr double kPlanarityRatio = 1e-4;        // off-plane distance / diagonal above
+// Emitted radiance above this is refused: the sun's is about 2e7 W/(sr m^2), and far larger
+// values overflow the sums of power into infinities (a solve that never ends).
+inline constexpr double kMaxRadiance = 1e20;
 
 // Checks one polygon given by its corners (counter-clockwise, welded: equal positions are the
 // same index in `ids`): 3 or 4 distinct corners, no zero-area corner, and for a quad planarity
@@ -28,7 +31,7 @@ std::optional<std::string> check_face_geometry(const std::vector<Eigen::Vector3d
 std::optional<std::pair<std::size_t, std::size_t>> find_duplicate_face(
     const std::vector<std::vector<int>>& faces);
 
-// Checks Kd in [0, 1) and finite Ke >= 0 per channel; names the material in the message.
+// Checks Kd in [0, 1) and Ke in [0, kMaxRadiance) per channel; names the material.
 std::optional<std::string> check_reflectance(const Material& m);
 std::optional<std::string> check_emission(const Material& m);
 

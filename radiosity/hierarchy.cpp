@@ -2,7 +2,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <fmt/format.h>
+
 #include <stdexcept>
+
+#include "common/memory.h"
 
 namespace hmcr {
 
@@ -42,6 +46,12 @@ void Hierarchy::init_child(Element& parent, int k, Element& child) const {
 
 Element* Hierarchy::subdivide(Element& e) {
     if (Element* c = e.children()) return c;
+    if (element_count() + 4 > m_limits.max_elements) {
+        throw ElementLimitReached(fmt::format(
+            "the element hierarchy would grow beyond --max-elements {} (about {} of memory); "
+            "raise it, or refine less (a larger epsilon, --min-area or a smaller --max-depth)",
+            m_limits.max_elements, human_bytes(double(m_limits.max_elements) * sizeof(Element))));
+    }
     ElementArena& arena = m_arenas.local();
     Element* block = arena.allocate_block();
     for (int k = 0; k < 4; ++k) init_child(e, k, block[k]);

@@ -8,6 +8,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
+#include "common/error.h"
 #include "radiosity/element.h"
 #include "radiosity/element_arena.h"
 #include "radiosity/patch.h"
@@ -17,6 +18,14 @@ namespace hmcr {
 struct HierarchyLimits {
     double min_area = 1e-6;  // relative to A_T; an element at or below it is never subdivided
     int max_depth = 16;      // a leaf at this depth is never subdivided (at most 24)
+    std::uint64_t max_elements = std::uint64_t(-1);  // a subdivision beyond it is an error
+};
+
+// The hierarchy would grow beyond HierarchyLimits::max_elements: the user's limit, so an
+// InputError (the message says how to raise or avoid it).
+class ElementLimitReached : public InputError {
+public:
+    using InputError::InputError;
 };
 
 class Hierarchy {
@@ -34,7 +43,8 @@ public:
     // fixed uniform mesh of a converged reference (SPEC section 6). Parallel over patches.
     void subdivide_uniformly(double max_area);
     // The four children of e, created if they do not exist yet (thread-safe). New children
-    // inherit B and Delta B (constant basis) and start with nothing received.
+    // inherit B and Delta B (constant basis) and start with nothing received. Throws
+    // ElementLimitReached when they would make more than max_elements elements.
     Element* subdivide(Element& e);
     // The existing child of e that contains the parameter point uv.
     Element& child_containing(const Element& e, const Vec2& uv) const;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/stopwatch.h"
 #include "oracles/registry.h"
 #include "radiosity/embree_scene.h"
@@ -67,7 +68,7 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
     st.emitted_power = patches.emitted_power;
     const EmbreeScene scene(patches.patches);
     sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
-                                                HierarchyLimits{options.min_area, options.max_depth});
+                                                HierarchyLimits{options.min_area, options.max_depth, options.max_elements});
     Hierarchy& h = *sol.hierarchy;
     const bool fixed_mesh = options.uniform_max_area > 0;
     if (fixed_mesh) h.subdivide_uniformly(options.uniform_max_area);
@@ -99,12 +100,14 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
         const std::uint64_t done_before = st.rays;
         const auto out = shoot_iteration(ctx, sources, it, rec.rays, [&](std::uint64_t n) {
             progress.advance(std::min(1.0, double(done_before + n) / double(options.rays)));
+            throw_if_interrupted();
         });
         st.shooting_seconds += seconds_since(t0);
         const auto t1 = Clock::now();
         h.push_pull();
         st.push_pull_seconds += seconds_since(t1);
         unshot = rec.unshot_after = h.unshot_power();
+        if (!unshot.isFinite().all()) throw std::runtime_error("the unshot power is not finite");
         rec.leaves_after = h.leaf_count();
         rec.seconds = seconds_since(t0);
         schedule.record(rec.rays);

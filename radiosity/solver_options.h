@@ -28,7 +28,7 @@ enum class SettingScope { scene_file, command_line, internal };
                   "(default: the oracle's)")                                                     \
     X(int,           lines,     10,         v >= 1 && v <= 4096,     "in 1..4096",                \
       scene_file, "kernel lines per link, N_s, for the line-based oracles")                      \
-    X(std::uint64_t, rays,      2'684'000,  v >= 1,                  "at least 1",                \
+    X(std::uint64_t, rays,      2'684'000,  v >= 1 && v <= kMaxRays, "in 1..1e15",                \
       scene_file, "shooting rays over the whole solve (shot within 2%)")                         \
     X(std::uint64_t, seed,      1,          true,                    "a count",                   \
       scene_file, "keys every random stream")                                                    \
@@ -43,9 +43,18 @@ enum class SettingScope { scene_file, command_line, internal };
     X(double,        cache_mb,  32,         v >= 0 && v <= 1 << 20,  "in [0, 1048576]",           \
       command_line, "link cache for the line-based oracles, MiB (0: none); results do not "      \
                     "depend on it")                                                              \
+    X(std::uint64_t, max_elements, default_max_elements(), v >= 1,   "at least 1",                \
+      command_line, "refuse to grow the element hierarchy beyond this (default: a quarter of "   \
+                    "this machine's memory)")                                                    \
     X(double, uniform_max_area, 0,          v >= 0,                  "not negative",              \
       internal,   "> 0: a fixed uniform mesh of elements no larger (m^2), no oracle")
 // clang-format on
+
+// About what a thousand machines shoot in a day (10^7 rays/s each): beyond it, a typo.
+inline constexpr std::uint64_t kMaxRays = 1'000'000'000'000'000;
+
+// Elements in a quarter of this machine's memory.
+std::uint64_t default_max_elements();
 
 // epsilon's default: the oracle's own (Oracle::default_epsilon).
 inline constexpr double kOracleDefault = std::numeric_limits<double>::quiet_NaN();

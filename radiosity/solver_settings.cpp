@@ -8,6 +8,8 @@
 #include <set>
 
 #include "common/error.h"
+#include "common/memory.h"
+#include "radiosity/element.h"
 #include "oracles/registry.h"
 
 namespace hmcr {
@@ -76,6 +78,12 @@ template struct Setting<int>;
 template struct Setting<std::uint64_t>;
 
 bool is_oracle_name(const std::string& name) { return oracle_named(name) != nullptr; }
+
+std::uint64_t default_max_elements() {
+    const std::uint64_t memory = physical_memory_bytes();
+    return memory > 0 ? std::max<std::uint64_t>(1'000'000, memory / 4 / sizeof(Element))
+                      : 10'000'000;
+}
 
 void validate(const SolverOptions& options) {
     for_each_setting([](const auto& setting, const auto& value) { check(setting, value); },

@@ -1,6 +1,9 @@
 #include "studies/reference.h"
 
+#include <fmt/format.h>
+
 #include <chrono>
+#include <cmath>
 
 #include "common/text_file.h"
 #include "common/atomic_file.h"
@@ -56,10 +59,21 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progr
     return ref;
 }
 
+std::vector<std::filesystem::path> reference_files(const std::filesystem::path& dir,
+                                                   const Scene& scene) {
+    std::vector<std::filesystem::path> files{dir / "reference.vtp", dir / "reference.json"};
+    for (const View& v : scene.views) {
+        files.push_back(dir / "views" / (v.name + ".pfm"));
+        files.push_back(dir / "views" / (v.name + ".png"));
+    }
+    return files;
+}
+
 void write_reference(const std::filesystem::path& dir, const Scene& scene,
                      const Reference& ref, const ReferenceOptions& o, nlohmann::json summary) {
     const SolveStats& st = ref.solution.stats;
-    write_solution(dir / "reference.vtp", ref.mesh, ref.solution, double(st.iterations.size()));
+    write_solution(dir / "reference.vtp", ref.mesh, ref.solution, scene,
+                   double(st.iterations.size()));
     nlohmann::json views = nlohmann::json::object(), errors = nlohmann::json::object();
     for (const auto& [name, view] : ref.views) {
         write_pfm(dir / "views" / (name + ".pfm"), view.image);
@@ -88,7 +102,12 @@ std::map<std::string, double> read_reference_exposures(const std::filesystem::pa
     return read_json_file(dir / "reference.json", [](const nlohmann::json& j) {
         std::map<std::string, double> exposure;
         for (const auto& [view, v] : j.at("reference").at("views").items()) {
-            exposure[view] = v.at("exposure").get<double>();
+            const double e = v.at("exposure").get<double>();
+            if (!(e > 0 && std::isfinite(e))) {
+                throw InputError(fmt::format("view {}: exposure {} is not a positive number",
+                                             quote(view), e));
+            }
+            exposure[view] = e;
         }
         return exposure;
     });

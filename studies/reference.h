@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -61,6 +62,10 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& options,
 // Object-space error options relative to the reflected radiosity B - E of the scene's patches
 // (viz/object_space_error.h): how references and studies compare solutions.
 ObjectErrorOptions reflected_error_options(const PatchMesh& mesh);
+
+// The files write_reference writes for this scene.
+std::vector<std::filesystem::path> reference_files(const std::filesystem::path& dir,
+                                                   const Scene& scene);
 
 // Writes the folder described above (every file atomically).
 void write_reference(const std::filesystem::path& dir, const Scene& scene,

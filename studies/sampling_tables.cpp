@@ -98,19 +98,48 @@ std::string md_table(const std::vector<SamplingCell>& cells, const std::string& 
     return out;
 }
 
+// sampler | bias | noise, each the RMS over the views of the per-view parts.
+std::string md_splits(const ErrorSplits& splits, const std::vector<std::string>& samplers) {
+    std::string out =
+        "| sampler | bias RMSEp | noise RMSEp |\n|:--|--:|--:|\n";
+    for (const std::string& s : samplers) {
+        const auto it = splits.find(s);
+        if (it == splits.end() || it->second.empty()) continue;
+        double bias2 = 0, noise2 = 0;
+        for (const auto& [view, e] : it->second) {
+            bias2 += e.bias * e.bias / double(it->second.size());
+            noise2 += e.noise * e.noise / double(it->second.size());
+        }
+        out += fmt::format("| {} | {:.2f} | {:.2f} |\n", s, std::sqrt(bias2), std::sqrt(noise2));
+    }
+    return out;
+}
+
 std::string md_document(const std::string& scene, const SamplingStudyOptions& o,
                         const std::vector<std::string>& views,
-                        const std::vector<SamplingCell>& cells) {
+                        const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
     std::string out = fmt::format("# Sampling study: {}\n\n", scene);
     out += fmt::format(
-        "{} samples per pixel (±{}%), {} seeds from {}, path estimator {}, reference {}. Mean ± "
+        "{} samples per pixel (±{}%), {} seeds from {}, path estimator {}, at most {} bounces, "
+        "criteria on {}{}, reference {}. Mean ± "
         "standard error over the seeds whose searches succeeded (seeds column). RMSE on the "
         "0–255 scale and PSNR in dB against the reference at its exposure; spp: the mean "
         "reached; rays: traced, the threshold search's included. The best mean of each error "
         "column is in bold.\n\n## Mean over the views ({})\n\n{}\n",
         o.trace.spp, 100 * o.trace.spp_tolerance, o.seeds, o.trace.seed,
-        estimator_name(o.trace.path.estimator), o.reference.string(), fmt::join(views, ", "),
+        estimator_name(o.trace.path.estimator), o.trace.path.max_depth,
+        o.display_criteria ? "display values" : "radiance",
+        o.trace.fresh ? ", adaptive images from fresh samples" : "", o.reference.string(),
+        fmt::join(views, ", "),
         md_table(cells, ""));
+    if (!splits.empty()) {
+        out += fmt::format(
+            "## Bias and noise\n\nRMSEp split as E[MSE of one image] = bias² + noise² and "
+            "E[MSE of the mean of the k seeds' images] = bias² + noise²/k (RMS over the views). "
+            "The bias includes the reference's own noise and the 8-bit rounding, which every "
+            "sampler shares; an unbiased sampler shows only that.\n\n{}\n",
+            md_splits(splits, sampler_order(cells)));
+    }
     for (const std::string& v : views)
         out += fmt::format("## View {}\n\n{}\n", v, md_table(cells, v));
     return out;
@@ -176,8 +205,9 @@ SamplingView view_from_json(const nlohmann::json& j) {
 nlohmann::json sampling_cell_to_json(const SamplingCell& c) {
     nlohmann::json views = nlohmann::json::object();
     for (const auto& [name, v] : c.views) views[name] = view_to_json(v);
-    return {{"scene", c.scene},   {"sampler", c.sampler}, {"spp", c.spp},   {"seed", c.seed},
-            {"status", c.status}, {"message", c.message}, {"views", views}, {"seconds", c.seconds}};
+    return {{"scene", c.scene},     {"sampler", c.sampler}, {"spp", c.spp},
+            {"seed", c.seed},       {"settings", c.settings}, {"status", c.status},
+            {"message", c.message}, {"views", views},       {"seconds", c.seconds}};
 }
 
 SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
@@ -186,6 +216,7 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
     c.sampler = j.at("sampler").get<std::string>();
     c.spp = j.at("spp").get<double>();
     c.seed = j.at("seed").get<std::uint64_t>();
+    c.settings = j.value("settings", nlohmann::json());
     c.status = j.at("status").get<std::string>();
     c.message = j.value("message", "");
     for (const auto& [name, v] : j.at("views").items()) c.views[name] = view_from_json(v);
@@ -195,7 +226,11 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
 
 void write_sampling_tables(const std::string& scene, const SamplingStudyOptions& o,
                            const std::vector<std::string>& views,
-                           const std::vector<SamplingCell>& cells) {
+                           const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+    nlohmann::json split_json = nlohmann::json::object();
+    for (const auto& [sampler, by_view] : splits)
+        for (const auto& [view, e] : by_view)
+            split_json[sampler][view] = {{"bias_rmse_p", e.bias}, {"noise_rmse_p", e.noise}};
     nlohmann::json all = nlohmann::json::array();
     for (const SamplingCell& c : cells) all.push_back(sampling_cell_to_json(c));
     const nlohmann::json table = {{"scene", scene},
@@ -208,12 +243,15 @@ void write_sampling_tables(const std::string& scene, const SamplingStudyOptions&
                                     {"estimator", estimator_name(o.trace.path.estimator)},
                                     {"max_depth", o.trace.path.max_depth},
                                     {"tree_depth", o.trace.tree_depth},
+                                    {"display_criteria", o.display_criteria},
+                                    {"fresh", o.trace.fresh},
                                     {"reference", o.reference.string()}}},
                                   {"views", views},
+                                  {"error_split", split_json},
                                   {"cells", all}};
     write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
     write_text_atomically(o.output / "table.csv", csv_table(views, cells));
-    write_text_atomically(o.output / "table.md", md_document(scene, o, views, cells));
+    write_text_atomically(o.output / "table.md", md_document(scene, o, views, cells, splits));
 }
 
 }  // namespace hmcr

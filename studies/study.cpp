@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "meshes/scene.h"
@@ -12,52 +15,36 @@
 #include "radiosity/solver_settings.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
+#include "common/hash.h"
+#include "common/interrupt.h"
+#include "studies/cell_files.h"
 #include "studies/reference.h"
+#include "studies/traced_reference.h"
 #include "common/atomic_file.h"
 #include "viz/image.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
 #include "viz/solution_file.h"
-#include "viz/vtk_import.h"
 
 namespace hmcr {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A cell's budget search as notes of the study: "[3/21] CELL: budget probe 2: ...". The
-// solves' own fractions are not shown: a study is hundreds of them.
-class CellNotes final : public Progress {
-public:
-    CellNotes(Progress& study, std::string prefix) : m_study(study), m_prefix(std::move(prefix)) {}
-    void stage(std::string_view) override {}
-    void advance(double) override {}
-    void note(std::string_view line) override { m_study.note(m_prefix + std::string(line)); }
-
-private:
-    Progress& m_study;
-    std::string m_prefix;
-};
-
-// What every cell is measured against, loaded once.
+// What every cell is measured against, loaded once. A traced reference (studies/
+// traced_reference.h) has images but no mesh: its cells have no object-space error.
 struct StudyReference {
-    ShadedMesh mesh;
+    std::optional<ShadedMesh> mesh;
     std::map<std::string, Image8> images;  // quantised with the view's exposure
     std::map<std::string, double> exposure;
 };
 
 StudyReference load_reference(const std::filesystem::path& dir, const Scene& scene) {
     StudyReference ref;
-    ref.mesh = read_vtp(dir / "reference.vtp");
-    ref.exposure = read_reference_exposures(dir);
-    for (const View& v : scene.views) {
-        if (!ref.exposure.count(v.name)) {
-            throw InputError((dir / "reference.json").string(),
-                             fmt::format("no exposure for view '{}' of scene '{}'", v.name,
-                                         scene.name));
-        }
-        const double exposure = ref.exposure.at(v.name);
-        ref.images[v.name] = quantise(read_pfm(dir / "views" / (v.name + ".pfm")), exposure);
+    if (!is_traced_reference(dir)) ref.mesh = read_solution(dir / "reference.vtp", scene).mesh;
+    for (const auto& [name, view] : read_reference_views(dir, scene)) {
+        ref.exposure[name] = view.exposure;
+        ref.images[name] = quantise(view.image, view.exposure);
     }
     return ref;
 }
@@ -82,6 +69,16 @@ void validate(const StudyOptions& o, const std::vector<std::string>& oracles) {
     if (o.budgets.empty()) throw InputError("study: no budget given");
     if (oracles.empty()) throw InputError("study: no oracle given");
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    for (std::size_t i = 0; i < o.budgets.size(); ++i) {
+        if (std::count(o.budgets.begin(), o.budgets.begin() + i, o.budgets[i])) {
+            throw InputError(fmt::format("study: budget {} is given twice", o.budgets[i]));
+        }
+    }
+    for (std::size_t i = 0; i < oracles.size(); ++i) {
+        if (std::count(oracles.begin(), oracles.begin() + i, oracles[i])) {
+            throw InputError(fmt::format("study: oracle {} is given twice", oracles[i]));
+        }
+    }
     if (o.output.empty()) throw InputError("study: no output folder given");
     validate(o.solver);
 }
@@ -109,11 +106,14 @@ public:
                     m_tasks.push_back({oracle, b, seed, cell_name(m_scene.name, oracle, b, seed)});
                 }
         m_error_options = reflected_error_options(m_scene.mesh);
+        m_settings = study_settings(m_scene, m_options);
     }
 
     void run();
 
 private:
+    std::vector<std::optional<CellResult>> previous_cells();
+    std::optional<CellResult> previous_cell(std::size_t index);
     std::filesystem::path cell_file(const CellTask& t) const {
         return m_options.output / "cells" / (t.name + ".json");
     }
@@ -128,6 +128,7 @@ private:
     std::vector<std::string> m_oracles;
     std::vector<CellTask> m_tasks;
     ObjectErrorOptions m_error_options;
+    nlohmann::json m_settings;
     StudyReference m_reference;
     Clock::time_point m_start = Clock::now();
     std::size_t m_to_compute = 0, m_computed = 0;
@@ -145,23 +146,43 @@ std::string StudyRunner::time_left() const {
     return fmt::format(", about {:.0f} s left", per_cell * double(m_to_compute - m_computed));
 }
 
+std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
+    const CellTask& t = m_tasks[index];
+    CellFileRule<CellResult> rule;
+    rule.parse = [](const nlohmann::json& j) { return cell_from_json(j); };
+    rule.is_this_cell = [&](const CellResult& c) {
+        return c.scene == m_scene.name && c.oracle == t.oracle && c.budget == t.budget &&
+               c.seed == t.seed;
+    };
+    rule.settings = m_settings;
+    rule.redo_other_settings = m_options.redo_other_settings;
+    CellNotes notes(m_progress, where(index) + ": ");
+    return read_previous_cell<CellResult>(cell_file(t), rule, notes);
+}
+
+// Every earlier cell, read before anything is computed: a refusal loses no work.
+std::vector<std::optional<CellResult>> StudyRunner::previous_cells() {
+    std::vector<std::optional<CellResult>> cells;
+    for (std::size_t i = 0; i < m_tasks.size(); ++i) cells.push_back(previous_cell(i));
+    for (const auto& c : cells) m_to_compute += c ? 0 : 1;
+    return cells;
+}
+
 void StudyRunner::run() {
     m_reference = load_reference(m_options.reference, m_scene);
-    for (const CellTask& t : m_tasks) m_to_compute += std::filesystem::exists(cell_file(t)) ? 0 : 1;
+    const std::vector<std::optional<CellResult>> previous = previous_cells();
     std::vector<CellResult> cells;
     for (std::size_t i = 0; i < m_tasks.size(); ++i) {
-        const std::filesystem::path file = cell_file(m_tasks[i]);
-        if (std::filesystem::exists(file)) {
-            cells.push_back(read_json_file(file, [](const nlohmann::json& j) {
-                return cell_from_json(j);
-            }));
+        if (previous[i]) {
+            cells.push_back(*previous[i]);
             m_progress.note(where(i) + ": done before, skipped");
             continue;
         }
+        throw_if_interrupted();
         const auto start = Clock::now();
         CellResult cell = compute(i);
         const nlohmann::json j = cell_to_json(cell);
-        write_text_atomically(file, j.dump(2) + "\n");
+        write_text_atomically(cell_file(m_tasks[i]), j.dump(2) + "\n");
         cells.push_back(cell_from_json(j));  // exactly what a resumed run reads back
         m_compute_seconds += seconds_since(start);
         ++m_computed;
@@ -178,6 +199,7 @@ void StudyRunner::run() {
 CellResult StudyRunner::compute(std::size_t index) {
     const CellTask& t = m_tasks[index];
     CellResult cell;
+    cell.settings = m_settings;
     cell.scene = m_scene.name;
     cell.oracle = t.oracle;
     cell.budget = t.budget;
@@ -208,20 +230,46 @@ CellResult StudyRunner::compute(std::size_t index) {
 // The mesh file, the images and the metrics of a solved cell.
 void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResult& cell) {
     const ShadedMesh mesh = write_solution(m_options.output / "meshes" / (t.name + ".vtp"),
-                                           solution, m_scene.mesh, m_options.crease_degrees,
+                                           solution, m_scene, m_options.crease_degrees,
                                            double(t.budget));
     const ShadedTracer tracer(mesh);
     const RenderOptions render_options{m_options.samples_per_axis};
-    for (const View& v : m_scene.views) {
+    for (View v : m_scene.views) {
+        const Image8& ref = m_reference.images.at(v.name);
+        v.width = ref.width;  // a traced reference may be smaller than the view
+        v.height = ref.height;
         const Image8 image =
             quantise(render(tracer, v, render_options), m_reference.exposure.at(v.name));
         write_png(m_options.output / "images" / (t.name + "-" + v.name + ".png"), image);
-        cell.views[v.name] = image_errors(image, m_reference.images.at(v.name));
+        cell.views[v.name] = image_errors(image, ref);
     }
-    cell.object_error = object_space_error(tracer, mesh, m_reference.mesh, m_error_options);
+    if (m_reference.mesh) {
+        cell.object_error = object_space_error(tracer, mesh, *m_reference.mesh, m_error_options);
+    } else {
+        cell.object_error.relative_l2 = std::numeric_limits<double>::quiet_NaN();  // not measured
+    }
 }
 
 }  // namespace
+
+void validate_study(const StudyOptions& options) { validate(options, expand_oracles(options.oracles)); }
+
+nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
+    nlohmann::json solve = settings_json(o.solver);
+    for (const char* per_cell_or_no_effect :
+         {"oracle", "epsilon", "seed", "threads", "cache_mb", "uniform_max_area"}) {
+        solve.erase(per_cell_or_no_effect);
+    }
+    const std::string reference_json = read_text_file(o.reference / "reference.json");
+    return {{"scene", scene.name},
+            {"geometry", geometry_hash(scene.mesh)},
+            {"reference", std::filesystem::absolute(o.reference).lexically_normal().string()},
+            {"reference_json_hash", text_hash(reference_json)},
+            {"solve", solve},
+            {"budget_tolerance", o.budget_tolerance},
+            {"samples_per_axis", o.samples_per_axis},
+            {"crease_degrees", o.crease_degrees}};
+}
 
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,
                       std::uint64_t seed) {

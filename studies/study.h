@@ -46,12 +46,16 @@ struct StudyOptions {
     int samples_per_axis = 2;          // supersampling of the images
     std::filesystem::path output;      // the study folder
     double crease_degrees = 30;        // Gouraud blending limit of the shaded meshes
+    // A folder's cells must all be made with the same settings (study_settings): a rerun with
+    // other settings is refused, unless this is set, when such cells are computed again.
+    bool redo_other_settings = false;
 };
 
 struct CellResult {
     std::string scene, oracle;
     std::size_t budget = 0;
     std::uint64_t seed = 0;
+    nlohmann::json settings;    // study_settings() of the study that made it
     std::string status = "ok";  // "ok" or "failed"
     std::string message;        // why a search failed
     double epsilon = 0;         // of the accepted probe
@@ -63,6 +67,10 @@ struct CellResult {
     bool ok() const { return status == "ok"; }
 };
 
+// Throws InputError on options no study can run with (no budget, an unknown or repeated oracle or
+// budget, seeds < 1, a bad solver setting): checked before anything is read or written.
+void validate_study(const StudyOptions& options);
+
 // Runs (or resumes) the study; each cell is a note of `progress` (skipped, its probes, done or
 // failed, the time left). Throws InputError on bad options (unknown oracle, no budget, seeds < 1)
 // or an unusable reference.
@@ -71,6 +79,11 @@ void run_study(const Scene& scene, const StudyOptions& options,
 
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,
                       std::uint64_t seed);
+
+// What a cell's result depends on besides its oracle, budget and seed: the scene's geometry,
+// the reference (its path and the bytes of its reference.json), and every setting of the solve
+// and of the measurement, except those that change no result (threads, cache size).
+nlohmann::json study_settings(const Scene& scene, const StudyOptions& options);
 
 // The cell files' JSON; non-finite numbers are stored as null (PSNR of identical images).
 nlohmann::json cell_to_json(const CellResult& cell);

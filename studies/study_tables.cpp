@@ -106,8 +106,10 @@ std::string md_budget_table(std::size_t budget, const std::vector<CellResult>& c
         stats.emplace_back();
         for (const Column& col : columns) {
             std::vector<double> v;
-            for (const CellResult* c : select(cells, budget, oracle, true))
-                v.push_back(col.value(*c));
+            for (const CellResult* c : select(cells, budget, oracle, true)) {
+                const double x = col.value(*c);
+                if (!std::isnan(x)) v.push_back(x);  // no object error against a traced reference
+            }
             stats.back().push_back(mean_se(v));
         }
     }
@@ -143,7 +145,8 @@ std::string md_table(const std::string& scene, const StudyOptions& o,
         "{} rays, N_s = {}, budget tolerance {}%, {} seeds from {}. Mean ± standard error over "
         "the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 scale and "
         "PSNR in dB, each averaged over the {} views ({}); object error: the area-weighted "
-        "relative L2 error of the reflected radiosity against the reference; seconds: the "
+        "relative L2 error of the reflected radiosity against the reference (– against a "
+        "traced reference, which has no mesh); seconds: the "
         "budget search. The best mean of each error column is in bold.\n\n",
         o.solver.rays, o.solver.lines, 100 * o.budget_tolerance, o.seeds, o.solver.seed, views.size(),
         fmt::join(views, ", "));
@@ -188,17 +191,23 @@ std::string csv_table(const std::vector<std::string>& views, const std::vector<C
     return out;
 }
 
+// Object-space error against leaves; RMSEp of the images when the reference has no mesh (a
+// traced reference), which leaves every object error NaN.
 Image8 error_plot(const std::vector<CellResult>& cells, const std::vector<std::size_t>& budgets) {
+    const bool object = std::any_of(cells.begin(), cells.end(), [](const CellResult& c) {
+        return c.ok() && !std::isnan(c.object_error.relative_l2);
+    });
     LogLogPlot plot;
     plot.x_label = "leaves";
-    plot.y_label = "object error";
+    plot.y_label = object ? "object error" : "RMSEp";
     for (const std::string& oracle : oracle_order(cells)) {
         PlotSeries s{oracle, {}};
         for (std::size_t b : budgets) {
             std::vector<double> leaves, error;
             for (const CellResult* c : select(cells, b, oracle, true)) {
                 leaves.push_back(double(c->leaves));
-                error.push_back(c->object_error.relative_l2);
+                error.push_back(object ? c->object_error.relative_l2
+                                       : view_mean(*c, &ImageErrors::rmse_p));
             }
             if (!leaves.empty()) s.points.push_back({mean_se(leaves).mean, mean_se(error).mean});
         }
@@ -214,6 +223,7 @@ nlohmann::json cell_to_json(const CellResult& c) {
             {"oracle", c.oracle},
             {"budget", c.budget},
             {"seed", c.seed},
+            {"settings", c.settings},
             {"status", c.status},
             {"message", c.message},
             {"epsilon", c.epsilon},
@@ -234,6 +244,7 @@ CellResult cell_from_json(const nlohmann::json& j) {
     c.oracle = j.at("oracle").get<std::string>();
     c.budget = j.at("budget").get<std::size_t>();
     c.seed = j.at("seed").get<std::uint64_t>();
+    c.settings = j.value("settings", nlohmann::json());
     c.status = j.at("status").get<std::string>();
     c.message = j.value("message", "");
     c.epsilon = number(j, "epsilon", kNaN);
@@ -246,7 +257,9 @@ CellResult cell_from_json(const nlohmann::json& j) {
         c.views[name] = {number(e, "rmse_a", kNaN), number(e, "rmse_p", kNaN),
                          number(e, "psnr_a", kInf), number(e, "psnr_p", kInf)};
     const nlohmann::json& oe = j.at("object_error");
-    c.object_error = {number(oe, "relative_l2", kInf), oe.at("samples").get<std::size_t>(),
+    const std::size_t samples = oe.at("samples").get<std::size_t>();
+    // null: +inf (only B_ref is 0) when measured, NaN when not (a traced reference has no mesh)
+    c.object_error = {number(oe, "relative_l2", samples > 0 ? kInf : kNaN), samples,
                       oe.at("unmatched").get<std::size_t>()};
     return c;
 }

@@ -5,6 +5,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/stopwatch.h"
+#include "common/text_file.h"
 #include "radiosity/patch.h"
 #include "studies/reference.h"
 #include "viz/renderer.h"
@@ -25,6 +26,16 @@ TracedReference compute_traced_reference(const Scene& scene, const std::vector<V
     }
     ref.seconds = seconds_since(start);
     return ref;
+}
+
+std::vector<std::filesystem::path> traced_reference_files(const std::filesystem::path& dir,
+                                                          const Scene& scene) {
+    std::vector<std::filesystem::path> files{dir / "reference.json"};
+    for (const View& v : scene.views) {
+        files.push_back(dir / "views" / (v.name + ".pfm"));
+        files.push_back(dir / "views" / (v.name + ".png"));
+    }
+    return files;
 }
 
 void write_traced_reference(const std::filesystem::path& dir, const Scene& scene,
@@ -55,6 +66,12 @@ void write_traced_reference(const std::filesystem::path& dir, const Scene& scene
                                 {"seconds", ref.seconds},
                                 {"views", views}}}};
     write_text_atomically(dir / "reference.json", j.dump(2) + "\n");
+}
+
+bool is_traced_reference(const std::filesystem::path& dir) {
+    return read_json_file(dir / "reference.json", [](const nlohmann::json& j) {
+        return j.at("reference").value("kind", "") == "traced";
+    });
 }
 
 std::map<std::string, TracedView> read_reference_views(const std::filesystem::path& dir,

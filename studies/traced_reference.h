@@ -44,10 +44,18 @@ struct TracedReference {
 TracedReference compute_traced_reference(const Scene& scene, const std::vector<View>& views,
                                          TraceOptions options, Progress& progress = no_progress());
 
+// Every file write_traced_reference writes into `dir`, for the checks before the work.
+std::vector<std::filesystem::path> traced_reference_files(const std::filesystem::path& dir,
+                                                          const Scene& scene);
+
 // Writes the folder described above, every file atomically; `command` is the invocation.
 void write_traced_reference(const std::filesystem::path& dir, const Scene& scene,
                             const TracedReference& reference, const TraceOptions& options,
                             const std::string& command);
+
+// Whether the reference folder `dir` is a traced one (reference.json says "kind": "traced");
+// a radiosity reference (studies/reference.h) also has a mesh, reference.vtp.
+bool is_traced_reference(const std::filesystem::path& dir);
 
 // Every view of the scene read back from a reference folder of either kind: its linear image
 // (views/VIEW.pfm) and its exposure. Throws InputError naming the file when one is missing.

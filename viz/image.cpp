@@ -1,5 +1,7 @@
 #include "viz/image.h"
 
+#include <fmt/format.h>
+#include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
@@ -8,6 +10,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -16,7 +19,9 @@
 #include <string>
 
 #include "common/atomic_file.h"
+#include "common/text_file.h"
 #include "viz/tone_map.h"
+#include "viz/vtk_console.h"
 
 namespace hmcr {
 namespace {
@@ -29,8 +34,8 @@ void check_shape(int width, int height, std::size_t pixel_count) {
     }
 }
 
-std::runtime_error file_error(const std::filesystem::path& path, const std::string& what) {
-    return std::runtime_error(path.string() + ": " + what);
+InputError file_error(const std::filesystem::path& path, const std::string& what) {
+    return InputError(path.string(), what);
 }
 
 // VTK images have their origin at the bottom left: memory row r is VTK row height - 1 - r.
@@ -38,10 +43,9 @@ std::size_t vtk_index(int width, int height, int x, int row) {
     return std::size_t(height - 1 - row) * width + x;
 }
 
+// A PFM of 16384 x 16384 pixels is 3 GB; larger files are refused unread.
 std::string read_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw file_error(path, "cannot open");
-    return std::string(std::istreambuf_iterator<char>(in), {});
+    return read_text_file(path, std::uint64_t(3) << 30);
 }
 
 void append_float_le(std::string& out, float f) {
@@ -70,6 +74,7 @@ Image8 quantise(const Image& image, double exposure) {
 }
 
 void write_png(const std::filesystem::path& path, const Image8& image) {
+    silence_vtk_console();
     check_shape(image.width, image.height, image.pixels.size());
     vtkNew<vtkImageData> data;
     data->SetDimensions(image.width, image.height, 1);
@@ -86,7 +91,10 @@ void write_png(const std::filesystem::path& path, const Image8& image) {
         writer->SetFileName(tmp.string().c_str());
         writer->SetInputData(data);
         writer->Write();
-        if (writer->GetErrorCode() != 0) throw file_error(path, "cannot write the PNG");
+        if (writer->GetErrorCode() != 0) {
+            throw InputError("cannot write " + path.string(),
+                             vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()));
+        }
     });
 }
 
@@ -95,6 +103,7 @@ void write_png(const std::filesystem::path& path, const Image& image, double exp
 }
 
 Image8 read_png(const std::filesystem::path& path) {
+    silence_vtk_console();
     if (!std::filesystem::is_regular_file(path)) throw file_error(path, "no such file");
     vtkNew<vtkPNGReader> reader;
     if (!reader->CanReadFile(path.string().c_str())) throw file_error(path, "not a PNG file");
@@ -155,7 +164,14 @@ Image read_pfm(const std::filesystem::path& path) {
     std::size_t at = start;
     for (int row = out.height - 1; row >= 0; --row) {
         for (int x = 0; x < out.width; ++x, at += 12) {
-            for (int k = 0; k < 3; ++k) out.at(x, row)[k] = float_at(bytes, at + 4 * k, scale < 0);
+            for (int k = 0; k < 3; ++k) {
+                const float v = float_at(bytes, at + 4 * k, scale < 0);
+                // Radiance is finite and not negative; anything else is a broken file.
+                if (!(v >= 0 && std::isfinite(v))) {
+                    throw file_error(path, fmt::format("pixel ({}, {}) has radiance {}", x, row, v));
+                }
+                out.at(x, row)[k] = v;
+            }
         }
     }
     return out;

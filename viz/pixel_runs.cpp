@@ -4,6 +4,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <limits>
+
+#include "common/interrupt.h"
+#include "viz/sampling/registry.h"
 
 namespace hmcr {
 
@@ -30,6 +34,7 @@ double PixelRuns::extend(double threshold, Progress& progress) {
     // About 64 blocks: progress for the user, and enough pixels per block to keep every core busy.
     const std::size_t rows = std::max<std::size_t>(1, height / 64);
     for (std::size_t y0 = 0; y0 < height; y0 += rows) {
+        throw_if_interrupted();  // a safe point: the runs are whole between blocks
         const std::size_t end = std::min(height, y0 + rows) * width;
         tbb::parallel_for(tbb::blocked_range<std::size_t>(y0 * width, end, 16),
                           [&](const tbb::blocked_range<std::size_t>& r) {
@@ -75,6 +80,20 @@ std::vector<double> PixelRuns::first_values() const {
     out.reserve(m_runs.size());
     for (const auto& run : m_runs) out.push_back(run->first_value());
     return out;
+}
+
+Image fresh_image(const PixelTracer& tracer, const std::vector<std::uint32_t>& samples,
+                  std::uint64_t& rays, Progress& progress) {
+    const Criterion& uniform = find_criterion("uniform");
+    PixelRuns runs(uniform, RunLimits{}, tracer);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const int x = int(i % std::size_t(tracer.width())), y = int(i / std::size_t(tracer.width()));
+        runs.m_runs[i] = make_batch_run(uniform, samples[i], x, y);
+    }
+    const double threshold = std::numeric_limits<double>::infinity();
+    runs.extend(threshold, progress);
+    rays += runs.rays(threshold);
+    return runs.image(threshold);
 }
 
 }  // namespace hmcr

@@ -29,8 +29,18 @@ public:
     std::vector<double> first_values() const;
 
 private:
+    friend Image fresh_image(const PixelTracer&, const std::vector<std::uint32_t>&,
+                             std::uint64_t&, Progress&);
     const PixelTracer& m_tracer;
     std::vector<std::unique_ptr<PixelRun>> m_runs;  // row-major
 };
+
+// Kirk and Arvo's second pass ("Unbiased sampling techniques for image synthesis", SIGGRAPH
+// 1991): every pixel traced again with fresh samples of `tracer`, as many as `samples` gives it
+// (row-major), stratified as uniform runs are. The counts came from other samples, so each
+// pixel's mean is unbiased, which the first pass's is not: there a pixel stops on the very
+// samples it averages. Adds the rays cast to `rays`.
+Image fresh_image(const PixelTracer& tracer, const std::vector<std::uint32_t>& samples,
+                  std::uint64_t& rays, Progress& progress = no_progress());
 
 }  // namespace hmcr

@@ -1,8 +1,12 @@
 #include "viz/solution_file.h"
 
+#include <fmt/format.h>
+
+#include "viz/vtk_import.h"
+
 namespace hmcr {
 
-VtpMetadata vtp_metadata(const Solution& solution, double time_value) {
+VtpMetadata vtp_metadata(const Solution& solution, const Scene& scene, double time_value) {
     const SolveStats& st = solution.stats;
     const bool uniform = solution.options.uniform_max_area > 0;
     return {uniform ? "uniform" : solution.options.oracle,
@@ -12,7 +16,10 @@ VtpMetadata vtp_metadata(const Solution& solution, double time_value) {
             solution.options.seed,
             st.leaves,
             st.iterations.size(),
-            time_value};
+            time_value,
+            scene.name,
+            scene.mesh.n_faces(),
+            geometry_hash(scene.mesh)};
 }
 
 ShadedMesh shade(const Solution& solution, const PatchMesh& mesh, double crease_degrees) {
@@ -20,15 +27,34 @@ ShadedMesh shade(const Solution& solution, const PatchMesh& mesh, double crease_
 }
 
 void write_solution(const std::filesystem::path& vtp, const ShadedMesh& shaded,
-                    const Solution& solution, double time_value) {
-    write_vtp(vtp, shaded, vtp_metadata(solution, time_value));
+                    const Solution& solution, const Scene& scene, double time_value) {
+    write_vtp(vtp, shaded, vtp_metadata(solution, scene, time_value));
 }
 
 ShadedMesh write_solution(const std::filesystem::path& vtp, const Solution& solution,
-                          const PatchMesh& mesh, double crease_degrees, double time_value) {
-    ShadedMesh shaded = shade(solution, mesh, crease_degrees);
-    write_solution(vtp, shaded, solution, time_value);
+                          const Scene& scene, double crease_degrees, double time_value) {
+    ShadedMesh shaded = shade(solution, scene.mesh, crease_degrees);
+    write_solution(vtp, shaded, solution, scene, time_value);
     return shaded;
+}
+
+SolutionFile read_solution(const std::filesystem::path& vtp) {
+    SolutionFile file;
+    file.mesh = read_vtp(vtp, &file.meta);
+    return file;
+}
+
+SolutionFile read_solution(const std::filesystem::path& vtp, const Scene& scene) {
+    SolutionFile file = read_solution(vtp);
+    const std::string hash = geometry_hash(scene.mesh);
+    if (file.meta.patch_count != scene.mesh.n_faces() || file.meta.geometry_hash != hash) {
+        throw InputError(vtp.string(), fmt::format("is a solution of scene {} ({} patches, "
+                                                   "geometry {}), not of {} ({} patches, geometry {})",
+                                                   quote(file.meta.scene), file.meta.patch_count,
+                                                   file.meta.geometry_hash, quote(scene.name),
+                                                   scene.mesh.n_faces(), hash));
+    }
+    return file;
 }
 
 }  // namespace hmcr

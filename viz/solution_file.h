@@ -5,17 +5,18 @@
 
 #include <filesystem>
 
-#include "meshes/patch_mesh.h"
+#include "meshes/scene.h"
 #include "radiosity/solver.h"
 #include "viz/shaded_mesh.h"
 #include "viz/vtk_export.h"
 
 namespace hmcr {
 
-// The metadata of a solve: its oracle ("uniform" for a fixed uniform mesh, which has no
-// epsilon and no lines), epsilon, lines, rays, seed, leaves and iterations. time_value is
-// ParaView's time of the file (a study puts the budget there, to step through budgets).
-VtpMetadata vtp_metadata(const Solution& solution, double time_value);
+// The metadata of a solve of the scene: its oracle ("uniform" for a fixed uniform mesh, which
+// has no epsilon and no lines), epsilon, lines, rays, seed, leaves, iterations, and the scene's
+// name, patch count and geometry hash. time_value is ParaView's time of the file (a study puts
+// the budget there, to step through budgets).
+VtpMetadata vtp_metadata(const Solution& solution, const Scene& scene, double time_value);
 
 // The shaded leaves of the solution of `mesh` (patches meeting at crease_degrees or more are
 // not blended).
@@ -23,9 +24,18 @@ ShadedMesh shade(const Solution& solution, const PatchMesh& mesh, double crease_
 
 // Writes the shaded mesh of the solution atomically.
 void write_solution(const std::filesystem::path& vtp, const ShadedMesh& shaded,
-                    const Solution& solution, double time_value);
+                    const Solution& solution, const Scene& scene, double time_value);
 // shade() then write_solution(); returns the mesh for whoever measures it next.
 ShadedMesh write_solution(const std::filesystem::path& vtp, const Solution& solution,
-                          const PatchMesh& mesh, double crease_degrees, double time_value);
+                          const Scene& scene, double crease_degrees, double time_value);
+
+// A solution file read back: its mesh and its metadata (viz/vtk_import.h checks both).
+struct SolutionFile {
+    ShadedMesh mesh;
+    VtpMetadata meta;
+};
+SolutionFile read_solution(const std::filesystem::path& vtp);
+// The same, refused (InputError naming the file) unless it was solved for this scene.
+SolutionFile read_solution(const std::filesystem::path& vtp, const Scene& scene);
 
 }  // namespace hmcr

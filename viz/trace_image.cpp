@@ -8,15 +8,20 @@
 #include <cmath>
 #include <memory>
 
+#include "common/interrupt.h"
 #include "common/stopwatch.h"
 #include "viz/camera.h"
 #include "viz/pixel_runs.h"
+#include "viz/sampling/display_values.h"
 #include "viz/sampling/registry.h"
 
 namespace hmcr {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// The fresh pass's seed is the image's with this bit flipped: streams apart from every seed a
+// study uses (1, 2, 3, ...).
+constexpr std::uint64_t kFreshSeed = std::uint64_t(1) << 62;
 
 std::uint32_t min_samples_per_pixel(const Criterion& c) {
     return c.scheme() == Scheme::quadtree ? kNodeSamples : kBatchSize;
@@ -26,6 +31,13 @@ void validate(const TraceOptions& o, const Criterion& c) {
     if (o.tree_depth < 1 || o.tree_depth > 12) throw InputError("tree-depth must be in 1..12");
     if (!(o.spp_tolerance > 0 && o.spp_tolerance < 1)) {
         throw InputError("spp-tolerance must be in (0, 1)");
+    }
+    if (!(o.criterion_exposure >= 0 && std::isfinite(o.criterion_exposure))) {
+        throw InputError(fmt::format("criterion-exposure must be a positive number or 0, got {}",
+                                     o.criterion_exposure));
+    }
+    if (o.max_spp > 0 && o.max_spp < kBatchSize) {
+        throw InputError(fmt::format("max-spp must be at least {}, got {}", kBatchSize, o.max_spp));
     }
     if (!std::isnan(o.threshold) && !(o.threshold > 0)) {
         throw InputError("threshold must be positive");
@@ -108,10 +120,13 @@ RunLimits limits(const TraceOptions& o, const Criterion& c) {
 std::string TraceOptions::to_string() const {
     return fmt::format(
         "TraceOptions{{sampler={}, spp={}, threshold={}, spp_tolerance={}, "
-        "max_spp={}, tree_depth={}, seed={}, threads={}, path={}}}",
+        "max_spp={}, tree_depth={}, seed={}, threads={}, criterion_exposure={}, fresh={}, "
+        "path={}}}",
         sampler, spp, threshold, spp_tolerance, max_spp, tree_depth, seed, threads,
-        path.to_string());
+        criterion_exposure, fresh, path.to_string());
 }
+
+void validate_trace_options(const TraceOptions& o) { validate(o, find_criterion(o.sampler)); }
 
 std::uint32_t max_samples_per_pixel(const TraceOptions& o) {
     if (const Criterion* c = criterion_named(o.sampler); c && c->scheme() == Scheme::quadtree) {
@@ -134,8 +149,15 @@ SampleCounts TraceResult::counts() const {
 TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceOptions& o,
                         Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    const Criterion& criterion = find_criterion(o.sampler);
-    validate(o, criterion);
+    const Criterion& chosen = find_criterion(o.sampler);
+    validate(o, chosen);
+    throw_if_interrupted();
+    const bool adaptive = chosen.scheme() != Scheme::uniform;
+    std::unique_ptr<Criterion> on_display;
+    if (adaptive && o.criterion_exposure > 0) {
+        on_display = on_display_values(chosen, o.criterion_exposure);
+    }
+    const Criterion& criterion = on_display ? *on_display : chosen;
     std::unique_ptr<tbb::global_control> parallelism;
     if (o.threads > 0) {
         parallelism = std::make_unique<tbb::global_control>(
@@ -151,6 +173,13 @@ TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceO
     r.samples = runs.samples(threshold);
     r.rays = runs.rays(threshold);
     r.rays_traced = runs.rays_traced();
+    if (adaptive && o.fresh) {
+        progress.stage("fresh samples");
+        const PixelTracer fresh(tracer, camera, o.seed ^ kFreshSeed);
+        r.rays = 0;
+        r.image = fresh_image(fresh, r.samples, r.rays, progress);
+        r.rays_traced += r.rays;
+    }
     r.seconds = seconds_since(start);
     return r;
 }

@@ -29,6 +29,12 @@ struct TraceOptions {
     int tree_depth = 4;           // entropy samplers' quadtree depth limit, 1..12
     std::uint64_t seed = 1;       // keys every sample's stream
     int threads = 0;              // 0 = all cores; the image does not depend on it
+    // > 0: adaptive criteria see display values, radiance x this clamped to [0, 1]
+    // (viz/sampling/display_values.h); 0: physical radiance
+    double criterion_exposure = 0;
+    // Adaptive samplers: the image from fresh samples at the counts the criterion chose
+    // (fresh_image of viz/pixel_runs.h: unbiased, and about twice the rays)
+    bool fresh = false;
     PathOptions path;
 
     std::string to_string() const;
@@ -54,8 +60,12 @@ struct TraceResult {
 // The most samples one pixel can get with these options (quadtree: 4^(depth + 1)).
 std::uint32_t max_samples_per_pixel(const TraceOptions& options);
 
-// Throws InputError on bad options (an unknown sampler lists the valid ones; a target outside
-// what the sampler can give) and SppNotReached when the search fails.
+// Throws InputError on bad options: an unknown sampler (listing the valid ones), a target
+// outside what the sampler can give. Commands call it before any work; trace_image again.
+void validate_trace_options(const TraceOptions& options);
+
+// Throws InputError on bad options, SppNotReached when the search fails, and Interrupted
+// (common/interrupt.h) between blocks of rows after a SIGINT or SIGTERM.
 TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceOptions& options,
                         Progress& progress = no_progress());
 

@@ -4,6 +4,7 @@
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkExecutive.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
@@ -23,7 +24,9 @@
 #include <vector>
 
 #include "common/atomic_file.h"
+#include "common/error.h"
 #include "viz/tone_map.h"
+#include "viz/vtk_console.h"
 
 #ifndef HMCR_VERSION
 #error "HMCR_VERSION must be defined by the build"
@@ -131,6 +134,9 @@ void set_metadata(vtkPolyData* pd, const VtpMetadata& meta) {
     add_value<vtkTypeUInt64Array>(fd, "Iterations", meta.iterations);
     add_string(fd, "HmcrVersion", HMCR_VERSION);
     add_value<vtkDoubleArray>(fd, "TimeValue", meta.time_value);
+    add_string(fd, "Scene", meta.scene);
+    add_value<vtkTypeUInt64Array>(fd, "PatchCount", meta.patch_count);
+    add_string(fd, "GeometryHash", meta.geometry_hash);
 }
 
 void write_polydata(vtkPolyData* pd, const std::filesystem::path& file,
@@ -148,25 +154,24 @@ void write_polydata(vtkPolyData* pd, const std::filesystem::path& file,
     const int ok = writer->Write();
     if (ok != 1 || writer->GetErrorCode() != 0 || !errors->message().empty() ||
         !pipeline->message().empty()) {
-        throw std::runtime_error(
-            "cannot write " + target.string() + ": " +
-            (errors->message().empty() ? "VTK writer failed" : errors->message()));
+        // VTK's own text names its source file and line; say it in hmcr's words.
+        const unsigned long code = writer->GetErrorCode();
+        throw InputError("cannot write " + target.string(),
+                         code != 0 ? std::string(vtkErrorCode::GetStringFromErrorCode(code))
+                                   : "the VTK writer failed");
     }
 }
 
 }  // namespace
 
 void write_vtp(const std::filesystem::path& path, const ShadedMesh& mesh, const VtpMetadata& meta) {
+    silence_vtk_console();
     vtkNew<vtkPolyData> pd;
     set_geometry(pd, mesh);
     set_attributes(pd, mesh);
     set_metadata(pd, meta);
-    try {
-        write_file_atomically(
-            path, [&](const std::filesystem::path& tmp) { write_polydata(pd, tmp, path); });
-    } catch (const std::filesystem::filesystem_error& e) {
-        throw std::runtime_error("cannot write " + path.string() + ": " + e.what());
-    }
+    write_file_atomically(path,
+                          [&](const std::filesystem::path& tmp) { write_polydata(pd, tmp, path); });
 }
 
 }  // namespace hmcr

@@ -20,6 +20,9 @@ struct VtpMetadata {
     std::uint64_t element_count = 0;  // ElementCount
     std::uint64_t iterations = 0;     // Iterations
     double time_value = 0;            // TimeValue (ParaView's time of this file)
+    std::string scene;                // Scene: its name
+    std::uint64_t patch_count = 0;    // PatchCount: the scene's patches
+    std::string geometry_hash;        // GeometryHash: geometry_hash() of the scene's mesh
 };
 
 // Writes `mesh` atomically; RadiosityColor is tone-mapped with auto_exposure(mesh). Throws

@@ -4,11 +4,14 @@
 #include <filesystem>
 
 #include "viz/shaded_mesh.h"
+#include "viz/vtk_export.h"
 
 namespace hmcr {
 
-// The ShadedMesh an hmcr .vtp holds. Throws std::invalid_argument naming the file when it cannot
-// be read or lacks the hmcr arrays.
-ShadedMesh read_vtp(const std::filesystem::path& path);
+// The ShadedMesh an hmcr .vtp holds, and its metadata if asked. Every array's type, component
+// count and length, every cell and every value is checked: throws InputError naming the file
+// for a file that is missing, unreadable, not made by this version of hmcr, or inconsistent
+// (a PatchId out of range, a negative or NaN radiosity, a cell naming a point that is not there).
+ShadedMesh read_vtp(const std::filesystem::path& path, VtpMetadata* metadata = nullptr);
 
 }  // namespace hmcr

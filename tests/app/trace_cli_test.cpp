@@ -63,22 +63,8 @@ TEST_F(TraceCli, UniformHasNoThreshold) {
     EXPECT_EQ(j["exposure"], 2.0);
 }
 
-TEST_F(TraceCli, BadInputIsOneLineAndNoFile) {
-    expect_clean_failure("trace plates --sampler nope",
-                         "unknown sampler 'nope' (valid: uniform, cc, var, entropy, "
-                         "binary-entropy, kl, cs, he, srkl, srcs, srhe)");
-    expect_clean_failure("trace plates --sampler kl --spp 3",
-                         "spp must be in 8..24 for sampler kl");
-    expect_clean_failure("trace plates --estimator fast", "estimator must be mis, nee or bsdf");
-    expect_clean_failure("trace plates --view top", "view");
-    expect_clean_failure("trace plates --reference " + (m_dir / "none").string(), "reference.json");
-    const CliRun jpg = hmcr("trace plates -o " + (m_dir / "im.jpg").string());
-    EXPECT_EQ(jpg.exit_code, 2);
-    EXPECT_NE(jpg.err.find("output must be a .png file"), std::string::npos) << jpg.err;
-}
-
-// A traced reference folder serves `trace --reference` (its exposure) and `trace-study`.
-TEST_F(TraceCli, TraceReferenceAndTraceStudyWriteTheirFiles) {
+// A traced reference folder serves `trace --reference` (its exposure) and `study --samplers`.
+TEST_F(TraceCli, TraceReferenceAndSamplingStudyWriteTheirFiles) {
     const std::string ref = (m_dir / "ref").string(), study = (m_dir / "study").string();
     ASSERT_EQ(hmcr("trace-reference plates --width 10 --spp 16 -o " + ref).exit_code, 0);
     const auto j = nlohmann::json::parse(read_file(m_dir / "ref" / "reference.json"));
@@ -89,11 +75,33 @@ TEST_F(TraceCli, TraceReferenceAndTraceStudyWriteTheirFiles) {
     ASSERT_EQ(hmcr("trace plates --view oblique --width 10 --reference " + ref + out()).exit_code,
               0);
     EXPECT_EQ(nlohmann::json::parse(read_file(m_dir / "im.json"))["exposure"], exposure);
-    const CliRun r = hmcr("trace-study plates --reference " + ref +
+    const CliRun r = hmcr("study plates --reference " + ref +
                           " --samplers uniform,srhe --spp 8 --seeds 1 -q -o " + study);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(fs::exists(m_dir / "study" / "cells" / "plates-srhe-spp8-s1.json"));
     EXPECT_NE(read_file(m_dir / "study" / "table.md").find("| srhe | 1/1 |"), std::string::npos);
+}
+
+// `hmcr study --budgets` against a traced reference: radiosity solutions measured against an
+// independent solution of the same light transport. There is no reference mesh, so no
+// object-space error ("–" in the table, null in the cells), and the plot shows RMSEp.
+TEST_F(TraceCli, AMeshingStudyTakesATracedReference) {
+    const std::string ref = (m_dir / "ref").string(), study = (m_dir / "study").string();
+    ASSERT_EQ(hmcr("trace-reference plates --width 12 --spp 64 -q -o " + ref).exit_code, 0);
+    const CliRun r = hmcr("study plates --reference " + ref +
+                          " --budgets 20 --oracles power,kl --seeds 1 --rays 20000 -q -o " + study);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string md = read_file(m_dir / "study" / "table.md");
+    EXPECT_NE(md.find("| power | 1/1 |"), std::string::npos) << md;
+    const auto cell = nlohmann::json::parse(
+        read_file(m_dir / "study" / "cells" / "plates-kl-B20-s1.json"));
+    EXPECT_EQ(cell["status"], "ok");
+    EXPECT_TRUE(cell["object_error"]["relative_l2"].is_null());
+    for (const auto& [view, e] : cell["views"].items()) {
+        EXPECT_GT(e["psnr_p"].get<double>(), 15) << view;  // the same scene, solved both ways
+    }
+    EXPECT_EQ(read_png(m_dir / "study" / "images" / "plates-kl-B20-s1-side.png").width, 12);
+    EXPECT_TRUE(fs::exists(m_dir / "study" / "plots" / "error_vs_elements.png"));
 }
 
 TEST_F(TraceCli, SamplersAreListed) {

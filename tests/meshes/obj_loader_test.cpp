@@ -221,7 +221,7 @@ TEST(ObjLoader, FaceWithoutMaterial) {
     const auto obj = files.write("scene.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     EXPECT_TRUE(contains(scene_error([&] { load_obj(obj); }), "scene.obj:4: face has no material"));
     EXPECT_TRUE(contains(obj_error("usemtl purple\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
-                         "scene.obj:7: face uses material 'purple', which no loaded MTL"));
+                         "scene.obj:7: face uses material 'purple', which no loaded material file"));
 }
 
 TEST(ObjLoader, ReflectanceNotBelowOne) {

@@ -1,6 +1,7 @@
-// An interrupted study loses at most the cell in flight: `hmcr study` is killed (SIGKILL) after
-// its first cell is written, then run again; the rerun skips every cell the first run finished
-// and completes the rest.
+// An interrupted study loses at most the cell in flight: `hmcr study` is killed (SIGKILL) or
+// asked to stop (SIGTERM, SIGINT) after its first cell is written, then run again; the rerun
+// skips every cell the first run finished and completes the rest. Asked to stop, it ends with
+// exit code 128 + signal and leaves no temporary file.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -30,7 +31,18 @@ int run(const std::string& args, const fs::path& log) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-TEST(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
+std::size_t temp_files(const fs::path& dir) {
+    std::size_t n = 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) {
+        n += e.path().string().find(".tmp.") != std::string::npos;
+    }
+    return n;
+}
+
+class StudyKill : public testing::TestWithParam<int> {};
+
+TEST_P(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
+    const int signal = GetParam();
     TempDir dir;
     const fs::path ref = dir.path() / "ref", out = dir.path() / "study";
     ASSERT_EQ(run("reference plates --max-area 0.05 --rays 20000 -q -o " + ref.string(),
@@ -49,9 +61,14 @@ TEST(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
     while (finished_cells(out) == 0 && std::chrono::steady_clock::now() < deadline) {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    kill(child, SIGKILL);
+    kill(child, signal);
     int status = 0;
     waitpid(child, &status, 0);
+    if (signal != SIGKILL) {
+        ASSERT_TRUE(WIFEXITED(status));
+        EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+        EXPECT_EQ(temp_files(out), 0u);
+    }
     const std::size_t before = finished_cells(out);
     ASSERT_GE(before, 1u);
     ASSERT_LT(before, 8u) << "the study finished before it could be killed";
@@ -67,6 +84,13 @@ TEST(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
     EXPECT_EQ(finished_cells(out), 8u);
     EXPECT_TRUE(fs::exists(out / "table.md"));
 }
+
+INSTANTIATE_TEST_SUITE_P(Signals, StudyKill, testing::Values(SIGKILL, SIGTERM, SIGINT),
+                         [](const testing::TestParamInfo<int>& p) {
+                             return std::string(p.param == SIGKILL   ? "SIGKILL"
+                                                : p.param == SIGTERM ? "SIGTERM"
+                                                                     : "SIGINT");
+                         });
 
 }  // namespace
 }  // namespace hmcr::test

@@ -1,10 +1,11 @@
-// Running the hmcr binary as a user does, for the command-line tests.
+// Running the hmcr binary as a user does, and checking what it left behind.
 #pragma once
 
 #include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "tests/support/temp_dir.h"
@@ -12,17 +13,32 @@
 namespace hmcr::test {
 
 struct CliRun {
-    int exit_code = -1;
+    int exit_code = -1;  // 137: killed after the time limit (a hang)
     std::string out, err;
 };
 
-// `hmcr ARGS`, its stdout and stderr kept in files of `dir`.
-inline CliRun run_hmcr(const std::string& args, const std::filesystem::path& dir) {
-    const std::string cmd = std::string(HMCR_BINARY) + " " + args + " >" +
-                            (dir / "stdout").string() + " 2>" + (dir / "stderr").string();
+// hmcr ARGS in `dir`, killed after `seconds`.
+inline CliRun run_hmcr(const std::string& args, const std::filesystem::path& dir,
+                       int seconds = 60) {
+    const std::string cmd = "cd '" + dir.string() + "' && timeout -s KILL " +
+                            std::to_string(seconds) + " " + std::string(HMCR_BINARY) + " " +
+                            args + " >.stdout 2>.stderr";
     const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(dir / "stdout"),
-            read_file(dir / "stderr")};
+    CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(dir / ".stdout"),
+             read_file(dir / ".stderr")};
+    std::filesystem::remove(dir / ".stdout");
+    std::filesystem::remove(dir / ".stderr");
+    return r;
+}
+
+// Every file below a folder with its bytes: equal snapshots mean nothing was written, removed
+// or changed.
+inline std::map<std::string, std::string> snapshot(const std::filesystem::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+        if (e.is_regular_file()) files[e.path().lexically_relative(dir).string()] = read_file(e.path());
+    }
+    return files;
 }
 
 }  // namespace hmcr::test

@@ -2,6 +2,7 @@
 #include <zlib.h>
 
 #include <bit>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -149,6 +150,23 @@ TEST(ImageIo, BadFilesAreReportedWithTheirName) {
         FAIL() << "a PPM was read as a PFM";
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("c.pfm"), std::string::npos) << e.what();
+    }
+}
+
+// A reference image is radiance: a NaN, an infinity or a negative value can only be a broken
+// file, and would otherwise turn every error measured against it into NaN.
+TEST(ImageIo, PfmPixelsMustBeFiniteAndNotNegative) {
+    TempDir dir;
+    for (const float bad : {std::nanf(""), INFINITY, -0.5f}) {
+        Image im = test_image();
+        im.at(1, 0)[2] = bad;
+        try {
+            read_pfm(dir.write("bad.pfm", hand_made_pfm(im, true)));
+            FAIL() << "read a pixel of " << bad;
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find("bad.pfm"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("pixel (1, 0)"), std::string::npos) << e.what();
+        }
     }
 }
 

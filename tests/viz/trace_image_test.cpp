@@ -6,7 +6,11 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <numbers>
+
 #include "meshes/scene.h"
+#include "tests/support/analytic.h"
+#include "tests/support/statistics.h"
 #include "tests/viz/image_checks.h"
 #include "viz/sampling/registry.h"
 
@@ -99,6 +103,48 @@ TEST(TraceImage, TargetsOutsideTheSamplersRangeAreInputErrors) {
     TraceOptions o = options(find_criterion("kl"), 20);
     o.max_spp = 16;
     EXPECT_THROW(cornell().trace(o), InputError);
+}
+
+// The second pass takes fresh samples at the counts the criterion chose: the same counts, a new
+// image, the rays of both passes.
+TEST(TraceImage, FreshSamplesKeepTheCountsAndAddTheirRays) {
+    TraceOptions o = options(find_criterion("srhe"), 16);
+    const TraceResult first = cornell().trace(o);
+    o.fresh = true;
+    const TraceResult fresh = cornell().trace(o);
+    EXPECT_EQ(fresh.samples, first.samples);
+    EXPECT_EQ(fresh.threshold, first.threshold);
+    EXPECT_GT(fresh.rays_traced, first.rays_traced);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < first.image.pixels.size(); ++i)
+        differ += (fresh.image.pixels[i] != first.image.pixels[i]).any() ? 1 : 0;
+    EXPECT_GT(differ, first.image.pixels.size() / 2);
+}
+
+// The bundled plates seen from half-way between them, looking up with a 90 degree field of view:
+// the mean over the pixels is the receiver's mean radiance rho E F / pi (as in
+// path_tracer_test.cpp). With fresh samples the adaptive image's pixels are independent and
+// unbiased, so the mean over them is within its standard errors of it.
+TEST(TraceImage, FreshAdaptiveImagesAreUnbiased) {
+    const Scene scene = load_scene("plates");
+    View v;
+    v.name = "up";
+    v.position = Vec3(0.5, 0.5, 0.5);
+    v.look_at = Vec3(0.5, 0.5, 1);
+    v.up = Vec3(0, 1, 0);
+    v.fov_degrees = 90;
+    v.width = v.height = 48;
+    const PathTracer tracer(build_patch_set(scene.mesh), {});
+    TraceOptions o = options(find_criterion("kl"), 16);
+    o.fresh = true;
+    const Image im = trace_image(tracer, v, o).image;
+    const double expected = 0.5 * 1 * parallel_rectangles(1, 1, 1) / std::numbers::pi;
+    for (int c = 0; c < 3; ++c) {
+        std::vector<double> values;
+        for (const Rgb& p : im.pixels) values.push_back(p[c]);
+        const Estimate m = estimate_mean(values);
+        EXPECT_TRUE(within_standard_errors("kl, fresh samples", m.mean, expected, m.standard_error));
+    }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "radiosity/rng.h"
+#include "viz/sampling/display_values.h"
 #include "viz/sampling/registry.h"
 
 namespace hmcr::test {
@@ -24,6 +25,19 @@ std::vector<PixelSample> grey(const std::vector<double>& values, double geometry
 
 double value(const std::string& name, const std::vector<PixelSample>& s, double area = 1) {
     return find_criterion(name).value(s, area);
+}
+
+// On display values an outlier that is white on the screen anyway does not refine: 1 x 7 and 9
+// at exposure 1 clamp to eight 1s. At exposure 0.1 nothing clamps, and the value is the
+// criterion's of the scaled samples (kl is linear in the scale through L-bar).
+TEST(Criteria, DisplayValuesClampAtWhite) {
+    const auto s = grey({1, 1, 1, 1, 1, 1, 1, 9});
+    for (const char* name : {"cc", "var", "kl", "srhe", "entropy"}) {
+        EXPECT_EQ(on_display_values(find_criterion(name), 1.0)->value(s, 1), 0) << name;
+        EXPECT_GT(on_display_values(find_criterion(name), 0.1)->value(s, 1), 0) << name;
+    }
+    EXPECT_NEAR(on_display_values(find_criterion("kl"), 0.1)->value(s, 1), 0.1 * value("kl", s),
+                1e-15);
 }
 
 // Eight luminances 1, ..., 1, 9: n = 8, sum 16, L-bar = 2, p = (1/16 x 7, 9/16).

@@ -1,0 +1,9 @@
+#include "common/hash.h"
+
+#include <fmt/format.h>
+
+namespace hmcr {
+
+std::string Fnv1a::hex() const { return fmt::format("{:016x}", m_state); }
+
+}  // namespace hmcr

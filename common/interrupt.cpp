@@ -1,0 +1,39 @@
+#include "common/interrupt.h"
+
+#include <csignal>
+#include <cstring>
+#include <string>
+
+namespace hmcr {
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void on_signal(int signal) {
+    if (g_signal != 0) {  // the second one: stop now
+        std::signal(signal, SIG_DFL);
+        std::raise(signal);
+        return;
+    }
+    g_signal = signal;
+}
+
+}  // namespace
+
+Interrupted::Interrupted(int signal)
+    : std::runtime_error(std::string("interrupted by ") + (signal == SIGTERM ? "SIGTERM" : "SIGINT")),
+      m_signal(signal) {}
+
+void install_interrupt_handlers() {
+    struct sigaction action {};
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
+void throw_if_interrupted() {
+    if (g_signal != 0) throw Interrupted(g_signal);
+}
+
+}  // namespace hmcr

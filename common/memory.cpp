@@ -1,0 +1,37 @@
+#include "common/memory.h"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "common/error.h"
+
+namespace hmcr {
+
+std::uint64_t physical_memory_bytes() {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && page > 0 ? std::uint64_t(pages) * std::uint64_t(page) : 0;
+}
+
+std::uint64_t peak_memory_bytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return std::uint64_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
+}
+
+std::string human_bytes(double bytes) {
+    if (bytes >= 1e9) return fmt::format("{:.1f} GB", bytes / 1e9);
+    if (bytes >= 1e6) return fmt::format("{:.0f} MB", bytes / 1e6);
+    return fmt::format("{:.0f} kB", bytes / 1e3);
+}
+
+void require_memory(double bytes, const std::string& what) {
+    const double available = 0.75 * double(physical_memory_bytes());
+    if (available > 0 && bytes > available) {
+        throw InputError(fmt::format("{} would need about {} of memory; this machine has {}",
+                                     what, human_bytes(bytes),
+                                     human_bytes(double(physical_memory_bytes()))));
+    }
+}
+
+}  // namespace hmcr

@@ -1,0 +1,20 @@
+// Memory of this machine and of this process, for sizing defaults and refusing work that could
+// not fit before it starts.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace hmcr {
+
+std::uint64_t physical_memory_bytes();  // installed RAM (0 if unknown)
+std::uint64_t peak_memory_bytes();      // peak resident memory of this process so far
+
+// "1.5 GB": a byte count for messages.
+std::string human_bytes(double bytes);
+
+// Throws InputError "WHAT would need about X of memory; this machine has Y" when `bytes` is more
+// than the machine can hold (three quarters of its RAM).
+void require_memory(double bytes, const std::string& what);
+
+}  // namespace hmcr

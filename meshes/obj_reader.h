@@ -1,0 +1,14 @@
+// Wavefront OBJ with its MTL material libraries, read through tinyobjloader (SPEC section 1).
+#pragma once
+
+#include <filesystem>
+
+#include "meshes/polygon_soup.h"
+
+namespace hmcr {
+
+// The OBJ's polygons and materials. Throws InputError "path:line: why" on a file that cannot
+// be read or a statement that is not valid OBJ/MTL; unknown MTL statements become warnings.
+PolygonSoup read_obj(const std::filesystem::path& obj);
+
+}  // namespace hmcr

@@ -1,0 +1,59 @@
+// What every mesh reader (OBJ, and MGF later) produces and the patch-mesh builder turns into a
+// validated PatchMesh: positions, polygons with their material and the place they were read
+// from, and materials with the places of their reflectance and emission. Errors found later
+// (a degenerate face, a reflectance of 1.2) are reported at those places.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "meshes/scene.h"
+
+namespace hmcr {
+
+// A line of one of the soup's files.
+struct SourcePlace {
+    std::uint32_t file = 0;  // index into PolygonSoup::files
+    std::uint32_t line = 0;  // 1-based; 0: the file as a whole
+};
+
+struct SoupMaterial {
+    Material material;
+    bool defined = true;     // false: named by a face but defined nowhere (an error if used)
+    SourcePlace kd, ke;      // where Kd and Ke were set (the definition if they were not)
+};
+
+struct PolygonSoup {
+    static constexpr std::int32_t kNoMaterial = -1;
+
+    std::vector<std::filesystem::path> files;  // every file read, in order
+    std::vector<Eigen::Vector3d> positions;    // finite
+    std::vector<SoupMaterial> materials;
+    std::vector<std::string> warnings;         // "file:line: what", one line each
+
+    // Polygon k: corners (indices into positions, counter-clockwise seen from the front),
+    // material (index into materials, or kNoMaterial) and the statement it came from.
+    std::size_t polygon_count() const { return material.size(); }
+    std::span<const std::uint32_t> corners(std::size_t k) const {
+        return {corner_ids.data() + corner_offsets[k], corner_offsets[k + 1] - corner_offsets[k]};
+    }
+    void add_polygon(std::span<const std::uint32_t> ids, std::int32_t material_id, SourcePlace at);
+
+    std::vector<std::uint32_t> corner_offsets{0};
+    std::vector<std::uint32_t> corner_ids;
+    std::vector<std::int32_t> material;
+    std::vector<SourcePlace> place;
+
+    std::string where(SourcePlace p) const;  // "path:line", or "path" for line 0
+};
+
+// The validated patch mesh of the soup (SPEC section 1): equal positions welded, every polygon
+// checked (geometry, material), no duplicate faces, an emitter when the scene is to be solved.
+// Throws InputError at the place of the first problem.
+PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options);
+
+}  // namespace hmcr

@@ -1,0 +1,63 @@
+// The hostile-input suite: every case runs the hmcr binary as a careless or hostile user would
+// and checks the README's promise for bad input: exit code 2, one line on stderr naming what and
+// where, no hang, and not one file of the working folder written, removed or changed.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "tests/support/cli_run.h"
+
+namespace hmcr::test {
+
+// The plates scene (two unit squares, an emitter and a grey receiver), as text to spoil.
+inline const char* kPlatesObj =
+    "mtllib plates.mtl\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "usemtl emitter\nf 1 2 3 4\n"
+    "usemtl receiver\nf 5 8 7 6\n";
+inline const char* kPlatesMtl =
+    "newmtl emitter\nKd 0 0 0\nKe 0.3 0.3 0.3\n"
+    "newmtl receiver\nKd 0.5 0.5 0.5\nKe 0 0 0\n";
+inline const char* kPlatesJson =
+    R"({"mesh": "plates.obj", "views": [{"name": "side", "position": [2.8, 0.5, 0.5],
+        "look_at": [0.5, 0.5, 0.5], "width": 32, "height": 32}]})";
+
+class Hostile : public testing::Test {
+protected:
+    // Writes the plates scene (with the given texts) into the working folder.
+    void plates(const std::string& obj = kPlatesObj, const std::string& mtl = kPlatesMtl,
+                const std::string& json = kPlatesJson) const {
+        m_temp.write("plates.obj", obj);
+        m_temp.write("plates.mtl", mtl);
+        m_temp.write("plates.json", json);
+    }
+
+    // Runs hmcr ARGS in the working folder and expects a clean refusal mentioning `needle`.
+    CliRun refused(const std::string& args, const std::string& needle) const {
+        const auto before = snapshot(dir());
+        const CliRun r = run_hmcr(args, dir());
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+        EXPECT_LT(r.err.size(), 400u) << args;
+        EXPECT_NE(r.err.find(needle), std::string::npos) << args << "\n" << r.err;
+        EXPECT_EQ(r.err.find("vtk"), std::string::npos) << r.err;  // in hmcr's words
+        EXPECT_TRUE(snapshot(dir()) == before) << args << ": the folder changed";
+        return r;
+    }
+
+    // Runs hmcr ARGS and expects success.
+    CliRun accepted(const std::string& args) const {
+        const CliRun r = run_hmcr(args, dir());
+        EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+        return r;
+    }
+
+    const std::filesystem::path& dir() const { return m_temp.path(); }
+
+    TempDir m_temp;
+};
+
+}  // namespace hmcr::test

@@ -1,0 +1,71 @@
+// Hostile options: values that once were accepted and ran for ever or gave a silent wrong
+// result, and lists with a value twice.
+#include "tests/hostile/hostile.h"
+
+namespace hmcr::test {
+namespace {
+
+TEST_F(Hostile, NumbersOutOfRangeOrNotNumbersAreRefused) {
+    plates();
+    const std::pair<std::string, std::string> cases[] = {
+        {"--epsilon nan", "not a finite number"},
+        {"--epsilon -1", "epsilon must be positive"},
+        {"--rays 18446744073709551615", "rays must be in 1..1e15"},
+        {"--rays 0", "rays must be in 1..1e15"},
+        {"--rays 1.5", "not a whole number"},
+        {"--budget 0", "budget must be a positive leaf count"},
+        {"--budget-tolerance -1", "budget-tolerance must be in (0, 1)"},
+        {"--budget-tolerance nan", "budget-tolerance must be in (0, 1), got nan"},
+        {"--stop 0", "stop must be in (0, 1)"},
+        {"--min-area inf", "not a finite number"},
+        {"--max-depth 25", "max-depth must be in 0..24"},
+        {"--lines 0", "lines must be in 1..4096"},
+        {"--max-elements 0", "max-elements must be at least 1"},
+        {"--crease-angle 200", "crease-angle must be in [0, 180]"},
+        {"--oracle nope", "oracle must be one of power"},
+        {"--progress loud", "progress must be auto, bar, lines or none"},
+    };
+    for (const auto& [option, needle] : cases) {
+        refused("solve plates.json -o out.vtp " + option, needle);
+    }
+}
+
+TEST_F(Hostile, TheElementLimitStopsAGrowingHierarchy) {
+    plates();
+    refused("solve plates.json -o out.vtp --oracle power --epsilon 1e-12 --rays 20000 "
+            "--max-elements 1000",
+            "would grow beyond --max-elements 1000");
+}
+
+TEST_F(Hostile, RenderOptionsAreChecked) {
+    plates();
+    accepted("solve plates.json --rays 2000 -q -o p.vtp");
+    for (const char* e : {"nan", "-1", "0", "inf"}) {
+        refused("render p.vtp --scene plates.json -o x.png --exposure " + std::string(e),
+                "exposure must be a positive number, got " + std::string(e));
+    }
+    refused("render p.vtp --scene plates.json -o x.png --samples 0", "samples must be in 1..16");
+    refused("render p.vtp --scene plates.json -o x.jpg", "output must be a .png file");
+    refused("render p.vtp --scene plates.json --view top -o x.png", "no view 'top' (views: side)");
+}
+
+TEST_F(Hostile, InfoRefusesWhatCannotFitInMemory) {
+    plates();
+    refused("info plates.json --lines 1e12", "would need about 4000.0 GB of memory");
+    refused("info plates.json --lines 1e12 --method global", "GB of memory");
+    refused("info plates.json --lines 10", "lines must be at least 16");
+    refused("info plates.json --method globl", "unknown line method 'globl'");
+}
+
+TEST_F(Hostile, StudyListsWithAValueTwiceAreRefused) {
+    plates();
+    const std::string study = "study plates.json --reference ref -o st --seeds 1 ";
+    std::filesystem::create_directories(dir() / "ref");
+    refused(study + "--budgets 5 --oracles power,power", "oracle power is given twice");
+    refused(study + "--budgets 5 --oracles all,kl", "oracle kl is given twice");
+    refused(study + "--budgets 500,500", "budget 500 is given twice");
+    refused(study + "--budgets 500,,600", "empty item in the list");
+}
+
+}  // namespace
+}  // namespace hmcr::test

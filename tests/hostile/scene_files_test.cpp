@@ -1,0 +1,122 @@
+// Hostile scenes: every class of bad scene the README lists, and the cases that once hung,
+// crashed or went unnoticed.
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/hostile/hostile.h"
+
+namespace hmcr::test {
+namespace {
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+    return text;
+}
+
+// One bad OBJ per class of error of the README's Format section.
+TEST_F(Hostile, EveryClassOfBadObjIsRefusedWithItsLine) {
+    const std::pair<std::string, std::string> cases[] = {
+        {with(kPlatesObj, "v 0 0 0", "v 0 nan 0"), "plates.obj:2: 'nan' is not a finite number"},
+        {with(kPlatesObj, "v 0 0 0", "v 0 0 zero"), "plates.obj:2: cannot parse number"},
+        {with(kPlatesObj, "f 1 2 3 4", "f 1 2 3 9"), "plates.obj:11: vertex reference '9'"},
+        {with(kPlatesObj, "f 1 2 3 4", "f 1/5 2 3 4"), "texture coordinate reference '1/5'"},
+        {with(kPlatesObj, "f 1 2 3 4", "f 1//2 2 3 4"), "normal reference '1//2'"},
+        {with(kPlatesObj, "f 1 2 3 4", "f 1 2 2"), "plates.obj:11: degenerate face"},
+        {with(kPlatesObj, "v 0 1 0", "v 0 1 0.5"), "plates.obj:11: non-planar quad"},
+        {with(kPlatesObj, "v 0 1 0", "v 0.8 0.2 0"), "plates.obj:11: non-convex quad"},
+        {with(kPlatesObj, "f 1 2 3 4", "f 1 2 3 4 5"), "plates.obj:11: polygon with 5 vertices"},
+        {std::string(kPlatesObj) + "f 4 3 2 1\n", "plates.obj:14: duplicate face"},
+        {with(kPlatesObj, "usemtl emitter\n", ""), "plates.obj:10: face has no material"},
+        {with(kPlatesObj, "usemtl emitter", "usemtl emiter"), "material 'emiter', which no"},
+        {with(kPlatesObj, "mtllib plates.mtl", "mtllib none.mtl"), "plates.obj:1: cannot read "
+                                                                  "material library 'none.mtl'"},
+        {with(kPlatesObj, "v 0 0 0", "vv 0 0 0"), "plates.obj:2: unknown OBJ statement 'vv'"},
+        {"", "plates.obj: no faces"},
+    };
+    for (const auto& [obj, needle] : cases) {
+        plates(obj);
+        refused("solve plates.obj -o out.vtp", needle);
+    }
+}
+
+TEST_F(Hostile, EveryClassOfBadMaterialIsRefusedWithItsLine) {
+    const std::pair<std::string, std::string> cases[] = {
+        {with(kPlatesMtl, "Kd 0.5 0.5 0.5", "Kd 1.2 0.5 0.5"), "plates.mtl:5: reflectance 1.2"},
+        {with(kPlatesMtl, "Ke 0.3 0.3 0.3", "Ke -1 0.3 0.3"), "plates.mtl:3: emission -1"},
+        {with(kPlatesMtl, "Ke 0.3 0.3 0.3", "Ke 0 0 0"), "plates.obj: no face emits light"},
+        // Once a solve that never ended: the powers overflowed to infinity.
+        {with(kPlatesMtl, "Ke 0.3 0.3 0.3", "Ke 1e300 1 1"), "plates.mtl:3: emission 1e+300"},
+        {with(kPlatesMtl, "Kd 0 0 0", "Kd 0 0"), "plates.mtl:2: 'Kd' needs three numbers"},
+        {std::string(kPlatesMtl) + "newmtl receiver\n", "plates.mtl:7: material 'receiver' is "
+                                                         "defined again (first at"},
+    };
+    for (const auto& [mtl, needle] : cases) {
+        plates(kPlatesObj, mtl);
+        refused("solve plates.obj -o out.vtp", needle);
+    }
+}
+
+// A typo that turns a light off is named before the scene is refused for having no light.
+TEST_F(Hostile, UnknownMtlStatementIsNamedWithItsLine) {
+    plates(kPlatesObj, with(kPlatesMtl, "Ke 0.3 0.3 0.3", "KE 0.3 0.3 0.3"));
+    const CliRun r = run_hmcr("solve plates.obj -o out.vtp", dir());
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("warning: plates.mtl:3: unknown MTL statement 'KE' ignored"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("no face emits light"), std::string::npos) << r.err;
+}
+
+// What other tools write and hmcr once refused: a byte-order mark, comments after data.
+TEST_F(Hostile, ByteOrderMarksAndTrailingCommentsAreRead) {
+    plates("\xEF\xBB\xBF" + std::string(kPlatesObj),
+           "\xEF\xBB\xBF" + with(kPlatesMtl, "Kd 0.5 0.5 0.5", "Kd 0.5 0.5 0.5 # grey"));
+    accepted("solve plates.obj --rays 2000 -q -o out.vtp");
+    const auto summary = nlohmann::json::parse(read_file(dir() / "out.json"));
+    EXPECT_EQ(summary["scene"]["patches"], 2);
+}
+
+// A material file that is a device (or a link to one) is refused, not read for ever.
+TEST_F(Hostile, SpecialFilesAreRefusedNotRead) {
+    plates(with(kPlatesObj, "mtllib plates.mtl", "mtllib zero.mtl"));
+    std::filesystem::create_symlink("/dev/zero", dir() / "zero.mtl");
+    refused("solve plates.obj -o out.vtp", "is not a regular file");
+    refused("info plates.obj", "is not a regular file");
+    plates(with(kPlatesObj, "mtllib plates.mtl", "mtllib /dev/zero"));
+    refused("solve plates.obj -o out.vtp", "/dev/zero: is not a regular file");
+    refused("solve /dev/zero -o out.vtp", "/dev/zero");
+}
+
+TEST_F(Hostile, AMegabyteNameGivesAShortMessage) {
+    const std::string name(1 << 20, 'x');
+    plates(with(kPlatesObj, "usemtl emitter", "usemtl " + name));
+    refused("solve plates.obj -o out.vtp", "'xxxxxxxx");
+}
+
+TEST_F(Hostile, BadSceneFilesAreRefusedWithFileAndPlace) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"{\"mesh\": \"plates.obj\",", "plates.json:1: "},
+        {R"({"mesh": "plates.obj", "meshh": 1})", "unknown key 'meshh'"},
+        {R"({"mesh": "plates.obj", "views": [{"name": "a", "position": [0, 0, 0],
+             "look_at": [0, 0, 0]}]})", "look_at equals position"},
+        {R"({"mesh": "plates.obj", "solver": {"rays": -5}})", "plates.json: solver.rays: "},
+        {R"({"mesh": "plates.obj", "solver": {"rays": 1.5}})", "plates.json: solver.rays: "},
+        {R"({"mesh": "plates.obj", "solver": {"rays": 1e30}})", "plates.json: solver.rays: "},
+        {R"({"mesh": "plates.obj", "solver": {"rays": "abc"}})", "plates.json: solver.rays: "},
+        {R"({"mesh": "plates.obj", "solver": {"seed": -1}})", "plates.json: solver.seed: "},
+        {R"({"mesh": "plates.obj", "solver": {"stop": 2}})", "plates.json: solver.stop: "},
+        {R"({"mesh": "plates.obj", "solver": {"threads": 2}})", "unknown setting 'threads'"},
+        {R"({"mesh": "none.obj"})", "none.obj: no such file"},
+        {R"({"mesh": "plates.ply"})", "hmcr reads .obj meshes"},
+    };
+    for (const auto& [json, needle] : cases) {
+        plates(kPlatesObj, kPlatesMtl, json);
+        refused("solve plates.json -o out.vtp", needle);
+        // The scene file is wrong whatever the command line gives with it.
+        refused("solve plates.json --rays 1000 --seed 2 --stop 0.1 -o out.vtp", needle);
+    }
+}
+
+}  // namespace
+}  // namespace hmcr::test

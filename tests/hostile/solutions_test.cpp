@@ -1,0 +1,108 @@
+// Hostile solution files: a .vtp from outside is checked array by array and cell by cell, and
+// bound to the scene it was solved for.
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <cmath>
+#include <functional>
+
+#include "tests/hostile/hostile.h"
+
+namespace hmcr::test {
+namespace {
+
+class HostileSolution : public Hostile {
+protected:
+    void SetUp() override {
+        plates();
+        accepted("solve plates.json --rays 2000 -q -o good.vtp");
+    }
+    // good.vtp changed by `spoil`, written as NAME.
+    void spoilt(const std::string& name, const std::function<void(vtkPolyData*)>& spoil) const {
+        vtkNew<vtkXMLPolyDataReader> reader;
+        reader->SetFileName((dir() / "good.vtp").c_str());
+        reader->Update();
+        vtkPolyData* data = reader->GetOutput();
+        spoil(data);
+        vtkNew<vtkXMLPolyDataWriter> writer;
+        writer->SetFileName((dir() / name).c_str());
+        writer->SetInputData(data);
+        ASSERT_EQ(writer->Write(), 1);
+    }
+    // Both readers of solutions refuse it.
+    void expect_refused(const std::string& vtp, const std::string& needle) const {
+        refused("render " + vtp + " --scene plates.json -o x.png", needle);
+        refused("info " + vtp + " --scene plates.json", needle);
+    }
+};
+
+TEST_F(HostileSolution, CellsThatAreNotPolygonsAreRefused) {
+    // As many lines as there were polygons, so that VTK itself reads the file.
+    spoilt("lines.vtp", [](vtkPolyData* d) {
+        vtkNew<vtkCellArray> lines;
+        for (vtkIdType c = 0; c < d->GetNumberOfPolys(); ++c) {
+            const vtkIdType ids[2] = {0, 1};
+            lines->InsertNextCell(2, ids);
+        }
+        d->SetPolys(vtkNew<vtkCellArray>());
+        d->SetLines(lines);
+    });
+    expect_refused("lines.vtp", "has cells that are not polygons");
+    spoilt("empty.vtp", [](vtkPolyData* d) {
+        d->SetPolys(vtkNew<vtkCellArray>());
+        d->GetCellData()->Initialize();
+    });
+    expect_refused("empty.vtp", "holds no polygons");
+}
+
+TEST_F(HostileSolution, ArraysOfTheWrongShapeAreRefused) {
+    spoilt("one.vtp", [](vtkPolyData* d) {
+        vtkNew<vtkFloatArray> b;
+        b->SetName("Radiosity");
+        b->SetNumberOfTuples(d->GetNumberOfPoints());
+        b->Fill(1);
+        d->GetPointData()->AddArray(b);
+    });
+    expect_refused("one.vtp", "array Radiosity has");
+    spoilt("noarea.vtp", [](vtkPolyData* d) { d->GetCellData()->RemoveArray("ElementArea"); });
+    expect_refused("noarea.vtp", "no ElementArea array");
+}
+
+TEST_F(HostileSolution, ValuesOutOfRangeAreRefused) {
+    const auto set_patch = [](int value) {
+        return [value](vtkPolyData* d) {
+            vtkIntArray::SafeDownCast(d->GetCellData()->GetArray("PatchId"))->SetValue(0, value);
+        };
+    };
+    spoilt("minus.vtp", set_patch(-1));
+    expect_refused("minus.vtp", "PatchId -1");
+    spoilt("beyond.vtp", set_patch(7));
+    expect_refused("beyond.vtp", "PatchId 7, but the scene has 2 patches");
+    spoilt("nan.vtp", [](vtkPolyData* d) {
+        vtkFloatArray::SafeDownCast(d->GetPointData()->GetArray("Radiosity"))->SetValue(0, NAN);
+    });
+    expect_refused("nan.vtp", "Radiosity nan");
+}
+
+TEST_F(HostileSolution, ASolutionOfAnotherSceneIsRefused) {
+    refused("render good.vtp --scene cornell -o x.png", "is a solution of scene 'plates'");
+    refused("info good.vtp --scene cornell", "not of 'cornell'");
+}
+
+TEST_F(HostileSolution, GarbageIsRefused) {
+    m_temp.write("junk.vtp", "<VTKFile>nonsense");
+    expect_refused("junk.vtp", "junk.vtp: ");
+    expect_refused("none.vtp", "none.vtp: no such file");
+    std::filesystem::create_directory(dir() / "folder.vtp");
+    expect_refused("folder.vtp", "folder.vtp: is not a regular file");
+}
+
+}  // namespace
+}  // namespace hmcr::test

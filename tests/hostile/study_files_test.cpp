@@ -1,0 +1,53 @@
+// Hostile study folders: a cell file cut short or emptied is computed again, not fatal; a
+// folder made with other settings is refused, not mixed into one table.
+#include <nlohmann/json.hpp>
+
+#include "tests/hostile/hostile.h"
+
+namespace hmcr::test {
+namespace {
+
+class HostileStudy : public Hostile {
+protected:
+    void SetUp() override {
+        plates(kPlatesObj, kPlatesMtl,
+               R"({"mesh": "plates.obj", "solver": {"rays": 20000}, "views": [{"name": "side",
+                   "position": [2.8, 0.5, 0.5], "look_at": [0.5, 0.5, 0.5], "width": 32,
+                   "height": 32}]})");
+        accepted("reference plates.json --max-area 0.1 --rays 20000 -q -o ref");  // rays its own
+    }
+    static constexpr const char* kStudy =
+        "study plates.json --reference ref --budgets 20 --oracles power --seeds 2 -o st";
+    std::filesystem::path cell(int seed) const {
+        return dir() / "st" / "cells" / ("plates-power-B20-s" + std::to_string(seed) + ".json");
+    }
+};
+
+TEST_F(HostileStudy, BrokenCellFilesAreComputedAgain) {
+    accepted(kStudy);
+    const std::string good = read_file(cell(1));
+    const std::string table = read_file(dir() / "st" / "table.csv");
+    for (const std::string& broken : {std::string("{}"), good.substr(0, good.size() / 2), std::string()}) {
+        m_temp.write("st/cells/plates-power-B20-s1.json", broken);
+        const CliRun r = accepted(kStudy);
+        EXPECT_NE(r.err.find("plates-power-B20-s1: unreadable"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("computing it again"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("plates-power-B20-s2: done before, skipped"), std::string::npos);
+        EXPECT_EQ(nlohmann::json::parse(read_file(cell(1)))["seed"], 1);
+    }
+}
+
+TEST_F(HostileStudy, OtherSettingsAreRefusedUnlessRedone) {
+    accepted(kStudy);
+    const CliRun r = refused(std::string(kStudy) + " --lines 4", "made with other settings");
+    EXPECT_NE(r.err.find("lines"), std::string::npos) << r.err;
+    refused(std::string(kStudy) + " --rays 30000", "solve/rays is 30000 now");
+    const CliRun redo = accepted(std::string(kStudy) + " --lines 4 --redo");
+    EXPECT_NE(redo.err.find("made with other settings; computing it again"), std::string::npos);
+    EXPECT_EQ(nlohmann::json::parse(read_file(cell(2)))["settings"]["solve"]["lines"], 4);
+    // Threads and cache size change no result, so they are not settings of a study.
+    accepted(std::string(kStudy) + " --lines 4 --threads 1 --cache-mb 1");
+}
+
+}  // namespace
+}  // namespace hmcr::test

@@ -1,0 +1,13 @@
+#include "viz/vtk_console.h"
+
+#include <vtkLogger.h>
+#include <vtkObject.h>
+
+namespace hmcr {
+
+void silence_vtk_console() {
+    vtkObject::GlobalWarningDisplayOff();
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+}
+
+}  // namespace hmcr
