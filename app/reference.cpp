@@ -37,10 +37,12 @@ int run_reference(ReferenceArgs& a, const std::string& command_line) {
                     run_summary(scene, ref.solution, timings, command_line,
                                 (dir / "reference.vtp").string()));
     if (!a.quiet) {
+        const Rgb& bias = ref.truncation.relative;
         fmt::print("{}: reference of {} elements, 2 x {} rays, {:.1f} s; seeds differ by {:.4f} "
-                   "(object-space relative L2) -> {}\n",
+                   "(object-space relative L2); stopping left out {:.2g}/{:.2g}/{:.2g} of the "
+                   "reflected light (R/G/B) -> {}\n",
                    scene.name, ref.solution.stats.leaves, a.options.solver.rays, ref.seconds,
-                   ref.object_error.relative_l2, dir.string());
+                   ref.object_error.relative_l2, bias[0], bias[1], bias[2], dir.string());
     }
     return 0;
 }

@@ -28,7 +28,8 @@ struct StudyArgs {
     SolverFlags flags;
     std::string budgets;  // "2000,5000,19000"
     std::string oracles = "all";
-    std::string samplers;  // "all" or "uniform,srhe"; given: a sampling study
+    std::string mesh_rays;  // empty: the default, 50 x the cell's rays
+    std::string samplers;   // "all" or "uniform,srhe"; given: a sampling study
     SamplingStudyOptions sampling = [] {
         SamplingStudyOptions o;
         o.trace.spp = 60;
@@ -100,6 +101,13 @@ int run_sampling_study(StudyArgs& a) {
 int run_meshing_study(StudyArgs& a) {
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
     a.options.oracles = split_commas(a.oracles);
+    if (!a.mesh_rays.empty()) {
+        const auto rays = parse_count(a.mesh_rays);
+        if (!rays || *rays > kMaxRays) {
+            throw InputError("mesh-rays: " + quote(a.mesh_rays) + " is not a count up to 1e15");
+        }
+        a.options.mesh_rays = *rays;
+    }
     validate_study(a.options);
     const Scene scene = load_scene_reporting(a.scene, a.quiet);
     apply_scene_settings(a.flags, scene, a.options.solver);
@@ -138,6 +146,13 @@ void add_meshing_flags(CLI::App& cmd, StudyArgs& a) {
     cmd.add_option("--oracles", a.oracles, "comma-separated names, or all")->capture_default_str();
     // Every cell sets its oracle, epsilon (by the budget search) and seed; threads is shared.
     a.flags = add_solver_flags(cmd, o.solver, {"oracle", "epsilon", "seed", "threads"});
+    cmd.add_option("--rays-per-leaf", o.rays_per_leaf,
+                   "give each budget this many rays per leaf instead of --rays (0: --rays)")
+        ->transform(count_notation())
+        ->capture_default_str();
+    cmd.add_option("--mesh-rays", a.mesh_rays,
+                   "rays of each cell's frozen re-solve, the mesh error (default: 50 x the "
+                   "cell's rays; 0: none)");
     cmd.add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
     cmd.add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();
 }

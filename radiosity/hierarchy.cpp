@@ -73,6 +73,20 @@ void Hierarchy::subdivide_uniformly(double max_area) {
     tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) { split(split, m_roots[i]); });
 }
 
+void Hierarchy::subdivide_like(const Hierarchy& shape) {
+    if (shape.patch_count() != patch_count()) {
+        throw std::invalid_argument("subdivide_like: another scene's hierarchy");
+    }
+    auto split = [&](auto& self, Element& e, const Element& model) -> void {
+        const Element* m = model.children();
+        if (!m) return;
+        Element* c = subdivide(e);
+        for (int k = 0; k < 4; ++k) self(self, c[k], m[k]);
+    };
+    tbb::parallel_for(std::size_t(0), m_roots.size(),
+                      [&](std::size_t i) { split(split, m_roots[i], shape.m_roots[i]); });
+}
+
 Element& Hierarchy::child_containing(const Element& e, const Vec2& uv) const {
     const int k = e.domain.child_containing(patch(e).is_quad(), uv);
     return e.children()[k];

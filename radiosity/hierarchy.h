@@ -42,6 +42,9 @@ public:
     // Splits every element larger than max_area (m^2) until none is, within max_depth: the
     // fixed uniform mesh of a converged reference (SPEC section 6). Parallel over patches.
     void subdivide_uniformly(double max_area);
+    // Splits every element that `shape` (a hierarchy of the same patches) has split: the same
+    // leaves, for re-solving a mesh frozen (a study's mesh error). Parallel over patches.
+    void subdivide_like(const Hierarchy& shape);
     // The four children of e, created if they do not exist yet (thread-safe). New children
     // inherit B and Delta B (constant basis) and start with nothing received. Throws
     // ElementLimitReached when they would make more than max_elements elements.

@@ -11,8 +11,11 @@ namespace hmcr {
 namespace {
 
 // w_ij of SPEC section 4: the largest share of the source's radiosity the receiver reflects.
-double link_weight(const Rgb& receiver_reflectance, const Rgb& source_radiosity) {
-    return (receiver_reflectance * source_radiosity).maxCoeff();
+// The papers write it with the total radiosity B_j, as RenderPark's power oracle weighs; hmcr's
+// first choice was the unshot Delta B_j, which refines later iterations much less.
+double link_weight(const RefinementContext& ctx, const Element& receiver, const Element& source) {
+    const Rgb& b = ctx.total_weight ? source.radiosity : source.unshot;
+    return (ctx.hierarchy.patch(receiver).reflectance * b).maxCoeff();
 }
 
 std::uint64_t element_key(const ElementId& id) {
@@ -73,7 +76,7 @@ double geometric_factor(const RefinementContext& ctx, const Element& receiver,
 
 double link_value(const RefinementContext& ctx, const Element& receiver, const Element& source,
                   RefinementCounters& counters) {
-    const double w = link_weight(ctx.hierarchy.patch(receiver).reflectance, source.unshot);
+    const double w = link_weight(ctx, receiver, source);
     if (w <= 0) return 0;  // nothing to transport: no refinement can matter
     ++counters.oracle_calls;
     return w * geometric_factor(ctx, receiver, source, counters);

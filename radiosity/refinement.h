@@ -20,6 +20,7 @@ struct RefinementContext {
     std::uint64_t seed = 0;
     LinkCache* cache = nullptr;  // geometric factors of line-based oracles; none: recompute
     bool fixed_mesh = false;     // deposit on the existing leaf at the hit, ask no oracle
+    bool total_weight = false;   // w_ij from the source's B (RenderPark's), else its Delta B
 };
 
 struct RefinementCounters {

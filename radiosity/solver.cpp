@@ -25,9 +25,9 @@ using Clock = std::chrono::steady_clock;
 // 0.005 on the reflected fraction, for well under a millisecond.
 constexpr std::uint64_t kPilotRays = 4096;
 
-// The link cache of the line-based oracles; none for power or a fixed mesh (no oracle asked).
+// The link cache of the line-based oracles; none for power.
 std::unique_ptr<LinkCache> make_link_cache(const Oracle& oracle, const SolverOptions& o) {
-    if (!oracle.uses_lines() || o.cache_mb <= 0 || o.uniform_max_area > 0) return nullptr;
+    if (!oracle.uses_lines() || o.cache_mb <= 0) return nullptr;
     return std::make_unique<LinkCache>(std::size_t(o.cache_mb * (1 << 20)));
 }
 
@@ -50,7 +50,11 @@ double SolveStats::back_face_fraction() const {
     return shot > 0 ? channel_sum(back_face_power) / shot : 0;
 }
 
-Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& progress) {
+namespace {
+
+// `shape`: a frozen mesh to solve on, or none (refine, or the uniform mesh of uniform_max_area).
+Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy* shape,
+                    Progress& progress) {
     validate(options);
     const auto start = Clock::now();
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
@@ -70,9 +74,14 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
     sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
                                                 HierarchyLimits{options.min_area, options.max_depth, options.max_elements});
     Hierarchy& h = *sol.hierarchy;
-    const bool fixed_mesh = options.uniform_max_area > 0;
-    if (fixed_mesh) h.subdivide_uniformly(options.uniform_max_area);
-    const std::unique_ptr<LinkCache> cache = make_link_cache(oracle, options);
+    const bool fixed_mesh = options.uniform_max_area > 0 || shape;
+    if (shape) {
+        h.subdivide_like(*shape);
+    } else if (fixed_mesh) {
+        h.subdivide_uniformly(options.uniform_max_area);
+    }
+    const std::unique_ptr<LinkCache> cache =
+        fixed_mesh ? nullptr : make_link_cache(oracle, options);
     const RefinementContext ctx{h,
                                 oracle,
                                 scene,
@@ -80,7 +89,8 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
                                 options.lines,
                                 options.seed,
                                 cache.get(),
-                                fixed_mesh};
+                                fixed_mesh,
+                                options.link_weight == "total"};
     st.setup_seconds = seconds_since(start);
 
     const double emitted = channel_sum(st.emitted_power);
@@ -126,6 +136,17 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
     }
     st.total_seconds = seconds_since(start);
     return sol;
+}
+
+}  // namespace
+
+Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& progress) {
+    return solve_with(mesh, options, nullptr, progress);
+}
+
+Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy& shape,
+                       Progress& progress) {
+    return solve_with(mesh, options, &shape, progress);
 }
 
 }  // namespace hmcr

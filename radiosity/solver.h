@@ -54,4 +54,9 @@ struct Solution {
 Solution solve(const PatchMesh& mesh, const SolverOptions& options,
                Progress& progress = no_progress());
 
+// The same solve on a frozen mesh: the leaves of `shape` (a solution of the same mesh), no
+// refinement and no oracle. With many rays its error is the mesh's alone (studies' mesh error).
+Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy& shape,
+                       Progress& progress = no_progress());
+
 }  // namespace hmcr

@@ -38,6 +38,9 @@ enum class SettingScope { scene_file, command_line, internal };
       scene_file, "elements at or below this area, relative to the total, are not split")        \
     X(int,           max_depth, 16,         v >= 0 && v <= 24,       "in 0..24",                  \
       scene_file, "quadtree depth limit")                                                        \
+    X(std::string,   link_weight, "unshot", v == "unshot" || v == "total", "unshot or total",  \
+      scene_file, "a link's weight w_ij: the receiver's reflectance times the source's unshot "  \
+                  "(Delta B) or total (B) radiosity")                                           \
     X(double,        stop,      0.01,       v > 0 && v < 1,          "in (0, 1)",                 \
       scene_file, "stop when the unshot power is below stop x the emitted power")                \
     X(double,        cache_mb,  32,         v >= 0 && v <= 1 << 20,  "in [0, 1048576]",           \

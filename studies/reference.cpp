@@ -24,6 +24,8 @@ Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint6
     return solve(scene.mesh, s, progress);
 }
 
+nlohmann::json rgb_json(const Rgb& c) { return {c[0], c[1], c[2]}; }
+
 }  // namespace
 
 ObjectErrorOptions reflected_error_options(const PatchMesh& mesh) {
@@ -42,6 +44,9 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progr
     progress.stage("solving with seed " + std::to_string(seed + 1) + " for the convergence report");
     const Solution second = solve_uniform(scene, o, seed + 1, progress);
     const ShadedMesh second_mesh = shade(second, scene.mesh, o.crease_degrees);
+    ref.truncation = truncation_bias(ref.solution);
+    ref.seed_difference = (reflected_power(*second.hierarchy) - ref.truncation.reflected).cwiseAbs() /
+                          ref.truncation.reflected.cwiseMax(1e-300);
     progress.stage("comparing the two seeds");
     const ShadedTracer first_tracer(ref.mesh), second_tracer(second_mesh);
     ref.object_error = object_space_error(second_tracer, second_mesh, ref.mesh,
@@ -93,6 +98,15 @@ void write_reference(const std::filesystem::path& dir, const Scene& scene,
           {"object_space_samples", ref.object_error.samples},
           {"object_space_unmatched", ref.object_error.unmatched},
           {"views", errors}}},
+        {"truncation",
+         {{"what", "the reflected power the unshot power would still add, U r / (1 - r) with r "
+                   "the last iteration's decay, relative to the reflected power, per channel "
+                   "(R, G, B); seed_difference: the seeds' reflected powers' relative difference"},
+          {"stop", o.solver.stop},
+          {"unshot_power", rgb_json(ref.truncation.unshot)},
+          {"decay", rgb_json(ref.truncation.decay)},
+          {"relative_bias", rgb_json(ref.truncation.relative)},
+          {"seed_difference", rgb_json(ref.seed_difference)}}},
         {"seconds", ref.seconds},
         {"scene", scene.name}};
     write_text_atomically(dir / "reference.json", summary.dump(2) + "\n");

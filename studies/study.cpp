@@ -81,6 +81,12 @@ void validate(const StudyOptions& o, const std::vector<std::string>& oracles) {
     }
     if (o.output.empty()) throw InputError("study: no output folder given");
     validate(o.solver);
+    for (std::size_t b : o.budgets) {
+        // Each product is checked against the limit before it is formed (no wrap-around).
+        if (o.rays_per_leaf > kMaxRays / b || (cell_rays(o, b) > kMaxRays / 50 && !o.mesh_rays)) {
+            throw InputError(fmt::format("study: budget {} would shoot more than 1e15 rays", b));
+        }
+    }
 }
 
 // One cell to run, and where its result lives.
@@ -118,7 +124,8 @@ private:
         return m_options.output / "cells" / (t.name + ".json");
     }
     CellResult compute(std::size_t index);
-    void measure(const CellTask& t, const Solution& solution, CellResult& cell);
+    ObjectError measure(const Solution& solution, const CellTask& t, const std::string& name,
+                        std::map<std::string, ImageErrors>& views);
     std::string where(std::size_t index) const;
     std::string time_left() const;
 
@@ -208,6 +215,7 @@ CellResult StudyRunner::compute(std::size_t index) {
     so.oracle = t.oracle;
     so.epsilon = kOracleDefault;
     so.seed = t.seed;
+    so.rays = cell.rays = cell_rays(m_options, t.budget);
     CellNotes notes(m_progress, where(index) + ": ");
     const auto start = Clock::now();
     try {
@@ -218,7 +226,14 @@ CellResult StudyRunner::compute(std::size_t index) {
         cell.epsilon = r.solution.stats.epsilon;
         cell.leaves = r.solution.stats.leaves;
         notes.note("rendering and measuring");
-        measure(t, r.solution, cell);
+        cell.object_error = measure(r.solution, t, t.name, cell.views);
+        cell.mesh_rays = cell_mesh_rays(m_options, t.budget);
+        if (cell.mesh_rays > 0) {
+            notes.note(fmt::format("mesh error: the mesh frozen, {} rays", cell.mesh_rays));
+            so.rays = cell.mesh_rays;
+            const Solution frozen = solve_on_mesh(m_scene.mesh, so, *r.solution.hierarchy);
+            cell.mesh_object_error = measure(frozen, t, t.name + "-mesh", cell.mesh_views);
+        }
     } catch (const BudgetNotReached& e) {
         cell.seconds = seconds_since(start);
         cell.status = "failed";
@@ -227,10 +242,13 @@ CellResult StudyRunner::compute(std::size_t index) {
     return cell;
 }
 
-// The mesh file, the images and the metrics of a solved cell.
-void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResult& cell) {
-    const ShadedMesh mesh = write_solution(m_options.output / "meshes" / (t.name + ".vtp"),
-                                           solution, m_scene, m_options.crease_degrees,
+// The mesh file NAME.vtp, the images NAME-VIEW.png and the metrics of a solution: the image
+// errors of every view into `views`, the object-space error returned.
+ObjectError StudyRunner::measure(const Solution& solution, const CellTask& t,
+                                 const std::string& name,
+                                 std::map<std::string, ImageErrors>& views) {
+    const ShadedMesh mesh = write_solution(m_options.output / "meshes" / (name + ".vtp"), solution,
+                                           m_scene, m_options.crease_degrees,
                                            double(t.budget));
     const ShadedTracer tracer(mesh);
     const RenderOptions render_options{m_options.samples_per_axis};
@@ -240,14 +258,15 @@ void StudyRunner::measure(const CellTask& t, const Solution& solution, CellResul
         v.height = ref.height;
         const Image8 image =
             quantise(render(tracer, v, render_options), m_reference.exposure.at(v.name));
-        write_png(m_options.output / "images" / (t.name + "-" + v.name + ".png"), image);
-        cell.views[v.name] = image_errors(image, ref);
+        write_png(m_options.output / "images" / (name + "-" + v.name + ".png"), image);
+        views[v.name] = image_errors(image, ref);
     }
     if (m_reference.mesh) {
-        cell.object_error = object_space_error(tracer, mesh, *m_reference.mesh, m_error_options);
-    } else {
-        cell.object_error.relative_l2 = std::numeric_limits<double>::quiet_NaN();  // not measured
+        return object_space_error(tracer, mesh, *m_reference.mesh, m_error_options);
     }
+    ObjectError none;  // a traced reference has no mesh: not measured
+    none.relative_l2 = std::numeric_limits<double>::quiet_NaN();
+    return none;
 }
 
 }  // namespace
@@ -262,6 +281,8 @@ nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
     }
     const std::string reference_json = read_text_file(o.reference / "reference.json");
     return {{"scene", scene.name},
+            {"rays_per_leaf", o.rays_per_leaf},
+            {"mesh_rays", o.mesh_rays ? nlohmann::json(*o.mesh_rays) : nlohmann::json("50x")},
             {"geometry", geometry_hash(scene.mesh)},
             {"reference", std::filesystem::absolute(o.reference).lexically_normal().string()},
             {"reference_json_hash", text_hash(reference_json)},
@@ -269,6 +290,14 @@ nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
             {"budget_tolerance", o.budget_tolerance},
             {"samples_per_axis", o.samples_per_axis},
             {"crease_degrees", o.crease_degrees}};
+}
+
+std::uint64_t cell_rays(const StudyOptions& o, std::size_t budget) {
+    return o.rays_per_leaf > 0 ? o.rays_per_leaf * budget : o.solver.rays;
+}
+
+std::uint64_t cell_mesh_rays(const StudyOptions& o, std::size_t budget) {
+    return o.mesh_rays ? *o.mesh_rays : 50 * cell_rays(o, budget);
 }
 
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,

@@ -8,6 +8,7 @@
 // On disk (`hmcr study SCENE --reference REF -o OUT`), CELL = SCENE-ORACLE-B{budget}-s{seed}:
 //   OUT/meshes/CELL.vtp            the cell's solution
 //   OUT/images/CELL-VIEW.png       its image of every view (8-bit sRGB, the reference exposure)
+//   OUT/meshes/CELL-mesh.vtp, OUT/images/CELL-mesh-VIEW.png: the same of the frozen re-solve
 //   OUT/cells/CELL.json            the cell's result, written atomically once the cell is done;
 //                                  a rerun skips every cell whose file exists (resume)
 //   OUT/table.json                 long form: options and every cell (cell_to_json)
@@ -15,6 +16,11 @@
 //   OUT/table.md                   per budget, one row per oracle: mean +- standard error over
 //                                  seeds, best error of each column in bold
 //   OUT/plots/error_vs_elements.png  object-space error against leaves, log-log, per oracle
+//
+// The mesh error: each cell's final mesh is solved again frozen (the same leaves, no oracle)
+// with many more rays and measured the same way. The cell's own error is what a user of its
+// rays gets; the frozen one is, up to the little noise left, the error of the mesh the oracle
+// chose.
 //
 // A failed budget search (BudgetNotReached) is a result, not an error: the cell is written
 // with status "failed" and its message, and the tables leave it out of the means.
@@ -25,6 +31,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +49,10 @@ struct StudyOptions {
     std::vector<std::string> oracles;  // names; "all" expands to every registered oracle
     int seeds = 3;                     // seeds solver.seed .. solver.seed + seeds - 1
     SolverOptions solver;              // every cell's solve; oracle, epsilon, seed set per cell
+    // > 0: each budget's cells shoot rays_per_leaf x budget rays instead of solver.rays.
+    std::uint64_t rays_per_leaf = 0;
+    // Rays of the frozen re-solve (mesh error): 0 for none; by default 50 x the cell's rays.
+    std::optional<std::uint64_t> mesh_rays;
     double budget_tolerance = 0.01;    // relative distance to the budget accepted
     int samples_per_axis = 2;          // supersampling of the images
     std::filesystem::path output;      // the study folder
@@ -64,6 +75,10 @@ struct CellResult {
     double seconds = 0;  // wall time of the budget search (every probe)
     std::map<std::string, ImageErrors> views;
     ObjectError object_error;
+    std::uint64_t rays = 0;       // of the cell's solves
+    std::uint64_t mesh_rays = 0;  // of the frozen re-solve; 0: no mesh error measured
+    std::map<std::string, ImageErrors> mesh_views;
+    ObjectError mesh_object_error;
     bool ok() const { return status == "ok"; }
 };
 
@@ -76,6 +91,10 @@ void validate_study(const StudyOptions& options);
 // or an unusable reference.
 void run_study(const Scene& scene, const StudyOptions& options,
                Progress& progress = no_progress());
+
+// The rays of a cell at `budget`, and of its frozen re-solve.
+std::uint64_t cell_rays(const StudyOptions& options, std::size_t budget);
+std::uint64_t cell_mesh_rays(const StudyOptions& options, std::size_t budget);
 
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,
                       std::uint64_t seed);

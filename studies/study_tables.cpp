@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 
+#include "studies/montage.h"
 #include "studies/plot.h"
 #include "studies/study.h"
 #include "common/atomic_file.h"
@@ -44,11 +45,26 @@ MeanSe mean_se(const std::vector<double>& v) {
     return m;
 }
 
-double view_mean(const CellResult& c, double ImageErrors::*field) {
+double view_mean(const std::map<std::string, ImageErrors>& views, double ImageErrors::*field) {
     double sum = 0;
-    for (const auto& [name, e] : c.views) sum += e.*field;
-    return c.views.empty() ? kNaN : sum / double(c.views.size());
+    for (const auto& [name, e] : views) sum += e.*field;
+    return views.empty() ? kNaN : sum / double(views.size());
 }
+
+double view_mean(const CellResult& c, double ImageErrors::*field) {
+    return view_mean(c.views, field);
+}
+
+// The frozen re-solve's errors (NaN, left out of the means, where none was measured).
+double mesh_view_mean(const CellResult& c, double ImageErrors::*field) {
+    return c.mesh_rays > 0 ? view_mean(c.mesh_views, field) : kNaN;
+}
+
+double mesh_object_error(const CellResult& c) {
+    return c.mesh_rays > 0 ? c.mesh_object_error.relative_l2 : kNaN;
+}
+
+double mesh_rmse_p(const CellResult& c) { return mesh_view_mean(c, &ImageErrors::rmse_p); }
 
 // One column of table.md: how a cell gives its value, how it prints, which way is better.
 struct Column {
@@ -70,6 +86,9 @@ std::vector<Column> md_columns() {
          "{:.2f}", 1},
         {"object error", [](const CellResult& c) { return c.object_error.relative_l2; }, "{:.4f}",
          -1},
+        {"mesh PSNRp (dB)",
+         [](const CellResult& c) { return mesh_view_mean(c, &ImageErrors::psnr_p); }, "{:.2f}", 1},
+        {"mesh object error", mesh_object_error, "{:.4f}", -1},
         {"leaves", [](const CellResult& c) { return double(c.leaves); }, "{:.0f}", 0},
         {"ε", [](const CellResult& c) { return c.epsilon; }, "{:.3g}", 0},
         {"seconds", [](const CellResult& c) { return c.seconds; }, "{:.1f}", 0},
@@ -106,10 +125,8 @@ std::string md_budget_table(std::size_t budget, const std::vector<CellResult>& c
         stats.emplace_back();
         for (const Column& col : columns) {
             std::vector<double> v;
-            for (const CellResult* c : select(cells, budget, oracle, true)) {
-                const double x = col.value(*c);
-                if (!std::isnan(x)) v.push_back(x);  // no object error against a traced reference
-            }
+            for (const CellResult* c : select(cells, budget, oracle, true))
+                if (const double x = col.value(*c); !std::isnan(x)) v.push_back(x);
             stats.back().push_back(mean_se(v));
         }
     }
@@ -141,15 +158,23 @@ std::string md_budget_table(std::size_t budget, const std::vector<CellResult>& c
 std::string md_table(const std::string& scene, const StudyOptions& o,
                      const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     std::string out = fmt::format("# Meshing study: {}\n\n", scene);
+    const std::string rays = o.rays_per_leaf > 0
+                                 ? fmt::format("{} rays per leaf of the budget", o.rays_per_leaf)
+                                 : fmt::format("{} rays", o.solver.rays);
+    const std::string mesh_rays =
+        !o.mesh_rays ? "50 times the cell's rays"
+                     : *o.mesh_rays > 0 ? fmt::format("{} rays", *o.mesh_rays) : "(not measured)";
     out += fmt::format(
-        "{} rays, N_s = {}, budget tolerance {}%, {} seeds from {}. Mean ± standard error over "
-        "the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 scale and "
-        "PSNR in dB, each averaged over the {} views ({}); object error: the area-weighted "
-        "relative L2 error of the reflected radiosity against the reference (– against a "
-        "traced reference, which has no mesh); seconds: the "
-        "budget search. The best mean of each error column is in bold.\n\n",
-        o.solver.rays, o.solver.lines, 100 * o.budget_tolerance, o.seeds, o.solver.seed, views.size(),
-        fmt::join(views, ", "));
+        "{}, N_s = {}, link weight {}, budget tolerance {}%, {} seeds from {}. Mean ± standard "
+        "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
+        "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
+        "area-weighted relative L2 error of the reflected radiosity against the reference (– "
+        "against a traced reference, which has no mesh); "
+        "mesh: the same errors of the cell's final mesh solved again frozen with {}, the error "
+        "of the mesh itself; seconds: the budget search. The best mean of each error column is "
+        "in bold.\n\n",
+        rays, o.solver.lines, o.solver.link_weight, 100 * o.budget_tolerance, o.seeds,
+        o.solver.seed, views.size(), fmt::join(views, ", "), mesh_rays);
     for (std::size_t b : o.budgets) out += md_budget_table(b, cells) + "\n";
     return out;
 }
@@ -169,7 +194,8 @@ std::string csv_text(const std::string& s) {
 
 constexpr const char* kCsvHeader =
     "scene,oracle,budget,seed,status,epsilon,leaves,probes,seconds,view,rmse_a,rmse_p,psnr_a,"
-    "psnr_p,object_error,object_samples,object_unmatched,message";
+    "psnr_p,object_error,object_samples,object_unmatched,rays,mesh_rays,mesh_rmse_a,mesh_rmse_p,"
+    "mesh_psnr_a,mesh_psnr_p,mesh_object_error,message";
 
 std::string csv_table(const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     std::string out = std::string(kCsvHeader) + "\n";
@@ -178,42 +204,82 @@ std::string csv_table(const std::vector<std::string>& views, const std::vector<C
             const auto it = c.views.find(view);
             const ImageErrors e =
                 it != c.views.end() ? it->second : ImageErrors{kNaN, kNaN, kNaN, kNaN};
+            const auto mit = c.mesh_views.find(view);
+            const ImageErrors m =
+                mit != c.mesh_views.end() ? mit->second : ImageErrors{kNaN, kNaN, kNaN, kNaN};
             const double object = c.ok() ? c.object_error.relative_l2 : kNaN;
-            out +=
-                fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-                            csv_text(c.scene), c.oracle, c.budget, c.seed, c.status,
-                            csv_number(c.epsilon), c.leaves, c.probes.size(), csv_number(c.seconds),
-                            csv_text(view), csv_number(e.rmse_a), csv_number(e.rmse_p),
-                            csv_number(e.psnr_a), csv_number(e.psnr_p), csv_number(object),
-                            c.object_error.samples, c.object_error.unmatched, csv_text(c.message));
+            out += fmt::format(
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+                csv_text(c.scene), c.oracle, c.budget, c.seed, c.status, csv_number(c.epsilon),
+                c.leaves, c.probes.size(), csv_number(c.seconds), csv_text(view),
+                csv_number(e.rmse_a), csv_number(e.rmse_p), csv_number(e.psnr_a),
+                csv_number(e.psnr_p), csv_number(object), c.object_error.samples,
+                c.object_error.unmatched, c.rays, c.mesh_rays, csv_number(m.rmse_a),
+                csv_number(m.rmse_p), csv_number(m.psnr_a), csv_number(m.psnr_p),
+                csv_number(c.ok() ? mesh_object_error(c) : kNaN), csv_text(c.message));
         }
     }
     return out;
 }
 
-// Object-space error against leaves; RMSEp of the images when the reference has no mesh (a
-// traced reference), which leaves every object error NaN.
-Image8 error_plot(const std::vector<CellResult>& cells, const std::vector<std::size_t>& budgets) {
-    const bool object = std::any_of(cells.begin(), cells.end(), [](const CellResult& c) {
-        return c.ok() && !std::isnan(c.object_error.relative_l2);
-    });
+// Mean error against mean leaves per oracle, one point per budget.
+Image8 error_panel(const std::vector<CellResult>& cells, const std::vector<std::size_t>& budgets,
+                   const std::string& y_label, double (*error_of)(const CellResult&)) {
     LogLogPlot plot;
     plot.x_label = "leaves";
-    plot.y_label = object ? "object error" : "RMSEp";
+    plot.y_label = y_label;
     for (const std::string& oracle : oracle_order(cells)) {
         PlotSeries s{oracle, {}};
         for (std::size_t b : budgets) {
             std::vector<double> leaves, error;
             for (const CellResult* c : select(cells, b, oracle, true)) {
+                if (std::isnan(error_of(*c))) continue;
                 leaves.push_back(double(c->leaves));
-                error.push_back(object ? c->object_error.relative_l2
-                                       : view_mean(*c, &ImageErrors::rmse_p));
+                error.push_back(error_of(*c));
             }
             if (!leaves.empty()) s.points.push_back({mean_se(leaves).mean, mean_se(error).mean});
         }
         plot.series.push_back(std::move(s));
     }
     return draw_log_log(plot);
+}
+
+// The solution's object error, and beside it the mesh's (the frozen re-solve's).
+// Against a traced reference (no object errors) the images' RMSEp instead.
+Image8 error_plot(const std::vector<CellResult>& cells, const std::vector<std::size_t>& budgets) {
+    const bool object = std::any_of(cells.begin(), cells.end(), [](const CellResult& c) {
+        return c.ok() && !std::isnan(c.object_error.relative_l2);
+    });
+    if (!object) {
+        const Image8 left = error_panel(cells, budgets, "RMSEp (solution)", [](const CellResult& c) {
+            return view_mean(c, &ImageErrors::rmse_p);
+        });
+        const Image8 right = error_panel(cells, budgets, "RMSEp (mesh frozen)", mesh_rmse_p);
+        return montage({left, right}, 2, 1);
+    }
+    const Image8 left = error_panel(cells, budgets, "object error (solution)",
+                                    [](const CellResult& c) { return c.object_error.relative_l2; });
+    const Image8 right = error_panel(cells, budgets, "object error (mesh frozen)", mesh_object_error);
+    return montage({left, right}, 2, 1);
+}
+
+nlohmann::json object_error_json(const ObjectError& e) {
+    return {{"relative_l2", e.relative_l2}, {"samples", e.samples}, {"unmatched", e.unmatched}};
+}
+
+// null: +inf (only B_ref is 0) when measured, NaN when not (a traced reference has no mesh).
+ObjectError object_error_from_json(const nlohmann::json& oe) {
+    const std::size_t samples = oe.at("samples").get<std::size_t>();
+    return {number(oe, "relative_l2", samples > 0 ? kInf : kNaN), samples,
+            oe.at("unmatched").get<std::size_t>()};
+}
+
+std::map<std::string, ImageErrors> views_from_json(const nlohmann::json& views) {
+    std::map<std::string, ImageErrors> out;
+    for (const auto& [name, e] : views.items())
+        out[name] = {number(e, "rmse_a", kNaN), number(e, "rmse_p", kNaN),
+                     number(e, "psnr_a", kInf), number(e, "psnr_p", kInf)};
+    return out;
 }
 
 }  // namespace
@@ -232,10 +298,11 @@ nlohmann::json cell_to_json(const CellResult& c) {
             {"probe_history", nlohmann::json(c.probes)},
             {"seconds", c.seconds},
             {"views", nlohmann::json(c.views)},
-            {"object_error",
-             {{"relative_l2", c.object_error.relative_l2},
-              {"samples", c.object_error.samples},
-              {"unmatched", c.object_error.unmatched}}}};
+            {"object_error", object_error_json(c.object_error)},
+            {"rays", c.rays},
+            {"mesh_rays", c.mesh_rays},
+            {"mesh_views", nlohmann::json(c.mesh_views)},
+            {"mesh_object_error", object_error_json(c.mesh_object_error)}};
 }
 
 CellResult cell_from_json(const nlohmann::json& j) {
@@ -253,14 +320,14 @@ CellResult cell_from_json(const nlohmann::json& j) {
         c.probes.push_back({number(p, "epsilon", kNaN), p.at("leaves").get<std::size_t>(),
                             number(p, "seconds", kNaN)});
     c.seconds = number(j, "seconds", kNaN);
-    for (const auto& [name, e] : j.at("views").items())
-        c.views[name] = {number(e, "rmse_a", kNaN), number(e, "rmse_p", kNaN),
-                         number(e, "psnr_a", kInf), number(e, "psnr_p", kInf)};
-    const nlohmann::json& oe = j.at("object_error");
-    const std::size_t samples = oe.at("samples").get<std::size_t>();
-    // null: +inf (only B_ref is 0) when measured, NaN when not (a traced reference has no mesh)
-    c.object_error = {number(oe, "relative_l2", samples > 0 ? kInf : kNaN), samples,
-                      oe.at("unmatched").get<std::size_t>()};
+    c.views = views_from_json(j.at("views"));
+    c.object_error = object_error_from_json(j.at("object_error"));
+    c.rays = j.at("rays").get<std::uint64_t>();
+    c.mesh_rays = j.at("mesh_rays").get<std::uint64_t>();
+    if (c.mesh_rays > 0) {
+        c.mesh_views = views_from_json(j.at("mesh_views"));
+        c.mesh_object_error = object_error_from_json(j.at("mesh_object_error"));
+    }
     return c;
 }
 
@@ -275,6 +342,10 @@ void write_study_tables(const std::string& scene, const StudyOptions& o,
                                     {"seeds", o.seeds},
                                     {"first_seed", o.solver.seed},
                                     {"rays", o.solver.rays},
+                                    {"rays_per_leaf", o.rays_per_leaf},
+                                    {"mesh_rays", o.mesh_rays ? nlohmann::json(*o.mesh_rays)
+                                                              : nlohmann::json("50x")},
+                                    {"link_weight", o.solver.link_weight},
                                     {"lines", o.solver.lines},
                                     {"budget_tolerance", o.budget_tolerance},
                                     {"samples_per_axis", o.samples_per_axis},

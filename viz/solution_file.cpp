@@ -19,7 +19,8 @@ VtpMetadata vtp_metadata(const Solution& solution, const Scene& scene, double ti
             time_value,
             scene.name,
             scene.mesh.n_faces(),
-            geometry_hash(scene.mesh)};
+            geometry_hash(scene.mesh),
+            solution.options.link_weight};
 }
 
 ShadedMesh shade(const Solution& solution, const PatchMesh& mesh, double crease_degrees) {

@@ -137,6 +137,7 @@ void set_metadata(vtkPolyData* pd, const VtpMetadata& meta) {
     add_string(fd, "Scene", meta.scene);
     add_value<vtkTypeUInt64Array>(fd, "PatchCount", meta.patch_count);
     add_string(fd, "GeometryHash", meta.geometry_hash);
+    add_string(fd, "LinkWeight", meta.link_weight);
 }
 
 void write_polydata(vtkPolyData* pd, const std::filesystem::path& file,

@@ -23,6 +23,7 @@ struct VtpMetadata {
     std::string scene;                // Scene: its name
     std::uint64_t patch_count = 0;    // PatchCount: the scene's patches
     std::string geometry_hash;        // GeometryHash: geometry_hash() of the scene's mesh
+    std::string link_weight;          // LinkWeight: the solve's link_weight setting
 };
 
 // Writes `mesh` atomically; RadiosityColor is tone-mapped with auto_exposure(mesh). Throws

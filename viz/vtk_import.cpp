@@ -22,6 +22,7 @@
 
 #include "common/error.h"
 #include "viz/vtk_console.h"
+#include "viz/vtp_envelope.h"
 
 namespace hmcr {
 namespace {
@@ -186,6 +187,7 @@ ShadedMesh read_vtp(const fs::path& path, VtpMetadata* metadata) {
     std::error_code ec;
     if (!fs::exists(path, ec)) check.fail("no such file");
     if (!fs::is_regular_file(path, ec)) check.fail("is not a regular file");
+    check_vtp_envelope(path);
     const vtkSmartPointer<vtkPolyData> data = read_polydata(path, check);
     if (data->GetNumberOfVerts() || data->GetNumberOfLines() || data->GetNumberOfStrips()) {
         check.fail("has cells that are not polygons (vertices, lines or strips)");

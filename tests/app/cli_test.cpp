@@ -217,6 +217,40 @@ TEST_F(Cli, InfoNeedsNoEmitterButSolveDoes) {
                          "dark.obj:9: face has no material");
 }
 
+// The link weight is a solver setting: in the summary's options and the .vtp's field data.
+TEST_F(Cli, LinkWeightIsRecordedInTheOutputs) {
+    const std::string vtp = (m_dir / "p.vtp").string();
+    ASSERT_EQ(hmcr("solve plates --rays 5000 --link-weight total -q -o " + vtp).exit_code, 0);
+    const auto summary = nlohmann::json::parse(read_file(m_dir / "p.json"));
+    EXPECT_EQ(summary["options"]["link_weight"], "total");
+    const std::string bytes = read_file(vtp);
+    EXPECT_NE(bytes.find("Name=\"LinkWeight\""), std::string::npos);
+    expect_clean_failure(hmcr("solve plates --link-weight most -o " + (m_dir / "out.vtp").string()),
+                         "link-weight");
+}
+
+// A reference stops at --stop, else at its scene's solver.stop, else at 1e-4 (not the solver's
+// 0.01), and reports what stopping left out.
+TEST_F(Cli, ReferenceStopComesFromTheFlagTheSceneOrItsDefault) {
+    fs::copy(fs::path(HMCR_SCENE_DIR) / "plates", m_dir / "plates");
+    const fs::path json = m_dir / "plates" / "plates.json";
+    auto j = nlohmann::json::parse(read_file(json));
+    j["solver"] = {{"stop", 0.2}};
+    std::ofstream(json) << j.dump();
+    auto stop_of = [&](const std::string& scene, const std::string& flags, const char* dir) {
+        const CliRun r = hmcr("reference " + scene + " --max-area 0.05 --rays 20000 -q " + flags +
+                              " -o " + (m_dir / dir).string());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const auto ref = nlohmann::json::parse(read_file(m_dir / dir / "reference.json"));
+        EXPECT_EQ(ref["reference"]["truncation"]["relative_bias"].size(), 3u);
+        return ref["reference"]["truncation"]["stop"].get<double>();
+    };
+    EXPECT_EQ(stop_of("plates", "", "a"), 1e-4);
+    EXPECT_EQ(stop_of("plates", "--stop 0.05", "b"), 0.05);
+    EXPECT_EQ(stop_of(json.string(), "", "c"), 0.2);
+    EXPECT_EQ(stop_of(json.string(), "--stop 0.05", "d"), 0.05);
+}
+
 TEST_F(Cli, QuietPrintsNothing) {
     const CliRun r = hmcr("solve plates --rays 5000 --quiet -o " + (m_dir / "q.vtp").string());
     EXPECT_EQ(r.exit_code, 0);

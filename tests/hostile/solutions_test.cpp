@@ -104,5 +104,21 @@ TEST_F(HostileSolution, GarbageIsRefused) {
     expect_refused("folder.vtp", "folder.vtp: is not a regular file");
 }
 
+// Sizes VTK would trust: a block count of 2^31 in the first appended array's header made the
+// reader take gigabytes and a minute (found by the fuzzer); a huge NumberOfPoints likewise.
+TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
+    std::string bytes = read_file(dir() / "good.vtp");
+    const std::size_t data = bytes.find('_', bytes.find("<AppendedData")) + 1;
+    std::string blocks = bytes;
+    blocks.replace(data, 4, std::string("\x00\x00\x00\x80", 4));
+    m_temp.write("blocks.vtp", blocks);
+    expect_refused("blocks.vtp", "blocks.vtp: damaged VTK file: the array at offset 0 declares");
+    std::string points = bytes;
+    const std::size_t at = points.find("NumberOfPoints=\"") + 16;
+    points.replace(at, points.find('"', at) - at, "900000000000");
+    m_temp.write("points.vtp", points);
+    expect_refused("points.vtp", "points.vtp: damaged VTK file: NumberOfPoints is 900000000000");
+}
+
 }  // namespace
 }  // namespace hmcr::test

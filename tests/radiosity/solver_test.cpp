@@ -95,6 +95,26 @@ TEST_P(EveryOracle, FurnaceOnARefinedMesh) {
     expect_furnace(o, 1, 200);
 }
 
+// The link weight changes where the mesh is refined, never the expected values: in the furnace
+// both weights give the exact K-bounce value.
+TEST_P(EveryOracle, FurnaceWithTheTotalLinkWeight) {
+    SolverOptions o = options(30'000, 0);
+    o.epsilon = 1e-3;  // B > Delta B: a refined mesh at a larger epsilon (and less cost)
+    o.link_weight = "total";
+    expect_furnace(o, 1, 60);
+}
+
+// On the Cornell box the total radiosity weighs later iterations' links more (B >= Delta B), so
+// the same epsilon refines more.
+TEST_P(EveryOracle, TotalLinkWeightRefinesMoreOnTheCornellBox) {
+    const Scene scene = load_scene("cornell");
+    SolverOptions o = options(300'000, 3);
+    const Solution unshot = solve(scene.mesh, o);
+    o.link_weight = "total";
+    const Solution total = solve(scene.mesh, o);
+    EXPECT_GT(total.stats.leaves, unshot.stats.leaves);
+}
+
 // The fixed uniform mesh of a converged reference: no oracle, the same exact furnace value.
 TEST(FixedMesh, FurnaceOnAUniformMesh) {
     SolverOptions o;

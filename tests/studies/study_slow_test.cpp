@@ -96,6 +96,7 @@ protected:
         o.oracles = {"power", "kl"};
         o.seeds = 2;
         o.solver.rays = 200'000;
+        o.mesh_rays = 2'000'000;
         o.output = m_out.path();
         return o;
     }
@@ -122,13 +123,20 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
     EXPECT_EQ(table.at("views"), nlohmann::json({"camera", "corner"}));
     for (const auto& c : table["cells"]) {
         for (const char* key : {"scene", "oracle", "budget", "seed", "status", "epsilon", "leaves",
-                                "probes", "seconds", "views", "object_error"})
+                                "probes", "seconds", "views", "object_error", "rays", "mesh_rays",
+                                "mesh_views", "mesh_object_error"})
             EXPECT_TRUE(c.contains(key)) << key;
         ASSERT_EQ(c["status"], "ok") << c["message"];
         EXPECT_NEAR(double(c["leaves"]), 200, 2.0);
         // Computed: an all-black solution would score exactly 1, a missing one NaN.
         EXPECT_GT(double(c["object_error"]["relative_l2"]), 0.0);
         EXPECT_LT(double(c["object_error"]["relative_l2"]), 1.0);
+        // The same mesh with ten times the rays: error^2 = mesh^2 + noise^2 with less noise.
+        EXPECT_EQ(c["rays"], 200'000);
+        EXPECT_EQ(c["mesh_rays"], 2'000'000);
+        EXPECT_GT(double(c["mesh_object_error"]["relative_l2"]), 0.0);
+        EXPECT_LT(double(c["mesh_object_error"]["relative_l2"]),
+                  double(c["object_error"]["relative_l2"]));
         for (const char* view : {"camera", "corner"}) {
             for (const char* key : {"rmse_a", "rmse_p", "psnr_a", "psnr_p"})
                 EXPECT_TRUE(c["views"][view].contains(key)) << view << " " << key;
@@ -136,8 +144,11 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
         const std::string name = cell_name(c["scene"], c["oracle"], c["budget"], c["seed"]);
         EXPECT_TRUE(std::filesystem::exists(out / "cells" / (name + ".json"))) << name;
         EXPECT_TRUE(std::filesystem::exists(out / "meshes" / (name + ".vtp"))) << name;
-        for (const char* view : {"camera", "corner"})
+        EXPECT_TRUE(std::filesystem::exists(out / "meshes" / (name + "-mesh.vtp"))) << name;
+        for (const char* view : {"camera", "corner"}) {
             EXPECT_EQ(read_png(out / "images" / (name + "-" + view + ".png")).width, 512);
+            EXPECT_EQ(read_png(out / "images" / (name + "-mesh-" + view + ".png")).width, 512);
+        }
     }
 
     const std::vector<std::string> csv = lines_of(read_file(out / "table.csv"));
@@ -146,6 +157,8 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
                            "rmse_a,rmse_p,psnr_a,psnr_p,object_error",
                            0),
               0u);
+    EXPECT_NE(csv[0].find(",mesh_rmse_a,mesh_rmse_p,mesh_psnr_a,mesh_psnr_p,mesh_object_error,"),
+              std::string::npos);
 
     const std::string md = read_file(out / "table.md");
     int rows = 0;
@@ -153,9 +166,10 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
         rows += line.rfind("| power | 2/2 |", 0) == 0 || line.rfind("| kl | 2/2 |", 0) == 0;
     EXPECT_EQ(rows, 2) << md;
     EXPECT_NE(md.find("**"), std::string::npos) << md;  // the best values are bold
+    EXPECT_NE(md.find("| mesh PSNRp (dB) | mesh object error |"), std::string::npos) << md;
 
     const Image8 plot = read_png(out / "plots" / "error_vs_elements.png");
-    EXPECT_EQ(plot.width, LogLogPlot{}.width);
+    EXPECT_EQ(plot.width, 2 * LogLogPlot{}.width + 2);  // the solution's and the mesh's panels
     EXPECT_EQ(plot.height, LogLogPlot{}.height);
 
     // Resume: only the deleted cell is computed again.
@@ -186,6 +200,26 @@ TEST_F(TinyStudy, RecordsAnUnreachableBudgetAsAFailedCell) {
     EXPECT_EQ(table["cells"][0]["status"], "failed");
     EXPECT_FALSE(std::string(table["cells"][0]["message"]).empty());
     EXPECT_NE(read_file(o.output / "table.md").find("| power | 0/1 |"), std::string::npos);
+}
+
+// --rays-per-leaf: each budget's cells shoot that many rays per leaf of the budget; --mesh-rays
+// 0 measures no mesh error, and the tables say so.
+TEST_F(TinyStudy, RaysPerLeafScaleWithTheBudget) {
+    StudyOptions o = options();
+    o.budgets = {100, 200};
+    o.oracles = {"power"};
+    o.seeds = 1;
+    o.rays_per_leaf = 500;
+    o.mesh_rays = 0;
+    run_study(s_scene(), o);
+    const nlohmann::json table = nlohmann::json::parse(read_file(o.output / "table.json"));
+    ASSERT_EQ(table.at("cells").size(), 2u);
+    EXPECT_EQ(table["cells"][0]["rays"], 50'000);
+    EXPECT_EQ(table["cells"][1]["rays"], 100'000);
+    for (const auto& c : table["cells"]) EXPECT_EQ(c["mesh_rays"], 0);
+    const std::string md = read_file(o.output / "table.md");
+    EXPECT_NE(md.find("500 rays per leaf of the budget"), std::string::npos) << md;
+    EXPECT_NE(md.find("(not measured)"), std::string::npos) << md;
 }
 
 }  // namespace

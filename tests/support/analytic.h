@@ -39,4 +39,16 @@ inline double point_to_centred_rectangle(double a, double b, double h) {
     return 4 * one;
 }
 
+// From a differential area to a parallel rectangle [x0, x1] x [y0, y1] (coordinates relative
+// to the foot of the point's normal) at distance h: the signed sum of the four rectangles
+// that have a corner at the foot.
+inline double point_to_parallel_rectangle(double x0, double x1, double y0, double y1, double h) {
+    auto corner = [h](double x, double y) {
+        const double X = x / h, Y = y / h, pi = std::numbers::pi;
+        const double sx = std::sqrt(1 + X * X), sy = std::sqrt(1 + Y * Y);
+        return 1 / (2 * pi) * (X / sx * std::atan(Y / sx) + Y / sy * std::atan(X / sy));
+    };
+    return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
+}
+
 }  // namespace hmcr::test

@@ -1,0 +1,140 @@
+#include "viz/vtp_envelope.h"
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <cstring>
+#include <regex>
+#include <string>
+
+#include <vtkBase64Utilities.h>
+
+#include "common/error.h"
+#include "common/text_file.h"
+
+namespace hmcr {
+namespace {
+
+// zlib's largest expansion is about 1032:1; anything declaring more cannot be in the file.
+constexpr double kMaxRatio = 1100;
+
+std::uint64_t read_uint(const std::string& bytes, std::size_t at, std::size_t width) {
+    std::uint64_t v = 0;
+    if (width == 4) {
+        std::uint32_t w;
+        std::memcpy(&w, bytes.data() + at, 4);
+        v = w;
+    } else {
+        std::memcpy(&v, bytes.data() + at, 8);
+    }
+    return v;  // hmcr writes little-endian, as every machine it runs on
+}
+
+class Envelope {
+public:
+    Envelope(const std::filesystem::path& path, std::string bytes)
+        : m_path(path.string()), m_bytes(std::move(bytes)) {}
+
+    [[noreturn]] void fail(const std::string& why) const {
+        throw InputError(m_path, "damaged VTK file: " + why);
+    }
+
+    void check() {
+        const std::size_t appended = m_bytes.find("<AppendedData");
+        const std::string xml = m_bytes.substr(0, appended);
+        check_counts(xml);
+        if (appended == std::string::npos) return;
+        const std::size_t data = m_bytes.find('_', appended);
+        if (data == std::string::npos) fail("appended data without its '_' marker");
+        const bool compressed = xml.find("compressor=\"") != std::string::npos;
+        const std::string base64 = "<AppendedData encoding=\"base64\"";
+        m_base64 = m_bytes.compare(appended, base64.size(), base64) == 0;
+        const std::size_t width = xml.find("header_type=\"UInt64\"") != std::string::npos ? 8 : 4;
+        static const std::regex offset(R"(offset="\s*(\d{1,19})\s*")");
+        for (auto it = std::sregex_iterator(xml.begin(), xml.end(), offset);
+             it != std::sregex_iterator(); ++it) {
+            check_array(data + 1, std::stoull((*it)[1].str()), compressed, width);
+        }
+    }
+
+private:
+    void check_counts(const std::string& xml) const {
+        static const std::regex count(R"((NumberOf\w+)="\s*(\d+)\s*")");
+        const double limit = kMaxRatio * double(m_bytes.size()) + 1e6;
+        for (auto it = std::sregex_iterator(xml.begin(), xml.end(), count);
+             it != std::sregex_iterator(); ++it) {
+            if (std::stod((*it)[2].str()) > limit) {
+                fail(fmt::format("{} is {} in a file of {} bytes", (*it)[1].str(), (*it)[2].str(),
+                                 m_bytes.size()));
+            }
+        }
+    }
+
+    // An appended array: [block count, block size, last block size, compressed sizes...] then
+    // the blocks when compressed, else [byte count] then the bytes.
+    void check_array(std::size_t base, std::uint64_t offset, bool compressed,
+                     std::size_t width) const {
+        const std::uint64_t left = m_bytes.size() - std::min<std::uint64_t>(base, m_bytes.size());
+        auto need = [&](std::uint64_t bytes, const char* what) {
+            if (offset > left || bytes > left - offset) {
+                fail(fmt::format("the array at offset {} declares {} beyond the file's end",
+                                 offset, what));
+            }
+        };
+        const std::size_t at = base + offset;
+        if (!compressed) {
+            need(stored_size(width), "its size");
+            const std::uint64_t size = read_uint(header(at, width), 0, width);
+            if (size > left) need(left + 1, "its values");
+            need(stored_size(width) + stored_size(size), "its values");
+            return;
+        }
+        need(stored_size(3 * width), "its header");
+        const std::string head = header(at, 3 * width);
+        const std::uint64_t blocks = read_uint(head, 0, width);
+        const std::uint64_t block_size = read_uint(head, width, width);
+        if (blocks > left / width) need(left + 1, "its block sizes");
+        const std::uint64_t header_bytes = (3 + blocks) * width;
+        need(stored_size(header_bytes), "its block sizes");
+        const std::string sizes = header(at, header_bytes);
+        std::uint64_t stored = 0;
+        for (std::uint64_t k = 0; k < blocks && stored <= left; ++k) {
+            stored += read_uint(sizes, (3 + k) * width, width);
+        }
+        if (stored > left) need(left + 1, "its compressed blocks");
+        need(stored_size(header_bytes) + stored_size(stored), "its compressed blocks");
+        if (double(block_size) * double(blocks) > kMaxRatio * double(stored) + 1e6) {
+            fail(fmt::format("the array at offset {} declares {} bytes from {} compressed", offset,
+                             double(block_size) * double(blocks), stored));
+        }
+    }
+
+    // The n bytes of a header at `at`: as stored, or decoded from base64 (a header is encoded
+    // on its own, so its first 4 ceil(n / 3) characters hold it).
+    std::string header(std::size_t at, std::uint64_t n) const {
+        if (!m_base64) return m_bytes.substr(at, n);
+        std::string out(n + 3, '\0');
+        const std::size_t chars = stored_size(n);
+        if (at + chars > m_bytes.size()) fail("a header runs past the file's end");
+        vtkBase64Utilities::DecodeSafely(reinterpret_cast<const unsigned char*>(m_bytes.data() + at),
+                                         chars, reinterpret_cast<unsigned char*>(out.data()),
+                                         out.size());
+        out.resize(n);
+        return out;
+    }
+    // Bytes in the file of n bytes of data.
+    std::uint64_t stored_size(std::uint64_t n) const { return m_base64 ? (n + 2) / 3 * 4 : n; }
+
+    std::string m_path;
+    std::string m_bytes;
+    bool m_base64 = false;
+};
+
+}  // namespace
+
+void check_vtp_envelope(const std::filesystem::path& path) {
+    Envelope envelope(path, read_text_file(path));
+    envelope.check();
+}
+
+}  // namespace hmcr

@@ -1,0 +1,16 @@
+// What VTK's XML reader would allocate for a .vtp, checked before it runs: VTK trusts the
+// sizes a file declares (a block count of 1.5e9 in a damaged appended section made it take
+// 6.6 GB and a minute), so every declared count and every appended array's header must fit the
+// bytes that are really there.
+#pragma once
+
+#include <filesystem>
+
+namespace hmcr {
+
+// Throws InputError naming the file when a declared size cannot fit: a count attribute
+// (NumberOfPoints, NumberOfTuples, ...) beyond what zlib's largest ratio (1032:1) could
+// expand the file to, or an appended array whose header or blocks run past the file's end.
+void check_vtp_envelope(const std::filesystem::path& path);
+
+}  // namespace hmcr
