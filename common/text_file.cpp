@@ -64,6 +64,9 @@ nlohmann::json read_json_file(const fs::path& path) {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
         throw InputError(at(path, line_of_byte(text, e.byte)), plain_message(e));
+    } catch (const nlohmann::json::exception& e) {
+        // A number beyond double's range ("1e400") is an out_of_range, with no position.
+        throw InputError(path.string(), plain_message(e));
     }
 }
 
