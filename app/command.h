@@ -22,5 +22,8 @@ Command study_command(CLI::App& app);
 Command info_command(CLI::App& app);
 Command oracles_command(CLI::App& app);
 Command scenes_command(CLI::App& app);
+Command trace_command(CLI::App& app, const std::string& command_line);
+Command samplers_command(CLI::App& app);
+Command trace_reference_command(CLI::App& app, const std::string& command_line);
 
 }  // namespace hmcr

@@ -43,10 +43,16 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     const std::string command_line = join_args(argc, argv);
     install_interrupt_handlers();
-    const std::vector<Command> commands = {
-        solve_command(app, command_line), render_command(app),
-        reference_command(app, command_line), study_command(app),
-        info_command(app), oracles_command(app), scenes_command(app)};
+    const std::vector<Command> commands = {solve_command(app, command_line),
+                                           render_command(app),
+                                           reference_command(app, command_line),
+                                           study_command(app),
+                                           info_command(app),
+                                           oracles_command(app),
+                                           scenes_command(app),
+                                           trace_command(app, command_line),
+                                           samplers_command(app),
+                                           trace_reference_command(app, command_line)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,13 +1,10 @@
 // `hmcr render SOLUTION.vtp --scene SCENE`: an image of a solution from one of the scene's views.
-#include <fmt/format.h>
-
-#include <cmath>
 #include <memory>
 
-#include "app/scene_input.h"
 #include "app/command.h"
+#include "app/exposure.h"
+#include "app/scene_input.h"
 #include "common/output_paths.h"
-#include "studies/reference.h"
 #include "viz/renderer.h"
 #include "viz/solution_file.h"
 
@@ -15,26 +12,15 @@ namespace hmcr {
 namespace {
 
 struct RenderArgs {
-    std::string solution;   // .vtp
-    std::string scene;      // for the view
-    std::string view;       // empty: the scene's first view
-    std::string output;     // .png
-    std::string pfm;        // optional linear image
-    std::string reference;  // optional reference folder: its exposure for this view
-    double exposure = 0;    // fixed exposure, when given
-    bool exposure_given = false;
+    std::string solution;     // .vtp
+    std::string scene;        // for the view
+    std::string view;         // empty: the scene's first view
+    std::string output;       // .png
+    std::string pfm;          // optional linear image
+    ExposureChoice exposure;  // fixed, from a reference folder, or from the image
     RenderOptions options;
     SceneFlags scene_flags;
 };
-
-// The exposure a reference folder fixed for a view.
-double reference_exposure(const std::filesystem::path& dir, const std::string& view) {
-    const auto exposure = read_reference_exposures(dir);
-    if (!exposure.count(view)) {
-        throw InputError((dir / "reference.json").string(), "no view " + quote(view));
-    }
-    return exposure.at(view);
-}
 
 // Every file the render reads, and the outputs checked before any work.
 void check_outputs(const RenderArgs& a, const Scene& scene) {
@@ -46,7 +32,7 @@ void check_outputs(const RenderArgs& a, const Scene& scene) {
     }
     std::vector<std::filesystem::path> inputs = scene.inputs;
     inputs.push_back(a.solution);
-    if (!a.reference.empty()) inputs.push_back(std::filesystem::path(a.reference) / "reference.json");
+    for (const auto& in : exposure_inputs(a.exposure)) inputs.push_back(in);
     std::vector<std::filesystem::path> outputs{a.output};
     if (!a.pfm.empty()) outputs.push_back(a.pfm);
     refuse_overwriting(outputs, inputs);
@@ -57,18 +43,14 @@ int run_render(const RenderArgs& a) {
     if (a.options.samples_per_axis < 1 || a.options.samples_per_axis > 16) {
         throw InputError("samples must be in 1..16");
     }
-    if (a.exposure_given && !(a.exposure > 0 && std::isfinite(a.exposure))) {
-        throw InputError(fmt::format("exposure must be a positive number, got {}", a.exposure));
-    }
+    check_exposure(a.exposure);
     const Scene scene = load_scene_reporting(a.scene, false, SceneUse::solve, a.scene_flags);
     check_outputs(a, scene);
     const View& view = find_view(scene, a.view);
-    double exposure = a.exposure;
-    if (!a.reference.empty()) exposure = reference_exposure(a.reference, view.name);
+    const double exposure = fixed_exposure(a.exposure, view.name);
     const ShadedMesh mesh = read_solution(a.solution, scene).mesh;
     const Image image = render(mesh, view, a.options);
-    if (!a.exposure_given && a.reference.empty()) exposure = exposure_from(image);
-    write_png(a.output, image, exposure);
+    write_png(a.output, image, image_exposure(exposure, image));
     if (!a.pfm.empty()) write_pfm(a.pfm, image);
     return 0;
 }
@@ -86,12 +68,9 @@ Command render_command(CLI::App& app) {
     cmd->add_option("--pfm", a->pfm, "also write the linear radiance as .pfm");
     cmd->add_option("--samples", a->options.samples_per_axis, "n x n rays per pixel")
         ->capture_default_str();
-    auto* exposure =
-        cmd->add_option("--exposure", a->exposure, "fixed exposure (default: from this image)");
-    cmd->add_option("--reference", a->reference, "use the exposure of this reference folder")
-        ->excludes(exposure);
-    return {cmd, [a, exposure] {
-                a->exposure_given = exposure->count() > 0;
+    add_exposure_flags(*cmd, a->exposure);
+    return {cmd, [a, cmd] {
+                note_exposure_given(*cmd, a->exposure);
                 return run_render(*a);
             }};
 }

@@ -1,15 +1,22 @@
-// `hmcr study SCENE --reference DIR --budgets N,N`: every oracle x budget x seed, tables, plots.
+// `hmcr study SCENE --reference DIR -o OUT` and one of
+//   --budgets N,N [--oracles LIST]   a meshing study: every oracle x budget x seed (studies/study.h)
+//   --samplers LIST [--spp N]        a sampling study: every pixel sampler x seed at one mean spp
+//                                    (studies/sampling_study.h)
+// Either takes a radiosity reference (`hmcr reference`) or a traced one (`hmcr trace-reference`).
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <memory>
 #include <sstream>
 
-#include "app/scene_input.h"
 #include "app/command.h"
 #include "app/count.h"
+#include "app/scene_input.h"
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
+#include "app/trace_flags.h"
 #include "common/output_paths.h"
+#include "studies/sampling_study.h"
 #include "studies/study.h"
 
 namespace hmcr {
@@ -22,6 +29,14 @@ struct StudyArgs {
     std::string budgets;  // "2000,5000,19000"
     std::string oracles = "all";
     std::string mesh_rays;  // empty: the default, 50 x the cell's rays
+    std::string samplers;   // "all" or "uniform,srhe"; given: a sampling study
+    SamplingStudyOptions sampling = [] {
+        SamplingStudyOptions o;
+        o.trace.spp = 60;
+        return o;
+    }();
+    TraceFlags trace_flags;
+    std::vector<const CLI::Option*> meshing_only, sampling_only;  // for the refusal of a mix
     bool quiet = false;
     SceneFlags scene_flags;
 };
@@ -44,7 +59,48 @@ std::size_t parse_budget(const std::string& text) {
     return std::size_t(*count);
 }
 
-int run_study(StudyArgs& a) {
+// One kind of study per run: a flag of the other kind is refused, not ignored.
+void refuse_mixed_flags(const StudyArgs& a, bool sampling) {
+    const auto& other = sampling ? a.meshing_only : a.sampling_only;
+    for (const CLI::Option* option : other) {
+        if (option->count() == 0) continue;
+        throw InputError(fmt::format("{} is for a {} study; a {} study ({}) does not use it",
+                                     option->get_name(), sampling ? "meshing" : "sampling",
+                                     sampling ? "sampling" : "meshing",
+                                     sampling ? "--samplers" : "--budgets"));
+    }
+}
+
+// The checks of either kind before any work: the output folder is neither in nor around the
+// reference, and no table replaces an input.
+void prepare_study_output(const std::filesystem::path& out, const std::filesystem::path& reference,
+                          const Scene& scene) {
+    refuse_nested_dirs(out, reference);
+    refuse_overwriting({out / "table.json", out / "table.csv", out / "table.md", out / "meshes.pvd"},
+                       scene.inputs);
+    prepare_output_dir(out);
+}
+
+int run_sampling_study(StudyArgs& a) {
+    SamplingStudyOptions& o = a.sampling;
+    o.reference = a.options.reference;
+    o.output = a.options.output;
+    o.seeds = a.options.seeds;
+    o.trace.seed = a.options.solver.seed;
+    o.trace.threads = a.options.solver.threads;
+    o.redo_other_settings = a.options.redo_other_settings;
+    o.samplers = split_commas(a.samplers);
+    apply_trace_flags(a.trace_flags, o.trace);
+    validate_sampling_study(o);
+    const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
+    prepare_study_output(o.output, o.reference, scene);
+    TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
+    run_sampling_study(scene, o, progress);
+    if (!a.quiet) fmt::print("study written to {}\n", o.output.string());
+    return 0;
+}
+
+int run_meshing_study(StudyArgs& a) {
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
     a.options.oracles = split_commas(a.oracles);
     if (!a.mesh_rays.empty()) {
@@ -57,15 +113,63 @@ int run_study(StudyArgs& a) {
     validate_study(a.options);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     apply_scene_settings(a.flags, scene, a.options.solver);
-    const std::filesystem::path& out = a.options.output;
-    refuse_nested_dirs(out, a.options.reference);
-    refuse_overwriting({out / "table.json", out / "table.csv", out / "table.md", out / "meshes.pvd"},
-                       scene.inputs);
-    prepare_output_dir(out);
+    prepare_study_output(a.options.output, a.options.reference, scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_study(scene, a.options, progress);
     if (!a.quiet) fmt::print("study written to {}\n", a.options.output.string());
     return 0;
+}
+
+int run_study(StudyArgs& a) {
+    const bool sampling = !a.samplers.empty();
+    if (sampling == !a.budgets.empty()) {
+        throw InputError("study: give --budgets (a meshing study) or --samplers (a sampling study)" +
+                         std::string(sampling ? ", not both" : ""));
+    }
+    refuse_mixed_flags(a, sampling);
+    return sampling ? run_sampling_study(a) : run_meshing_study(a);
+}
+
+// The options `add` puts on `cmd`.
+template <class Add>
+std::vector<const CLI::Option*> options_added(CLI::App& cmd, Add&& add) {
+    const auto before = cmd.get_options();
+    add();
+    std::vector<const CLI::Option*> out;
+    for (const CLI::Option* o : cmd.get_options()) {
+        if (std::find(before.begin(), before.end(), o) == before.end()) out.push_back(o);
+    }
+    return out;
+}
+
+void add_meshing_flags(CLI::App& cmd, StudyArgs& a) {
+    StudyOptions& o = a.options;
+    cmd.add_option("--budgets", a.budgets, "meshing study: leaf counts, comma-separated");
+    cmd.add_option("--oracles", a.oracles, "comma-separated names, or all")->capture_default_str();
+    // Every cell sets its oracle, epsilon (by the budget search) and seed; threads is shared.
+    a.flags = add_solver_flags(cmd, o.solver, {"oracle", "epsilon", "seed", "threads"});
+    cmd.add_option("--rays-per-leaf", o.rays_per_leaf,
+                   "give each budget this many rays per leaf instead of --rays (0: --rays)")
+        ->transform(count_notation())
+        ->capture_default_str();
+    cmd.add_option("--mesh-rays", a.mesh_rays,
+                   "rays of each cell's frozen re-solve, the mesh error (default: 50 x the "
+                   "cell's rays; 0: none)");
+    cmd.add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
+    cmd.add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();
+}
+
+void add_sampling_flags(CLI::App& cmd, StudyArgs& a) {
+    cmd.add_option("--samplers", a.samplers,
+                   "sampling study: pixel samplers, comma-separated, or all");
+    cmd.add_option("--spp", a.sampling.trace.spp, "mean samples per pixel of every image")
+        ->capture_default_str();
+    add_trace_flags(cmd, a.sampling.trace, a.trace_flags,
+                    {"sampler", "spp", "seed", "threshold", "width", "threads",
+                     "criterion-exposure"});
+    cmd.add_flag("--display-criteria", a.sampling.display_criteria,
+                 "adaptive samplers judge display values: radiance at the reference's exposure "
+                 "of the view, clamped to [0, 1]");
 }
 
 }  // namespace
@@ -73,28 +177,24 @@ int run_study(StudyArgs& a) {
 Command study_command(CLI::App& app) {
     auto a = std::make_shared<StudyArgs>();
     auto* cmd = app.add_subcommand(
-        "study", "every oracle x budget x seed against a reference: tables, images, plots");
+        "study",
+        "oracles at element budgets (--budgets) or pixel samplers at one spp (--samplers) "
+        "against a reference: tables, images, plots");
     StudyOptions& o = a->options;
     cmd->add_option("scene", a->scene, "bundled scene name, scene .json, .obj or .mgf")->required();
-    cmd->add_option("--reference", o.reference, "folder written by `hmcr reference`")->required();
-    cmd->add_option("--budgets", a->budgets, "leaf counts, comma-separated")->required();
-    cmd->add_option("--oracles", a->oracles, "comma-separated names, or all")->capture_default_str();
+    cmd->add_option("--reference", o.reference,
+                    "folder written by `hmcr reference` or `hmcr trace-reference`")
+        ->required();
+    a->meshing_only = options_added(*cmd, [&] { add_meshing_flags(*cmd, *a); });
+    a->sampling_only = options_added(*cmd, [&] { add_sampling_flags(*cmd, *a); });
     cmd->add_option("--seeds", o.seeds, "seeds per cell")->capture_default_str();
     cmd->add_option("--first-seed", o.solver.seed, "the first seed")
         ->transform(count_notation())
         ->capture_default_str();
-    // Every cell sets its oracle, epsilon (by the budget search) and seed.
-    a->flags = add_solver_flags(*cmd, o.solver, {"oracle", "epsilon", "seed"});
     add_scene_flags(*cmd, a->scene_flags);
-    cmd->add_option("--rays-per-leaf", o.rays_per_leaf,
-                    "give each budget this many rays per leaf instead of --rays (0: --rays)")
-        ->transform(count_notation())
+    cmd->add_option("--threads", o.solver.threads, "worker threads, 0 = all cores; results do "
+                                                   "not depend on it")
         ->capture_default_str();
-    cmd->add_option("--mesh-rays", a->mesh_rays,
-                    "rays of each cell's frozen re-solve, the mesh error (default: 50 x the "
-                    "cell's rays; 0: none)");
-    cmd->add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
-    cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();
     cmd->add_option("-o,--output", o.output, "output folder (rerunning resumes)")->required();
     cmd->add_flag("--redo", o.redo_other_settings,
                   "compute again the cells of the output folder made with other settings");

@@ -3,6 +3,7 @@
 // the thread that started the task.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 namespace hmcr {
@@ -20,5 +21,20 @@ public:
 
 // Shows nothing: for tests, and for work that is part of a larger task.
 Progress& no_progress();
+
+// Passes everything on to `outer` with `prefix` before every stage label and note: for a task
+// that is one part of a larger one ("view camera: tracing").
+class PrefixedProgress final : public Progress {
+public:
+    PrefixedProgress(Progress& outer, std::string prefix)
+        : m_outer(outer), m_prefix(std::move(prefix)) {}
+    void stage(std::string_view label) override { m_outer.stage(m_prefix + std::string(label)); }
+    void advance(double fraction) override { m_outer.advance(fraction); }
+    void note(std::string_view line) override { m_outer.note(m_prefix + std::string(line)); }
+
+private:
+    Progress& m_outer;
+    std::string m_prefix;
+};
 
 }  // namespace hmcr

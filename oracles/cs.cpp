@@ -4,9 +4,9 @@
 //   value = w_ij * A_i A_j F^ * chi2(p||q),  chi2 = N_s sum_k (p_k - 1/N_s)^2,  p_k = F_k / F^
 //
 // chi2 is in [0, N_s - 1]; it weighs large deviations more than kl does.
-#include <cmath>
 #include <memory>
 
+#include "oracles/divergences.h"
 #include "oracles/kernel_stats.h"
 #include "oracles/oracle.h"
 
@@ -22,10 +22,8 @@ public:
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);
         if (s.sum <= 0) return 0;
-        const double q = 1 / s.n;
-        double chi2 = 0;
-        for (double f : g.kernel) chi2 += (f / s.sum - q) * (f / s.sum - q);
-        return g.receiver_area * g.source_area * s.sum * s.n * chi2;
+        return g.receiver_area * g.source_area * s.sum * s.n *
+               squared_deviation_from_uniform(g.kernel, s.sum);
     }
 };
 

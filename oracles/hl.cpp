@@ -4,9 +4,9 @@
 //   value = w_ij * A_i A_j F^ * h2(p||q),  h2 = 1/2 sum_k (sqrt(p_k) - sqrt(1/N_s))^2
 //
 // h2 is in [0, 1]: a bounded, symmetric divergence, the least sensitive to single spikes.
-#include <cmath>
 #include <memory>
 
+#include "oracles/divergences.h"
 #include "oracles/kernel_stats.h"
 #include "oracles/oracle.h"
 
@@ -23,10 +23,8 @@ public:
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);
         if (s.sum <= 0) return 0;
-        const double sq = std::sqrt(1 / s.n);
-        double h2 = 0;
-        for (double f : g.kernel) h2 += (std::sqrt(f / s.sum) - sq) * (std::sqrt(f / s.sum) - sq);
-        return g.receiver_area * g.source_area * s.sum * 0.5 * h2;
+        // h2 = 0.5 * sum: halving is exact, so this is the value hl always gave.
+        return g.receiver_area * g.source_area * s.sum * hellinger_divergence(g.kernel, s.sum);
     }
 };
 

@@ -5,9 +5,9 @@
 //
 // D is 0 for a constant kernel and at most ln N_s; F^ weighs it by how much the pair exchanges.
 // The best of the seven for radiosity in the papers, and the default oracle.
-#include <cmath>
 #include <memory>
 
+#include "oracles/divergences.h"
 #include "oracles/kernel_stats.h"
 #include "oracles/oracle.h"
 
@@ -24,12 +24,7 @@ public:
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);
         if (s.sum <= 0) return 0;
-        double d = 0;
-        for (double f : g.kernel) {
-            const double p = f / s.sum;
-            if (p > 0) d += p * std::log(s.n * p);
-        }
-        return g.receiver_area * g.source_area * s.sum * std::max(0.0, d);
+        return g.receiver_area * g.source_area * s.sum * kl_divergence(g.kernel, s.sum);
     }
 };
 

@@ -1,5 +1,6 @@
 #include "studies/metrics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,28 @@ double weighted_rmse(const Image8& a, const Image8& b, const double (&w)[3]) {
 double rmse_a(const Image8& a, const Image8& b) { return weighted_rmse(a, b, kEqualWeights); }
 
 double rmse_p(const Image8& a, const Image8& b) { return weighted_rmse(a, b, kLuminanceWeights); }
+
+ErrorSplit split_error(const std::vector<Image8>& images, const Image8& reference) {
+    if (images.size() < 2) throw std::invalid_argument("split_error needs two images or more");
+    const double k = double(images.size());
+    double mse_single = 0;  // mean over the images
+    for (const Image8& im : images) {
+        const double e = weighted_rmse(im, reference, kLuminanceWeights);
+        mse_single += e * e / k;
+    }
+    double sum = 0;  // squared error of the images' mean
+    for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            double mean = 0;
+            for (const Image8& im : images) mean += double(im.pixels[i][c]) / k;
+            const double d = mean - double(reference.pixels[i][c]);
+            sum += kLuminanceWeights[c] * d * d;
+        }
+    }
+    const double mse_mean = sum / double(reference.pixels.size());
+    const double bias2 = (k * mse_mean - mse_single) / (k - 1);
+    return {std::sqrt(std::max(0.0, bias2)), std::sqrt(std::max(0.0, mse_single - bias2))};
+}
 
 double psnr(double rmse) {
     if (rmse == 0) return std::numeric_limits<double>::infinity();

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 #include <string>
+#include <vector>
 
 #include "viz/image.h"
 
@@ -31,5 +32,17 @@ double rmse_a(const Image8& a, const Image8& b);
 double rmse_p(const Image8& a, const Image8& b);
 double psnr(double rmse);  // 20 log10(255 / rmse); +inf for 0
 ImageErrors image_errors(const Image8& solution, const Image8& reference);
+
+// The RMSEp of k >= 2 images of one estimator (k seeds) split into its two parts, on the
+// 0-255 scale: with bias the RMS of the expected image's difference from the reference and
+// noise the RMS of an image's standard deviation,
+//   E[MSE of one image]        = bias^2 + noise^2
+//   E[MSE of the images' mean] = bias^2 + noise^2 / k,
+// solved with the measured MSEs (each part clamped at 0). The bias includes the reference's
+// own noise and the 8-bit rounding, shared by every estimator measured against it.
+struct ErrorSplit {
+    double bias = 0, noise = 0;
+};
+ErrorSplit split_error(const std::vector<Image8>& images, const Image8& reference);
 
 }  // namespace hmcr

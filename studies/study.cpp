@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -16,7 +17,9 @@
 #include "common/text_file.h"
 #include "common/hash.h"
 #include "common/interrupt.h"
+#include "studies/cell_files.h"
 #include "studies/reference.h"
+#include "studies/traced_reference.h"
 #include "common/atomic_file.h"
 #include "viz/image.h"
 #include "viz/paraview_collection.h"
@@ -27,53 +30,22 @@
 namespace hmcr {
 namespace {
 
-// "rays 100000 here, 200000 in the file": the settings that differ.
-std::string settings_difference(const nlohmann::json& old_settings, const nlohmann::json& now) {
-    if (!old_settings.is_object()) return "the file records none";
-    std::string out;
-    for (const auto& entry : nlohmann::json::diff(old_settings, now)) {
-        const std::string path = entry.value("path", "");
-        out += (out.empty() ? "" : ", ") + path.substr(1) + " is " +
-               (entry.contains("value") ? entry["value"].dump() : "(none)") + " now";
-    }
-    return out;
-}
-
 using Clock = std::chrono::steady_clock;
 
-// A cell's budget search as notes of the study: "[3/21] CELL: budget probe 2: ...". The
-// solves' own fractions are not shown: a study is hundreds of them.
-class CellNotes final : public Progress {
-public:
-    CellNotes(Progress& study, std::string prefix) : m_study(study), m_prefix(std::move(prefix)) {}
-    void stage(std::string_view) override {}
-    void advance(double) override {}
-    void note(std::string_view line) override { m_study.note(m_prefix + std::string(line)); }
-
-private:
-    Progress& m_study;
-    std::string m_prefix;
-};
-
-// What every cell is measured against, loaded once.
+// What every cell is measured against, loaded once. A traced reference (studies/
+// traced_reference.h) has images but no mesh: its cells have no object-space error.
 struct StudyReference {
-    ShadedMesh mesh;
+    std::optional<ShadedMesh> mesh;
     std::map<std::string, Image8> images;  // quantised with the view's exposure
     std::map<std::string, double> exposure;
 };
 
 StudyReference load_reference(const std::filesystem::path& dir, const Scene& scene) {
     StudyReference ref;
-    ref.mesh = read_solution(dir / "reference.vtp", scene).mesh;
-    ref.exposure = read_reference_exposures(dir);
-    for (const View& v : scene.views) {
-        if (!ref.exposure.count(v.name)) {
-            throw InputError((dir / "reference.json").string(),
-                             fmt::format("no exposure for view '{}' of scene '{}'", v.name,
-                                         scene.name));
-        }
-        const double exposure = ref.exposure.at(v.name);
-        ref.images[v.name] = quantise(read_pfm(dir / "views" / (v.name + ".pfm")), exposure);
+    if (!is_traced_reference(dir)) ref.mesh = read_solution(dir / "reference.vtp", scene).mesh;
+    for (const auto& [name, view] : read_reference_views(dir, scene)) {
+        ref.exposure[name] = view.exposure;
+        ref.images[name] = quantise(view.image, view.exposure);
     }
     return ref;
 }
@@ -183,34 +155,18 @@ std::string StudyRunner::time_left() const {
     return fmt::format(", about {:.0f} s left", per_cell * double(m_to_compute - m_computed));
 }
 
-// A cell file of this study from an earlier run, if it is usable: an unreadable or foreign
-// one is computed again (a truncated write, an edited file); one made with other settings is
-// refused unless options.redo_other_settings.
 std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
     const CellTask& t = m_tasks[index];
-    const std::filesystem::path file = cell_file(t);
-    if (!std::filesystem::exists(file)) return std::nullopt;
-    CellResult cell;
-    try {
-        cell = read_json_file(file, [](const nlohmann::json& j) { return cell_from_json(j); });
-    } catch (const InputError& e) {
-        m_progress.note(where(index) + ": unreadable (" + e.what() + "); computing it again");
-        return std::nullopt;
-    }
-    if (cell.scene != m_scene.name || cell.oracle != t.oracle || cell.budget != t.budget ||
-        cell.seed != t.seed) {
-        m_progress.note(where(index) + ": the file holds another cell; computing it again");
-        return std::nullopt;
-    }
-    if (cell.settings == m_settings) return cell;
-    if (m_options.redo_other_settings) {
-        m_progress.note(where(index) + ": made with other settings; computing it again");
-        return std::nullopt;
-    }
-    throw InputError(file.string(),
-                     fmt::format("made with other settings ({}); use another output folder, or "
-                                 "--redo to compute such cells again",
-                                 settings_difference(cell.settings, m_settings)));
+    CellFileRule<CellResult> rule;
+    rule.parse = [](const nlohmann::json& j) { return cell_from_json(j); };
+    rule.is_this_cell = [&](const CellResult& c) {
+        return c.scene == m_scene.name && c.oracle == t.oracle && c.budget == t.budget &&
+               c.seed == t.seed;
+    };
+    rule.settings = m_settings;
+    rule.redo_other_settings = m_options.redo_other_settings;
+    CellNotes notes(m_progress, where(index) + ": ");
+    return read_previous_cell<CellResult>(cell_file(t), rule, notes);
 }
 
 // Every earlier cell, read before anything is computed: a refusal loses no work.
@@ -312,13 +268,21 @@ ObjectError StudyRunner::measure(const Solution& solution, const CellTask& t,
                                            double(t.budget));
     const ShadedTracer tracer(mesh);
     const RenderOptions render_options{m_options.samples_per_axis};
-    for (const View& v : m_scene.views) {
+    for (View v : m_scene.views) {
+        const Image8& ref = m_reference.images.at(v.name);
+        v.width = ref.width;  // a traced reference may be smaller than the view
+        v.height = ref.height;
         const Image8 image =
             quantise(render(tracer, v, render_options), m_reference.exposure.at(v.name));
         write_png(m_options.output / "images" / (name + "-" + v.name + ".png"), image);
-        views[v.name] = image_errors(image, m_reference.images.at(v.name));
+        views[v.name] = image_errors(image, ref);
     }
-    return object_space_error(tracer, mesh, m_reference.mesh, m_error_options);
+    if (m_reference.mesh) {
+        return object_space_error(tracer, mesh, *m_reference.mesh, m_error_options);
+    }
+    ObjectError none;  // a traced reference has no mesh: not measured
+    none.relative_l2 = std::numeric_limits<double>::quiet_NaN();
+    return none;
 }
 
 }  // namespace

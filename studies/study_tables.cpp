@@ -64,6 +64,8 @@ double mesh_object_error(const CellResult& c) {
     return c.mesh_rays > 0 ? c.mesh_object_error.relative_l2 : kNaN;
 }
 
+double mesh_rmse_p(const CellResult& c) { return mesh_view_mean(c, &ImageErrors::rmse_p); }
+
 // One column of table.md: how a cell gives its value, how it prints, which way is better.
 struct Column {
     const char* title;
@@ -166,7 +168,8 @@ std::string md_table(const std::string& scene, const StudyOptions& o,
         "{}, N_s = {}, link weight {}, budget tolerance {}%, {} seeds from {}. Mean ± standard "
         "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
         "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
-        "area-weighted relative L2 error of the reflected radiosity against the reference; "
+        "area-weighted relative L2 error of the reflected radiosity against the reference (– "
+        "against a traced reference, which has no mesh); "
         "mesh: the same errors of the cell's final mesh solved again frozen with {}, the error "
         "of the mesh itself; seconds: the budget search. The best mean of each error column is "
         "in bold.\n\n",
@@ -242,7 +245,18 @@ Image8 error_panel(const std::vector<CellResult>& cells, const std::vector<std::
 }
 
 // The solution's object error, and beside it the mesh's (the frozen re-solve's).
+// Against a traced reference (no object errors) the images' RMSEp instead.
 Image8 error_plot(const std::vector<CellResult>& cells, const std::vector<std::size_t>& budgets) {
+    const bool object = std::any_of(cells.begin(), cells.end(), [](const CellResult& c) {
+        return c.ok() && !std::isnan(c.object_error.relative_l2);
+    });
+    if (!object) {
+        const Image8 left = error_panel(cells, budgets, "RMSEp (solution)", [](const CellResult& c) {
+            return view_mean(c, &ImageErrors::rmse_p);
+        });
+        const Image8 right = error_panel(cells, budgets, "RMSEp (mesh frozen)", mesh_rmse_p);
+        return montage({left, right}, 2, 1);
+    }
     const Image8 left = error_panel(cells, budgets, "object error (solution)",
                                     [](const CellResult& c) { return c.object_error.relative_l2; });
     const Image8 right = error_panel(cells, budgets, "object error (mesh frozen)", mesh_object_error);
@@ -253,8 +267,10 @@ nlohmann::json object_error_json(const ObjectError& e) {
     return {{"relative_l2", e.relative_l2}, {"samples", e.samples}, {"unmatched", e.unmatched}};
 }
 
+// null: +inf (only B_ref is 0) when measured, NaN when not (a traced reference has no mesh).
 ObjectError object_error_from_json(const nlohmann::json& oe) {
-    return {number(oe, "relative_l2", kInf), oe.at("samples").get<std::size_t>(),
+    const std::size_t samples = oe.at("samples").get<std::size_t>();
+    return {number(oe, "relative_l2", samples > 0 ? kInf : kNaN), samples,
             oe.at("unmatched").get<std::size_t>()};
 }
 

@@ -1,10 +1,8 @@
 // hmcr's own image renderer (SPEC section 6): Embree primary rays on a solution's Gouraud mesh,
 // barycentric interpolation of the vertex radiosity, radiance L = B / pi (Lambertian surfaces).
 //
-// Camera: a pinhole at View::position looking at View::look_at, with View::up made orthogonal
-// to the viewing direction, View::fov_degrees the vertical field of view and the horizontal one
-// following from the aspect ratio width / height. Pixel (x, y), y counted from the top row,
-// covers [x, x + 1] x [y, y + 1] on the image plane. With n = samples_per_axis, a pixel is the
+// Camera: the pinhole of viz/camera.h; pixel (x, y), y counted from the top row, covers
+// [x, x + 1] x [y, y + 1] on the image plane. With n = samples_per_axis, a pixel is the
 // mean of n x n rays through the fixed sub-pixel points ((i + 1/2) / n, (j + 1/2) / n): a
 // deterministic stratified box filter, so images are reproducible and identical for any number
 // of threads. Rays that hit nothing contribute 0 (the background).

@@ -1,13 +1,13 @@
 // The command line as a user meets it: bad input gets one line on stderr, exit code 2 and
 // no output file; a good run writes the .vtp and its JSON summary.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/cli_run.h"
 #include "tests/support/temp_dir.h"
 
 namespace hmcr::test {
@@ -15,20 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-    int exit_code = -1;
-    std::string out, err;
-};
-
 class Cli : public testing::Test {
 protected:
-    CliRun hmcr(const std::string& args) const {
-        const std::string cmd = std::string(HMCR_BINARY) + " " + args + " >" +
-                                (m_dir / "stdout").string() + " 2>" + (m_dir / "stderr").string();
-        const int status = std::system(cmd.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(m_dir / "stdout"),
-                read_file(m_dir / "stderr")};
-    }
+    CliRun hmcr(const std::string& args) const { return run_hmcr(args, m_dir); }
     void expect_clean_failure(const CliRun& r, const std::string& needle) const {
         EXPECT_EQ(r.exit_code, 2) << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -1,5 +1,5 @@
-// Ctrl-C or a cluster's SIGTERM ends a long solve or reference cleanly: exit code 128 + signal,
-// one line saying so, and no file left behind (no partial output, no temporary file).
+// Ctrl-C or a cluster's SIGTERM ends a long solve, reference or trace cleanly: exit code
+// 128 + signal, one line saying so, and no file left behind (no partial output, no temporary file).
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -51,6 +51,19 @@ TEST_P(Interrupt, AReferenceEndsCleanly) {
                                    dir(), signal, std::chrono::milliseconds(1500));
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+    std::filesystem::remove(dir() / ".stdout");
+    std::filesystem::remove(dir() / ".stderr");
+    EXPECT_TRUE(snapshot(dir()).empty());
+}
+
+TEST_P(Interrupt, ATraceEndsCleanly) {
+    const int signal = GetParam();
+    const int status = interrupted("trace cube-room --spp 100000 -o out/room.png --pfm out/room.pfm "
+                                   "--progress none",
+                                   dir(), signal, std::chrono::milliseconds(1500));
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+    EXPECT_NE(read_file(dir() / ".stderr").find("interrupted by SIG"), std::string::npos);
     std::filesystem::remove(dir() / ".stdout");
     std::filesystem::remove(dir() / ".stderr");
     EXPECT_TRUE(snapshot(dir()).empty());

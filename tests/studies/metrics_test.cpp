@@ -32,6 +32,21 @@ TEST(Metrics, HandComputedErrors) {
     EXPECT_EQ(rmse_a(b, a), rmse_a(a, b));  // symmetric
 }
 
+// Two images 3 and 1 above the reference in every channel: MSE of one 5 on average, of their
+// mean 4; so bias^2 = 2 * 4 - 5 = 3 and noise^2 = 5 - 3 = 2.
+TEST(Metrics, ErrorSplitsIntoBiasAndNoise) {
+    const Image8 ref = two_pixels({100, 100, 100}, {50, 50, 50});
+    const Image8 a = two_pixels({103, 103, 103}, {53, 53, 53});
+    const Image8 b = two_pixels({101, 101, 101}, {51, 51, 51});
+    const ErrorSplit e = split_error({a, b}, ref);
+    EXPECT_NEAR(e.bias, std::sqrt(3.0), 1e-12);
+    EXPECT_NEAR(e.noise, std::sqrt(2.0), 1e-12);
+    const ErrorSplit same = split_error({a, a, a}, ref);  // no spread: all bias
+    EXPECT_NEAR(same.bias, 3, 1e-12);
+    EXPECT_NEAR(same.noise, 0, 1e-12);
+    EXPECT_THROW(split_error({a}, ref), std::invalid_argument);
+}
+
 TEST(Metrics, UniformErrorGivesTheSameRmseForBothWeightings) {
     // The luminance weights sum to 1: an error of 1 everywhere is an RMSE of 1 for both.
     const Image8 a = two_pixels({1, 1, 1}, {200, 100, 50});

@@ -1,0 +1,96 @@
+#include "app/trace_flags.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "app/count.h"
+#include "common/error.h"
+#include "viz/sampling/registry.h"
+
+namespace hmcr {
+namespace {
+
+bool wanted(const std::set<std::string>& except, const std::string& name) {
+    return except.count(name) == 0;
+}
+
+void add_sampling_flags(CLI::App& cmd, TraceOptions& o, const std::set<std::string>& except) {
+    if (wanted(except, "sampler")) {
+        cmd.add_option("--sampler", o.sampler, "pixel sampling criterion (`hmcr samplers`)")
+            ->capture_default_str();
+    }
+    if (wanted(except, "spp")) {
+        cmd.add_option("--spp", o.spp,
+                       "mean samples per pixel (exact for uniform; adaptive "
+                       "samplers find their threshold for it)")
+            ->capture_default_str();
+    }
+    if (wanted(except, "threshold")) {
+        cmd.add_option("--threshold", o.threshold,
+                       "adaptive samplers: this refinement threshold instead of the search");
+    }
+    cmd.add_option("--spp-tolerance", o.spp_tolerance, "accepted relative distance to --spp")
+        ->capture_default_str();
+    cmd.add_option("--max-spp", o.max_spp, "most samples in one pixel (default 8 x spp)");
+    cmd.add_option("--tree-depth", o.tree_depth, "subpixel quadtree depth limit (entropy samplers)")
+        ->capture_default_str();
+    if (wanted(except, "criterion-exposure")) {
+        cmd.add_option("--criterion-exposure", o.criterion_exposure,
+                       "adaptive samplers judge radiance x this, clamped to [0, 1] (display "
+                       "values); 0: physical radiance")
+            ->capture_default_str();
+    }
+    cmd.add_flag("--fresh", o.fresh,
+                 "adaptive samplers: the image from fresh samples at the chosen counts "
+                 "(unbiased, about twice the rays)");
+}
+
+}  // namespace
+
+void add_trace_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
+                     const std::set<std::string>& except) {
+    add_sampling_flags(cmd, o, except);
+    if (wanted(except, "seed")) {
+        cmd.add_option("--seed", o.seed, "keys every sample's random stream")
+            ->transform(count_notation())
+            ->capture_default_str();
+    }
+    if (wanted(except, "threads")) {
+        cmd.add_option("--threads", o.threads,
+                       "worker threads, 0 = all cores; images do not depend on it")
+            ->capture_default_str();
+    }
+    cmd.add_option("--bounces", o.path.max_depth, "most bounces of a path")
+        ->capture_default_str();
+    cmd.add_option("--estimator", flags.estimator,
+                   "mis (next-event + BSDF sampling), nee or bsdf alone")
+        ->capture_default_str();
+    if (wanted(except, "width")) {
+        cmd.add_option("--width", flags.width, "render at this width (the view's aspect kept)");
+    }
+}
+
+void apply_trace_flags(const TraceFlags& flags, TraceOptions& o) {
+    find_criterion(o.sampler);  // an unknown name lists the valid ones
+    try {
+        o.path.estimator = parse_estimator(flags.estimator);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+    }
+    if (o.path.max_depth < 0 || o.path.max_depth > 100000) {
+        throw InputError("bounces must be in 0..100000");
+    }
+    if (o.threads < 0 || o.threads > 4096) throw InputError("threads must be in 0..4096");
+    if (flags.width < 0 || flags.width > 16384) throw InputError("width must be in 1..16384");
+}
+
+View sized_view(const View& view, const TraceFlags& flags) {
+    if (flags.width <= 0) return view;
+    View v = view;
+    v.width = flags.width;
+    v.height = std::max(1, int(std::lround(double(flags.width) * view.height / view.width)));
+    return v;
+}
+
+}  // namespace hmcr

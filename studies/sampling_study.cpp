@@ -1,0 +1,262 @@
+#include "studies/sampling_study.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <memory>
+
+#include "common/atomic_file.h"
+#include "common/hash.h"
+#include "common/interrupt.h"
+#include "common/error.h"
+#include "common/stopwatch.h"
+#include "common/text_file.h"
+#include "radiosity/patch.h"
+#include "studies/cell_files.h"
+#include "studies/montage.h"
+#include "studies/traced_reference.h"
+#include "viz/density_map.h"
+#include "viz/sampling/registry.h"
+
+namespace hmcr {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::vector<std::string> expand_samplers(const std::vector<std::string>& names) {
+    std::vector<std::string> out;
+    for (const std::string& n : names) {
+        if (n == "all") {
+            for (const Criterion* c : all_criteria()) out.emplace_back(c->name());
+        } else {
+            out.emplace_back(find_criterion(n).name());  // an unknown name lists the valid ones
+        }
+    }
+    if (out.empty()) throw InputError("study: no sampler given");
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        if (std::count(out.begin(), out.begin() + std::ptrdiff_t(i), out[i])) {
+            throw InputError(fmt::format("study: sampler {} is given twice", out[i]));
+        }
+    }
+    return out;
+}
+
+void validate(const SamplingStudyOptions& o, const std::vector<std::string>& samplers) {
+    if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    if (o.output.empty()) throw InputError("study: no output folder given");
+    for (const std::string& s : samplers) {
+        TraceOptions t = o.trace;
+        t.sampler = s;
+        validate_trace_options(t);  // the spp target each sampler can reach
+    }
+}
+
+struct CellTask {
+    std::string sampler;
+    std::uint64_t seed = 0;
+    std::string name;
+};
+
+class SamplingStudy {
+public:
+    SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, Progress& progress);
+    void run();
+
+private:
+    fs::path file(const std::string& folder, const std::string& name) const {
+        return m_options.output / folder / name;
+    }
+    std::optional<SamplingCell> previous_cell(std::size_t index);
+    SamplingCell compute(std::size_t index);
+    SamplingView trace_view(const CellTask& t, const View& view, Progress& notes);
+    void write_figures(const View& view) const;
+    ErrorSplits error_splits(const std::vector<SamplingCell>& cells) const;
+    std::string where(std::size_t i) const {
+        return fmt::format("[{}/{}] {}", i + 1, m_tasks.size(), m_tasks[i].name);
+    }
+
+    const Scene& m_scene;
+    const SamplingStudyOptions& m_options;
+    Progress& m_progress;
+    std::vector<std::string> m_samplers;
+    std::vector<CellTask> m_tasks;
+    nlohmann::json m_settings;
+    std::map<std::string, TracedView> m_reference;
+    std::map<std::string, Image8> m_reference8;  // quantised at the view's exposure
+    std::unique_ptr<PathTracer> m_tracer;
+};
+
+SamplingStudy::SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, Progress& progress)
+    : m_scene(scene), m_options(o), m_progress(progress), m_samplers(expand_samplers(o.samplers)) {
+    validate(o, m_samplers);
+    for (const std::string& s : m_samplers)
+        for (int k = 0; k < o.seeds; ++k) {
+            const std::uint64_t seed = o.trace.seed + std::uint64_t(k);
+            m_tasks.push_back({s, seed, sampling_cell_name(scene.name, s, o.trace.spp, seed)});
+        }
+    m_settings = sampling_study_settings(scene, o);
+}
+
+std::optional<SamplingCell> SamplingStudy::previous_cell(std::size_t index) {
+    const CellTask& t = m_tasks[index];
+    CellFileRule<SamplingCell> rule;
+    rule.parse = sampling_cell_from_json;
+    rule.is_this_cell = [&](const SamplingCell& c) {
+        return c.scene == m_scene.name && c.sampler == t.sampler && c.spp == m_options.trace.spp &&
+               c.seed == t.seed;
+    };
+    rule.settings = m_settings;
+    rule.redo_other_settings = m_options.redo_other_settings;
+    CellNotes notes(m_progress, where(index) + ": ");
+    return read_previous_cell(file("cells", t.name + ".json"), rule, notes);
+}
+
+void SamplingStudy::run() {
+    m_reference = read_reference_views(m_options.reference, m_scene);
+    for (const auto& [name, v] : m_reference) m_reference8[name] = quantise(v.image, v.exposure);
+    m_tracer = std::make_unique<PathTracer>(build_patch_set(m_scene.mesh), m_options.trace.path);
+    const auto start = Clock::now();
+    // Every earlier cell read before anything is computed: a refusal loses no work.
+    std::vector<std::optional<SamplingCell>> previous;
+    for (std::size_t i = 0; i < m_tasks.size(); ++i) previous.push_back(previous_cell(i));
+    std::vector<SamplingCell> cells;
+    for (std::size_t i = 0; i < m_tasks.size(); ++i) {
+        if (previous[i]) {
+            cells.push_back(*previous[i]);
+            m_progress.note(where(i) + ": done before, skipped");
+            continue;
+        }
+        throw_if_interrupted();
+        const nlohmann::json j = sampling_cell_to_json(compute(i));
+        write_text_atomically(file("cells", m_tasks[i].name + ".json"), j.dump(2) + "\n");
+        cells.push_back(sampling_cell_from_json(j));  // exactly what a resumed run reads back
+        m_progress.note(where(i) + fmt::format(": {} ({:.0f} s elapsed)", cells.back().status,
+                                               seconds_since(start)));
+    }
+    std::vector<std::string> views;
+    for (const View& v : m_scene.views) {
+        views.push_back(v.name);
+        write_figures(v);
+    }
+    write_sampling_tables(m_scene.name, m_options, views, cells, error_splits(cells));
+}
+
+ErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cells) const {
+    ErrorSplits splits;
+    for (const std::string& s : m_samplers) {
+        for (const View& v : m_scene.views) {
+            std::vector<Image8> images;
+            for (const SamplingCell& c : cells) {
+                const fs::path png =
+                    file("images", sampling_cell_name(c.scene, c.sampler, c.spp, c.seed) + "-" +
+                                       v.name + ".png");
+                if (c.sampler == s && c.ok() && fs::exists(png)) images.push_back(read_png(png));
+            }
+            if (images.size() >= 2) splits[s][v.name] = split_error(images, m_reference8.at(v.name));
+        }
+    }
+    return splits;
+}
+
+SamplingCell SamplingStudy::compute(std::size_t index) {
+    const CellTask& t = m_tasks[index];
+    SamplingCell cell{m_scene.name, t.sampler, m_options.trace.spp, t.seed, m_settings, "ok", "",
+                      {}, 0};
+    const auto start = Clock::now();
+    for (const View& v : m_scene.views) {
+        CellNotes notes(m_progress, where(index) + ": view " + v.name + ": ");
+        try {
+            cell.views[v.name] = trace_view(t, v, notes);
+        } catch (const SppNotReached& e) {
+            cell.status = "failed";
+            cell.message = "view " + v.name + ": " + e.what();
+            cell.views.clear();
+            break;
+        }
+    }
+    cell.seconds = seconds_since(start);
+    return cell;
+}
+
+// The view at the reference image's size, traced, written and measured.
+SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Progress& notes) {
+    const TracedView& ref = m_reference.at(view.name);
+    View v = view;
+    v.width = ref.image.width;
+    v.height = ref.image.height;
+    TraceOptions o = m_options.trace;
+    o.sampler = t.sampler;
+    o.seed = t.seed;
+    if (m_options.display_criteria) o.criterion_exposure = ref.exposure;
+    const TraceResult r = trace_image(*m_tracer, v, o, notes);
+    const Image8 image = quantise(r.image, ref.exposure);
+    const std::string name = t.name + "-" + v.name + ".png";
+    write_png(file("images", name), image);
+    write_png(file("density", name), density_map(r.samples, v.width, v.height));
+    const SampleCounts c = r.counts();
+    return {image_errors(image, m_reference8.at(v.name)),
+            c.mean,
+            c.min,
+            c.max,
+            r.threshold,
+            r.rays_traced,
+            r.seconds};
+}
+
+// The first seed's images and density maps of every sampler (a white tile where a cell failed).
+void SamplingStudy::write_figures(const View& view) const {
+    const Image8& ref = m_reference8.at(view.name);
+    std::vector<Image8> images{ref}, maps;
+    for (const std::string& s : m_samplers) {
+        const std::string name =
+            sampling_cell_name(m_scene.name, s, m_options.trace.spp, m_options.trace.seed) + "-" +
+            view.name + ".png";
+        const bool ok = fs::exists(file("images", name)) && fs::exists(file("density", name));
+        Image8 blank(ref.width, ref.height);
+        for (Srgb8& p : blank.pixels) p = {255, 255, 255};
+        images.push_back(ok ? read_png(file("images", name)) : blank);
+        maps.push_back(ok ? read_png(file("density", name)) : blank);
+    }
+    const int shrink = ref.width >= 128 ? 2 : 1;
+    write_png(file("figures", view.name + "-images.png"), montage(images, 4, shrink));
+    write_png(file("figures", view.name + "-density.png"), montage(maps, 4, shrink));
+}
+
+}  // namespace
+
+std::string sampling_cell_name(const std::string& scene, const std::string& sampler, double spp,
+                               std::uint64_t seed) {
+    return fmt::format("{}-{}-spp{:g}-s{}", scene, sampler, spp, seed);
+}
+
+void validate_sampling_study(const SamplingStudyOptions& options) {
+    validate(options, expand_samplers(options.samplers));
+}
+
+nlohmann::json sampling_study_settings(const Scene& scene, const SamplingStudyOptions& o) {
+    const TraceOptions& t = o.trace;
+    const std::string reference_json = read_text_file(o.reference / "reference.json");
+    return {{"scene", scene.name},
+            {"geometry", geometry_hash(scene.mesh)},
+            {"reference", fs::absolute(o.reference).lexically_normal().string()},
+            {"reference_json_hash", text_hash(reference_json)},
+            {"spp_tolerance", t.spp_tolerance},
+            {"max_spp", t.max_spp},
+            {"tree_depth", t.tree_depth},
+            {"display_criteria", o.display_criteria},
+            {"fresh", t.fresh},
+            {"path",
+             {{"estimator", estimator_name(t.path.estimator)},
+              {"max_depth", t.path.max_depth},
+              {"roulette_depth", t.path.roulette_depth}}}};
+}
+
+void run_sampling_study(const Scene& scene, const SamplingStudyOptions& options,
+                        Progress& progress) {
+    SamplingStudy(scene, options, progress).run();
+}
+
+}  // namespace hmcr

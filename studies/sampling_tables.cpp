@@ -1,0 +1,257 @@
+// The sampling study's cell files and tables (studies/sampling_study.h).
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "common/atomic_file.h"
+#include "studies/mean_se.h"
+#include "studies/sampling_study.h"
+
+namespace hmcr {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// JSON has no inf or NaN: nlohmann writes them as null, and null reads back as `missing`.
+double number(const nlohmann::json& j, const char* key, double missing) {
+    const auto it = j.find(key);
+    return it == j.end() || it->is_null() ? missing : it->get<double>();
+}
+
+// One column of table.md: a view's value, its format, which way is better (0: not an error).
+struct Column {
+    const char* title;
+    std::function<double(const SamplingView&)> value;
+    const char* format;
+    int better;
+};
+
+std::vector<Column> columns() {
+    return {
+        {"RMSEa", [](const SamplingView& v) { return v.errors.rmse_a; }, "{:.2f}", -1},
+        {"RMSEp", [](const SamplingView& v) { return v.errors.rmse_p; }, "{:.2f}", -1},
+        {"PSNRa (dB)", [](const SamplingView& v) { return v.errors.psnr_a; }, "{:.2f}", 1},
+        {"PSNRp (dB)", [](const SamplingView& v) { return v.errors.psnr_p; }, "{:.2f}", 1},
+        {"spp", [](const SamplingView& v) { return v.spp; }, "{:.1f}", 0},
+        {"max spp", [](const SamplingView& v) { return double(v.max_spp); }, "{:.0f}", 0},
+        {"rays (M)", [](const SamplingView& v) { return 1e-6 * double(v.rays); }, "{:.1f}", 0},
+        {"seconds", [](const SamplingView& v) { return v.seconds; }, "{:.1f}", 0},
+    };
+}
+
+std::vector<std::string> sampler_order(const std::vector<SamplingCell>& cells) {
+    std::vector<std::string> out;
+    for (const SamplingCell& c : cells)
+        if (std::find(out.begin(), out.end(), c.sampler) == out.end()) out.push_back(c.sampler);
+    return out;
+}
+
+// A cell's value of a column: one view's, or the mean over the views (views empty).
+double cell_value(const SamplingCell& c, const Column& col, const std::string& view) {
+    if (!view.empty()) return col.value(c.views.at(view));
+    double sum = 0;
+    for (const auto& [name, v] : c.views) sum += col.value(v);
+    return sum / double(c.views.size());
+}
+
+std::string md_table(const std::vector<SamplingCell>& cells, const std::string& view) {
+    const std::vector<Column> cols = columns();
+    const std::vector<std::string> samplers = sampler_order(cells);
+    std::vector<std::vector<MeanSe>> stats;  // [sampler][column]
+    std::vector<std::size_t> runs;
+    for (const std::string& s : samplers) {
+        stats.emplace_back();
+        runs.push_back(0);
+        for (const Column& col : cols) {
+            std::vector<double> v;
+            for (const SamplingCell& c : cells) {
+                if (c.sampler == s && c.ok()) v.push_back(cell_value(c, col, view));
+                if (c.sampler == s && &col == &cols[0]) ++runs.back();
+            }
+            stats.back().push_back(mean_se(v));
+        }
+    }
+    std::string out = "| sampler | seeds |", rule = "|:--|--:|";
+    for (const Column& col : cols) {
+        out += fmt::format(" {} |", col.title);
+        rule += "--:|";
+    }
+    out += "\n" + rule + "\n";
+    for (std::size_t s = 0; s < samplers.size(); ++s) {
+        out += fmt::format("| {} | {}/{} |", samplers[s], stats[s][0].n, runs[s]);
+        for (std::size_t k = 0; k < cols.size(); ++k) {
+            const std::string text = format_mean_se(stats[s][k], cols[k].format);
+            bool best = cols[k].better != 0 && stats[s][k].n > 0;
+            for (std::size_t q = 0; q < samplers.size() && best; ++q) {
+                if (stats[q][k].n > 0 && cols[k].better * (stats[q][k].mean - stats[s][k].mean) > 0)
+                    best = false;
+            }
+            out += best ? fmt::format(" **{}** |", text) : fmt::format(" {} |", text);
+        }
+        out += "\n";
+    }
+    return out;
+}
+
+// sampler | bias | noise, each the RMS over the views of the per-view parts.
+std::string md_splits(const ErrorSplits& splits, const std::vector<std::string>& samplers) {
+    std::string out =
+        "| sampler | bias RMSEp | noise RMSEp |\n|:--|--:|--:|\n";
+    for (const std::string& s : samplers) {
+        const auto it = splits.find(s);
+        if (it == splits.end() || it->second.empty()) continue;
+        double bias2 = 0, noise2 = 0;
+        for (const auto& [view, e] : it->second) {
+            bias2 += e.bias * e.bias / double(it->second.size());
+            noise2 += e.noise * e.noise / double(it->second.size());
+        }
+        out += fmt::format("| {} | {:.2f} | {:.2f} |\n", s, std::sqrt(bias2), std::sqrt(noise2));
+    }
+    return out;
+}
+
+std::string md_document(const std::string& scene, const SamplingStudyOptions& o,
+                        const std::vector<std::string>& views,
+                        const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+    std::string out = fmt::format("# Sampling study: {}\n\n", scene);
+    out += fmt::format(
+        "{} samples per pixel (±{}%), {} seeds from {}, path estimator {}, at most {} bounces, "
+        "criteria on {}{}, reference {}. Mean ± "
+        "standard error over the seeds whose searches succeeded (seeds column). RMSE on the "
+        "0–255 scale and PSNR in dB against the reference at its exposure; spp: the mean "
+        "reached; rays: traced, the threshold search's included. The best mean of each error "
+        "column is in bold.\n\n## Mean over the views ({})\n\n{}\n",
+        o.trace.spp, 100 * o.trace.spp_tolerance, o.seeds, o.trace.seed,
+        estimator_name(o.trace.path.estimator), o.trace.path.max_depth,
+        o.display_criteria ? "display values" : "radiance",
+        o.trace.fresh ? ", adaptive images from fresh samples" : "", o.reference.string(),
+        fmt::join(views, ", "),
+        md_table(cells, ""));
+    if (!splits.empty()) {
+        out += fmt::format(
+            "## Bias and noise\n\nRMSEp split as E[MSE of one image] = bias² + noise² and "
+            "E[MSE of the mean of the k seeds' images] = bias² + noise²/k (RMS over the views). "
+            "The bias includes the reference's own noise and the 8-bit rounding, which every "
+            "sampler shares; an unbiased sampler shows only that.\n\n{}\n",
+            md_splits(splits, sampler_order(cells)));
+    }
+    for (const std::string& v : views)
+        out += fmt::format("## View {}\n\n{}\n", v, md_table(cells, v));
+    return out;
+}
+
+std::string csv_number(double x) {
+    if (std::isnan(x)) return "";
+    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+    return fmt::format("{}", x);
+}
+
+std::string csv_text(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+std::string csv_table(const std::vector<std::string>& views,
+                      const std::vector<SamplingCell>& cells) {
+    std::string out =
+        "scene,sampler,spp_target,seed,status,view,spp,min_spp,max_spp,threshold,rays,seconds,"
+        "rmse_a,rmse_p,psnr_a,psnr_p,message\n";
+    for (const SamplingCell& c : cells) {
+        for (const std::string& name : views) {
+            const auto it = c.views.find(name);
+            const SamplingView v =
+                it != c.views.end()
+                    ? it->second
+                    : SamplingView{{kNaN, kNaN, kNaN, kNaN}, kNaN, 0, 0, kNaN, 0, kNaN};
+            out += fmt::format(
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", csv_text(c.scene),
+                c.sampler, c.spp, c.seed, c.status, csv_text(name), csv_number(v.spp), v.min_spp,
+                v.max_spp, csv_number(v.threshold), v.rays, csv_number(v.seconds),
+                csv_number(v.errors.rmse_a), csv_number(v.errors.rmse_p),
+                csv_number(v.errors.psnr_a), csv_number(v.errors.psnr_p), csv_text(c.message));
+        }
+    }
+    return out;
+}
+
+nlohmann::json view_to_json(const SamplingView& v) {
+    return {{"errors", v.errors},       {"spp", v.spp},
+            {"min_spp", v.min_spp},     {"max_spp", v.max_spp},
+            {"threshold", v.threshold}, {"rays", v.rays},
+            {"seconds", v.seconds}};
+}
+
+SamplingView view_from_json(const nlohmann::json& j) {
+    const nlohmann::json& e = j.at("errors");
+    return {{number(e, "rmse_a", kNaN), number(e, "rmse_p", kNaN), number(e, "psnr_a", kInf),
+             number(e, "psnr_p", kInf)},
+            number(j, "spp", kNaN),
+            j.at("min_spp").get<std::uint32_t>(),
+            j.at("max_spp").get<std::uint32_t>(),
+            number(j, "threshold", kNaN),
+            j.at("rays").get<std::uint64_t>(),
+            number(j, "seconds", kNaN)};
+}
+
+}  // namespace
+
+nlohmann::json sampling_cell_to_json(const SamplingCell& c) {
+    nlohmann::json views = nlohmann::json::object();
+    for (const auto& [name, v] : c.views) views[name] = view_to_json(v);
+    return {{"scene", c.scene},     {"sampler", c.sampler}, {"spp", c.spp},
+            {"seed", c.seed},       {"settings", c.settings}, {"status", c.status},
+            {"message", c.message}, {"views", views},       {"seconds", c.seconds}};
+}
+
+SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
+    SamplingCell c;
+    c.scene = j.at("scene").get<std::string>();
+    c.sampler = j.at("sampler").get<std::string>();
+    c.spp = j.at("spp").get<double>();
+    c.seed = j.at("seed").get<std::uint64_t>();
+    c.settings = j.value("settings", nlohmann::json());
+    c.status = j.at("status").get<std::string>();
+    c.message = j.value("message", "");
+    for (const auto& [name, v] : j.at("views").items()) c.views[name] = view_from_json(v);
+    c.seconds = number(j, "seconds", kNaN);
+    return c;
+}
+
+void write_sampling_tables(const std::string& scene, const SamplingStudyOptions& o,
+                           const std::vector<std::string>& views,
+                           const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+    nlohmann::json split_json = nlohmann::json::object();
+    for (const auto& [sampler, by_view] : splits)
+        for (const auto& [view, e] : by_view)
+            split_json[sampler][view] = {{"bias_rmse_p", e.bias}, {"noise_rmse_p", e.noise}};
+    nlohmann::json all = nlohmann::json::array();
+    for (const SamplingCell& c : cells) all.push_back(sampling_cell_to_json(c));
+    const nlohmann::json table = {{"scene", scene},
+                                  {"options",
+                                   {{"spp", o.trace.spp},
+                                    {"spp_tolerance", o.trace.spp_tolerance},
+                                    {"samplers", sampler_order(cells)},
+                                    {"seeds", o.seeds},
+                                    {"first_seed", o.trace.seed},
+                                    {"estimator", estimator_name(o.trace.path.estimator)},
+                                    {"max_depth", o.trace.path.max_depth},
+                                    {"tree_depth", o.trace.tree_depth},
+                                    {"display_criteria", o.display_criteria},
+                                    {"fresh", o.trace.fresh},
+                                    {"reference", o.reference.string()}}},
+                                  {"views", views},
+                                  {"error_split", split_json},
+                                  {"cells", all}};
+    write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
+    write_text_atomically(o.output / "table.csv", csv_table(views, cells));
+    write_text_atomically(o.output / "table.md", md_document(scene, o, views, cells, splits));
+}
+
+}  // namespace hmcr
