@@ -118,6 +118,11 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
     points.replace(at, points.find('"', at) - at, "900000000000");
     m_temp.write("points.vtp", points);
     expect_refused("points.vtp", "points.vtp: damaged VTK file: NumberOfPoints is 900000000000");
+    // An unknown type name crashed VTK's reader (a null array dereferenced; the fuzzer again).
+    std::string type = bytes;
+    type.replace(type.find("type=\"Float64\""), 15, "type=\"Float65\"");
+    m_temp.write("type.vtp", type);
+    expect_refused("type.vtp", "type.vtp: damaged VTK file: an array of unknown type \"Float65\"");
 }
 
 }  // namespace
