@@ -7,6 +7,7 @@
 #include <cstring>
 #include <regex>
 #include <string>
+#include <string_view>
 
 #include <vtkBase64Utilities.h>
 
@@ -34,26 +35,27 @@ std::uint64_t read_uint(const std::string& bytes, std::size_t at, std::size_t wi
 class Envelope {
 public:
     Envelope(const std::filesystem::path& path, std::string bytes)
-        : m_path(path.string()), m_bytes(std::move(bytes)) {}
+        : m_path(path.string()),
+          m_bytes(std::move(bytes)),
+          m_appended(m_bytes.find("<AppendedData")),
+          m_xml(m_bytes.substr(0, m_appended)),
+          m_base64(m_appended != std::string::npos &&
+                   m_bytes.compare(m_appended, kBase64Tag.size(), kBase64Tag) == 0) {}
 
     [[noreturn]] void fail(const std::string& why) const {
         throw InputError(m_path, "damaged VTK file: " + why);
     }
 
-    void check() {
-        const std::size_t appended = m_bytes.find("<AppendedData");
-        const std::string xml = m_bytes.substr(0, appended);
-        check_counts(xml);
-        check_types(xml);
-        if (appended == std::string::npos) return;
-        const std::size_t data = m_bytes.find('_', appended);
+    void check() const {
+        check_counts(m_xml);
+        check_types(m_xml);
+        if (m_appended == std::string::npos) return;
+        const std::size_t data = m_bytes.find('_', m_appended);
         if (data == std::string::npos) fail("appended data without its '_' marker");
-        const bool compressed = xml.find("compressor=\"") != std::string::npos;
-        const std::string base64 = "<AppendedData encoding=\"base64\"";
-        m_base64 = m_bytes.compare(appended, base64.size(), base64) == 0;
-        const std::size_t width = xml.find("header_type=\"UInt64\"") != std::string::npos ? 8 : 4;
+        const bool compressed = m_xml.find("compressor=\"") != std::string::npos;
+        const std::size_t width = m_xml.find("header_type=\"UInt64\"") != std::string::npos ? 8 : 4;
         static const std::regex offset(R"(offset="\s*(\d{1,19})\s*")");
-        for (auto it = std::sregex_iterator(xml.begin(), xml.end(), offset);
+        for (auto it = std::sregex_iterator(m_xml.begin(), m_xml.end(), offset);
              it != std::sregex_iterator(); ++it) {
             check_array(data + 1, std::stoull((*it)[1].str()), compressed, width);
         }
@@ -65,8 +67,10 @@ private:
         const double limit = kMaxRatio * double(m_bytes.size()) + 1e6;
         for (auto it = std::sregex_iterator(xml.begin(), xml.end(), count);
              it != std::sregex_iterator(); ++it) {
-            if (std::stod((*it)[2].str()) > limit) {
-                fail(fmt::format("{} is {} in a file of {} bytes", (*it)[1].str(), (*it)[2].str(),
+            // More than 15 digits is beyond any file (and std::stod throws past 308 of them).
+            const std::string digits = (*it)[2].str();
+            if (digits.size() > 15 || std::stod(digits) > limit) {
+                fail(fmt::format("{} is {} in a file of {} bytes", (*it)[1].str(), quote(digits),
                                  m_bytes.size()));
             }
         }
@@ -151,16 +155,19 @@ private:
     // Bytes in the file of n bytes of data.
     std::uint64_t stored_size(std::uint64_t n) const { return m_base64 ? (n + 2) / 3 * 4 : n; }
 
+    static constexpr std::string_view kBase64Tag = "<AppendedData encoding=\"base64\"";
+
     std::string m_path;
     std::string m_bytes;
-    bool m_base64 = false;
+    std::size_t m_appended;  // where <AppendedData starts, or npos
+    std::string m_xml;       // everything before it
+    bool m_base64;           // the appended data is base64 text, not raw bytes
 };
 
 }  // namespace
 
 void check_vtp_envelope(const std::filesystem::path& path) {
-    Envelope envelope(path, read_text_file(path));
-    envelope.check();
+    Envelope(path, read_text_file(path)).check();
 }
 
 }  // namespace hmcr

@@ -117,7 +117,11 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
     const std::size_t at = points.find("NumberOfPoints=\"") + 16;
     points.replace(at, points.find('"', at) - at, "900000000000");
     m_temp.write("points.vtp", points);
-    expect_refused("points.vtp", "points.vtp: damaged VTK file: NumberOfPoints is 900000000000");
+    expect_refused("points.vtp", "points.vtp: damaged VTK file: NumberOfPoints is '900000000000'");
+    // A count of 400 digits: std::stod would throw out_of_range (an internal error).
+    points.replace(at, 12, std::string(400, '9'));
+    m_temp.write("digits.vtp", points);
+    expect_refused("digits.vtp", "digits.vtp: damaged VTK file: NumberOfPoints is '999");
     // No blocks but a last block of some bytes: another null dereference in VTK (fuzzer).
     std::string header = bytes;
     const std::size_t first = header.find('_', header.find("<AppendedData")) + 1;
