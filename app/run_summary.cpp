@@ -1,19 +1,18 @@
 #include "app/run_summary.h"
 
 #include "common/memory.h"
+#include "common/rgb_json.h"
 #include "radiosity/solver_settings.h"
 
 namespace hmcr {
 namespace {
 
-nlohmann::json rgb(const Rgb& c) { return {c[0], c[1], c[2]}; }
-
 nlohmann::json iterations_json(const SolveStats& st) {
     auto list = nlohmann::json::array();
     for (const auto& it : st.iterations) {
         list.push_back({{"rays", it.rays},
-                        {"unshot_before_w", rgb(it.unshot_before)},
-                        {"unshot_after_w", rgb(it.unshot_after)},
+                        {"unshot_before_w", rgb_json(it.unshot_before)},
+                        {"unshot_after_w", rgb_json(it.unshot_after)},
                         {"leaves_after", it.leaves_after},
                         {"seconds", it.seconds}});
     }
@@ -29,10 +28,10 @@ nlohmann::json options_json(const SolverOptions& o, const SolveStats& st) {
 }
 
 nlohmann::json power_json(const SolveStats& st) {
-    return {{"emitted_w", rgb(st.emitted_power)},
-            {"escaped_w", rgb(st.escaped_power)},
-            {"back_face_w", rgb(st.back_face_power)},
-            {"unshot_remaining_w", rgb(st.unshot_power)},
+    return {{"emitted_w", rgb_json(st.emitted_power)},
+            {"escaped_w", rgb_json(st.escaped_power)},
+            {"back_face_w", rgb_json(st.back_face_power)},
+            {"unshot_remaining_w", rgb_json(st.unshot_power)},
             {"back_face_fraction", st.back_face_fraction()},
             {"back_face_warning", st.back_face_fraction() > 0.01}};
 }

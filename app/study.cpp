@@ -28,7 +28,7 @@ struct StudyArgs {
     SolverFlags flags;
     std::string budgets;  // "2000,5000,19000"
     std::string oracles = "all";
-    std::string mesh_rays;  // empty: the default, 50 x the cell's rays
+    std::string mesh_rays;  // empty: the default, kMeshRaysPerCellRay x the cell's rays
     std::string samplers;   // "all" or "uniform,srhe"; given: a sampling study
     SamplingStudyOptions sampling = [] {
         SamplingStudyOptions o;
@@ -153,8 +153,9 @@ void add_meshing_flags(CLI::App& cmd, StudyArgs& a) {
         ->transform(count_notation())
         ->capture_default_str();
     cmd.add_option("--mesh-rays", a.mesh_rays,
-                   "rays of each cell's frozen re-solve, the mesh error (default: 50 x the "
-                   "cell's rays; 0: none)");
+                   fmt::format("rays of each cell's frozen re-solve, the mesh error (default: "
+                               "{} x the cell's rays; 0: none)",
+                               kMeshRaysPerCellRay));
     cmd.add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
     cmd.add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();
 }

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "common/rgb_json.h"
 #include "common/text_file.h"
 #include "common/atomic_file.h"
 #include "viz/renderer.h"
@@ -23,8 +24,6 @@ Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint6
     s.max_depth = 24;
     return solve(scene.mesh, s, progress);
 }
-
-nlohmann::json rgb_json(const Rgb& c) { return {c[0], c[1], c[2]}; }
 
 }  // namespace
 

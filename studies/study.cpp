@@ -66,25 +66,27 @@ std::vector<std::string> expand_oracles(const std::vector<std::string>& names) {
     return out;
 }
 
+// "study: budget 500 is given twice".
+template <class T>
+void refuse_repeats(const std::vector<T>& values, const char* what) {
+    for (auto it = values.begin(); it != values.end(); ++it) {
+        if (std::find(values.begin(), it, *it) != it) {
+            throw InputError(fmt::format("study: {} {} is given twice", what, *it));
+        }
+    }
+}
+
 void validate(const StudyOptions& o, const std::vector<std::string>& oracles) {
     if (o.budgets.empty()) throw InputError("study: no budget given");
     if (oracles.empty()) throw InputError("study: no oracle given");
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
-    for (std::size_t i = 0; i < o.budgets.size(); ++i) {
-        if (std::count(o.budgets.begin(), o.budgets.begin() + i, o.budgets[i])) {
-            throw InputError(fmt::format("study: budget {} is given twice", o.budgets[i]));
-        }
-    }
-    for (std::size_t i = 0; i < oracles.size(); ++i) {
-        if (std::count(oracles.begin(), oracles.begin() + i, oracles[i])) {
-            throw InputError(fmt::format("study: oracle {} is given twice", oracles[i]));
-        }
-    }
+    refuse_repeats(o.budgets, "budget");
+    refuse_repeats(oracles, "oracle");
     if (o.output.empty()) throw InputError("study: no output folder given");
     validate(o.solver);
     for (std::size_t b : o.budgets) {
         // Each product is checked against the limit before it is formed (no wrap-around).
-        if (o.rays_per_leaf > kMaxRays / b || (cell_rays(o, b) > kMaxRays / 50 && !o.mesh_rays)) {
+        if (o.rays_per_leaf > kMaxRays / b || (cell_rays(o, b) > kMaxRays / kMeshRaysPerCellRay && !o.mesh_rays)) {
             throw InputError(fmt::format("study: budget {} would shoot more than 1e15 rays", b));
         }
     }
@@ -298,7 +300,7 @@ nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
     const std::string reference_json = read_text_file(o.reference / "reference.json");
     return {{"scene", scene.name},
             {"rays_per_leaf", o.rays_per_leaf},
-            {"mesh_rays", o.mesh_rays ? nlohmann::json(*o.mesh_rays) : nlohmann::json("50x")},
+            {"mesh_rays", mesh_rays_json(o)},
             {"geometry", geometry_hash(scene.mesh)},
             // Whether the scene was repaired (a strict load of it would be refused) and how.
             {"repaired", !scene.repairs.empty()},
@@ -316,7 +318,12 @@ std::uint64_t cell_rays(const StudyOptions& o, std::size_t budget) {
 }
 
 std::uint64_t cell_mesh_rays(const StudyOptions& o, std::size_t budget) {
-    return o.mesh_rays ? *o.mesh_rays : 50 * cell_rays(o, budget);
+    return o.mesh_rays ? *o.mesh_rays : kMeshRaysPerCellRay * cell_rays(o, budget);
+}
+
+nlohmann::json mesh_rays_json(const StudyOptions& o) {
+    if (o.mesh_rays) return *o.mesh_rays;
+    return std::to_string(kMeshRaysPerCellRay) + "x";
 }
 
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,

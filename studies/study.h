@@ -43,6 +43,10 @@
 
 namespace hmcr {
 
+// The frozen re-solve's default rays per ray of the cell: its noise is then a seventh of the
+// cell's (1/sqrt(50)), small beside every mesh error measured.
+inline constexpr std::uint64_t kMeshRaysPerCellRay = 50;
+
 struct StudyOptions {
     std::filesystem::path reference;   // folder written by write_reference
     std::vector<std::size_t> budgets;  // target leaf counts
@@ -51,7 +55,8 @@ struct StudyOptions {
     SolverOptions solver;              // every cell's solve; oracle, epsilon, seed set per cell
     // > 0: each budget's cells shoot rays_per_leaf x budget rays instead of solver.rays.
     std::uint64_t rays_per_leaf = 0;
-    // Rays of the frozen re-solve (mesh error): 0 for none; by default 50 x the cell's rays.
+    // Rays of the frozen re-solve (mesh error): 0 for none; by default kMeshRaysPerCellRay x
+    // the cell's rays.
     std::optional<std::uint64_t> mesh_rays;
     double budget_tolerance = 0.01;    // relative distance to the budget accepted
     int samples_per_axis = 2;          // supersampling of the images
@@ -95,6 +100,8 @@ void run_study(const Scene& scene, const StudyOptions& options,
 // The rays of a cell at `budget`, and of its frozen re-solve.
 std::uint64_t cell_rays(const StudyOptions& options, std::size_t budget);
 std::uint64_t cell_mesh_rays(const StudyOptions& options, std::size_t budget);
+// options.mesh_rays as the tables and cell settings record it: a count, or "50x" by default.
+nlohmann::json mesh_rays_json(const StudyOptions& options);
 
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,
                       std::uint64_t seed);

@@ -162,7 +162,7 @@ std::string md_table(const std::string& scene, const StudyOptions& o,
                                  ? fmt::format("{} rays per leaf of the budget", o.rays_per_leaf)
                                  : fmt::format("{} rays", o.solver.rays);
     const std::string mesh_rays =
-        !o.mesh_rays ? "50 times the cell's rays"
+        !o.mesh_rays ? fmt::format("{} times the cell's rays", kMeshRaysPerCellRay)
                      : *o.mesh_rays > 0 ? fmt::format("{} rays", *o.mesh_rays) : "(not measured)";
     out += fmt::format(
         "{}, N_s = {}, link weight {}, budget tolerance {}%, {} seeds from {}. Mean ± standard "
@@ -343,8 +343,7 @@ void write_study_tables(const std::string& scene, const StudyOptions& o,
                                     {"first_seed", o.solver.seed},
                                     {"rays", o.solver.rays},
                                     {"rays_per_leaf", o.rays_per_leaf},
-                                    {"mesh_rays", o.mesh_rays ? nlohmann::json(*o.mesh_rays)
-                                                              : nlohmann::json("50x")},
+                                    {"mesh_rays", mesh_rays_json(o)},
                                     {"link_weight", o.solver.link_weight},
                                     {"lines", o.solver.lines},
                                     {"budget_tolerance", o.budget_tolerance},

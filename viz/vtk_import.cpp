@@ -11,6 +11,7 @@
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -44,8 +45,11 @@ public:
         vtkAbstractArray* raw = data->GetAbstractArray(name);
         if (!raw) fail(fmt::format("not an hmcr solution (no {} array)", name));
         A* a = A::SafeDownCast(raw);
-        if (!a) fail(fmt::format("array {} has type {}, not {}", name, raw->GetDataTypeAsString(),
-                                 A::New()->GetDataTypeAsString()));
+        if (!a) {
+            const vtkNew<A> wanted;  // an instance only for its type's name
+            fail(fmt::format("array {} has type {}, not {}", name, raw->GetDataTypeAsString(),
+                             wanted->GetDataTypeAsString()));
+        }
         if (a->GetNumberOfComponents() != components || a->GetNumberOfTuples() != tuples) {
             fail(fmt::format("array {} has {} tuples of {} components; expected {} of {}", name,
                              a->GetNumberOfTuples(), a->GetNumberOfComponents(), tuples,

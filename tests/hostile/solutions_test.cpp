@@ -117,7 +117,22 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
     const std::size_t at = points.find("NumberOfPoints=\"") + 16;
     points.replace(at, points.find('"', at) - at, "900000000000");
     m_temp.write("points.vtp", points);
-    expect_refused("points.vtp", "points.vtp: damaged VTK file: NumberOfPoints is 900000000000");
+    expect_refused("points.vtp", "points.vtp: damaged VTK file: NumberOfPoints is '900000000000'");
+    // A count of 400 digits: std::stod would throw out_of_range (an internal error).
+    points.replace(at, 12, std::string(400, '9'));
+    m_temp.write("digits.vtp", points);
+    expect_refused("digits.vtp", "digits.vtp: damaged VTK file: NumberOfPoints is '999");
+    // No blocks but a last block of some bytes: another null dereference in VTK (fuzzer).
+    std::string header = bytes;
+    const std::size_t first = header.find('_', header.find("<AppendedData")) + 1;
+    header.replace(first, 12, std::string("\x00\x00\x00\x00\x00\x80\x00\x00\x08\x00\x00\x00", 12));
+    m_temp.write("header.vtp", header);
+    expect_refused("header.vtp", "header.vtp: damaged VTK file: the array at offset 0 has a block header");
+    // An unknown type name crashed VTK's reader (a null array dereferenced; the fuzzer again).
+    std::string type = bytes;
+    type.replace(type.find("type=\"Float64\""), 15, "type=\"Float65\"");
+    m_temp.write("type.vtp", type);
+    expect_refused("type.vtp", "type.vtp: damaged VTK file: an array of unknown type 'Float65'");
 }
 
 }  // namespace

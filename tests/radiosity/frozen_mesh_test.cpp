@@ -100,7 +100,7 @@ TEST(FrozenMesh, ErrorFallsAsOneOverRootRaysToTheMeshError) {
         for (double b : l.exact) mesh_error2 += l.weight * (l.mean - b) * (l.mean - b) / double(l.exact.size());
     EXPECT_GT(mesh_error2, 0);
 
-    std::vector<double> errors;
+    std::vector<double> errors, expected_noise;
     for (const std::uint64_t rays : {40'000ull, 640'000ull, 10'240'000ull}) {
         SolverOptions o = shape.options;
         o.rays = rays;
@@ -123,11 +123,14 @@ TEST(FrozenMesh, ErrorFallsAsOneOverRootRaysToTheMeshError) {
         EXPECT_TRUE(within_standard_errors("noise at " + std::to_string(rays) + " rays", noise,
                                            expected, std::sqrt(variance)));
         errors.push_back(std::sqrt(error2));
+        expected_noise.push_back(expected);
     }
-    // Falling, and at 10 M rays within 5% of the mesh's own error.
+    // The noise is tested against its expectation above, so the error falls as 1/sqrt(rays)
+    // towards the mesh's own; at 10 M rays the expected noise is under 1% of the mesh's squared
+    // error, so there the error is the mesh's to half a percent.
     EXPECT_LT(errors[1], errors[0]);
     EXPECT_LT(errors[2], errors[1]);
-    EXPECT_NEAR(errors[2], std::sqrt(mesh_error2), 0.05 * std::sqrt(mesh_error2));
+    EXPECT_LT(expected_noise[2], 0.01 * mesh_error2);
 }
 
 }  // namespace
