@@ -80,20 +80,49 @@ void BatchRun::add_batch(const PixelTracer& tracer) {
     }
     m_sum.push_back(sum);
     m_rays.push_back(rays);
-    if (m_criterion.scheme() == Scheme::uniform) {  // NaN is at most no threshold: never stops
-        m_value.push_back(std::numeric_limits<double>::quiet_NaN());
-        return;
-    }
     std::vector<PixelSample> all;
     all.reserve(m_samples.size());
     for (const StoredSample& s : m_samples) all.push_back(s.expand());
     m_value.push_back(m_criterion.value(all, 1.0));
 }
 
+// A uniform pixel takes the same batches in the same order as a BatchRun but never stops
+// early, so it keeps only the running sums: a 4,096-spp reference would otherwise hold every
+// sample of every pixel (tens of GB at 256 x 256).
+class UniformRun final : public PixelRun {
+public:
+    UniformRun(std::uint32_t samples, int x, int y) : m_max(samples), m_x(x), m_y(y) {}
+
+    void extend(double, const PixelTracer& tracer) override {
+        while (m_done < m_max) {
+            const std::uint32_t b = m_done / kBatchSize;
+            const auto order = stratum_order(tracer.stream(m_x, m_y, kOrderKey | b));
+            const std::uint32_t end = std::min(m_done + kBatchSize, m_max);
+            for (int j = 0; m_done < end; ++j, ++m_done) {
+                const TracedSample t = tracer.sample(m_x, m_y, m_done, batch_stratum(order[j]));
+                m_sum += t.sample.radiance;
+                m_rays += t.rays;
+            }
+        }
+    }
+    std::uint32_t samples(double) const override { return m_done; }
+    Rgb radiance(double) const override { return m_sum / double(m_done); }
+    std::uint64_t rays(double) const override { return m_rays; }
+    std::uint64_t rays_traced() const override { return m_rays; }
+    double first_value() const override { return std::numeric_limits<double>::quiet_NaN(); }
+
+private:
+    std::uint32_t m_max, m_done = 0;
+    int m_x, m_y;
+    Rgb m_sum = Rgb::Zero();
+    std::uint64_t m_rays = 0;
+};
+
 }  // namespace
 
 std::unique_ptr<PixelRun> make_batch_run(const Criterion& criterion, std::uint32_t max_samples,
                                          int x, int y) {
+    if (criterion.scheme() == Scheme::uniform) return std::make_unique<UniformRun>(max_samples, x, y);
     return std::make_unique<BatchRun>(criterion, max_samples, x, y);
 }
 

@@ -9,7 +9,7 @@
 // each of 2 x 4 strata taken in an order drawn for the batch, so that a last, partial batch
 // (a target that is not a multiple of 8) takes a uniformly random subset of the strata and the
 // pixel's mean stays unbiased. The pixel stops after the first batch whose value is at most the
-// threshold, or at max_samples; uniform runs always take max_samples.
+// threshold, or at max_samples; uniform runs always take max_samples and keep only their sums.
 // TreeRun (Scheme::quadtree): the subpixel quadtree of viz/sampling/criterion.h, to
 // max_depth (the pixel is depth 0); a node refines when its value exceeds the threshold. The
 // pixel's radiance is the mean over its leaves' regions of each leaf's sample mean (Figure 5:

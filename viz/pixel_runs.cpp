@@ -34,12 +34,15 @@ double PixelRuns::extend(double threshold, Progress& progress) {
     // About 64 blocks: progress for the user, and enough pixels per block to keep every core busy.
     const std::size_t rows = std::max<std::size_t>(1, height / 64);
     for (std::size_t y0 = 0; y0 < height; y0 += rows) {
-        throw_if_interrupted();  // a safe point: the runs are whole between blocks
         const std::size_t end = std::min(height, y0 + rows) * width;
+        // Checked per pixel, since a block at thousands of samples per pixel takes minutes. An
+        // interruption leaves some pixels of the block unextended, but nothing reads the runs
+        // after an Interrupted: the run ends.
         tbb::parallel_for(tbb::blocked_range<std::size_t>(y0 * width, end, 16),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               set_tracing_float_mode();
                               for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                                  throw_if_interrupted();
                                   m_runs[i]->extend(threshold, m_tracer);
                               }
                           });
