@@ -20,6 +20,7 @@ namespace {
 
 constexpr double kAlpha = 0.1;
 constexpr double kZ = 1.6448536269514722;  // the standard normal's 1 - alpha/2 quantile
+static_assert(kAlpha == 0.1, "kZ is the quantile for alpha = 0.1: compute it again");
 
 // Student's t quantile at 1 - alpha/2 with nu degrees of freedom: the Cornish-Fisher expansion
 // of Abramowitz and Stegun 26.7.5 around kZ, within 2e-5 for nu >= 7 (every batch has n >= 8).
