@@ -43,10 +43,12 @@ test-quick: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 
 # The fast suite again under AddressSanitizer and UBSan (clang), and a short run of every fuzz
-# target (tests/fuzz): what CI runs after `make test`.
+# target (tests/fuzz): what CI runs after `make test`. Line tables are all a sanitizer report
+# needs to name file and line; full debug information would only slow the build.
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	  -DCMAKE_CXX_COMPILER=clang++ -DHMCR_FUZZ=ON
+	  -DCMAKE_CXX_COMPILER=clang++ -DHMCR_FUZZ=ON \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG"
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -L fuzz
