@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "studies/table_fields.h"
 #include "viz/tone_map.h"
 
 namespace hmcr {
@@ -88,6 +89,13 @@ std::string ImageErrors::to_string() const {
 
 void to_json(nlohmann::json& j, const ImageErrors& e) {
     j = {{"rmse_a", e.rmse_a}, {"rmse_p", e.rmse_p}, {"psnr_a", e.psnr_a}, {"psnr_p", e.psnr_p}};
+}
+
+void from_json(const nlohmann::json& j, ImageErrors& e) {
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    e = {json_number(j, "rmse_a", kNaN), json_number(j, "rmse_p", kNaN),
+         json_number(j, "psnr_a", kInf), json_number(j, "psnr_p", kInf)};
 }
 
 }  // namespace hmcr

@@ -24,8 +24,10 @@ struct ImageErrors {
 
     std::string to_string() const;
 };
-// {"rmse_a", "rmse_p", "psnr_a", "psnr_p"}: how references and study cells store them.
+// {"rmse_a", "rmse_p", "psnr_a", "psnr_p"}: how references and study cells store them. An
+// infinite PSNR is written as null (JSON has no inf) and read back as +inf, a null RMSE as NaN.
 void to_json(nlohmann::json& j, const ImageErrors& e);
+void from_json(const nlohmann::json& j, ImageErrors& e);
 
 // Throws std::invalid_argument when the images differ in size or are empty.
 double rmse_a(const Image8& a, const Image8& b);

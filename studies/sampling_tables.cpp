@@ -10,18 +10,13 @@
 #include "common/atomic_file.h"
 #include "studies/mean_se.h"
 #include "studies/sampling_study.h"
+#include "studies/table_fields.h"
 
 namespace hmcr {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// JSON has no inf or NaN: nlohmann writes them as null, and null reads back as `missing`.
-double number(const nlohmann::json& j, const char* key, double missing) {
-    const auto it = j.find(key);
-    return it == j.end() || it->is_null() ? missing : it->get<double>();
-}
 
 // One column of table.md: a view's value, its format, which way is better (0: not an error).
 struct Column {
@@ -145,19 +140,6 @@ std::string md_document(const std::string& scene, const SamplingStudyOptions& o,
     return out;
 }
 
-std::string csv_number(double x) {
-    if (std::isnan(x)) return "";
-    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-    return fmt::format("{}", x);
-}
-
-std::string csv_text(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string q = "\"";
-    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + "\"";
-}
-
 std::string csv_table(const std::vector<std::string>& views,
                       const std::vector<SamplingCell>& cells) {
     std::string out =
@@ -189,15 +171,13 @@ nlohmann::json view_to_json(const SamplingView& v) {
 }
 
 SamplingView view_from_json(const nlohmann::json& j) {
-    const nlohmann::json& e = j.at("errors");
-    return {{number(e, "rmse_a", kNaN), number(e, "rmse_p", kNaN), number(e, "psnr_a", kInf),
-             number(e, "psnr_p", kInf)},
-            number(j, "spp", kNaN),
+    return {j.at("errors").get<ImageErrors>(),
+            json_number(j, "spp", kNaN),
             j.at("min_spp").get<std::uint32_t>(),
             j.at("max_spp").get<std::uint32_t>(),
-            number(j, "threshold", kNaN),
+            json_number(j, "threshold", kNaN),
             j.at("rays").get<std::uint64_t>(),
-            number(j, "seconds", kNaN)};
+            json_number(j, "seconds", kNaN)};
 }
 
 }  // namespace
@@ -220,7 +200,7 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
     c.status = j.at("status").get<std::string>();
     c.message = j.value("message", "");
     for (const auto& [name, v] : j.at("views").items()) c.views[name] = view_from_json(v);
-    c.seconds = number(j, "seconds", kNaN);
+    c.seconds = json_number(j, "seconds", kNaN);
     return c;
 }
 

@@ -8,42 +8,18 @@
 #include <limits>
 
 #include "studies/montage.h"
+#include "studies/mean_se.h"
 #include "studies/plot.h"
 #include "studies/study.h"
+#include "studies/table_fields.h"
 #include "common/atomic_file.h"
 #include "viz/image.h"
 
 namespace hmcr {
 namespace {
 
-// JSON has no inf or NaN: nlohmann writes them as null, and null reads back as `missing`.
-double number(const nlohmann::json& j, const char* key, double missing) {
-    const auto it = j.find(key);
-    return it == j.end() || it->is_null() ? missing : it->get<double>();
-}
-
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Mean and standard error (sample sd / sqrt(n)) over seeds.
-struct MeanSe {
-    double mean = kNaN, se = kNaN;
-    std::size_t n = 0;
-};
-
-MeanSe mean_se(const std::vector<double>& v) {
-    MeanSe m;
-    m.n = v.size();
-    if (v.empty()) return m;
-    double sum = 0;
-    for (double x : v) sum += x;
-    m.mean = sum / double(v.size());
-    if (v.size() < 2 || !std::isfinite(m.mean)) return m;
-    double ss = 0;
-    for (double x : v) ss += (x - m.mean) * (x - m.mean);
-    m.se = std::sqrt(ss / double(v.size() - 1)) / std::sqrt(double(v.size()));
-    return m;
-}
 
 double view_mean(const std::map<std::string, ImageErrors>& views, double ImageErrors::*field) {
     double sum = 0;
@@ -93,13 +69,6 @@ std::vector<Column> md_columns() {
         {"ε", [](const CellResult& c) { return c.epsilon; }, "{:.3g}", 0},
         {"seconds", [](const CellResult& c) { return c.seconds; }, "{:.1f}", 0},
     };
-}
-
-std::string format_mean_se(const MeanSe& m, const char* format) {
-    if (m.n == 0) return "–";
-    const std::string mean = fmt::format(fmt::runtime(format), m.mean);
-    if (m.n < 2 || !std::isfinite(m.se)) return mean;
-    return mean + " ± " + fmt::format(fmt::runtime(format), m.se);
 }
 
 std::vector<const CellResult*> select(const std::vector<CellResult>& cells, std::size_t budget,
@@ -177,19 +146,6 @@ std::string md_table(const std::string& scene, const StudyOptions& o,
         o.solver.seed, views.size(), fmt::join(views, ", "), mesh_rays);
     for (std::size_t b : o.budgets) out += md_budget_table(b, cells) + "\n";
     return out;
-}
-
-std::string csv_number(double x) {
-    if (std::isnan(x)) return "";
-    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-    return fmt::format("{}", x);
-}
-
-std::string csv_text(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string q = "\"";
-    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + "\"";
 }
 
 constexpr const char* kCsvHeader =
@@ -270,15 +226,14 @@ nlohmann::json object_error_json(const ObjectError& e) {
 // null: +inf (only B_ref is 0) when measured, NaN when not (a traced reference has no mesh).
 ObjectError object_error_from_json(const nlohmann::json& oe) {
     const std::size_t samples = oe.at("samples").get<std::size_t>();
-    return {number(oe, "relative_l2", samples > 0 ? kInf : kNaN), samples,
+    return {json_number(oe, "relative_l2", samples > 0 ? kInf : kNaN), samples,
             oe.at("unmatched").get<std::size_t>()};
 }
 
 std::map<std::string, ImageErrors> views_from_json(const nlohmann::json& views) {
     std::map<std::string, ImageErrors> out;
     for (const auto& [name, e] : views.items())
-        out[name] = {number(e, "rmse_a", kNaN), number(e, "rmse_p", kNaN),
-                     number(e, "psnr_a", kInf), number(e, "psnr_p", kInf)};
+        out[name] = e.get<ImageErrors>();
     return out;
 }
 
@@ -314,12 +269,12 @@ CellResult cell_from_json(const nlohmann::json& j) {
     c.settings = j.value("settings", nlohmann::json());
     c.status = j.at("status").get<std::string>();
     c.message = j.value("message", "");
-    c.epsilon = number(j, "epsilon", kNaN);
+    c.epsilon = json_number(j, "epsilon", kNaN);
     c.leaves = j.at("leaves").get<std::size_t>();
     for (const auto& p : j.at("probe_history"))
-        c.probes.push_back({number(p, "epsilon", kNaN), p.at("leaves").get<std::size_t>(),
-                            number(p, "seconds", kNaN)});
-    c.seconds = number(j, "seconds", kNaN);
+        c.probes.push_back({json_number(p, "epsilon", kNaN), p.at("leaves").get<std::size_t>(),
+                            json_number(p, "seconds", kNaN)});
+    c.seconds = json_number(j, "seconds", kNaN);
     c.views = views_from_json(j.at("views"));
     c.object_error = object_error_from_json(j.at("object_error"));
     c.rays = j.at("rays").get<std::uint64_t>();
