@@ -18,7 +18,8 @@ public:
     PixelRuns(const Criterion& criterion, const RunLimits& limits, const PixelTracer& tracer);
 
     // Traces what every pixel lacks at the threshold (rows in blocks, `progress` advanced
-    // between them); returns the mean samples per pixel at it.
+    // between them); returns the mean samples per pixel at it. Throws Interrupted between
+    // pixels after a signal; the runs are then unusable.
     double extend(double threshold, Progress& progress = no_progress());
 
     // After extend(threshold):

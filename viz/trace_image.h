@@ -65,7 +65,7 @@ std::uint32_t max_samples_per_pixel(const TraceOptions& options);
 void validate_trace_options(const TraceOptions& options);
 
 // Throws InputError on bad options, SppNotReached when the search fails, and Interrupted
-// (common/interrupt.h) between blocks of rows after a SIGINT or SIGTERM.
+// (common/interrupt.h) between pixels after a SIGINT or SIGTERM.
 TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceOptions& options,
                         Progress& progress = no_progress());
 
