@@ -26,6 +26,16 @@ std::array<int, kBatchSize> stratum_order(Rng rng) {
     return order;
 }
 
+// Traces samples first .. end - 1 (one batch: first a multiple of 8, end - first <= 8) in the
+// order of strata drawn for the batch, handing each to `take`.
+template <class Take>
+void trace_batch(const PixelTracer& tracer, int x, int y, std::uint32_t first, std::uint32_t end,
+                 Take&& take) {
+    const auto order = stratum_order(tracer.stream(x, y, kOrderKey | (first / kBatchSize)));
+    for (std::uint32_t s = first; s < end; ++s)
+        take(tracer.sample(x, y, s, batch_stratum(order[s - first])));
+}
+
 class BatchRun final : public PixelRun {
 public:
     BatchRun(const Criterion& criterion, std::uint32_t max_samples, int x, int y)
@@ -68,16 +78,14 @@ private:
 
 void BatchRun::add_batch(const PixelTracer& tracer) {
     const std::size_t b = m_value.size();
-    const std::uint32_t first = kBatchSize * std::uint32_t(b);
-    const auto order = stratum_order(tracer.stream(m_x, m_y, kOrderKey | b));
     Rgb sum = b ? m_sum.back() : Rgb::Zero();
     std::uint64_t rays = b ? m_rays.back() : 0;
-    for (std::uint32_t j = 0; first + j < count(b); ++j) {
-        const TracedSample t = tracer.sample(m_x, m_y, first + j, batch_stratum(order[j]));
-        m_samples.push_back(store(t.sample));
-        sum += t.sample.radiance;
-        rays += t.rays;
-    }
+    trace_batch(tracer, m_x, m_y, kBatchSize * std::uint32_t(b), count(b),
+                [&](const TracedSample& t) {
+                    m_samples.push_back(store(t.sample));
+                    sum += t.sample.radiance;
+                    rays += t.rays;
+                });
     m_sum.push_back(sum);
     m_rays.push_back(rays);
     std::vector<PixelSample> all;
@@ -94,15 +102,12 @@ public:
     UniformRun(std::uint32_t samples, int x, int y) : m_max(samples), m_x(x), m_y(y) {}
 
     void extend(double, const PixelTracer& tracer) override {
-        while (m_done < m_max) {
-            const std::uint32_t b = m_done / kBatchSize;
-            const auto order = stratum_order(tracer.stream(m_x, m_y, kOrderKey | b));
-            const std::uint32_t end = std::min(m_done + kBatchSize, m_max);
-            for (int j = 0; m_done < end; ++j, ++m_done) {
-                const TracedSample t = tracer.sample(m_x, m_y, m_done, batch_stratum(order[j]));
-                m_sum += t.sample.radiance;
-                m_rays += t.rays;
-            }
+        for (; m_done < m_max; m_done = std::min(m_done + kBatchSize, m_max)) {
+            trace_batch(tracer, m_x, m_y, m_done, std::min(m_done + kBatchSize, m_max),
+                        [&](const TracedSample& t) {
+                            m_sum += t.sample.radiance;
+                            m_rays += t.rays;
+                        });
         }
     }
     std::uint32_t samples(double) const override { return m_done; }
