@@ -1,6 +1,7 @@
 // What the two kinds of study (studies/study.h: oracles at element budgets; studies/
 // sampling_study.h: pixel samplers at one spp) share about their cells: a cell's notes within
-// the study's progress, and the rule for a cell file left by an earlier run.
+// the study's progress, the rule for a cell file left by an earlier run, and the loop over the
+// cells.
 #pragma once
 
 #include <fmt/format.h>
@@ -11,8 +12,11 @@
 #include <optional>
 #include <string>
 
+#include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/progress.h"
+#include "common/stopwatch.h"
 #include "common/text_file.h"
 
 namespace hmcr {
@@ -70,6 +74,54 @@ std::optional<Cell> read_previous_cell(const std::filesystem::path& file, const 
                      fmt::format("made with other settings ({}); use another output folder, or "
                                  "--redo to compute such cells again",
                                  settings_difference(cell.settings, rule.settings)));
+}
+
+// A study's cells, in order, and what it does with each.
+template <class Cell>
+struct CellLoop {
+    std::size_t count = 0;
+    std::function<std::optional<Cell>(std::size_t)> previous;  // read_previous_cell's answer
+    std::function<Cell(std::size_t)> compute;
+    std::function<nlohmann::json(const Cell&)> to_json;
+    std::function<Cell(const nlohmann::json&)> from_json;
+    std::function<std::filesystem::path(std::size_t)> file;
+    std::function<std::string(std::size_t)> where;      // "[3/21] CELL"
+    std::function<std::string(const Cell&)> outcome;    // "done", "failed", ...
+};
+
+// Every earlier cell file is read before anything is computed, so that a refusal loses no work;
+// a usable one is skipped, the others are computed, written atomically and taken back as a
+// resumed run would read them. A note after each cell: its outcome, the time elapsed and the
+// time left from the cells computed so far. Throws Interrupted between cells after a signal.
+template <class Cell>
+std::vector<Cell> run_cells(const CellLoop<Cell>& loop, Progress& progress) {
+    std::vector<std::optional<Cell>> previous;
+    std::size_t to_compute = 0, computed = 0;
+    for (std::size_t i = 0; i < loop.count; ++i) {
+        previous.push_back(loop.previous(i));
+        to_compute += previous.back() ? 0 : 1;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    double compute_seconds = 0;
+    std::vector<Cell> cells;
+    for (std::size_t i = 0; i < loop.count; ++i) {
+        if (previous[i]) {
+            cells.push_back(*previous[i]);
+            progress.note(loop.where(i) + ": done before, skipped");
+            continue;
+        }
+        throw_if_interrupted();
+        const auto cell_start = std::chrono::steady_clock::now();
+        const nlohmann::json j = loop.to_json(loop.compute(i));
+        write_text_atomically(loop.file(i), j.dump(2) + "\n");
+        cells.push_back(loop.from_json(j));
+        compute_seconds += seconds_since(cell_start);
+        ++computed;
+        const double left = compute_seconds / double(computed) * double(to_compute - computed);
+        progress.note(fmt::format("{}: {} ({:.0f} s elapsed, about {:.0f} s left)", loop.where(i),
+                                  loop.outcome(cells.back()), seconds_since(start), left));
+    }
+    return cells;
 }
 
 }  // namespace hmcr

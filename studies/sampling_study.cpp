@@ -7,9 +7,7 @@
 #include <optional>
 #include <memory>
 
-#include "common/atomic_file.h"
 #include "common/hash.h"
-#include "common/interrupt.h"
 #include "common/error.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
@@ -118,24 +116,16 @@ void SamplingStudy::run() {
     m_reference = read_reference_views(m_options.reference, m_scene);
     for (const auto& [name, v] : m_reference) m_reference8[name] = quantise(v.image, v.exposure);
     m_tracer = std::make_unique<PathTracer>(build_patch_set(m_scene.mesh), m_options.trace.path);
-    const auto start = Clock::now();
-    // Every earlier cell read before anything is computed: a refusal loses no work.
-    std::vector<std::optional<SamplingCell>> previous;
-    for (std::size_t i = 0; i < m_tasks.size(); ++i) previous.push_back(previous_cell(i));
-    std::vector<SamplingCell> cells;
-    for (std::size_t i = 0; i < m_tasks.size(); ++i) {
-        if (previous[i]) {
-            cells.push_back(*previous[i]);
-            m_progress.note(where(i) + ": done before, skipped");
-            continue;
-        }
-        throw_if_interrupted();
-        const nlohmann::json j = sampling_cell_to_json(compute(i));
-        write_text_atomically(file("cells", m_tasks[i].name + ".json"), j.dump(2) + "\n");
-        cells.push_back(sampling_cell_from_json(j));  // exactly what a resumed run reads back
-        m_progress.note(where(i) + fmt::format(": {} ({:.0f} s elapsed)", cells.back().status,
-                                               seconds_since(start)));
-    }
+    CellLoop<SamplingCell> loop;
+    loop.count = m_tasks.size();
+    loop.previous = [this](std::size_t i) { return previous_cell(i); };
+    loop.compute = [this](std::size_t i) { return compute(i); };
+    loop.to_json = sampling_cell_to_json;
+    loop.from_json = sampling_cell_from_json;
+    loop.file = [this](std::size_t i) { return file("cells", m_tasks[i].name + ".json"); };
+    loop.where = [this](std::size_t i) { return where(i); };
+    loop.outcome = [](const SamplingCell& c) { return c.status; };
+    const std::vector<SamplingCell> cells = run_cells(loop, m_progress);
     std::vector<std::string> views;
     for (const View& v : m_scene.views) {
         views.push_back(v.name);

@@ -16,11 +16,9 @@
 #include "common/stopwatch.h"
 #include "common/text_file.h"
 #include "common/hash.h"
-#include "common/interrupt.h"
 #include "studies/cell_files.h"
 #include "studies/reference.h"
 #include "studies/traced_reference.h"
-#include "common/atomic_file.h"
 #include "viz/image.h"
 #include "viz/paraview_collection.h"
 #include "viz/renderer.h"
@@ -121,7 +119,6 @@ public:
     void run();
 
 private:
-    std::vector<std::optional<CellResult>> previous_cells();
     std::optional<CellResult> previous_cell(std::size_t index);
     std::filesystem::path cell_file(const CellTask& t) const {
         return m_options.output / "cells" / (t.name + ".json");
@@ -131,7 +128,6 @@ private:
                         std::map<std::string, ImageErrors>& views);
     void write_mesh_collection() const;
     std::string where(std::size_t index) const;
-    std::string time_left() const;
 
     const StudyOptions& m_options;
     Progress& m_progress;
@@ -141,20 +137,10 @@ private:
     ObjectErrorOptions m_error_options;
     nlohmann::json m_settings;
     StudyReference m_reference;
-    Clock::time_point m_start = Clock::now();
-    std::size_t m_to_compute = 0, m_computed = 0;
-    double m_compute_seconds = 0;
 };
 
 std::string StudyRunner::where(std::size_t index) const {
     return fmt::format("[{}/{}] {}", index + 1, m_tasks.size(), m_tasks[index].name);
-}
-
-// ", about 40 s left", from the cells computed so far; nothing before the first.
-std::string StudyRunner::time_left() const {
-    if (m_computed == 0) return {};
-    const double per_cell = m_compute_seconds / double(m_computed);
-    return fmt::format(", about {:.0f} s left", per_cell * double(m_to_compute - m_computed));
 }
 
 std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
@@ -171,37 +157,20 @@ std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
     return read_previous_cell<CellResult>(cell_file(t), rule, notes);
 }
 
-// Every earlier cell, read before anything is computed: a refusal loses no work.
-std::vector<std::optional<CellResult>> StudyRunner::previous_cells() {
-    std::vector<std::optional<CellResult>> cells;
-    for (std::size_t i = 0; i < m_tasks.size(); ++i) cells.push_back(previous_cell(i));
-    for (const auto& c : cells) m_to_compute += c ? 0 : 1;
-    return cells;
-}
-
 void StudyRunner::run() {
     m_reference = load_reference(m_options.reference, m_scene);
-    const std::vector<std::optional<CellResult>> previous = previous_cells();
-    std::vector<CellResult> cells;
-    for (std::size_t i = 0; i < m_tasks.size(); ++i) {
-        if (previous[i]) {
-            cells.push_back(*previous[i]);
-            m_progress.note(where(i) + ": done before, skipped");
-            continue;
-        }
-        throw_if_interrupted();
-        const auto start = Clock::now();
-        CellResult cell = compute(i);
-        const nlohmann::json j = cell_to_json(cell);
-        write_text_atomically(cell_file(m_tasks[i]), j.dump(2) + "\n");
-        cells.push_back(cell_from_json(j));  // exactly what a resumed run reads back
-        m_compute_seconds += seconds_since(start);
-        ++m_computed;
-        m_progress.note(where(i) + (cell.ok() ? fmt::format(": done ({:.0f} s elapsed{})",
-                                                             seconds_since(m_start), time_left())
-                                              : ": budget not reached, recorded as failed" +
-                                                    time_left()));
-    }
+    CellLoop<CellResult> loop;
+    loop.count = m_tasks.size();
+    loop.previous = [this](std::size_t i) { return previous_cell(i); };
+    loop.compute = [this](std::size_t i) { return compute(i); };
+    loop.to_json = cell_to_json;
+    loop.from_json = cell_from_json;
+    loop.file = [this](std::size_t i) { return cell_file(m_tasks[i]); };
+    loop.where = [this](std::size_t i) { return where(i); };
+    loop.outcome = [](const CellResult& c) {
+        return c.ok() ? "done" : "budget not reached, recorded as failed";
+    };
+    const std::vector<CellResult> cells = run_cells(loop, m_progress);
     std::vector<std::string> views;
     for (const View& v : m_scene.views) views.push_back(v.name);
     write_study_tables(m_scene.name, m_options, views, cells);
