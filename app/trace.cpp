@@ -38,8 +38,6 @@ fs::path beside(const fs::path& png, const std::string& suffix, const std::strin
     return png.parent_path() / (png.stem().string() + suffix + extension);
 }
 
-nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nullptr; }
-
 nlohmann::json summary(const TraceArgs& a, const Scene& scene, const View& view,
                        const TraceResult& r, double exposure, const std::string& command_line) {
     const SampleCounts c = r.counts();
@@ -61,7 +59,7 @@ nlohmann::json summary(const TraceArgs& a, const Scene& scene, const View& view,
               {"max", c.max},
               {"tolerance", o.spp_tolerance},
               {"max_per_pixel", max_samples_per_pixel(o)}}},
-            {"threshold", number_or_null(r.threshold)},
+            {"threshold", r.threshold},  // NaN (uniform) is written as null
             {"threshold_probes", probes},
             {"seed", o.seed},
             {"path",
