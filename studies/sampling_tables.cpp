@@ -16,7 +16,6 @@ namespace hmcr {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // One column of table.md: a view's value, its format, which way is better (0: not an error).
 struct Column {
