@@ -130,20 +130,22 @@ std::string md_table(const std::string& scene, const StudyOptions& o,
     const std::string rays = o.rays_per_leaf > 0
                                  ? fmt::format("{} rays per leaf of the budget", o.rays_per_leaf)
                                  : fmt::format("{} rays", o.solver.rays);
-    const std::string mesh_rays =
-        !o.mesh_rays ? fmt::format("{} times the cell's rays", kMeshRaysPerCellRay)
-                     : *o.mesh_rays > 0 ? fmt::format("{} rays", *o.mesh_rays) : "(not measured)";
+    const std::string frozen = "mesh: the same errors of the cell's final mesh solved again frozen";
+    const std::string mesh =
+        !o.mesh_rays ? fmt::format("{} with {} times the cell's rays, the error of the mesh itself",
+                                   frozen, kMeshRaysPerCellRay)
+        : *o.mesh_rays > 0
+            ? fmt::format("{} with {} rays, the error of the mesh itself", frozen, *o.mesh_rays)
+            : std::string("mesh: not measured (--mesh-rays 0)");
     out += fmt::format(
         "{}, N_s = {}, link weight {}, budget tolerance {}%, {} seeds from {}. Mean ± standard "
         "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
         "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
         "area-weighted relative L2 error of the reflected radiosity against the reference (– "
         "against a traced reference, which has no mesh); "
-        "mesh: the same errors of the cell's final mesh solved again frozen with {}, the error "
-        "of the mesh itself; seconds: the budget search. The best mean of each error column is "
-        "in bold.\n\n",
+        "{}; seconds: the budget search. The best mean of each error column is in bold.\n\n",
         rays, o.solver.lines, o.solver.link_weight, 100 * o.budget_tolerance, o.seeds,
-        o.solver.seed, views.size(), fmt::join(views, ", "), mesh_rays);
+        o.solver.seed, views.size(), fmt::join(views, ", "), mesh);
     for (std::size_t b : o.budgets) out += md_budget_table(b, cells) + "\n";
     return out;
 }
@@ -256,8 +258,10 @@ nlohmann::json cell_to_json(const CellResult& c) {
             {"object_error", object_error_json(c.object_error)},
             {"rays", c.rays},
             {"mesh_rays", c.mesh_rays},
-            {"mesh_views", nlohmann::json(c.mesh_views)},
-            {"mesh_object_error", object_error_json(c.mesh_object_error)}};
+            // Not measured (--mesh-rays 0): null, not a perfect 0.
+            {"mesh_views", c.mesh_rays > 0 ? nlohmann::json(c.mesh_views) : nlohmann::json()},
+            {"mesh_object_error",
+             c.mesh_rays > 0 ? object_error_json(c.mesh_object_error) : nlohmann::json()}};
 }
 
 CellResult cell_from_json(const nlohmann::json& j) {

@@ -224,10 +224,14 @@ TEST_F(TinyStudy, RaysPerLeafScaleWithTheBudget) {
     ASSERT_EQ(table.at("cells").size(), 2u);
     EXPECT_EQ(table["cells"][0]["rays"], 50'000);
     EXPECT_EQ(table["cells"][1]["rays"], 100'000);
-    for (const auto& c : table["cells"]) EXPECT_EQ(c["mesh_rays"], 0);
+    for (const auto& c : table["cells"]) {
+        EXPECT_EQ(c["mesh_rays"], 0);
+        EXPECT_TRUE(c["mesh_object_error"].is_null()) << c;  // not measured, not a perfect 0
+        EXPECT_TRUE(c["mesh_views"].is_null()) << c;
+    }
     const std::string md = read_file(o.output / "table.md");
     EXPECT_NE(md.find("500 rays per leaf of the budget"), std::string::npos) << md;
-    EXPECT_NE(md.find("(not measured)"), std::string::npos) << md;
+    EXPECT_NE(md.find("mesh: not measured (--mesh-rays 0)"), std::string::npos) << md;
 }
 
 }  // namespace
