@@ -1,6 +1,28 @@
 #include "common/error.h"
 
+#include <fmt/format.h>
+
 namespace hmcr {
+
+std::string one_line(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u != 0x7f) {
+            out.push_back(c);
+        } else if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else {
+            out += fmt::format("\\x{:02x}", u);
+        }
+    }
+    return out;
+}
 
 std::string at(const std::filesystem::path& path, int line) {
     return path.string() + ":" + std::to_string(line);

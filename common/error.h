@@ -10,11 +10,15 @@
 
 namespace hmcr {
 
+// `text` with its control characters written as escapes (\n, \x1b): a message stays one line
+// whatever a file name, a JSON key or a token it quotes contains.
+std::string one_line(std::string_view text);
+
 class InputError : public std::runtime_error {
 public:
-    explicit InputError(const std::string& message) : std::runtime_error(message) {}
+    explicit InputError(std::string_view message) : std::runtime_error(one_line(message)) {}
     InputError(std::string_view where, std::string_view message)
-        : std::runtime_error(std::string(where) + ": " + std::string(message)) {}
+        : std::runtime_error(one_line(std::string(where) + ": " + std::string(message))) {}
 };
 
 // "path:line", the place of a statement in a text file.

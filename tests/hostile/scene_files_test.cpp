@@ -157,6 +157,11 @@ TEST_F(Hostile, BadSceneFilesAreRefusedWithFileAndPlace) {
         {R"({"mesh": "plates.obj", "solver": {"threads": 2}})", "unknown setting 'threads'"},
         {R"({"mesh": "none.obj"})", "none.obj: no such file"},
         {R"({"mesh": "plates.ply"})", "hmcr reads .obj and .mgf meshes"},
+        // JSON strings may hold control characters: the message escapes them and stays one
+        // line (found by the scene fuzz target).
+        {R"({"mesh": "plates.obj", "descriptio\n": 1})", "unknown key 'descriptio\\n'"},
+        {R"({"mesh": "plates.obj", "a\u001b[2Jb": 1})", "unknown key 'a\\x1b[2Jb'"},
+        {R"({"mesh": "pla\ntes.obj"})", "pla\\ntes.obj: no such file"},
     };
     for (const auto& [json, needle] : cases) {
         plates(kPlatesObj, kPlatesMtl, json);

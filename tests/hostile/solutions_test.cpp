@@ -133,6 +133,23 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
     type.replace(type.find("type=\"Float64\""), 15, "type=\"Float65\"");
     m_temp.write("type.vtp", type);
     expect_refused("type.vtp", "type.vtp: damaged VTK file: an array of unknown type 'Float65'");
+    // VTK reads offset="19i" as 19, inside another array: a 2.7 GB header and 26 s (fuzzer).
+    // Every spelling XML allows is checked: single quotes, spaces around '='.
+    const std::size_t offset = bytes.find("offset=\"", bytes.find("offset=\"") + 1);
+    const std::size_t value = offset + 8, end = bytes.find('"', value);
+    const std::string number = bytes.substr(value, end - value);
+    for (const std::string& spelling :
+         {"offset=\"" + number + "i\"", "offset='" + number + "i'", "offset = '" + number + "i'"}) {
+        std::string odd = bytes;
+        odd.replace(offset, end + 1 - offset, spelling);
+        m_temp.write("offset.vtp", odd);
+        expect_refused("offset.vtp", "offset.vtp: damaged VTK file: offset is '" + number +
+                                         "i', not a plain number");
+    }
+    std::string quoted = bytes;
+    quoted.replace(at - 16, bytes.find('"', at) + 1 - (at - 16), "NumberOfPoints='900000000000'");
+    m_temp.write("quoted.vtp", quoted);
+    expect_refused("quoted.vtp", "quoted.vtp: damaged VTK file: NumberOfPoints is '900000000000'");
 }
 
 }  // namespace
