@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <string_view>
 
 namespace hmcr {
 namespace {
@@ -14,11 +15,20 @@ int line_of_byte(const std::string& text, std::size_t byte) {
     return 1 + static_cast<int>(std::count(text.begin(), text.begin() + end, '\n'));
 }
 
-// nlohmann's message without its "[json.exception.parse_error.101] " tag.
+// nlohmann's message without its "[json.exception.parse_error.101] " tag, and with the token
+// it quotes ("last read: '...'", as long as the file's longest string) cut short.
 std::string plain_message(const std::exception& e) {
     const std::string what = e.what();
     const std::size_t tag_end = what.rfind("] ", what.find(' '));
-    return tag_end == std::string::npos || what.front() != '[' ? what : what.substr(tag_end + 2);
+    std::string out =
+        tag_end == std::string::npos || what.front() != '[' ? what : what.substr(tag_end + 2);
+    constexpr std::string_view kLastRead = "last read: '";
+    const std::size_t token = out.find(kLastRead);
+    if (token != std::string::npos && out.back() == '\'') {
+        const std::size_t from = token + kLastRead.size();
+        out = out.substr(0, token) + "last read: " + quote(out.substr(from, out.size() - 1 - from));
+    }
+    return out;
 }
 
 void check_readable(const fs::path& path, std::uint64_t max_bytes) {

@@ -1,0 +1,37 @@
+#include "common/text_file.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "common/error.h"
+#include "tests/support/temp_dir.h"
+
+namespace hmcr::test {
+namespace {
+
+std::string error_of(const std::filesystem::path& path) {
+    try {
+        read_json_file(path);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+// A JSON syntax error names file and line, and the token nlohmann quotes ("last read") is cut
+// short and stays on one line, however long the bad literal (found by the reference fuzzer).
+TEST(ReadJsonFile, ASyntaxErrorIsOneShortLineWithFileAndLine) {
+    TempDir dir;
+    // A raw line break inside a string: nlohmann quotes the whole string read so far.
+    const auto path = dir.write("bad.json", "{\n  \"a\": \"" + std::string(5000, 'x') + "\n\"}");
+    const std::string what = error_of(path);
+    EXPECT_NE(what.find("bad.json:2: "), std::string::npos) << what;
+    EXPECT_NE(what.find("last read: '"), std::string::npos) << what;
+    EXPECT_NE(what.find("...'"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_LT(what.size(), 400u) << what;
+}
+
+}  // namespace
+}  // namespace hmcr::test
