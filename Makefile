@@ -7,11 +7,11 @@ SANITIZE ?= OFF
 # Debian 12 packages hmcr builds against (README: "Dependencies" says why each is there).
 DEPS := g++ cmake make pkg-config zlib1g-dev libembree-dev libopenmesh-dev libvtk9-dev \
         libeigen3-dev libtbb-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev \
-        libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
+        libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev python3
 
 SANITIZE_BUILD ?= build-sanitize
 
-.PHONY: deps build run test test-quick test-sanitize bench format clean
+.PHONY: deps build run test test-quick test-sanitize bench scenes format clean
 
 # Installs only what is missing, so it is quick when everything is present.
 deps:
@@ -53,8 +53,13 @@ test-sanitize: deps
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -L fuzz
 
-bench: build
+bench: build scenes
 	$(BUILD)/hmcr_bench
+
+# Scenes too large for git, generated on demand by their scripts (about 30 s).
+scenes: scenes/office/office.obj
+scenes/office/office.obj: scenes/office/generate.py
+	python3 scenes/office/generate.py
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.h')

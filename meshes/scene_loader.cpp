@@ -17,7 +17,9 @@
 //                                         optional; used by faces without a material;
 //                                         kd defaults to 0.5 grey, ke to 0
 //     "strict": true,                     optional; refuse what the repairs would fix
-//     "mgf_segments": 24                  optional; segments per circle of MGF curved surfaces
+//     "mgf_segments": 24,                 optional; segments per circle of MGF curved surfaces
+//     "generator": "generate.py"          optional; the script beside the file that writes a
+//                                         mesh too large for git (named when it is missing)
 //   }
 // A scene without views (a bare .obj, or a JSON file without "views") gets one view named
 // "default": 40 degrees, 512x512, on the +z side of the bounding box looking along -z, far
@@ -213,7 +215,7 @@ Scene load_json_scene(const fs::path& path, const std::string& name, LoadOptions
     const std::string file = path.string();
     const json j = read_json_file(path);
     check_keys(j, {"mesh", "description", "views", "solver", "default_material", "strict",
-                   "mgf_segments"},
+                   "mgf_segments", "generator"},
                file);
     if (!j.contains("mesh") || !j["mesh"].is_string()) fail(file, "needs a \"mesh\" string");
     if (j.contains("description") && !j["description"].is_string()) {
@@ -225,6 +227,16 @@ Scene load_json_scene(const fs::path& path, const std::string& name, LoadOptions
     scene.inputs.push_back(path);
     scene.mesh_path = path.parent_path() / j["mesh"].get<std::string>();
     check_mesh_extension(scene.mesh_path, file);
+    if (j.contains("generator")) {
+        if (!j["generator"].is_string()) fail(file, "\"generator\" must be a string");
+        std::error_code ec;
+        if (!fs::exists(scene.mesh_path, ec)) {
+            fail(scene.mesh_path.string(),
+                 fmt::format("no such file: this scene's mesh is generated on demand, by "
+                             "`python3 {}` (or `make scenes`)",
+                             (path.parent_path() / j["generator"].get<std::string>()).string()));
+        }
+    }
     if (j.contains("views")) scene.views = parse_views(j["views"], file);
     if (j.contains("solver")) {
         // Checked, key by key, by the engine's settings table where a command applies them.
