@@ -53,8 +53,17 @@ test-sanitize: deps
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -L fuzz
 
-bench: build scenes
-	$(BUILD)/hmcr_bench
+# The oracle table, then the scaling study on office instances of 10^2 ... 10^6 patches:
+# bench/results.json (every row) and bench/scaling.png (the curves).
+BENCH_SCENES := $(BUILD)/bench-scenes
+bench: build scenes $(BENCH_SCENES)/office-100k.obj
+	$(BUILD)/hmcr_bench --results bench/results.json --scaling $(BENCH_SCENES)
+
+$(BENCH_SCENES)/office-100k.obj: scenes/office/generate.py
+	python3 scenes/office/generate.py --bays 1 --tile 1.6 --name office-100 --out $(BENCH_SCENES)
+	python3 scenes/office/generate.py --bays 2 --tile 0.4 --name office-1k --out $(BENCH_SCENES)
+	python3 scenes/office/generate.py --bays 4 --tile 0.2 --name office-10k --out $(BENCH_SCENES)
+	python3 scenes/office/generate.py --bays 13 --tile 0.2 --name office-100k --out $(BENCH_SCENES)
 
 # Scenes too large for git, generated on demand by their scripts (about 30 s).
 scenes: scenes/office/office.obj

@@ -4,7 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
+#include <vector>
 #include <chrono>
 #include <functional>
 #include <memory>
@@ -16,55 +16,21 @@
 namespace hmcr::bench {
 namespace {
 
-double median_of_3(const std::function<void()>& run) {
-    std::array<double, 3> t{};
+constexpr std::uint64_t kChunk = std::uint64_t(1) << 22;
+
+double median_of(int runs, const std::function<void()>& run) {
+    std::vector<double> t(std::size_t(runs), 0.0);
     for (double& s : t) {
         const auto start = std::chrono::steady_clock::now();
         run();
         s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     std::sort(t.begin(), t.end());
-    return t[1];
+    return t[t.size() / 2];
 }
 
-}  // namespace
-
-std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n) {
-    std::vector<double> cumulative;
-    double total = 0;
-    for (const Patch& p : set.patches) cumulative.push_back(total += p.area);
-    std::vector<Ray> rays(n);
-    Rng rng(1234, 0);
-    for (Ray& r : rays) {
-        const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), rng.uniform() * total);
-        const Patch& p = set.patches[std::min<std::size_t>(it - cumulative.begin(),
-                                                           set.patches.size() - 1)];
-        r.origin = p.point(sample_element(p, Domain::root(), rng.uniform(), rng.uniform()));
-        r.direction = sample_cosine_hemisphere(p.normal, rng.uniform(), rng.uniform());
-    }
-    return rays;
-}
-
-std::vector<Segment> pair_segments(const Hierarchy& h, std::uint64_t n_pairs, int lines) {
-    std::vector<const Element*> leaves;
-    h.for_each_leaf([&](const Element& e) { leaves.push_back(&e); });
-    std::vector<Segment> out;
-    out.reserve(n_pairs * std::uint64_t(lines));
-    Rng rng(4321, 0);
-    auto point_on = [&](const Element& e) {
-        const Patch& p = h.patch(e);
-        return p.point(sample_element(p, e.domain, rng.uniform(), rng.uniform()));
-    };
-    for (std::uint64_t k = 0; k < n_pairs; ++k) {
-        const Element& a = *leaves[std::size_t(rng.uniform() * double(leaves.size()))];
-        const Element& b = *leaves[std::size_t(rng.uniform() * double(leaves.size()))];
-        for (int l = 0; l < lines; ++l) out.push_back({point_on(a), point_on(b)});
-    }
-    return out;
-}
-
-double first_hit_seconds(const EmbreeScene& scene, const std::vector<Ray>& rays) {
-    return median_of_3([&] {
+double trace_first_hits(const EmbreeScene& scene, const std::vector<Ray>& rays, int runs) {
+    return median_of(runs, [&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 4096), [&](auto r) {
             set_tracing_float_mode();
             for (std::size_t k = r.begin(); k < r.end(); ++k) {
@@ -74,10 +40,10 @@ double first_hit_seconds(const EmbreeScene& scene, const std::vector<Ray>& rays)
     });
 }
 
-double occlusion_seconds(const EmbreeScene& scene, const std::vector<Segment>& segments,
-                         int lines) {
+double trace_occlusions(const EmbreeScene& scene, const std::vector<Segment>& segments, int lines,
+                        int runs) {
     const std::size_t pairs = segments.size() / std::size_t(lines);
-    return median_of_3([&] {
+    return median_of(runs, [&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs, 1024), [&](auto r) {
             set_tracing_float_mode();
             const std::size_t n = std::size_t(lines);
@@ -93,6 +59,68 @@ double occlusion_seconds(const EmbreeScene& scene, const std::vector<Segment>& s
             }
         });
     });
+}
+
+}  // namespace
+
+std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream) {
+    std::vector<double> cumulative;
+    double total = 0;
+    for (const Patch& p : set.patches) cumulative.push_back(total += p.area);
+    std::vector<Ray> rays(n);
+    Rng rng(1234, stream);
+    for (Ray& r : rays) {
+        const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), rng.uniform() * total);
+        const Patch& p = set.patches[std::min<std::size_t>(it - cumulative.begin(),
+                                                           set.patches.size() - 1)];
+        r.origin = p.point(sample_element(p, Domain::root(), rng.uniform(), rng.uniform()));
+        r.direction = sample_cosine_hemisphere(p.normal, rng.uniform(), rng.uniform());
+    }
+    return rays;
+}
+
+std::vector<Segment> pair_segments(const Hierarchy& h, std::uint64_t n_pairs, int lines,
+                                   std::uint64_t stream) {
+    std::vector<const Element*> leaves;
+    h.for_each_leaf([&](const Element& e) { leaves.push_back(&e); });
+    std::vector<Segment> out;
+    out.reserve(n_pairs * std::uint64_t(lines));
+    Rng rng(4321, stream);
+    auto point_on = [&](const Element& e) {
+        const Patch& p = h.patch(e);
+        return p.point(sample_element(p, e.domain, rng.uniform(), rng.uniform()));
+    };
+    for (std::uint64_t k = 0; k < n_pairs; ++k) {
+        const Element& a = *leaves[std::size_t(rng.uniform() * double(leaves.size()))];
+        const Element& b = *leaves[std::size_t(rng.uniform() * double(leaves.size()))];
+        for (int l = 0; l < lines; ++l) out.push_back({point_on(a), point_on(b)});
+    }
+    return out;
+}
+
+double first_hit_seconds(const EmbreeScene& scene, const std::vector<Ray>& rays) {
+    return trace_first_hits(scene, rays, 3);
+}
+
+double occlusion_seconds(const EmbreeScene& scene, const std::vector<Segment>& segments,
+                         int lines) {
+    return trace_occlusions(scene, segments, lines, 3);
+}
+
+double solve_floor_seconds(const EmbreeScene& scene, const Hierarchy& h, std::uint64_t rays,
+                           std::uint64_t lines_cast, int lines) {
+    const int runs = rays + lines_cast > kChunk ? 1 : 3;
+    double seconds = 0;
+    for (std::uint64_t done = 0, k = 0; done < rays; done += kChunk, ++k) {
+        const auto chunk = incoherent_rays(h.patch_set(), std::min(kChunk, rays - done), k);
+        seconds += trace_first_hits(scene, chunk, runs);
+    }
+    const std::uint64_t pairs = lines_cast / std::uint64_t(lines), chunk_pairs = kChunk / lines;
+    for (std::uint64_t done = 0, k = 0; done < pairs; done += chunk_pairs, ++k) {
+        const auto chunk = pair_segments(h, std::min(chunk_pairs, pairs - done), lines, k);
+        seconds += trace_occlusions(scene, chunk, lines, runs);
+    }
+    return seconds;
 }
 
 }  // namespace hmcr::bench

@@ -3,24 +3,31 @@
 // work measured in the same run: the same number of incoherent first-hit rays plus, for the
 // line-based oracles, the same number of occlusion lines, cast N_s at a time between random
 // leaf pairs of the solution (bench/embree_floor.h). floor_x = hmcr shooting time / floor time;
-// 1 would mean refinement, sampling and deposits cost nothing (issue 3's target for kl: 2).
+// 1 would mean refinement, sampling and deposits cost nothing.
+//
+// Then the scaling study (bench/scaling.h), each point in a process of its own so that its peak
+// memory is its own. Every row, both kinds, goes to --results (bench/results.json).
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
+#include <fmt/format.h>
+
+#include <cstring>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
-#include "bench/embree_floor.h"
-#include "meshes/scene.h"
+#include "bench/bench_row.h"
+#include "bench/scaling.h"
+#include "common/atomic_file.h"
 #include "oracles/registry.h"
-#include "radiosity/solver.h"
 
 namespace hmcr::bench {
 namespace {
 
 constexpr std::uint64_t kRays = 2'684'000;
-constexpr int kLines = 10;
 
 // Epsilon for about 19,000 leaves at kRays, N_s = 10, seed 1 (found by bisection on log eps).
 const std::map<std::pair<std::string, std::string>, double> kEpsilon = {
@@ -33,52 +40,55 @@ const std::map<std::pair<std::string, std::string>, double> kEpsilon = {
     {{"cube-room", "hl"}, 1.14e-05},    {{"cube-room", "vt"}, 1.19e-04},
 };
 
-void bench_solve(benchmark::State& state, const std::string& scene_name, const std::string& oracle) {
-    const int threads = int(state.range(0));
-    const Scene scene = load_scene(scene_name);
-    const PatchSet set = build_patch_set(scene.mesh);
-    const EmbreeScene embree(set.patches);
-    const std::vector<Ray> rays = incoherent_rays(set, kRays);
+std::vector<nlohmann::json> g_rows;
+
+void bench_solve(benchmark::State& state, const std::string& scene, const std::string& oracle) {
+    RowSpec spec{scene, oracle, kEpsilon.at({scene, oracle}), kRays, int(state.range(0))};
     for (auto _ : state) {
-        SolverOptions o;
-        o.oracle = oracle;
-        o.epsilon = kEpsilon.at({scene_name, oracle});
-        o.rays = kRays;
-        o.lines = kLines;
-        o.threads = threads;
-        const Solution sol = solve(scene.mesh, o);
-        const SolveStats& st = sol.stats;
-        state.SetIterationTime(st.shooting_seconds);
-        tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
-        double floor = first_hit_seconds(embree, rays);
-        if (st.lines_cast > 0) {
-            const auto segments = pair_segments(*sol.hierarchy, st.lines_cast / kLines, kLines);
-            floor += occlusion_seconds(embree, segments, kLines);
-        }
-        const double lookups = double(st.cache_hits + st.oracle_evaluations);
-        state.counters["leaves"] = double(st.leaves);
-        state.counters["rays/s"] = double(st.rays) / st.shooting_seconds;
-        state.counters["evals"] = double(st.oracle_evaluations);
-        state.counters["lines"] = double(st.lines_cast);
-        state.counters["hit_rate"] = lookups > 0 && st.cache_capacity ? st.cache_hits / lookups : 0;
-        state.counters["oracle_cpu_s"] = st.oracle_seconds;
-        state.counters["pushpull_s"] = st.push_pull_seconds;
-        state.counters["floor_s"] = floor;
-        state.counters["floor_x"] = st.shooting_seconds / floor;
-        state.counters["tree+cache_MiB"] = double(st.hierarchy_bytes + st.cache_bytes) / (1 << 20);
+        const RowResult r = run_row(spec);
+        state.SetIterationTime(r.shooting_seconds);
+        state.counters["leaves"] = double(r.leaves);
+        state.counters["rays/s"] = double(r.rays) / r.shooting_seconds;
+        state.counters["evals"] = double(r.oracle_evaluations);
+        state.counters["lines"] = double(r.lines_cast);
+        state.counters["hit_rate"] = r.cache_hit_rate;
+        state.counters["oracle_cpu_s"] = r.oracle_seconds;
+        state.counters["floor_s"] = r.floor_seconds;
+        state.counters["floor_x"] = r.floor_x();
+        state.counters["tree+cache_MiB"] = double(r.solver_bytes) / (1 << 20);
+        nlohmann::json row = to_json(r);
+        row["study"] = "oracles";
+        g_rows.push_back(row);
     }
+}
+
+// Removes "--NAME VALUE" from argv (before Google Benchmark sees it); "" when absent.
+std::string take_flag(int& argc, char** argv, const char* name) {
+    for (int k = 1; k + 1 < argc; ++k) {
+        if (std::strcmp(argv[k], name) != 0) continue;
+        std::string value = argv[k + 1];
+        for (int j = k; j + 2 < argc + 1; ++j) argv[j] = argv[j + 2];
+        argc -= 2;
+        return value;
+    }
+    return "";
 }
 
 }  // namespace
 }  // namespace hmcr::bench
 
 int main(int argc, char** argv) {
+    using namespace hmcr::bench;
+    // A scaling point, run by the scaling study in a process of its own.
+    if (argc == 7 && std::strcmp(argv[1], "--row") == 0) return run_row_process(argv + 2);
+    const std::string results = take_flag(argc, argv, "--results");
+    const std::string scaling = take_flag(argc, argv, "--scaling");
     for (const char* scene : {"cornell", "cube-room"}) {
         for (const hmcr::Oracle* o : hmcr::all_oracles()) {
             const std::string oracle(o->name());
-            if (!hmcr::bench::kEpsilon.count({scene, oracle})) continue;
-            benchmark::RegisterBenchmark((std::string(scene) + "/" + oracle).c_str(),
-                                         hmcr::bench::bench_solve, std::string(scene), oracle)
+            if (!kEpsilon.count({scene, oracle})) continue;
+            benchmark::RegisterBenchmark((std::string(scene) + "/" + oracle).c_str(), bench_solve,
+                                         std::string(scene), oracle)
                 ->Arg(1)
                 ->Arg(2)
                 ->ArgName("threads")
@@ -90,4 +100,13 @@ int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
+    if (!scaling.empty()) {
+        const std::filesystem::path plot =
+            std::filesystem::path(results.empty() ? "." : results).parent_path() / "scaling.png";
+        for (nlohmann::json& row : run_scaling_study(argv[0], scaling, plot)) g_rows.push_back(row);
+    }
+    if (!results.empty()) {
+        hmcr::write_text_atomically(results, nlohmann::json{{"rows", g_rows}}.dump(2) + "\n");
+        fmt::print("bench: {} rows in {}\n", g_rows.size(), results);
+    }
 }

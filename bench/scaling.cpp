@@ -1,0 +1,148 @@
+#include "bench/scaling.h"
+
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "studies/montage.h"
+#include "studies/plot.h"
+#include "viz/image.h"
+
+extern char** environ;
+
+namespace hmcr::bench {
+namespace {
+
+constexpr const char* kOracle = "kl";
+constexpr std::uint64_t kRays = 2'684'000;
+
+struct Point {
+    std::string study, scene;
+    std::uint64_t rays;
+    int threads;
+};
+
+// Runs `self --row ...` and returns its JSON row with the child's own peak memory.
+nlohmann::json run_point(const std::string& self, const Point& p) {
+    const std::string rays = std::to_string(p.rays), threads = std::to_string(p.threads);
+    std::vector<std::string> args = {self, "--row", p.scene, kOracle, "nan", rays, threads};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    int out[2];
+    if (pipe(out) != 0) throw std::runtime_error("pipe failed");
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
+    posix_spawn_file_actions_addclose(&actions, out[0]);
+    pid_t pid = 0;
+    const int spawned = posix_spawn(&pid, self.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    close(out[1]);
+    if (spawned != 0) throw std::runtime_error("cannot run " + self);
+    std::string text;
+    char buffer[4096];
+    for (ssize_t n; (n = read(out[0], buffer, sizeof buffer)) > 0;) text.append(buffer, std::size_t(n));
+    close(out[0]);
+    int status = 0;
+    rusage usage{};
+    wait4(pid, &status, 0, &usage);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        throw std::runtime_error(fmt::format("scaling point {} {} failed", p.scene, rays));
+    }
+    nlohmann::json row = nlohmann::json::parse(text);
+    row["study"] = p.study;
+    row["peak_bytes"] = std::uint64_t(usage.ru_maxrss) * 1024;  // the child's whole life
+    return row;
+}
+
+// The exponent b of y ~ x^b through the first and last points.
+double growth(const std::vector<nlohmann::json>& rows, const char* x, const char* y) {
+    const auto& a = rows.front();
+    const auto& b = rows.back();
+    return std::log(double(b[y]) / double(a[y])) / std::log(double(b[x]) / double(a[x]));
+}
+
+PlotSeries series(const std::vector<nlohmann::json>& rows, const std::string& name, const char* x,
+                  const std::function<double(const nlohmann::json&)>& y) {
+    PlotSeries s{name, {}};
+    for (const auto& r : rows) s.points.push_back({double(r[x]), y(r)});
+    return s;
+}
+
+}  // namespace
+
+std::vector<nlohmann::json> run_scaling_study(const std::string& self,
+                                              const std::filesystem::path& scenes,
+                                              const std::filesystem::path& plot) {
+    std::vector<Point> points;
+    for (const char* size : {"100", "1k", "10k", "100k"}) {
+        points.push_back({"patches", (scenes / fmt::format("office-{}.obj", size)).string(), kRays, 2});
+    }
+    points.push_back({"patches", "office", kRays, 2});
+    for (std::uint64_t rays : {std::uint64_t(1'000'000), std::uint64_t(10'000'000),
+                               std::uint64_t(100'000'000)}) {
+        points.push_back({"rays", "office", rays, 2});
+    }
+    for (int threads : {1, 2}) {
+        points.push_back({"threads", (scenes / "office-100k.obj").string(), kRays, threads});
+    }
+    fmt::print("\nscaling study: {} on the office, each point in its own process\n", kOracle);
+    fmt::print("{:>8} {:>9} {:>10} {:>7} {:>9} {:>8} {:>8} {:>9} {:>9} {:>7} {:>8}\n", "study",
+               "patches", "rays", "threads", "leaves", "load s", "setup s", "shoot s", "floor s",
+               "x floor", "peak MB");
+    std::vector<nlohmann::json> rows;
+    for (const Point& p : points) {
+        const nlohmann::json r = run_point(self, p);
+        fmt::print("{:>8} {:>9} {:>10} {:>7} {:>9} {:>8.2f} {:>8.2f} {:>9.2f} {:>9.3f} {:>7.2f} {:>8.0f}\n",
+                   p.study, int(r["patches"]), std::uint64_t(r["rays"]), p.threads, int(r["leaves"]),
+                   double(r["load_seconds"]), double(r["setup_seconds"]), double(r["seconds"]),
+                   double(r["floor_seconds"]), double(r["x_floor"]),
+                   double(r["peak_bytes"]) / 1e6);
+        rows.push_back(r);
+    }
+    auto of = [&](const std::string& study) {
+        std::vector<nlohmann::json> out;
+        for (const auto& r : rows) {
+            if (r["study"] == study) out.push_back(r);
+        }
+        return out;
+    };
+    const auto by_patches = of("patches"), by_rays = of("rays"), by_threads = of("threads");
+    fmt::print("growth: rays/s ~ patches^{:.2f}, x floor ~ patches^{:.2f}; shooting s ~ rays^{:.2f}; "
+               "peak memory ~ elements^{:.2f} (patches study); 2-thread speed-up {:.2f}\n",
+               growth(by_patches, "patches", "rays_per_second"),
+               growth(by_patches, "patches", "x_floor"), growth(by_rays, "rays", "seconds"),
+               growth(by_patches, "elements", "peak_bytes"),
+               double(by_threads[0]["seconds"]) / double(by_threads[1]["seconds"]));
+    auto floor_rate = [](const nlohmann::json& r) {
+        return double(r["rays"]) / double(r["floor_seconds"]);
+    };
+    auto rate = [](const nlohmann::json& r) { return double(r["rays_per_second"]); };
+    LogLogPlot a{"patches", "rays per second", {}};
+    a.series = {series(by_patches, "hmcr kl", "patches", rate),
+                series(by_patches, "Embree floor", "patches", floor_rate)};
+    LogLogPlot b{"patches", "x floor", {series(by_patches, "hmcr kl", "patches", [](const auto& r) {
+                     return double(r["x_floor"]);
+                 })}};
+    LogLogPlot c{"rays", "seconds", {}};
+    c.series = {series(by_rays, "hmcr kl", "rays", [](const auto& r) { return double(r["seconds"]); }),
+                series(by_rays, "Embree floor", "rays",
+                       [](const auto& r) { return double(r["floor_seconds"]); })};
+    LogLogPlot d{"elements", "peak memory (MB)", {}};
+    d.series = {series(by_patches, "patches study", "elements",
+                       [](const auto& r) { return double(r["peak_bytes"]) / 1e6; }),
+                series(by_rays, "rays study", "elements",
+                       [](const auto& r) { return double(r["peak_bytes"]) / 1e6; })};
+    write_png(plot, montage({draw_log_log(a), draw_log_log(b), draw_log_log(c), draw_log_log(d)}, 2, 1));
+    fmt::print("scaling plots: {}\n", plot.string());
+    return rows;
+}
+
+}  // namespace hmcr::bench

@@ -1,0 +1,21 @@
+// The scaling study of `make bench` (issue 12): kl on the generated office at 10^2 ... 10^6
+// patches (2,684,000 rays), on the 10^6-patch office at 10^6 ... 10^8 rays, and on 1 and 2
+// threads, each point in a fresh process (`hmcr_bench --row`) whose peak memory the kernel
+// reports. Prints a table and the growth rate of each curve, and draws them (PNG).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace hmcr::bench {
+
+// `self`: this program; `scenes`: the folder of the generated office instances (make bench);
+// `plot`: the PNG to write.
+std::vector<nlohmann::json> run_scaling_study(const std::string& self,
+                                              const std::filesystem::path& scenes,
+                                              const std::filesystem::path& plot);
+
+}  // namespace hmcr::bench
