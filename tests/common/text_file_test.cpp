@@ -31,6 +31,12 @@ TEST(ReadJsonFile, ASyntaxErrorIsOneShortLineWithFileAndLine) {
     EXPECT_NE(what.find("...'"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     EXPECT_LT(what.size(), 400u) << what;
+    // The token in the middle of the message, before "; expected ...".
+    const auto key = dir.write("key.json", "{\n  \"" + std::string(3000, '\x7f') + "\xff\": 1}");
+    const std::string middle = error_of(key);
+    EXPECT_NE(middle.find("key.json:2: "), std::string::npos) << middle;
+    EXPECT_NE(middle.find("...'; expected"), std::string::npos) << middle;
+    EXPECT_LT(middle.size(), 400u) << middle;
 }
 
 }  // namespace
