@@ -133,6 +133,11 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
     type.replace(type.find("type=\"Float64\""), 15, "type=\"Float65\"");
     m_temp.write("type.vtp", type);
     expect_refused("type.vtp", "type.vtp: damaged VTK file: an array of unknown type 'Float65'");
+    // An array without a type: another null dereference in VTK (fuzzer).
+    std::string untyped = bytes;
+    untyped.replace(untyped.find("type=\"Float64\""), 14, "Numi=\"Float64\"");
+    m_temp.write("untyped.vtp", untyped);
+    expect_refused("untyped.vtp", "untyped.vtp: damaged VTK file: an array without a type");
     // VTK reads offset="19i" as 19, inside another array: a 2.7 GB header and 26 s (fuzzer).
     // Every spelling XML allows is checked: single quotes, spaces around '='.
     const std::size_t offset = bytes.find("offset=\"", bytes.find("offset=\"") + 1);
