@@ -83,6 +83,11 @@ std::vector<Segment> pair_segments(const Hierarchy& h, std::uint64_t n_pairs, in
                                    std::uint64_t stream) {
     std::vector<const Element*> leaves;
     h.for_each_leaf([&](const Element& e) { leaves.push_back(&e); });
+    return pair_segments(h, leaves, n_pairs, lines, stream);
+}
+
+std::vector<Segment> pair_segments(const Hierarchy& h, const std::vector<const Element*>& leaves,
+                                   std::uint64_t n_pairs, int lines, std::uint64_t stream) {
     std::vector<Segment> out;
     out.reserve(n_pairs * std::uint64_t(lines));
     Rng rng(4321, stream);
@@ -116,8 +121,10 @@ double solve_floor_seconds(const EmbreeScene& scene, const Hierarchy& h, std::ui
         seconds += trace_first_hits(scene, chunk, runs);
     }
     const std::uint64_t pairs = lines_cast / std::uint64_t(lines), chunk_pairs = kChunk / lines;
+    std::vector<const Element*> leaves;
+    if (pairs > 0) h.for_each_leaf([&](const Element& e) { leaves.push_back(&e); });
     for (std::uint64_t done = 0, k = 0; done < pairs; done += chunk_pairs, ++k) {
-        const auto chunk = pair_segments(h, std::min(chunk_pairs, pairs - done), lines, k);
+        const auto chunk = pair_segments(h, leaves, std::min(chunk_pairs, pairs - done), lines, k);
         seconds += trace_occlusions(scene, chunk, lines, runs);
     }
     return seconds;

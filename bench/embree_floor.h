@@ -24,6 +24,9 @@ std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint
 // points of each pair (consecutive in the result): what a line-based oracle casts.
 std::vector<Segment> pair_segments(const Hierarchy& h, std::uint64_t n_pairs, int lines,
                                    std::uint64_t stream = 0);
+// The same from the leaves, listed once (a floor of many chunks walked the hierarchy per chunk).
+std::vector<Segment> pair_segments(const Hierarchy& h, const std::vector<const Element*>& leaves,
+                                   std::uint64_t n_pairs, int lines, std::uint64_t stream);
 
 // Median of 3 timings, with all the threads the caller's TBB arena allows.
 double first_hit_seconds(const EmbreeScene& scene, const std::vector<Ray>& rays);
