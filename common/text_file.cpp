@@ -22,15 +22,13 @@ std::string plain_message(const std::exception& e) {
     const std::size_t tag_end = what.rfind("] ", what.find(' '));
     std::string out =
         tag_end == std::string::npos || what.front() != '[' ? what : what.substr(tag_end + 2);
-    // "...; last read: 'TOKEN'" or "...; last read: 'TOKEN'; expected ..." (found by the fuzzer)
-    constexpr std::string_view kLastRead = "last read: '", kExpected = "'; expected";
+    // Everything after "last read: '" is the token and what follows it ("'; expected ..."),
+    // and the token may itself hold "'; expected" (both found by the fuzzer): all of it is
+    // quoted, that is, cut short.
+    constexpr std::string_view kLastRead = "last read: '";
     const std::size_t token = out.find(kLastRead);
     if (token == std::string::npos) return out;
-    const std::size_t from = token + kLastRead.size();
-    std::size_t to = out.find(kExpected, from);
-    if (to == std::string::npos) to = out.back() == '\'' ? out.size() - 1 : out.size();
-    return out.substr(0, token) + "last read: " + quote(std::string_view(out).substr(from, to - from)) +
-           out.substr(std::min(out.size(), to + 1));
+    return out.substr(0, token) + "last read: " + quote(std::string_view(out).substr(token + kLastRead.size()));
 }
 
 void check_readable(const fs::path& path, std::uint64_t max_bytes) {

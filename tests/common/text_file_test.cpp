@@ -31,12 +31,16 @@ TEST(ReadJsonFile, ASyntaxErrorIsOneShortLineWithFileAndLine) {
     EXPECT_NE(what.find("...'"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     EXPECT_LT(what.size(), 400u) << what;
-    // The token in the middle of the message, before "; expected ...".
-    const auto key = dir.write("key.json", "{\n  \"" + std::string(3000, '\x7f') + "\xff\": 1}");
-    const std::string middle = error_of(key);
-    EXPECT_NE(middle.find("key.json:2: "), std::string::npos) << middle;
-    EXPECT_NE(middle.find("...'; expected"), std::string::npos) << middle;
-    EXPECT_LT(middle.size(), 400u) << middle;
+    // The token before "; expected ...", and a token holding "'; expected" itself (fuzzer).
+    for (const std::string& key : {std::string(3000, '\x7f') + "\xff",
+                                   std::string(3000, '\'') + "'; expected" + std::string(3000, '\'')}) {
+        const auto path = dir.write("key.json", "{\n  \"" + key + "\n\": 1}");
+        const std::string middle = error_of(path);
+        EXPECT_NE(middle.find("key.json:2: "), std::string::npos) << middle;
+        EXPECT_NE(middle.find("last read: '"), std::string::npos) << middle;
+        EXPECT_EQ(middle.find('\n'), std::string::npos) << middle;
+        EXPECT_LT(middle.size(), 400u) << middle;
+    }
 }
 
 }  // namespace
