@@ -15,19 +15,16 @@
 namespace hmcr {
 namespace {
 
-// One polygon with welded vertex ids (equal positions share one id) and its corners.
-struct WeldedFace {
-    std::vector<int> ids;
-    std::vector<Eigen::Vector3d> corners;
-};
-
-WeldedFace welded_face(const PolygonSoup& soup, std::size_t k, const std::vector<int>& id) {
-    WeldedFace face;
+// Polygon k with welded vertex ids (equal positions share one id) and its corners, into
+// buffers the caller reuses (a million faces must not mean two million small vectors).
+void welded_face(const PolygonSoup& soup, std::size_t k, const std::vector<int>& id,
+                 std::vector<int>& ids, std::vector<Eigen::Vector3d>& corners) {
+    ids.clear();
+    corners.clear();
     for (std::uint32_t c : soup.corners(k)) {
-        face.ids.push_back(id[c]);
-        face.corners.push_back(soup.positions[c]);
+        ids.push_back(id[c]);
+        corners.push_back(soup.positions[c]);
     }
-    return face;
 }
 
 // Reflectance 1 is refused only by a strict load (the repairs accepted it with a warning).
@@ -65,28 +62,29 @@ void check_default_material(const LoadOptions& options, const std::string& path)
 }
 
 // Why a duplicate has no safe repair (the repairs drop one in the same order and material).
-std::string duplicate_detail(const PolygonSoup& soup, const std::vector<WeldedFace>& faces,
+std::string duplicate_detail(const PolygonSoup& soup, const std::vector<int>& id,
                              std::size_t later, std::size_t earlier) {
-    const auto cyclic = [](std::vector<int> ids) {
+    const auto cyclic = [&](std::size_t k) {
+        std::vector<int> ids;
+        for (std::uint32_t c : soup.corners(k)) ids.push_back(id[c]);
         std::rotate(ids.begin(), std::min_element(ids.begin(), ids.end()), ids.end());
         return ids;
     };
     if (soup.material[later] != soup.material[earlier]) return ", with another material";
-    if (cyclic(faces[later].ids) != cyclic(faces[earlier].ids)) return ", facing the other way";
+    if (cyclic(later) != cyclic(earlier)) return ", facing the other way";
     return "";
 }
 
-void check_duplicates(const PolygonSoup& soup, const std::vector<WeldedFace>& faces) {
-    std::vector<std::vector<int>> ids;
-    for (const WeldedFace& f : faces) ids.push_back(f.ids);
-    if (auto duplicate = find_duplicate_face(ids)) {
+void check_duplicates(const PolygonSoup& soup, const std::vector<int>& id,
+                      const std::vector<FaceKey>& keys) {
+    if (auto duplicate = find_duplicate_face(keys)) {
         const auto [later, earlier] = *duplicate;
         const SourcePlace a = soup.place[later], b = soup.place[earlier];
         const std::string earlier_at =
             a.file == b.file ? fmt::format("on line {}", b.line) : "at " + soup.where(b);
         throw InputError(soup.where(a), fmt::format("duplicate face: same vertices as the face {}{}",
                                                     earlier_at,
-                                                    duplicate_detail(soup, faces, later, earlier)));
+                                                    duplicate_detail(soup, id, later, earlier)));
     }
 }
 
@@ -106,12 +104,14 @@ private:
 
 PatchMesh::Point to_point(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 
-OpenMesh::FaceHandle add_patch(PatchMesh& mesh, const WeldedFace& face,
-                               std::vector<OpenMesh::VertexHandle>& handles) {
-    std::vector<OpenMesh::VertexHandle> corners;
-    for (std::size_t i = 0; i < face.ids.size(); ++i) {
-        OpenMesh::VertexHandle& vh = handles[std::size_t(face.ids[i])];
-        if (!vh.is_valid()) vh = mesh.add_vertex(to_point(face.corners[i]));
+OpenMesh::FaceHandle add_patch(PatchMesh& mesh, const std::vector<int>& ids,
+                               const std::vector<Eigen::Vector3d>& points,
+                               std::vector<OpenMesh::VertexHandle>& handles,
+                               std::vector<OpenMesh::VertexHandle>& corners) {
+    corners.clear();
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        OpenMesh::VertexHandle& vh = handles[std::size_t(ids[i])];
+        if (!vh.is_valid()) vh = mesh.add_vertex(to_point(points[i]));
         corners.push_back(vh);
     }
     OpenMesh::FaceHandle fh = mesh.add_face(corners);
@@ -120,22 +120,28 @@ OpenMesh::FaceHandle add_patch(PatchMesh& mesh, const WeldedFace& face,
     // neighbour with the opposite orientation). We keep the geometry anyway: the face gets its
     // own copies of its vertices, so it is simply not connected to its neighbours.
     for (std::size_t i = 0; i < corners.size(); ++i) {
-        corners[i] = mesh.add_vertex(to_point(face.corners[i]));
+        corners[i] = mesh.add_vertex(to_point(points[i]));
     }
     return mesh.add_face(corners);
 }
 
-PatchMesh make_mesh(const PolygonSoup& soup, const std::vector<WeldedFace>& faces,
-                    const std::vector<Material>& materials, std::size_t vertex_count) {
+// `materials[material_of[f]]` is face f's material.
+PatchMesh make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
+                    const std::vector<Material>& materials,
+                    const std::vector<std::uint32_t>& material_of, std::size_t vertex_count) {
     PatchMesh mesh;
+    mesh.reserve(vertex_count, soup.corner_ids.size() / 2, soup.polygon_count());  // closed: exact
     auto reflectance = reflectance_prop(mesh);
     auto emission = emission_prop(mesh);
     auto source_line = source_line_prop(mesh);
-    std::vector<OpenMesh::VertexHandle> handles(vertex_count);
+    std::vector<OpenMesh::VertexHandle> handles(vertex_count), corners;
+    std::vector<int> ids;
+    std::vector<Eigen::Vector3d> points;
     QuietOmerr quiet;
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const OpenMesh::FaceHandle fh = add_patch(mesh, faces[f], handles);
-        const Material& m = materials[f];
+    for (std::size_t f = 0; f < soup.polygon_count(); ++f) {
+        welded_face(soup, f, id, ids, points);
+        const OpenMesh::FaceHandle fh = add_patch(mesh, ids, points, handles, corners);
+        const Material& m = materials[material_of[f]];
         reflectance[fh] = OpenMesh::Vec3d(m.kd.x(), m.kd.y(), m.kd.z());
         const Eigen::Vector3d e = std::numbers::pi * m.ke;
         emission[fh] = OpenMesh::Vec3d(e.x(), e.y(), e.z());
@@ -165,22 +171,34 @@ PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options) 
     check_default_material(options, top);
     std::size_t vertex_count = 0;
     const std::vector<int> id = weld(soup.positions, vertex_count);
-    std::vector<WeldedFace> faces;
+    // Each distinct material is resolved and checked once (at its first face, where an error
+    // is reported), then referred to by index.
     std::vector<Material> materials;
+    std::vector<std::int64_t> resolved(soup.materials.size() + 1, -1);  // by soup id + 1
+    std::vector<std::uint32_t> material_of(soup.polygon_count());
+    std::vector<FaceKey> keys(soup.polygon_count());
+    std::vector<int> ids;
+    std::vector<Eigen::Vector3d> corners;
     for (std::size_t k = 0; k < soup.polygon_count(); ++k) {
-        faces.push_back(welded_face(soup, k, id));
-        if (auto error = check_face_geometry(faces.back().corners, faces.back().ids)) {
+        welded_face(soup, k, id, ids, corners);
+        if (auto error = check_face_geometry(corners, ids)) {
             throw InputError(soup.where(soup.place[k]), *error);
         }
-        materials.push_back(face_material(soup, k, options));
+        keys[k] = face_key(ids);
+        std::int64_t& slot = resolved[std::size_t(soup.material[k] + 1)];
+        if (slot < 0) {
+            slot = std::int64_t(materials.size());
+            materials.push_back(face_material(soup, k, options));
+        }
+        material_of[k] = std::uint32_t(slot);
     }
-    check_duplicates(soup, faces);
+    check_duplicates(soup, id, keys);
     double emitted = 0;
-    for (const Material& m : materials) emitted += m.ke.sum();
+    for (std::uint32_t m : material_of) emitted += materials[m].ke.sum();
     if (!(emitted > 0) && options.use == SceneUse::solve) {
         throw InputError(top, "no face emits light (give a material used by a face Ke > 0)");
     }
-    return make_mesh(soup, faces, materials, vertex_count);
+    return make_mesh(soup, id, materials, material_of, vertex_count);
 }
 
 }  // namespace hmcr

@@ -6,8 +6,9 @@
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
-#include <map>
+#include <limits>
 #include <set>
+#include <unordered_map>
 
 #include "meshes/triangulate.h"
 #include "meshes/validation.h"
@@ -106,16 +107,24 @@ std::optional<std::vector<Corners>> split_quad(const Corners& c) {
     return std::nullopt;
 }
 
-std::vector<Corners> ear_clip(const Corners& c, const std::string& where) {
+// The place of a polygon, formatted only when a repair or an error names it (a million
+// faces must not mean a million formatted "file:line" strings).
+struct Where {
+    const PolygonSoup& soup;
+    SourcePlace place;
+    operator std::string() const { return soup.where(place); }
+};
+
+std::vector<Corners> ear_clip(const Corners& c, const Where& where) {
     const Triangulation t = triangulate(c.p, c.ids);
-    if (!t.error.empty()) throw InputError(where, t.error);
+    if (!t.error.empty()) throw InputError(std::string(where), t.error);
     std::vector<Corners> out;
     for (const CornerTriangle& tri : t.triangles) out.push_back(c.pick({tri[0], tri[1], tri[2]}));
     return out;
 }
 
 // What one polygon becomes, and the repairs that took.
-std::vector<Corners> repair_polygon(Corners c, const std::string& where, RepairReport& report) {
+std::vector<Corners> repair_polygon(Corners c, const Where& where, RepairReport& report) {
     if (remove_degenerate_corners(c)) {
         if (c.size() < 3) {
             report.add(RepairKind::degenerate_dropped, where);
@@ -126,7 +135,7 @@ std::vector<Corners> repair_polygon(Corners c, const std::string& where, RepairR
     if (c.size() == 3 || (c.size() == 4 && !check_face_geometry(c.p, c.ids))) return {c};
     if (c.size() == 4 && !quad_is_planar(c.p)) {
         std::optional<std::vector<Corners>> halves = split_quad(c);
-        if (!halves) throw InputError(where, "self-intersecting quad: its edges cross");
+        if (!halves) throw InputError(std::string(where), "self-intersecting quad: its edges cross");
         report.add(RepairKind::quad_split, where);
         return *halves;
     }
@@ -134,13 +143,24 @@ std::vector<Corners> repair_polygon(Corners c, const std::string& where, RepairR
     return ear_clip(c, where);
 }
 
-// The ids in the same cyclic order, starting at the smallest: equal for the same face written
-// from another corner, different for the reversed face.
-std::vector<int> cyclic_key(const std::vector<int>& ids) {
-    std::vector<int> key(ids);
-    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+// The ids (3 or 4 after the repairs) in the same cyclic order, starting at the smallest, then
+// INT_MAX: equal for the same face written from another corner, not for the reversed face.
+FaceKey cyclic_key(const std::vector<int>& ids) {
+    FaceKey key;
+    key.fill(std::numeric_limits<int>::max());
+    const std::size_t n = std::min<std::size_t>(ids.size(), 4);
+    const std::size_t first = std::size_t(std::min_element(ids.begin(), ids.begin() + n) - ids.begin());
+    for (std::size_t i = 0; i < n; ++i) key[i] = ids[(first + i) % n];
     return key;
 }
+
+struct FaceKeyHash {
+    std::size_t operator()(const FaceKey& k) const {
+        std::uint64_t h = 0;
+        for (int v : k) h = (h ^ std::uint32_t(v)) * 0x100000001b3ULL;  // FNV-style
+        return std::size_t(h ^ (h >> 29));
+    }
+};
 
 void accept_reflectance_one(PolygonSoup& soup, RepairReport& report) {
     std::vector<bool> used(soup.materials.size(), false);
@@ -169,9 +189,10 @@ RepairReport repair_soup(PolygonSoup& soup) {
     std::size_t welded_count = 0;
     const std::vector<int> welded = weld(soup.positions, welded_count);
     PolygonSoup out;
-    std::map<std::vector<int>, std::size_t> seen;  // cyclic key -> output polygon
+    std::unordered_map<FaceKey, std::size_t, FaceKeyHash> seen;  // cyclic key -> output polygon
+    seen.reserve(soup.polygon_count());
     for (std::size_t k = 0; k < soup.polygon_count(); ++k) {
-        const std::string where = soup.where(soup.place[k]);
+        const Where where{soup, soup.place[k]};
         for (const Corners& c : repair_polygon(corners_of(soup, k, welded), where, report)) {
             const auto [it, fresh] = seen.try_emplace(cyclic_key(c.ids), out.polygon_count());
             if (!fresh && out.material[it->second] == soup.material[k]) {

@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <limits>
+#include <numeric>
 #include <cmath>
 #include <map>
 
@@ -129,16 +131,31 @@ std::optional<std::string> check_face_geometry(const std::vector<Eigen::Vector3d
     return check_convex(corners);
 }
 
+FaceKey face_key(const std::vector<int>& ids) {
+    constexpr int kNone = std::numeric_limits<int>::max();
+    FaceKey key{kNone, kNone, kNone, kNone};
+    std::copy_n(ids.begin(), std::min<std::size_t>(ids.size(), 4), key.begin());
+    std::sort(key.begin(), key.end());
+    return key;
+}
+
+// Sorting (key, face) pairs finds every group of equal keys; the answer is the group whose
+// second face comes first, as a scan in face order would meet it.
 std::optional<std::pair<std::size_t, std::size_t>> find_duplicate_face(
-    const std::vector<std::vector<int>>& faces) {
-    std::map<std::vector<int>, std::size_t> seen;
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        std::vector<int> key = faces[f];
-        std::sort(key.begin(), key.end());
-        auto [it, inserted] = seen.try_emplace(std::move(key), f);
-        if (!inserted) return std::make_pair(f, it->second);
+    const std::vector<FaceKey>& faces) {
+    std::vector<std::uint32_t> order(faces.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return faces[a] != faces[b] ? faces[a] < faces[b] : a < b;
+    });
+    std::optional<std::pair<std::size_t, std::size_t>> first;
+    for (std::size_t k = 1; k < order.size(); ++k) {
+        if (faces[order[k]] != faces[order[k - 1]]) continue;
+        // order[k - 1] is the group's first face when order[k] is its second
+        if (k >= 2 && faces[order[k - 2]] == faces[order[k]]) continue;
+        if (!first || order[k] < first->first) first = std::make_pair(order[k], order[k - 1]);
     }
-    return std::nullopt;
+    return first;
 }
 
 std::optional<std::string> check_reflectance(const Material& m, bool allow_one) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -30,10 +31,15 @@ bool quad_is_planar(const std::vector<Eigen::Vector3d>& corners);
 std::optional<std::string> check_face_geometry(const std::vector<Eigen::Vector3d>& corners,
                                                const std::vector<int>& ids);
 
-// Finds the first face that uses the same set of (welded) vertices as an earlier one,
-// whatever the order or orientation. Returns {later face, earlier face}.
+// A checked face's (welded) vertex ids, sorted, INT_MAX after the last: equal for two faces on the
+// same vertices whatever their order or orientation.
+using FaceKey = std::array<int, 4>;
+FaceKey face_key(const std::vector<int>& ids);  // 3 or 4 ids
+
+// Finds the first face that uses the same set of (welded) vertices as an earlier one.
+// Returns {later face, earlier face}.
 std::optional<std::pair<std::size_t, std::size_t>> find_duplicate_face(
-    const std::vector<std::vector<int>>& faces);
+    const std::vector<FaceKey>& faces);
 
 // Checks Kd in [0, 1) (or [0, 1] when allow_one) and Ke in [0, kMaxRadiance) per channel;
 // names the material.
