@@ -34,8 +34,8 @@ TEST(ReadJsonFile, ASyntaxErrorIsOneShortLineWithFileAndLine) {
     // The token before "; expected ...", and a token holding "'; expected" itself (fuzzer).
     for (const std::string& key : {std::string(3000, '\x7f') + "\xff",
                                    std::string(3000, '\'') + "'; expected" + std::string(3000, '\'')}) {
-        const auto path = dir.write("key.json", "{\n  \"" + key + "\n\": 1}");
-        const std::string middle = error_of(path);
+        const auto file = dir.write("key.json", "{\n  \"" + key + "\n\": 1}");
+        const std::string middle = error_of(file);
         EXPECT_NE(middle.find("key.json:2: "), std::string::npos) << middle;
         EXPECT_NE(middle.find("last read: '"), std::string::npos) << middle;
         EXPECT_EQ(middle.find('\n'), std::string::npos) << middle;
