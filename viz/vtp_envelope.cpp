@@ -52,8 +52,16 @@ public:
         check_types();
         check_points();
         if (m_appended == std::string::npos) return;
-        const std::size_t data = m_bytes.find('_', m_appended);
-        if (data == std::string::npos) fail("appended data without its '_' marker");
+        // The marker is the first character after the tag and its white space, as VTK reads
+        // it: with other bytes before a '_', VTK took one of them for the marker and read every
+        // header two bytes off (a 3 GB allocation, found by the fuzzer).
+        const std::size_t tag_end = m_bytes.find('>', m_appended);
+        const std::size_t data = tag_end == std::string::npos
+                                     ? std::string::npos
+                                     : m_bytes.find_first_not_of(" \t\r\n", tag_end + 1);
+        if (data == std::string::npos || m_bytes[data] != '_') {
+            fail("appended data without its '_' marker");
+        }
         const bool compressed = !attributes("compressor").empty();
         const auto header_type = attributes("header_type");
         const std::size_t width = !header_type.empty() && header_type[0].second == "UInt64" ? 8 : 4;
