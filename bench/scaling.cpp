@@ -127,18 +127,18 @@ std::vector<nlohmann::json> run_scaling_study(const std::string& self,
     auto rate = [](const nlohmann::json& r) { return double(r["rays_per_second"]); };
     LogLogPlot a{"patches", "rays per second", {}};
     a.series = {series(by_patches, "hmcr kl", "patches", rate),
-                series(by_patches, "Embree floor", "patches", floor_rate)};
+                series(by_patches, "floor", "patches", floor_rate)};
     LogLogPlot b{"patches", "x floor", {series(by_patches, "hmcr kl", "patches", [](const auto& r) {
                      return double(r["x_floor"]);
                  })}};
     LogLogPlot c{"rays", "seconds", {}};
     c.series = {series(by_rays, "hmcr kl", "rays", [](const auto& r) { return double(r["seconds"]); }),
-                series(by_rays, "Embree floor", "rays",
+                series(by_rays, "floor", "rays",
                        [](const auto& r) { return double(r["floor_seconds"]); })};
     LogLogPlot d{"elements", "peak memory (MB)", {}};
-    d.series = {series(by_patches, "patches study", "elements",
+    d.series = {series(by_patches, "patches", "elements",
                        [](const auto& r) { return double(r["peak_bytes"]) / 1e6; }),
-                series(by_rays, "rays study", "elements",
+                series(by_rays, "rays", "elements",
                        [](const auto& r) { return double(r["peak_bytes"]) / 1e6; })};
     write_png(plot, montage({draw_log_log(a), draw_log_log(b), draw_log_log(c), draw_log_log(d)}, 2, 1));
     fmt::print("scaling plots: {}\n", plot.string());
