@@ -71,7 +71,7 @@ void check_keys(const json& object, const std::set<std::string>& known, const st
     if (!object.is_object()) fail(where, "must be a JSON object");
     for (const auto& [key, value] : object.items()) {
         if (known.count(key) == 0) {
-            fail(where, fmt::format("unknown key '{}' (known: {})", key, fmt::join(known, ", ")));
+            fail(where, fmt::format("unknown key {} (known: {})", quote(key), fmt::join(known, ", ")));
         }
     }
 }

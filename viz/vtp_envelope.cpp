@@ -48,6 +48,7 @@ public:
     }
 
     void check() const {
+        check_elements();
         check_counts();
         check_types();
         check_points();
@@ -124,6 +125,22 @@ private:
             if (!std::regex_search(element, m, type)) fail("an array without a type");
             const std::string name = m[m[1].matched ? 1 : 2].str();
             if (!std::regex_match(name, known)) fail("an array of unknown type " + quote(name));
+        }
+    }
+
+    // VTK 9.1 reads every child of FieldData, PointData, ... as an array, and dereferences
+    // null for one of another name (`<Dattr ...>`, found by the fuzzer): only the elements a
+    // .vtp holds pass (InformationKey and Value: what ParaView adds when it saves one again).
+    void check_elements() const {
+        static const std::regex element(R"(<([A-Za-z_][\w.:-]*))");
+        static const std::regex known(
+            "VTKFile|PolyData|Piece|FieldData|PointData|CellData|Points|Verts|Lines|Strips|Polys|"
+            "DataArray|Array|AppendedData|InformationKey|Value");
+        for (auto it = std::sregex_iterator(m_xml.begin(), m_xml.end(), element);
+             it != std::sregex_iterator(); ++it) {
+            if (!std::regex_match((*it)[1].str(), known)) {
+                fail("an element " + quote((*it)[1].str()) + " that no .vtp of hmcr holds");
+            }
         }
     }
 

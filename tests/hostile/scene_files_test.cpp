@@ -162,6 +162,8 @@ TEST_F(Hostile, BadSceneFilesAreRefusedWithFileAndPlace) {
         {R"({"mesh": "plates.obj", "descriptio\n": 1})", "unknown key 'descriptio\\n'"},
         {R"({"mesh": "plates.obj", "a\u001b[2Jb": 1})", "unknown key 'a\\x1b[2Jb'"},
         {R"({"mesh": "pla\ntes.obj"})", "pla\\ntes.obj: no such file"},
+        // A long key is cut short (fuzzer: a key of a thousand DEL characters).
+        {R"({"mesh": "plates.obj", ")" + std::string(2000, 'k') + R"(": 1})", "unknown key 'kkkk"},
     };
     for (const auto& [json, needle] : cases) {
         plates(kPlatesObj, kPlatesMtl, json);

@@ -144,6 +144,11 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
     marker.insert(marker.find('_', marker.find("<AppendedData")), "\xe0\xe8 ");
     m_temp.write("marker.vtp", marker);
     expect_refused("marker.vtp", "marker.vtp: damaged VTK file: appended data without its '_' marker");
+    // An element VTK reads as an array though it is none: another null dereference (fuzzer).
+    std::string element = bytes;
+    element.replace(element.find("<DataArray"), 10, "<Dattr    ");
+    m_temp.write("element.vtp", element);
+    expect_refused("element.vtp", "element.vtp: damaged VTK file: an element 'Dattr' that no .vtp of hmcr holds");
     // Points of 6 components: VTK refuses them but leaks what it read (LeakSanitizer, fuzzer).
     std::string six = bytes;
     const std::size_t points_at = six.find("NumberOfComponents=\"3\"", six.find("<Points>"));
