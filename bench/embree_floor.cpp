@@ -79,13 +79,6 @@ std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint
     return rays;
 }
 
-std::vector<Segment> pair_segments(const Hierarchy& h, std::uint64_t n_pairs, int lines,
-                                   std::uint64_t stream) {
-    std::vector<const Element*> leaves;
-    h.for_each_leaf([&](const Element& e) { leaves.push_back(&e); });
-    return pair_segments(h, leaves, n_pairs, lines, stream);
-}
-
 std::vector<Segment> pair_segments(const Hierarchy& h, const std::vector<const Element*>& leaves,
                                    std::uint64_t n_pairs, int lines, std::uint64_t stream) {
     std::vector<Segment> out;
@@ -101,15 +94,6 @@ std::vector<Segment> pair_segments(const Hierarchy& h, const std::vector<const E
         for (int l = 0; l < lines; ++l) out.push_back({point_on(a), point_on(b)});
     }
     return out;
-}
-
-double first_hit_seconds(const EmbreeScene& scene, const std::vector<Ray>& rays) {
-    return trace_first_hits(scene, rays, 3);
-}
-
-double occlusion_seconds(const EmbreeScene& scene, const std::vector<Segment>& segments,
-                         int lines) {
-    return trace_occlusions(scene, segments, lines, 3);
 }
 
 double solve_floor_seconds(const EmbreeScene& scene, const Hierarchy& h, std::uint64_t rays,

@@ -19,23 +19,16 @@ struct Segment {
 
 // Incoherent first-hit rays: area-uniform origins on the patches, cosine directions (`stream`
 // keys the random numbers, for chunks).
-std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream = 0);
-// n_pairs random pairs of leaves of a solved hierarchy, `lines` segments between uniform
-// points of each pair (consecutive in the result): what a line-based oracle casts.
-std::vector<Segment> pair_segments(const Hierarchy& h, std::uint64_t n_pairs, int lines,
-                                   std::uint64_t stream = 0);
-// The same from the leaves, listed once (a floor of many chunks walked the hierarchy per chunk).
+std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream);
+// n_pairs random pairs of `leaves` (of h), `lines` segments between uniform points of each
+// pair (consecutive in the result): what a line-based oracle casts.
 std::vector<Segment> pair_segments(const Hierarchy& h, const std::vector<const Element*>& leaves,
                                    std::uint64_t n_pairs, int lines, std::uint64_t stream);
 
-// Median of 3 timings, with all the threads the caller's TBB arena allows.
-double first_hit_seconds(const EmbreeScene& scene, const std::vector<Ray>& rays);
-double occlusion_seconds(const EmbreeScene& scene, const std::vector<Segment>& segments, int lines);
-
-// The floor of a whole solve that shot `rays` rays and cast `lines_cast` lines, N_s = lines per
-// pair: the two above, in chunks of 2^22 queries generated between timings (10^8 rays would
-// not fit in memory at once); a floor of one chunk or less is the median of 3, a longer one is
-// timed once (its length steadies it).
+// The floor of a whole solve that shot `rays` rays and cast `lines_cast` lines, N_s = lines
+// per pair: those queries, with all the threads the caller's TBB arena allows, in chunks of
+// 2^22 generated between timings (10^8 rays would not fit in memory at once); a floor of one
+// chunk or less is the median of 3, a longer one is timed once (its length steadies it).
 double solve_floor_seconds(const EmbreeScene& scene, const Hierarchy& h, std::uint64_t rays,
                            std::uint64_t lines_cast, int lines);
 
