@@ -89,11 +89,7 @@ private:
             const MgfStatement& s = file.statements[i];
             m_at = {file.index, std::uint32_t(s.line)};
             m_where = at(file.path, s.line);
-            if (++m_statements > m_options.max_statements) {
-                throw InputError(m_where, fmt::format("more than {} statements to run (arrays and "
-                                                      "includes expanded)",
-                                                      m_options.max_statements));
-            }
+            count_step();
             if (s.words[0] == "xf") {
                 run_transformed(parse_mgf_xf(arguments(s.words, 1), m_where),
                                 [&] { run_block(file, i + 1, file.xf_close[i]); });
@@ -101,6 +97,16 @@ private:
             } else {
                 execute(s.words, file);
             }
+        }
+    }
+
+    // Statements run and array instances both count: an array of 10^9 empty instances would
+    // otherwise run for minutes without a statement to count.
+    void count_step() {
+        if (++m_statements > m_options.max_statements) {
+            throw InputError(m_where, fmt::format("more than {} statements to run (arrays and "
+                                                  "includes expanded)",
+                                                  m_options.max_statements));
         }
     }
 
@@ -114,6 +120,7 @@ private:
     void run_transformed(const MgfXf& xf, Body&& body) {
         const MgfTransform enclosing = m_transform;
         for (long long k = 0; k < xf.instances(); ++k) {
+            count_step();
             m_transform = enclosing * xf.instance(k);
             body();
         }

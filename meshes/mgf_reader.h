@@ -20,9 +20,10 @@ namespace hmcr {
 
 struct MgfOptions {
     int curve_segments = 24;  // segments per full circle of a curved surface
-    // Statements executed at most, arrays and includes expanded: a file of a few lines can
-    // ask for 10^18 instances.
-    std::uint64_t max_statements = 100'000'000;
+    // Statements and array instances run at most, arrays and includes expanded: a file of a
+    // few lines can ask for 10^18 instances. 10^7 is a few seconds of refusing, and over a
+    // thousand times what RenderPark's largest scene (soda, 7,134) runs.
+    std::uint64_t max_statements = 10'000'000;
     std::size_t max_polygons = 50'000'000;
 };
 

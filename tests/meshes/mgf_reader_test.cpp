@@ -232,6 +232,21 @@ TEST(MgfReader, ArraysBeyondTheStatementBudgetAreRefused) {
         contains(scene_error([&] { read_mgf(path, options); }), "more than 1000 statements"));
 }
 
+// Found by fuzzing: instances of an empty array ran no statement to count, so 10^9 of them ran
+// for minutes. Each instance counts now.
+TEST(MgfReader, EmptyArraysCountTheirInstances) {
+    SceneFiles files;
+    MgfOptions options;
+    options.max_statements = 1000;
+    const auto path =
+        files.write("scene.mgf", std::string(kSquareVertices) + "xf -a 1000000000 -t 1 0 0\nxf\n");
+    EXPECT_TRUE(
+        contains(scene_error([&] { read_mgf(path, options); }), "scene.mgf:9: more than 1000"));
+    files.write("empty.mgf", "# nothing\n");
+    const auto top = files.write("top.mgf", "i empty.mgf -a 1000000000 -t 1 0 0\n");
+    EXPECT_TRUE(contains(scene_error([&] { read_mgf(top, options); }), "top.mgf:1: more than 1000"));
+}
+
 TEST(MgfReader, IncludesAreRelativeToTheIncludingFile) {
     SceneFiles files;
     files.write("parts/square.mgf", std::string(kSquareVertices) + "i tri.mgf\nf q0 q1 q2 q3\n");
