@@ -6,6 +6,7 @@
 #include <string>
 
 #include "radiosity/domain.h"
+#include "radiosity/power_quanta.h"
 #include "common/types.h"
 
 namespace hmcr {
@@ -28,7 +29,7 @@ struct Element {
     Vec3 centre{0, 0, 0};  // the image of the domain's centre, kept for the oracles' geometry
     Rgb radiosity = Rgb::Zero();  // B
     Rgb unshot = Rgb::Zero();     // Delta B, shot in the next iteration
-    Rgb received = Rgb::Zero();   // radiosity received in the current iteration
+    Quanta received{};            // power received in the current iteration, in its quanta
     Element* parent = nullptr;
     std::atomic<Element*> first_child{nullptr};  // 4 consecutive children, or none
 

@@ -39,7 +39,7 @@ void Hierarchy::init_child(Element& parent, int k, Element& child) const {
     child.centre = p.point(child.domain.centre(p.is_quad()));
     child.radiosity = parent.radiosity;
     child.unshot = parent.unshot;
-    child.received = Rgb::Zero();
+    child.received = {};
     child.parent = &parent;
     child.first_child.store(nullptr, std::memory_order_relaxed);
 }
@@ -108,9 +108,9 @@ std::array<Vec3, 4> Hierarchy::corners(const Element& e) const {
 
 namespace {
 
-void push_pull_element(Element& e, const Rgb& from_above) {
-    const Rgb acc = from_above + e.received;
-    e.received = Rgb::Zero();
+void push_pull_element(Element& e, const Rgb& from_above, const PowerQuantum& quantum) {
+    const Rgb acc = from_above + quantum.power(e.received) / e.area;
+    e.received = {};
     Element* c = e.children();
     if (!c) {
         e.unshot = acc;
@@ -120,7 +120,7 @@ void push_pull_element(Element& e, const Rgb& from_above) {
     Rgb b = Rgb::Zero(), db = Rgb::Zero();
     double area = 0;
     for (int k = 0; k < 4; ++k) {
-        push_pull_element(c[k], acc);
+        push_pull_element(c[k], acc, quantum);
         b += c[k].area * c[k].radiosity;
         db += c[k].area * c[k].unshot;
         area += c[k].area;
@@ -131,9 +131,10 @@ void push_pull_element(Element& e, const Rgb& from_above) {
 
 }  // namespace
 
-void Hierarchy::push_pull() {
-    tbb::parallel_for(std::size_t(0), m_roots.size(),
-                      [&](std::size_t i) { push_pull_element(m_roots[i], Rgb::Zero()); });
+void Hierarchy::push_pull(const PowerQuantum& quantum) {
+    tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
+        push_pull_element(m_roots[i], Rgb::Zero(), quantum);
+    });
 }
 
 Rgb Hierarchy::unshot_power() const {

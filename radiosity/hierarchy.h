@@ -56,9 +56,10 @@ public:
 
     std::array<Vec3, 4> corners(const Element& e) const;
 
-    // Pushes received radiosity to the leaves (Delta B = received, B += received), then pulls
-    // B and Delta B up as area-weighted averages. Parallel over patches.
-    void push_pull();
+    // Pushes received radiosity (the power received, in `quantum`s, over the area) to the
+    // leaves (Delta B = received, B += received), then pulls B and Delta B up as area-weighted
+    // averages. Parallel over patches.
+    void push_pull(const PowerQuantum& quantum);
     // Total unshot power sum_l A_l Delta B_l (per channel).
     Rgb unshot_power() const;
 

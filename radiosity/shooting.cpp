@@ -17,6 +17,7 @@ IterationSources::IterationSources(const Hierarchy& h) {
         const double w = e.area * channel_sum(e.unshot);
         if (w <= 0) return;
         total += w;
+        max_share = max_share.max(e.unshot / channel_sum(e.unshot));
         leaves.push_back(&e);
         weights.push_back(w);
     });
@@ -96,34 +97,43 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
 }
 
 IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
-                                 std::uint32_t iteration, std::uint64_t rays,
+                                 std::uint32_t iteration, std::uint64_t rays, RaySlice slice,
                                  const std::function<void(std::uint64_t)>& on_batch) {
     IterationOutcome out;
     if (rays == 0 || sources.total <= 0) return out;
+    if (slice.end == 0) slice = {0, rays};
     const double power_scale = sources.total / double(rays);  // S / N_iter
-    std::vector<RayResult> results(std::min(rays, kBatchRays));
-    std::vector<RefinementCounters> chunk_counters;
-    for (std::uint64_t first = 0; first < rays; first += kBatchRays) {
-        const std::uint64_t n = std::min(kBatchRays, rays - first);
-        chunk_counters.assign((n + kGrain - 1) / kGrain, {});
-        tbb::parallel_for(std::uint64_t(0), chunk_counters.size(), [&](std::uint64_t c) {
+    out.quantum = PowerQuantum::for_iteration(power_scale * sources.max_share, rays);
+    struct Chunk {
+        RefinementCounters counters;
+        Quanta shot{}, escaped{}, back_face{};
+    };
+    std::vector<Chunk> chunks;
+    for (std::uint64_t first = slice.begin; first < slice.end; first += kBatchRays) {
+        const std::uint64_t n = std::min(kBatchRays, slice.end - first);
+        chunks.assign((n + kGrain - 1) / kGrain, {});
+        tbb::parallel_for(std::uint64_t(0), chunks.size(), [&](std::uint64_t c) {
             set_tracing_float_mode();
+            Chunk& chunk = chunks[c];
             for (std::uint64_t k = c * kGrain; k < std::min(n, (c + 1) * kGrain); ++k) {
                 Rng rng(ctx.seed, iteration, first + k);
-                results[k] = trace_ray(ctx, sources, power_scale, rng, chunk_counters[c]);
+                const RayResult r = trace_ray(ctx, sources, power_scale, rng, chunk.counters);
+                const Quanta power = out.quantum.count(r.power);
+                add(chunk.shot, power);
+                if (r.fate == Fate::escaped) add(chunk.escaped, power);
+                if (r.fate == Fate::back_face) add(chunk.back_face, power);
+                if (r.fate != Fate::deposited) continue;
+                // SPEC section 3, step 6: received += rho * Phi (over A when pushed).
+                const Patch& p = ctx.hierarchy.patch(*r.receiver);
+                add_atomic(r.receiver->received, out.quantum.count(p.reflectance * r.power));
             }
         });
-        // Deposits in ray order (SPEC section 3, step 6): received += rho * Phi / A.
-        for (std::uint64_t k = 0; k < n; ++k) {
-            const RayResult& r = results[k];
-            out.shot_power += r.power;
-            if (r.fate == Fate::escaped) out.escaped_power += r.power;
-            if (r.fate == Fate::back_face) out.back_face_power += r.power;
-            if (r.fate != Fate::deposited) continue;
-            const Patch& p = ctx.hierarchy.patch(*r.receiver);
-            r.receiver->received += p.reflectance * r.power / r.receiver->area;
+        for (const Chunk& c : chunks) {
+            out.counters += c.counters;
+            add(out.shot_power, c.shot);
+            add(out.escaped_power, c.escaped);
+            add(out.back_face_power, c.back_face);
         }
-        for (const auto& c : chunk_counters) out.counters += c;
         out.rays += n;
         if (on_batch) on_batch(out.rays);
     }

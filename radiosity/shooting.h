@@ -17,17 +17,25 @@ namespace hmcr {
 struct IterationSources {
     std::vector<const Element*> leaves;
     double total = 0;                // S
+    Rgb max_share = Rgb::Zero();     // the largest Delta B_c / sum_c Delta B_c of a leaf
     std::optional<AliasTable> alias;  // none when nothing is left to shoot
 
     explicit IterationSources(const Hierarchy& h);
     const Element& pick(double xi) const { return *leaves[alias->sample(xi)]; }
 };
 
+// The rays of an iteration that one process shoots: [begin, end) of its N (MPI ranks share an
+// iteration; a single process shoots all of it).
+struct RaySlice {
+    std::uint64_t begin = 0, end = 0;
+};
+
 struct IterationOutcome {
-    std::uint64_t rays = 0;
-    Rgb shot_power = Rgb::Zero();       // sum of the rays' power
-    Rgb escaped_power = Rgb::Zero();    // rays that left the scene
-    Rgb back_face_power = Rgb::Zero();  // rays absorbed by a back face
+    std::uint64_t rays = 0;  // shot by this process
+    PowerQuantum quantum;    // of the whole iteration, the same for every slice
+    Quanta shot_power{};       // sum of the rays' power
+    Quanta escaped_power{};    // rays that left the scene
+    Quanta back_face_power{};  // rays absorbed by a back face
     RefinementCounters counters;
 };
 
@@ -36,11 +44,11 @@ struct IterationOutcome {
 double reflected_fraction(const RefinementContext& ctx, const IterationSources& sources,
                           std::uint32_t iteration, std::uint64_t rays);
 
-// Shoots `rays` rays of iteration `iteration` and adds their deposits to the elements'
-// received accumulators, in ray order so the sums do not depend on the thread count.
+// Shoots the rays `slice` of the `rays` rays of iteration `iteration` (all of them if the slice
+// is empty) and adds their deposits, in quanta, to the elements' received accumulators.
 // `on_batch(rays_done)` is called from the calling thread between batches.
 IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
-                                 std::uint32_t iteration, std::uint64_t rays,
+                                 std::uint32_t iteration, std::uint64_t rays, RaySlice slice = {},
                                  const std::function<void(std::uint64_t)>& on_batch = {});
 
 }  // namespace hmcr

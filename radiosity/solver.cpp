@@ -38,9 +38,9 @@ void add_iteration(SolveStats& st, const IterationOutcome& out) {
     st.cache_hits += out.counters.cache_hits;
     st.lines_cast += out.counters.lines_cast;
     st.oracle_seconds += 1e-9 * double(out.counters.oracle_nanoseconds);
-    st.shot_power += out.shot_power;
-    st.escaped_power += out.escaped_power;
-    st.back_face_power += out.back_face_power;
+    st.shot_power += out.quantum.power(out.shot_power);
+    st.escaped_power += out.quantum.power(out.escaped_power);
+    st.back_face_power += out.quantum.power(out.back_face_power);
 }
 
 }  // namespace
@@ -108,13 +108,13 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
         // no rays would push zero received radiosity over it and lose that power).
         if (rec.rays == 0) break;
         const std::uint64_t done_before = st.rays;
-        const auto out = shoot_iteration(ctx, sources, it, rec.rays, [&](std::uint64_t n) {
+        const auto out = shoot_iteration(ctx, sources, it, rec.rays, {}, [&](std::uint64_t n) {
             progress.advance(std::min(1.0, double(done_before + n) / double(options.rays)));
             throw_if_interrupted();
         });
         st.shooting_seconds += seconds_since(t0);
         const auto t1 = Clock::now();
-        h.push_pull();
+        h.push_pull(out.quantum);
         st.push_pull_seconds += seconds_since(t1);
         unshot = rec.unshot_after = h.unshot_power();
         if (!unshot.isFinite().all()) throw std::runtime_error("the unshot power is not finite");

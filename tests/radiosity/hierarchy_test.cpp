@@ -124,11 +124,12 @@ TEST(Hierarchy, NewChildrenInheritRadiosityAndPushPullConservesPower) {
     Element& root = h.root(0);
     subdivide_everywhere(h, root, 3);
     const Rgb p0(1.0, 2.0, 3.0), p1(0.5, 0.25, 0.125);
-    root.received += p0 / root.area;
+    const PowerQuantum quantum{Rgb(0x1p-40, 0x1p-41, 0x1p-42)};  // each p a whole count of them
+    add(root.received, quantum.count(p0));
     Element& mid = root.children()[3].children()[1];
-    mid.received += p1 / mid.area;
+    add(mid.received, quantum.count(p1));
     const Rgb before = h.unshot_power();
-    h.push_pull();
+    h.push_pull(quantum);
     const Rgb after = h.unshot_power();
     // Unshot power was emitted on patch 1 only; now it is what patch 0 received.
     EXPECT_TRUE(before.isApprox(emitted, 1e-12));
