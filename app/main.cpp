@@ -2,11 +2,14 @@
 // one line on stderr), 1 a fault of hmcr.
 #include <fmt/core.h>
 
+#include <cstdio>
 #include <vector>
 
 #include "app/command.h"
 #include "common/error.h"
+#include "common/exit_code.h"
 #include "common/interrupt.h"
+#include "common/ranks.h"
 
 namespace {
 
@@ -16,21 +19,19 @@ std::string join_args(int argc, char** argv) {
     return s;
 }
 
+// Rank 0 speaks for an MPI run: a failure anywhere reaches it (Ranks::agree, the study's
+// hand-out), so one message is printed, not one per rank.
 int fail(int code, const std::string& message) {
-    fmt::print(stderr, "hmcr: error: {}\n", message);
+    if (hmcr::Ranks::world().root()) fmt::print(stderr, "hmcr: error: {}\n", message);
     return code;
 }
 
 int run(const hmcr::Command& command) {
     try {
         return command.run();
-    } catch (const hmcr::InputError& e) {
-        return fail(2, e.what());
-    } catch (const hmcr::Interrupted& e) {
-        // What was complete is kept (a study's cells); nothing partial is left.
-        return fail(128 + e.signal(), std::string(e.what()) + "; no partial output left");
-    } catch (const std::exception& e) {
-        return fail(1, std::string("internal error: ") + e.what());
+    } catch (...) {
+        const hmcr::Failure f = hmcr::failure_of(std::current_exception());
+        return fail(f.exit_code, f.message);
     }
 }
 
@@ -38,6 +39,14 @@ int run(const hmcr::Command& command) {
 
 int main(int argc, char** argv) {
     using namespace hmcr;
+    const MpiSession mpi(argc, argv);
+    // Rank 0 speaks for the run (progress, warnings, reports and the one error message); the
+    // others would only repeat it.
+    if (!Ranks::world().root()) {
+        if (!std::freopen("/dev/null", "w", stdout) || !std::freopen("/dev/null", "w", stderr)) {
+            return 1;
+        }
+    }
     CLI::App app{"hmcr: hierarchical Monte Carlo radiosity with information-theoretic refinement"};
     app.set_version_flag("--version", std::string("hmcr ") + HMCR_VERSION);
     app.require_subcommand(1);

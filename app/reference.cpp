@@ -31,7 +31,8 @@ int run_reference(ReferenceArgs& a, const std::string& command_line) {
     refuse_overwriting(reference_files(dir, scene), scene.inputs);
     prepare_output_dir(dir);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr reference " + scene.name);
-    const Reference ref = compute_reference(scene, a.options, progress);
+    const Reference ref = compute_reference(scene, a.options, progress, Ranks::world());
+    if (!Ranks::world().root()) return 0;  // every rank holds the reference; rank 0 writes it
     RunTimings timings;
     timings.total_seconds = ref.seconds;
     write_reference(dir, scene, ref, a.options,

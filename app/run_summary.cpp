@@ -23,7 +23,8 @@ nlohmann::json iterations_json(const SolveStats& st) {
 nlohmann::json options_json(const SolverOptions& o, const SolveStats& st) {
     nlohmann::json j = settings_json(o);
     j["epsilon"] = st.epsilon;
-    j["threads"] = st.threads;
+    j["threads"] = st.threads;  // per rank
+    j["ranks"] = st.ranks;
     return j;
 }
 

@@ -35,10 +35,13 @@ struct SolveArgs {
 
 // One solve at epsilon, or the probes of a budget search (each a full solve).
 BudgetResult solve_scene(const Scene& scene, const SolveArgs& args, Progress& progress) {
-    if (args.budget.leaves > 0) return solve_for_budget(scene.mesh, args.options, args.budget, progress);
+    const Ranks& ranks = Ranks::world();
+    if (args.budget.leaves > 0) {
+        return solve_for_budget(scene.mesh, args.options, args.budget, progress, ranks);
+    }
     progress.stage("shooting rays");
     BudgetResult out;
-    out.solution = solve(scene.mesh, args.options, progress);
+    out.solution = solve(scene.mesh, args.options, progress, ranks);
     return out;
 }
 
@@ -97,6 +100,7 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     TerminalProgress progress(mode, "hmcr " + scene.name);
     const BudgetResult found = solve_scene(scene, args, progress);
     const Solution& sol = found.solution;
+    if (!Ranks::world().root()) return 0;  // every rank holds the solution; rank 0 writes it
 
     const auto t_out = std::chrono::steady_clock::now();
     write_solution(vtp, sol, scene, args.crease_degrees, double(sol.stats.iterations.size()));

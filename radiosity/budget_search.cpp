@@ -18,8 +18,8 @@ namespace {
 class Search {
 public:
     Search(const PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-           Progress& progress)
-        : m_mesh(mesh), m_options(options), m_budget(budget), m_progress(progress) {}
+           Progress& progress, const Ranks& ranks)
+        : m_mesh(mesh), m_options(options), m_budget(budget), m_progress(progress), m_ranks(ranks) {}
 
     BudgetResult run();
 
@@ -37,6 +37,7 @@ private:
     SolverOptions m_options;
     BudgetOptions m_budget;
     Progress& m_progress;
+    const Ranks& m_ranks;
     BudgetResult m_result;
     std::optional<double> m_lo, m_hi;           // log epsilon bounds
     std::size_t m_lo_leaves = 0, m_hi_leaves = 0;
@@ -48,7 +49,7 @@ std::size_t Search::probe(double x) {
     o.epsilon = std::exp(x);
     const std::size_t k = m_result.probes.size() + 1;
     m_progress.stage(fmt::format("budget probe {}", k));
-    Solution sol = solve(m_mesh, o, m_progress);
+    Solution sol = solve(m_mesh, o, m_progress, m_ranks);
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
     m_result.probes.push_back(p);
     m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves ({:.1f} s)", k,
@@ -123,14 +124,15 @@ BudgetResult Search::run() {
 }  // namespace
 
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
-                              const BudgetOptions& budget, Progress& progress) {
+                              const BudgetOptions& budget, Progress& progress,
+                              const Ranks& ranks) {
     if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
     if (!(budget.tolerance > 0 && budget.tolerance < 1)) {
         throw InputError(
             fmt::format("budget-tolerance must be in (0, 1), got {}", budget.tolerance));
     }
     validate(options);
-    return Search(mesh, options, budget, progress).run();
+    return Search(mesh, options, budget, progress, ranks).run();
 }
 
 void to_json(nlohmann::json& j, const BudgetProbe& p) {

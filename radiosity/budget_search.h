@@ -42,8 +42,10 @@ public:
 // Starts from options.epsilon (or the oracle's default). Each probe is a stage of `progress`,
 // and its result a note. Throws BudgetNotReached with a one-line explanation when the budget
 // cannot be reached: below the patch count, above what the area/depth limits and the rays
-// allow, or not within the tolerance after max_probes; InputError on bad options.
+// allow, or not within the tolerance after max_probes; InputError on bad options. `ranks`
+// share each probe's solve (solver.h).
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
-                              const BudgetOptions& budget, Progress& progress = no_progress());
+                              const BudgetOptions& budget, Progress& progress = no_progress(),
+                              const Ranks& ranks = Ranks::single());
 
 }  // namespace hmcr

@@ -81,7 +81,25 @@ public:
         }
     }
 
+    // Every element, parents before children, patch by patch (the order ranks share).
+    template <class F>
+    void for_each_element(F&& f) const {
+        for (const Element& r : m_roots) visit_all(r, f);
+    }
+    template <class F>
+    void for_each_element(F&& f) {
+        for (Element& r : m_roots) visit_all(r, f);
+    }
+
 private:
+    template <class E, class F>
+    static void visit_all(E& e, F&& f) {
+        f(e);
+        if (E* c = e.children()) {
+            for (int k = 0; k < 4; ++k) visit_all(c[k], f);
+        }
+    }
+
     void init_child(Element& parent, int k, Element& child) const;
 
     PatchSet m_patches;

@@ -101,7 +101,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
                                  const std::function<void(std::uint64_t)>& on_batch) {
     IterationOutcome out;
     if (rays == 0 || sources.total <= 0) return out;
-    if (slice.end == 0) slice = {0, rays};
+    slice.end = std::min(slice.end, rays);
     const double power_scale = sources.total / double(rays);  // S / N_iter
     out.quantum = PowerQuantum::for_iteration(power_scale * sources.max_share, rays);
     struct Chunk {

@@ -25,9 +25,9 @@ struct IterationSources {
 };
 
 // The rays of an iteration that one process shoots: [begin, end) of its N (MPI ranks share an
-// iteration; a single process shoots all of it).
+// iteration; a single process shoots all of it, the default).
 struct RaySlice {
-    std::uint64_t begin = 0, end = 0;
+    std::uint64_t begin = 0, end = UINT64_MAX;
 };
 
 struct IterationOutcome {
@@ -44,8 +44,7 @@ struct IterationOutcome {
 double reflected_fraction(const RefinementContext& ctx, const IterationSources& sources,
                           std::uint32_t iteration, std::uint64_t rays);
 
-// Shoots the rays `slice` of the `rays` rays of iteration `iteration` (all of them if the slice
-// is empty) and adds their deposits, in quanta, to the elements' received accumulators.
+// Shoots the rays `slice` of the `rays` rays of iteration `iteration` and adds their deposits, in quanta, to the elements' received accumulators.
 // `on_batch(rays_done)` is called from the calling thread between batches.
 IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
                                  std::uint32_t iteration, std::uint64_t rays, RaySlice slice = {},

@@ -13,6 +13,7 @@
 #include "oracles/registry.h"
 #include "radiosity/embree_scene.h"
 #include "radiosity/link_cache.h"
+#include "radiosity/rank_merge.h"
 #include "radiosity/ray_schedule.h"
 #include "radiosity/shooting.h"
 #include "radiosity/solver_settings.h"
@@ -54,7 +55,7 @@ namespace {
 
 // `shape`: a frozen mesh to solve on, or none (refine, or the uniform mesh of uniform_max_area).
 Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy* shape,
-                    Progress& progress) {
+                    Progress& progress, const Ranks& ranks) {
     validate(options);
     const auto start = Clock::now();
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
@@ -66,6 +67,7 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
     const Oracle& oracle = find_oracle(options.oracle);
     st.epsilon = std::isnan(options.epsilon) ? oracle.default_epsilon() : options.epsilon;
     st.threads = threads;
+    st.ranks = ranks.size();
 
     PatchSet patches = build_patch_set(mesh);
     if (patches.max_emitted_power <= 0) throw InputError("the scene emits no light");
@@ -108,10 +110,16 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
         // no rays would push zero received radiosity over it and lose that power).
         if (rec.rays == 0) break;
         const std::uint64_t done_before = st.rays;
-        const auto out = shoot_iteration(ctx, sources, it, rec.rays, {}, [&](std::uint64_t n) {
-            progress.advance(std::min(1.0, double(done_before + n) / double(options.rays)));
-            throw_if_interrupted();
+        IterationOutcome out;
+        together(ranks, [&] {
+            const RaySlice slice = slice_of(rec.rays, ranks.rank(), ranks.size());
+            out = shoot_iteration(ctx, sources, it, rec.rays, slice, [&](std::uint64_t n) {
+                const double done = double(done_before) + double(n) * ranks.size();
+                progress.advance(std::min(1.0, done / double(options.rays)));
+                throw_if_interrupted();
+            });
         });
+        merge_iteration(h, out, ranks, !fixed_mesh);
         st.shooting_seconds += seconds_since(t0);
         const auto t1 = Clock::now();
         h.push_pull(out.quantum);
@@ -140,13 +148,14 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
 
 }  // namespace
 
-Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& progress) {
-    return solve_with(mesh, options, nullptr, progress);
+Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& progress,
+               const Ranks& ranks) {
+    return solve_with(mesh, options, nullptr, progress, ranks);
 }
 
 Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy& shape,
                        Progress& progress) {
-    return solve_with(mesh, options, &shape, progress);
+    return solve_with(mesh, options, &shape, progress, Ranks::single());
 }
 
 }  // namespace hmcr

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/progress.h"
+#include "common/ranks.h"
 #include "meshes/patch_mesh.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/solver_options.h"
@@ -30,7 +31,8 @@ struct SolveStats {
     double oracle_seconds = 0;             // computing line-based factors, summed over threads
     std::size_t cache_bytes = 0, cache_capacity = 0, cache_evictions = 0;
     double epsilon = 0;              // the value used (the oracle's default if not given)
-    int threads = 0;                 // worker threads used
+    int threads = 0;                 // worker threads used (by each rank)
+    int ranks = 1;                   // MPI processes that shared the rays
     Rgb emitted_power = Rgb::Zero();
     Rgb shot_power = Rgb::Zero();       // sum over iterations of the rays' power
     Rgb escaped_power = Rgb::Zero();    // shot power that left the scene
@@ -50,9 +52,10 @@ struct Solution {
 };
 
 // Throws InputError on a bad option (unknown oracle, no rays, ...) or a scene without light.
-// Reports the fraction of the rays shot to `progress`.
+// Reports the fraction of the rays shot to `progress`. `ranks` share every iteration's rays
+// (rank_merge.h) and all return the same solution, bit for bit, as one process would.
 Solution solve(const PatchMesh& mesh, const SolverOptions& options,
-               Progress& progress = no_progress());
+               Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 
 // The same solve on a frozen mesh: the leaves of `shape` (a solution of the same mesh), no
 // refinement and no oracle. With many rays its error is the mesh's alone (studies' mesh error).

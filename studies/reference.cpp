@@ -16,13 +16,13 @@ namespace hmcr {
 namespace {
 
 Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint64_t seed,
-                       Progress& progress) {
+                       Progress& progress, const Ranks& ranks) {
     SolverOptions s = o.solver;
     s.uniform_max_area = o.max_area;
     s.seed = seed;
     s.min_area = 0;  // the uniform mesh decides; limits only cap the depth
     s.max_depth = 24;
-    return solve(scene.mesh, s, progress);
+    return solve(scene.mesh, s, progress, ranks);
 }
 
 }  // namespace
@@ -33,15 +33,16 @@ ObjectErrorOptions reflected_error_options(const PatchMesh& mesh) {
     return o;
 }
 
-Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progress& progress) {
+Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progress& progress,
+                            const Ranks& ranks) {
     const auto start = std::chrono::steady_clock::now();
     const std::uint64_t seed = o.solver.seed;
     Reference ref;
     progress.stage("solving with seed " + std::to_string(seed));
-    ref.solution = solve_uniform(scene, o, seed, progress);
+    ref.solution = solve_uniform(scene, o, seed, progress, ranks);
     ref.mesh = shade(ref.solution, scene.mesh, o.crease_degrees);
     progress.stage("solving with seed " + std::to_string(seed + 1) + " for the convergence report");
-    const Solution second = solve_uniform(scene, o, seed + 1, progress);
+    const Solution second = solve_uniform(scene, o, seed + 1, progress, ranks);
     const ShadedMesh second_mesh = shade(second, scene.mesh, o.crease_degrees);
     ref.truncation = truncation_bias(ref.solution);
     ref.seed_difference = (reflected_power(*second.hierarchy) - ref.truncation.reflected).cwiseAbs() /

@@ -66,7 +66,8 @@ struct Reference {
 
 // Each solve, the comparison and each view's image are stages of `progress`.
 Reference compute_reference(const Scene& scene, const ReferenceOptions& options,
-                            Progress& progress = no_progress());
+                            Progress& progress = no_progress(),
+                            const Ranks& ranks = Ranks::single());
 
 // Object-space error options relative to the reflected radiosity B - E of the scene's patches
 // (viz/object_space_error.h): how references and studies compare solutions.
