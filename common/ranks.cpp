@@ -113,7 +113,8 @@ std::string Ranks::receive(int from, int tag) const {
     return bytes;
 }
 
-std::pair<int, std::string> Ranks::receive_any(int tag, void (*idle)()) const {
+std::pair<int, std::string> Ranks::receive_any(int tag,
+                                               const std::function<void()>& idle) const {
     for (;;) {
         int ready = 0;
         MPI_Status status;

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <stdexcept>
 #include <span>
 #include <string>
@@ -41,7 +42,7 @@ public:
     void send(int to, int tag, const std::string& bytes) const;
     // Waits for a message of `tag` from any rank, calling `idle` every few milliseconds (to
     // notice signals); returns (sender, bytes).
-    std::pair<int, std::string> receive_any(int tag, void (*idle)()) const;
+    std::pair<int, std::string> receive_any(int tag, const std::function<void()>& idle) const;
     std::string receive(int from, int tag) const;
 
 private:

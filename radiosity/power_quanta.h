@@ -15,9 +15,11 @@ namespace hmcr {
 using Quanta = std::array<std::int64_t, 3>;  // per channel
 
 // The quantum of one iteration, per channel, sized so that the iteration's whole power fits in
-// 2^61 quanta: no sum can overflow (rounding adds at most half a quantum per ray), and a ray
-// carries up to 2^61 / N quanta (8.6e11 at 2.68 M rays, 2.3e8 at 10^10), a resolution far
-// below the Monte Carlo noise.
+// 2^61 quanta: no sum can overflow (rounding adds less than a quantum per ray), and a ray
+// carries up to 2^61 / N quanta (8.6e11 at 2.68 M rays, 2.3e8 at 10^10). Rounding is dithered
+// by a uniform number of the ray's own stream, so it is unbiased: rays of equal power (all
+// those of one source element) would otherwise all round the same way, a bias of up to half
+// a quantum per ray that exceeds the noise beyond about 10^13 rays per iteration.
 struct PowerQuantum {
     Rgb watts = Rgb::Zero();  // the power of one quantum; 0 in a channel no ray carries
 
@@ -25,9 +27,12 @@ struct PowerQuantum {
     static PowerQuantum for_iteration(const Rgb& ray_power_bound, std::uint64_t rays) {
         return {ray_power_bound * (double(rays) / 0x1p61)};
     }
-    Quanta count(const Rgb& power) const {
+    // `dither` in [0, 1): rounds down with probability 1 - frac(power / watts).
+    Quanta count(const Rgb& power, double dither) const {
         Quanta q{};
-        for (int c = 0; c < 3; ++c) q[c] = watts[c] > 0 ? std::llround(power[c] / watts[c]) : 0;
+        for (int c = 0; c < 3; ++c) {
+            q[c] = watts[c] > 0 ? std::int64_t(std::floor(power[c] / watts[c] + dither)) : 0;
+        }
         return q;
     }
     Rgb power(const Quanta& q) const {

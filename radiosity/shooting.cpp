@@ -118,14 +118,15 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             for (std::uint64_t k = c * kGrain; k < std::min(n, (c + 1) * kGrain); ++k) {
                 Rng rng(ctx.seed, iteration, first + k);
                 const RayResult r = trace_ray(ctx, sources, power_scale, rng, chunk.counters);
-                const Quanta power = out.quantum.count(r.power);
+                const double dither = rng.uniform();
+                const Quanta power = out.quantum.count(r.power, dither);
                 add(chunk.shot, power);
                 if (r.fate == Fate::escaped) add(chunk.escaped, power);
                 if (r.fate == Fate::back_face) add(chunk.back_face, power);
                 if (r.fate != Fate::deposited) continue;
                 // SPEC section 3, step 6: received += rho * Phi (over A when pushed).
                 const Patch& p = ctx.hierarchy.patch(*r.receiver);
-                add_atomic(r.receiver->received, out.quantum.count(p.reflectance * r.power));
+                add_atomic(r.receiver->received, out.quantum.count(p.reflectance * r.power, dither));
             }
         });
         for (const Chunk& c : chunks) {

@@ -12,7 +12,7 @@
 #include "common/stopwatch.h"
 #include "common/text_file.h"
 #include "radiosity/patch.h"
-#include "studies/cell_files.h"
+#include "studies/cell_handout.h"
 #include "studies/montage.h"
 #include "studies/traced_reference.h"
 #include "viz/density_map.h"
@@ -125,7 +125,8 @@ void SamplingStudy::run() {
     loop.file = [this](std::size_t i) { return file("cells", m_tasks[i].name + ".json"); };
     loop.where = [this](std::size_t i) { return where(i); };
     loop.outcome = [](const SamplingCell& c) { return c.status; };
-    const std::vector<SamplingCell> cells = run_cells(loop, m_progress);
+    const std::vector<SamplingCell> cells = run_cells_on(Ranks::world(), loop, m_progress);
+    if (!Ranks::world().root()) return;  // rank 0 writes the tables
     std::vector<std::string> views;
     for (const View& v : m_scene.views) {
         views.push_back(v.name);

@@ -16,7 +16,7 @@
 #include "common/stopwatch.h"
 #include "common/text_file.h"
 #include "common/hash.h"
-#include "studies/cell_files.h"
+#include "studies/cell_handout.h"
 #include "studies/reference.h"
 #include "studies/traced_reference.h"
 #include "viz/image.h"
@@ -170,7 +170,8 @@ void StudyRunner::run() {
     loop.outcome = [](const CellResult& c) {
         return c.ok() ? "done" : "budget not reached, recorded as failed";
     };
-    const std::vector<CellResult> cells = run_cells(loop, m_progress);
+    const std::vector<CellResult> cells = run_cells_on(Ranks::world(), loop, m_progress);
+    if (!Ranks::world().root()) return;  // rank 0 writes the tables
     std::vector<std::string> views;
     for (const View& v : m_scene.views) views.push_back(v.name);
     write_study_tables(m_scene.name, m_options, views, cells);

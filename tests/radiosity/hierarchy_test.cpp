@@ -125,9 +125,9 @@ TEST(Hierarchy, NewChildrenInheritRadiosityAndPushPullConservesPower) {
     subdivide_everywhere(h, root, 3);
     const Rgb p0(1.0, 2.0, 3.0), p1(0.5, 0.25, 0.125);
     const PowerQuantum quantum{Rgb(0x1p-40, 0x1p-41, 0x1p-42)};  // each p a whole count of them
-    add(root.received, quantum.count(p0));
+    add(root.received, quantum.count(p0, 0.5));
     Element& mid = root.children()[3].children()[1];
-    add(mid.received, quantum.count(p1));
+    add(mid.received, quantum.count(p1, 0.5));
     const Rgb before = h.unshot_power();
     h.push_pull(quantum);
     const Rgb after = h.unshot_power();

@@ -1,0 +1,198 @@
+// MPI runs give what one process gives (README, Clusters): `mpirun -n 1, 2, 3` of a refined
+// solve, a budget solve, a reference and a study against the same command without mpirun, file
+// for file and byte for byte; summaries and tables equal but for timings and the per-process
+// cache counters. And a study killed on one rank resumes with another rank count.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "tests/support/cli_run.h"
+
+namespace hmcr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What may differ between runs of the same solve: time, memory, the command, and what each
+// process's own link cache saw.
+nlohmann::json without_run_details(nlohmann::json j) {
+    for (const char* key : {"timings_s", "memory", "command", "output", "link_cache"}) j.erase(key);
+    for (const char* key : {"lines_cast", "oracle_evaluations", "cache_hits"}) j["counts"].erase(key);
+    for (auto& it : j["iterations"]) it.erase("seconds");
+    j["options"].erase("ranks");
+    j["options"].erase("threads");  // Open MPI binds each rank to a core: 1 thread each
+    if (j.contains("budget")) {
+        for (auto& p : j["budget"]["probes"]) p.erase("seconds");
+    }
+    return j;
+}
+
+nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(read_file(p)); }
+
+// A study table without the cells' wall times.
+nlohmann::json without_seconds(nlohmann::json j) {
+    if (j.is_object()) {
+        j.erase("seconds");
+        for (auto& [k, v] : j.items()) v = without_seconds(v);
+    } else if (j.is_array()) {
+        for (auto& v : j) v = without_seconds(v);
+    }
+    return j;
+}
+
+TEST(MpiRuns, RefinedSolvesAreTheSameBitsOnAnyRankCount) {
+    TempDir dir;
+    const std::string solve = "solve cornell --oracle kl --rays 300000 -q -o ";
+    ASSERT_EQ(run_hmcr(solve + "one.vtp", dir.path()).exit_code, 0);
+    for (int k : {1, 2, 3}) {
+        const std::string name = "ranks" + std::to_string(k);
+        const CliRun r = run_hmcr_mpi(k, solve + name + ".vtp", dir.path());
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_EQ(read_file(dir.path() / (name + ".vtp")), read_file(dir.path() / "one.vtp"))
+            << k << " ranks";
+        const auto summary = read_json(dir.path() / (name + ".json"));
+        EXPECT_EQ(summary["options"]["ranks"], k);
+        EXPECT_EQ(without_run_details(summary),
+                  without_run_details(read_json(dir.path() / "one.json")))
+            << k << " ranks";
+    }
+}
+
+TEST(MpiRuns, BudgetSearchesAreTheSameBitsOnTwoRanks) {
+    TempDir dir;
+    const std::string solve = "solve cornell --oracle power --budget 3000 --rays 300000 -q -o ";
+    ASSERT_EQ(run_hmcr(solve + "one.vtp", dir.path()).exit_code, 0);
+    const CliRun r = run_hmcr_mpi(2, solve + "two.vtp", dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(read_file(dir.path() / "two.vtp"), read_file(dir.path() / "one.vtp"));
+    EXPECT_EQ(without_run_details(read_json(dir.path() / "two.json")),
+              without_run_details(read_json(dir.path() / "one.json")));
+}
+
+TEST(MpiRuns, ReferencesAreTheSameBitsOnAnyRankCount) {
+    TempDir dir;
+    const std::string reference = "reference plates --max-area 0.05 --rays 40000 -q -o ";
+    ASSERT_EQ(run_hmcr(reference + "one", dir.path()).exit_code, 0);
+    for (int k : {2, 3}) {
+        const std::string name = "ranks" + std::to_string(k);
+        const CliRun r = run_hmcr_mpi(k, reference + name, dir.path());
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        for (const char* file : {"reference.vtp", "views/side.pfm", "views/oblique.pfm"}) {
+            EXPECT_EQ(read_file(dir.path() / name / file), read_file(dir.path() / "one" / file))
+                << file << ", " << k << " ranks";
+        }
+    }
+}
+
+// Without a launcher's variables hmcr never starts MPI: an error is said once, with its code.
+TEST(MpiRuns, AnErrorOnEveryRankIsSaidOnceWithItsExitCode) {
+    TempDir dir;
+    const CliRun r = run_hmcr_mpi(3, "solve cornell --rays 0 -o x.vtp", dir.path());
+    EXPECT_EQ(r.exit_code, 2);
+    std::size_t lines = 0;
+    for (std::size_t at = 0; (at = r.err.find("hmcr: error:", at)) != std::string::npos; ++at) {
+        ++lines;
+    }
+    EXPECT_EQ(lines, 1u) << r.err;
+}
+
+class MpiStudy : public testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        s_dir = new TempDir;
+        ASSERT_EQ(run_hmcr("reference plates --max-area 0.05 --rays 20000 -q -o ref", dir()).exit_code,
+                  0);
+        ASSERT_EQ(run_hmcr(study("one"), dir()).exit_code, 0);
+    }
+    static void TearDownTestSuite() { delete s_dir; }
+    static const fs::path& dir() { return s_dir->path(); }
+    static std::string study(const std::string& out) {
+        return "study plates --reference ref --budgets 60,120 --oracles power,kl --seeds 2 "
+               "--rays 400000 -o " + out;
+    }
+    static void expect_same_study(const std::string& out) {
+        EXPECT_EQ(without_seconds(read_json(dir() / out / "table.json")),
+                  without_seconds(read_json(dir() / "one" / "table.json")));
+        for (const auto& e : fs::directory_iterator(dir() / "one" / "meshes")) {
+            const fs::path mine = dir() / out / "meshes" / e.path().filename();
+            EXPECT_EQ(read_file(mine), read_file(e.path())) << mine;
+        }
+    }
+    static TempDir* s_dir;
+};
+TempDir* MpiStudy::s_dir = nullptr;
+
+TEST_F(MpiStudy, CellsHandedOutToRanksMakeTheSameStudy) {
+    const CliRun r = run_hmcr_mpi(3, study("three"), dir());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("(rank 2;"), std::string::npos) << "rank 2 computed no cell: " << r.err;
+    expect_same_study("three");
+}
+
+std::size_t finished_cells(const fs::path& dir) {
+    std::size_t n = 0;
+    if (!fs::exists(dir / "cells")) return 0;
+    for (const auto& e : fs::directory_iterator(dir / "cells")) n += e.path().extension() == ".json";
+    return n;
+}
+
+// The process of rank `rank` whose command line mentions `marker`, or 0.
+pid_t rank_process(int rank, const std::string& marker) {
+    for (const auto& e : fs::directory_iterator("/proc")) {
+        const std::string name = e.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        const std::string cmdline = read_file(e.path() / "cmdline");
+        if (cmdline.find(HMCR_BINARY) != 0 || cmdline.find(marker) == std::string::npos) continue;
+        std::string env = read_file(e.path() / "environ");
+        for (char& c : env) c = c == '\0' ? '\n' : c;
+        if (env.find("\nOMPI_COMM_WORLD_RANK=" + std::to_string(rank) + "\n") != std::string::npos) {
+            return pid_t(std::stoi(name));
+        }
+    }
+    return 0;
+}
+
+TEST_F(MpiStudy, KilledOnOneRankItResumesWithAnotherRankCount) {
+    const fs::path out = dir() / "killed";
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        const std::string cmd = "cd '" + dir().string() + "' && exec env " + mpirun_prefix(3) +
+                                HMCR_BINARY + " " + study("killed") + " >/dev/null 2>&1";
+        execl("/bin/sh", "sh", "-c", cmd.c_str(), nullptr);
+        _exit(127);
+    }
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (finished_cells(out) == 0 && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    const pid_t victim = rank_process(1, "killed");
+    ASSERT_GT(victim, 0);
+    kill(victim, SIGKILL);
+    int status = 0;
+    waitpid(child, &status, 0);
+    EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the run did not notice";
+    const std::size_t before = finished_cells(out);
+    ASSERT_GE(before, 1u);
+    ASSERT_LT(before, 8u) << "the study finished before it could be killed";
+    EXPECT_FALSE(fs::exists(out / "table.md"));
+
+    const CliRun r = run_hmcr_mpi(2, study("killed"), dir());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::size_t skipped = 0;
+    for (std::size_t at = 0; (at = r.err.find("done before, skipped", at)) != std::string::npos; ++at) {
+        ++skipped;
+    }
+    EXPECT_EQ(skipped, before);
+    expect_same_study("killed");
+}
+
+}  // namespace
+}  // namespace hmcr::test
