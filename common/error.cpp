@@ -24,6 +24,13 @@ std::string one_line(std::string_view text) {
     return out;
 }
 
+std::string shorten_place(std::string_view where) {
+    constexpr std::size_t kMax = 300, kHead = 100;
+    if (where.size() <= kMax) return std::string(where);
+    return std::string(where.substr(0, kHead)) + "..." +
+           std::string(where.substr(where.size() - (kMax - kHead)));
+}
+
 std::string at(const std::filesystem::path& path, int line) {
     return path.string() + ":" + std::to_string(line);
 }

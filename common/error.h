@@ -14,11 +14,15 @@ namespace hmcr {
 // whatever a file name, a JSON key or a token it quotes contains.
 std::string one_line(std::string_view text);
 
+// A place for a message: a path (or "path:line") of up to 300 characters whole, a longer one
+// cut in the middle, keeping its start and its file name and line.
+std::string shorten_place(std::string_view where);
+
 class InputError : public std::runtime_error {
 public:
     explicit InputError(std::string_view message) : std::runtime_error(one_line(message)) {}
     InputError(std::string_view where, std::string_view message)
-        : std::runtime_error(one_line(std::string(where) + ": " + std::string(message))) {}
+        : std::runtime_error(one_line(shorten_place(where) + ": " + std::string(message))) {}
 };
 
 // "path:line", the place of a statement in a text file.

@@ -181,7 +181,7 @@ bool is_mesh_extension(const fs::path& path) {
 
 void check_mesh_extension(const fs::path& mesh, const std::string& where) {
     if (!is_mesh_extension(mesh)) {
-        fail(where, fmt::format("mesh '{}': hmcr reads .obj and .mgf meshes", mesh.string()));
+        fail(where, fmt::format("mesh {}: hmcr reads .obj and .mgf meshes", quote(mesh.string())));
     }
 }
 

@@ -5,6 +5,13 @@
 namespace hmcr {
 namespace {
 
+TEST(InputError, ALongPlaceIsCutInTheMiddleKeepingFileAndLine) {
+    const std::string place = std::string(1000, 'd') + "/scene.obj:12";
+    const std::string what = InputError(place, "bad").what();
+    EXPECT_EQ(what, std::string(100, 'd') + "..." + std::string(200 - 13, 'd') + "/scene.obj:12: bad");
+    EXPECT_EQ(std::string(InputError("a/b.obj:3", "bad").what()), "a/b.obj:3: bad");
+}
+
 TEST(InputError, ControlCharactersAreEscapedSoTheMessageIsOneLine) {
     EXPECT_EQ(one_line("plain text: 'a b'"), "plain text: 'a b'");
     EXPECT_EQ(one_line("a\nb\rc\td"), "a\\nb\\rc\\td");

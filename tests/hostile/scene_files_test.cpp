@@ -164,6 +164,11 @@ TEST_F(Hostile, BadSceneFilesAreRefusedWithFileAndPlace) {
         {R"({"mesh": "pla\ntes.obj"})", "pla\\ntes.obj: no such file"},
         // A long key is cut short (fuzzer: a key of a thousand DEL characters).
         {R"({"mesh": "plates.obj", ")" + std::string(2000, 'k') + R"(": 1})", "unknown key 'kkkk"},
+        // A long path is cut in the middle, keeping its file name (fuzzer: a mesh of 2,075
+        // characters made a message of 2,333).
+        {R"({"mesh": ")" + std::string(3000, 'm') + R"(.obj"})", "mmm...mmm"},
+        {R"({"mesh": ")" + std::string(3000, 'm') + R"(.obj"})", "mmm.obj: no such file"},
+        {R"({"mesh": ")" + std::string(3000, 'm') + R"(.ply"})", "hmcr reads .obj and .mgf"},
     };
     for (const auto& [json, needle] : cases) {
         plates(kPlatesObj, kPlatesMtl, json);
