@@ -80,7 +80,7 @@ TEST(MpiRuns, ReferencesAreTheSameBitsOnAnyRankCount) {
     TempDir dir;
     const std::string reference = "reference plates --max-area 0.05 --rays 40000 -q -o ";
     ASSERT_EQ(run_hmcr(reference + "one", dir.path()).exit_code, 0);
-    for (int k : {2, 3}) {
+    for (int k : {1, 2, 3}) {
         const std::string name = "ranks" + std::to_string(k);
         const CliRun r = run_hmcr_mpi(k, reference + name, dir.path());
         ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -114,7 +114,7 @@ protected:
     static void TearDownTestSuite() { delete s_dir; }
     static const fs::path& dir() { return s_dir->path(); }
     static std::string study(const std::string& out) {
-        return "study plates --reference ref --budgets 60,120 --oracles power,kl --seeds 2 "
+        return "study plates --reference ref --budgets 60,120 --oracles power,kl --seeds 1 "
                "--rays 400000 -o " + out;
     }
     static void expect_same_study(const std::string& out) {
@@ -129,11 +129,18 @@ protected:
 };
 TempDir* MpiStudy::s_dir = nullptr;
 
+// One rank computes alone; two and three hand the cells out to one and two workers.
 TEST_F(MpiStudy, CellsHandedOutToRanksMakeTheSameStudy) {
-    const CliRun r = run_hmcr_mpi(3, study("three"), dir());
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.err.find("(rank 2;"), std::string::npos) << "rank 2 computed no cell: " << r.err;
-    expect_same_study("three");
+    for (int k : {1, 2, 3}) {
+        const std::string out = "ranks" + std::to_string(k);
+        const CliRun r = run_hmcr_mpi(k, study(out), dir());
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        if (k > 1) {
+            const std::string last = "(rank " + std::to_string(k - 1) + ";";
+            EXPECT_NE(r.err.find(last), std::string::npos) << "a rank computed no cell: " << r.err;
+        }
+        expect_same_study(out);
+    }
 }
 
 std::size_t finished_cells(const fs::path& dir) {
@@ -181,7 +188,7 @@ TEST_F(MpiStudy, KilledOnOneRankItResumesWithAnotherRankCount) {
     EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the run did not notice";
     const std::size_t before = finished_cells(out);
     ASSERT_GE(before, 1u);
-    ASSERT_LT(before, 8u) << "the study finished before it could be killed";
+    ASSERT_LT(before, 4u) << "the study finished before it could be killed";
     EXPECT_FALSE(fs::exists(out / "table.md"));
 
     const CliRun r = run_hmcr_mpi(2, study("killed"), dir());
