@@ -17,12 +17,12 @@ struct CliRun {
     std::string out, err;
 };
 
-// hmcr ARGS in `dir`, killed after `seconds`.
-inline CliRun run_hmcr(const std::string& args, const std::filesystem::path& dir,
-                       int seconds = 60) {
+// `launcher` hmcr ARGS in `dir`, killed after `seconds`.
+inline CliRun run_launched(const std::string& launcher, const std::string& args,
+                           const std::filesystem::path& dir, int seconds) {
     const std::string cmd = "cd '" + dir.string() + "' && timeout -s KILL " +
-                            std::to_string(seconds) + " " + std::string(HMCR_BINARY) + " " +
-                            args + " >.stdout 2>.stderr";
+                            std::to_string(seconds) + " " + launcher + std::string(HMCR_BINARY) +
+                            " " + args + " >.stdout 2>.stderr";
     const int status = std::system(cmd.c_str());
     CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(dir / ".stdout"),
              read_file(dir / ".stderr")};
@@ -31,9 +31,15 @@ inline CliRun run_hmcr(const std::string& args, const std::filesystem::path& dir
     return r;
 }
 
-// `mpirun -n RANKS hmcr ARGS` in `dir`, killed after `seconds`. Open MPI refuses root without
-// its two variables (CI runs as root); oversubscribing lets 3 ranks share 2 cores; the
-// single-copy mechanism needs ptrace, which containers often forbid.
+// hmcr ARGS in `dir`, killed after `seconds`.
+inline CliRun run_hmcr(const std::string& args, const std::filesystem::path& dir,
+                       int seconds = 60) {
+    return run_launched("", args, dir, seconds);
+}
+
+// `mpirun -n RANKS hmcr ARGS`. Open MPI refuses root without its two variables (CI runs as
+// root); oversubscribing lets 3 ranks share 2 cores; the single-copy mechanism needs ptrace,
+// which containers often forbid.
 inline std::string mpirun_prefix(int ranks) {
     return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
            "OMPI_MCA_btl_vader_single_copy_mechanism=none mpirun --oversubscribe -n " +
@@ -42,15 +48,7 @@ inline std::string mpirun_prefix(int ranks) {
 
 inline CliRun run_hmcr_mpi(int ranks, const std::string& args, const std::filesystem::path& dir,
                            int seconds = 120) {
-    const std::string cmd = "cd '" + dir.string() + "' && timeout -s KILL " +
-                            std::to_string(seconds) + " env " + mpirun_prefix(ranks) +
-                            std::string(HMCR_BINARY) + " " + args + " >.stdout 2>.stderr";
-    const int status = std::system(cmd.c_str());
-    CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(dir / ".stdout"),
-             read_file(dir / ".stderr")};
-    std::filesystem::remove(dir / ".stdout");
-    std::filesystem::remove(dir / ".stderr");
-    return r;
+    return run_launched("env " + mpirun_prefix(ranks), args, dir, seconds);
 }
 
 // Every file below a folder with its bytes: equal snapshots mean nothing was written, removed
