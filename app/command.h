@@ -12,6 +12,8 @@ namespace hmcr {
 struct Command {
     CLI::App* cli = nullptr;
     std::function<int()> run;
+    // Shares its work over MPI ranks (README, Clusters); the others run on rank 0 alone.
+    bool over_ranks = false;
 };
 
 // `command_line` is the whole invocation, recorded in run summaries.

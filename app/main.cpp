@@ -72,7 +72,10 @@ int main(int argc, char** argv) {
         return fail(2, std::string(e.what()) + " (see hmcr --help)");
     }
     for (const Command& c : commands) {
-        if (c.cli->parsed()) return run(c);
+        if (!c.cli->parsed()) continue;
+        // Under mpirun a command that does not share its work runs once, not once per rank.
+        if (!c.over_ranks && !Ranks::world().root()) return 0;
+        return run(c);
     }
     return fail(1, "internal error: no command ran");
 }

@@ -67,7 +67,7 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
     cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel of the view images")
         ->capture_default_str();
     cmd->add_flag("-q,--quiet", a->quiet, "print only errors");
-    return {cmd, [a, command_line] { return run_reference(*a, command_line); }};
+    return {cmd, [a, command_line] { return run_reference(*a, command_line); }, true};
 }
 
 }  // namespace hmcr

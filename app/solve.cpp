@@ -137,7 +137,7 @@ Command solve_command(CLI::App& app, const std::string& command_line) {
         ->capture_default_str();
     cmd->add_option("--progress", args->progress, "auto, bar, lines or none")->capture_default_str();
     cmd->add_flag("-q,--quiet", args->quiet, "print only errors");
-    return {cmd, [args, command_line] { return run_solve(*args, command_line); }};
+    return {cmd, [args, command_line] { return run_solve(*args, command_line); }, true};
 }
 
 }  // namespace hmcr

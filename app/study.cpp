@@ -200,7 +200,7 @@ Command study_command(CLI::App& app) {
     cmd->add_flag("--redo", o.redo_other_settings,
                   "compute again the cells of the output folder made with other settings");
     cmd->add_flag("-q,--quiet", a->quiet, "print only errors");
-    return {cmd, [a] { return run_study(*a); }};
+    return {cmd, [a] { return run_study(*a); }, true};
 }
 
 }  // namespace hmcr
