@@ -28,8 +28,14 @@ testing::AssertionResult within_standard_errors(const std::string& what, double 
                                                 double bias_bound = 0, double z = kZ);
 
 // One-sample Student t test of the mean of a few independent runs (e.g. one per seed) at
-// two-sided level 1e-3; for 2..31 samples.
+// two-sided level 1e-3 / comparisons: a test that makes `comparisons` of them (one per patch)
+// keeps its own false-alarm rate at 1e-3 (Bonferroni). For 2..31 samples.
 testing::AssertionResult t_test(const std::string& what, const std::vector<double>& samples,
-                                double expected, double bias_bound = 0);
+                                double expected, double bias_bound = 0, int comparisons = 1);
+
+// Two-sided p-value of Student's t statistic `t` with `dof` degrees of freedom, and the
+// quantile with two-sided level `alpha`.
+double student_p_value(double t, double dof);
+double student_quantile(double alpha, double dof);
 
 }  // namespace hmcr::test
