@@ -35,7 +35,7 @@ T json_value(const json& j) {
         return j.get<std::string>();
     } else if constexpr (std::is_floating_point_v<T>) {
         if (!j.is_number() || !std::isfinite(j.get<double>())) {
-            throw InputError("must be a finite number, got " + j.dump());
+            throw InputError("must be a finite number, got " + quote(j.dump()));
         }
         return j.get<T>();
     } else {
@@ -44,12 +44,12 @@ T json_value(const json& j) {
         const bool whole = j.is_number_integer() &&
                            (j.is_number_unsigned() || j.get<std::int64_t>() >= 0 ||
                             std::numeric_limits<T>::is_signed);
-        if (!whole) throw InputError("must be a whole number in range, got " + j.dump());
+        if (!whole) throw InputError("must be a whole number in range, got " + quote(j.dump()));
         if constexpr (std::is_signed_v<T>) {
             const auto v = j.is_number_unsigned() ? std::numeric_limits<std::int64_t>::max()
                                                   : j.get<std::int64_t>();
             if (v < std::numeric_limits<T>::min() || v > std::numeric_limits<T>::max()) {
-                throw InputError("must be a whole number in range, got " + j.dump());
+                throw InputError("must be a whole number in range, got " + quote(j.dump()));
             }
         }
         return j.get<T>();
