@@ -4,7 +4,6 @@
 #pragma once
 
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 
@@ -42,13 +41,6 @@ struct PowerQuantum {
 
 inline void add(Quanta& sum, const Quanta& q) {
     for (int c = 0; c < 3; ++c) sum[c] += q[c];
-}
-
-// For deposits from many threads onto one element.
-inline void add_atomic(Quanta& sum, const Quanta& q) {
-    for (int c = 0; c < 3; ++c) {
-        if (q[c] != 0) std::atomic_ref<std::int64_t>(sum[c]).fetch_add(q[c], std::memory_order_relaxed);
-    }
 }
 
 }  // namespace hmcr
