@@ -3,7 +3,8 @@
 // never touches MPI, so a plain run costs nothing and needs no daemon.
 //
 // Every collective here must be reached by every rank: code that may throw between two of them
-// catches, reaches the next one with `any_failed`, and rethrows there (see solver.cpp).
+// runs inside together(), which catches, reaches agree() on every rank, and rethrows there (see
+// solver.cpp).
 #pragma once
 
 #include <cstddef>

@@ -44,7 +44,8 @@ struct IterationOutcome {
 double reflected_fraction(const RefinementContext& ctx, const IterationSources& sources,
                           std::uint32_t iteration, std::uint64_t rays);
 
-// Shoots the rays `slice` of the `rays` rays of iteration `iteration` and adds their deposits, in quanta, to the elements' received accumulators.
+// Shoots the rays `slice` of the `rays` rays of iteration `iteration` and adds their deposits,
+// in quanta, to the elements' received accumulators.
 // `on_batch(rays_done)` is called from the calling thread between batches.
 IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
                                  std::uint32_t iteration, std::uint64_t rays, RaySlice slice = {},

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -47,48 +48,57 @@ nlohmann::json without_seconds(nlohmann::json j) {
     return j;
 }
 
+// Runs `command` + "one" + `suffix` alone, then `command` + "ranksK" + `suffix` under
+// `mpirun -n K` for each K, and calls `check(name, K)` on each MPI run's output name.
+void against_one_process(const fs::path& dir, const std::string& command,
+                         const std::string& suffix, std::initializer_list<int> rank_counts,
+                         const std::function<void(const std::string&, int)>& check) {
+    ASSERT_EQ(run_hmcr(command + "one" + suffix, dir).exit_code, 0);
+    for (int k : rank_counts) {
+        const std::string name = "ranks" + std::to_string(k);
+        const CliRun r = run_hmcr_mpi(k, command + name + suffix, dir);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        check(name, k);
+    }
+}
+
+// The .vtp byte for byte, the summary but for run details.
+void expect_same_solve(const fs::path& dir, const std::string& name, int k) {
+    EXPECT_EQ(read_file(dir / (name + ".vtp")), read_file(dir / "one.vtp")) << k << " ranks";
+    const auto summary = read_json(dir / (name + ".json"));
+    EXPECT_EQ(summary["options"]["ranks"], k);
+    EXPECT_EQ(without_run_details(summary), without_run_details(read_json(dir / "one.json")))
+        << k << " ranks";
+}
+
 TEST(MpiRuns, RefinedSolvesAreTheSameBitsOnAnyRankCount) {
     TempDir dir;
-    const std::string solve = "solve cornell --oracle kl --rays 300000 -q -o ";
-    ASSERT_EQ(run_hmcr(solve + "one.vtp", dir.path()).exit_code, 0);
-    for (int k : {1, 2, 3}) {
-        const std::string name = "ranks" + std::to_string(k);
-        const CliRun r = run_hmcr_mpi(k, solve + name + ".vtp", dir.path());
-        ASSERT_EQ(r.exit_code, 0) << r.err;
-        EXPECT_EQ(read_file(dir.path() / (name + ".vtp")), read_file(dir.path() / "one.vtp"))
-            << k << " ranks";
-        const auto summary = read_json(dir.path() / (name + ".json"));
-        EXPECT_EQ(summary["options"]["ranks"], k);
-        EXPECT_EQ(without_run_details(summary),
-                  without_run_details(read_json(dir.path() / "one.json")))
-            << k << " ranks";
-    }
+    against_one_process(dir.path(), "solve cornell --oracle kl --rays 300000 -q -o ", ".vtp",
+                        {1, 2, 3}, [&](const std::string& name, int k) {
+                            expect_same_solve(dir.path(), name, k);
+                        });
 }
 
 TEST(MpiRuns, BudgetSearchesAreTheSameBitsOnTwoRanks) {
     TempDir dir;
-    const std::string solve = "solve cornell --oracle power --budget 3000 --rays 300000 -q -o ";
-    ASSERT_EQ(run_hmcr(solve + "one.vtp", dir.path()).exit_code, 0);
-    const CliRun r = run_hmcr_mpi(2, solve + "two.vtp", dir.path());
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(read_file(dir.path() / "two.vtp"), read_file(dir.path() / "one.vtp"));
-    EXPECT_EQ(without_run_details(read_json(dir.path() / "two.json")),
-              without_run_details(read_json(dir.path() / "one.json")));
+    against_one_process(dir.path(),
+                        "solve cornell --oracle power --budget 3000 --rays 300000 -q -o ", ".vtp",
+                        {2}, [&](const std::string& name, int k) {
+                            expect_same_solve(dir.path(), name, k);
+                        });
 }
 
 TEST(MpiRuns, ReferencesAreTheSameBitsOnAnyRankCount) {
     TempDir dir;
-    const std::string reference = "reference plates --max-area 0.05 --rays 40000 -q -o ";
-    ASSERT_EQ(run_hmcr(reference + "one", dir.path()).exit_code, 0);
-    for (int k : {1, 2, 3}) {
-        const std::string name = "ranks" + std::to_string(k);
-        const CliRun r = run_hmcr_mpi(k, reference + name, dir.path());
-        ASSERT_EQ(r.exit_code, 0) << r.err;
-        for (const char* file : {"reference.vtp", "views/side.pfm", "views/oblique.pfm"}) {
-            EXPECT_EQ(read_file(dir.path() / name / file), read_file(dir.path() / "one" / file))
-                << file << ", " << k << " ranks";
-        }
-    }
+    against_one_process(
+        dir.path(), "reference plates --max-area 0.05 --rays 40000 -q -o ", "", {1, 2, 3},
+        [&](const std::string& name, int k) {
+            for (const char* file : {"reference.vtp", "views/side.pfm", "views/oblique.pfm"}) {
+                EXPECT_EQ(read_file(dir.path() / name / file),
+                          read_file(dir.path() / "one" / file))
+                    << file << ", " << k << " ranks";
+            }
+        });
 }
 
 // Without a launcher's variables hmcr never starts MPI: an error is said once, with its code.
