@@ -92,6 +92,7 @@ private:
             count_step();
             if (s.words[0] == "xf") {
                 run_transformed(parse_mgf_xf(arguments(s.words, 1), m_where),
+                                file.xf_close[i] == i + 1,
                                 [&] { run_block(file, i + 1, file.xf_close[i]); });
                 i = file.xf_close[i];
             } else {
@@ -102,8 +103,8 @@ private:
 
     // Statements run and array instances both count: an array of 10^9 empty instances would
     // otherwise run for minutes without a statement to count.
-    void count_step() {
-        if (++m_statements > m_options.max_statements) {
+    void count_step(std::uint64_t steps = 1) {
+        if ((m_statements += steps) > m_options.max_statements) {
             throw InputError(m_where, fmt::format("more than {} statements to run (arrays and "
                                                   "includes expanded)",
                                                   m_options.max_statements));
@@ -115,9 +116,12 @@ private:
         return {w.begin() + std::ptrdiff_t(from), w.end()};
     }
 
-    // Runs `body` once per instance of the transformation, each inside the enclosing one.
+    // Runs `body` once per instance of the transformation, each inside the enclosing one. The
+    // instances of an empty body are only counted, all at once: each would cost a power of the
+    // transformation and do nothing.
     template <typename Body>
-    void run_transformed(const MgfXf& xf, Body&& body) {
+    void run_transformed(const MgfXf& xf, bool empty_body, Body&& body) {
+        if (empty_body) return count_step(std::uint64_t(xf.instances()));
         const MgfTransform enclosing = m_transform;
         for (long long k = 0; k < xf.instances(); ++k) {
             count_step();
@@ -135,7 +139,7 @@ private:
         const MgfXf xf = parse_mgf_xf(arguments(w, 2), m_where);
         const MgfFile& file = load(from.path.parent_path() / w[1], m_where);
         const std::string where = m_where;
-        run_transformed(xf, [&] {
+        run_transformed(xf, file.statements.empty(), [&] {
             m_where = where;
             run_file(file);
         });

@@ -233,18 +233,27 @@ TEST(MgfReader, ArraysBeyondTheStatementBudgetAreRefused) {
 }
 
 // Found by fuzzing: instances of an empty array ran no statement to count, so 10^9 of them ran
-// for minutes. Each instance counts now.
+// for minutes. Each instance counts now (all at once, so a refusal is immediate): the `xf` and
+// 999 instances are within 1,000 statements, 1,000 instances are not.
 TEST(MgfReader, EmptyArraysCountTheirInstances) {
     SceneFiles files;
     MgfOptions options;
     options.max_statements = 1000;
+    EXPECT_EQ(read_mgf(files.write("999.mgf", "xf -a 999 -t 1 0 0\nxf\n"), options).polygon_count(),
+              0u);
+    EXPECT_TRUE(contains(scene_error([&] {
+                             read_mgf(files.write("1000.mgf", "xf -a 1000 -t 1 0 0\nxf\n"),
+                                      options);
+                         }),
+                         "1000.mgf:1: more than 1000 statements"));
     const auto path =
         files.write("scene.mgf", std::string(kSquareVertices) + "xf -a 1000000000 -t 1 0 0\nxf\n");
     EXPECT_TRUE(
         contains(scene_error([&] { read_mgf(path, options); }), "scene.mgf:9: more than 1000"));
     files.write("empty.mgf", "# nothing\n");
     const auto top = files.write("top.mgf", "i empty.mgf -a 1000000000 -t 1 0 0\n");
-    EXPECT_TRUE(contains(scene_error([&] { read_mgf(top, options); }), "top.mgf:1: more than 1000"));
+    EXPECT_TRUE(
+        contains(scene_error([&] { read_mgf(top, options); }), "top.mgf:1: more than 1000"));
 }
 
 TEST(MgfReader, IncludesAreRelativeToTheIncludingFile) {
