@@ -81,7 +81,7 @@ void prepare_study_output(const std::filesystem::path& out, const std::filesyste
     prepare_output_dir(out);
 }
 
-int run_sampling_study(StudyArgs& a) {
+int run_sampling_study_command(StudyArgs& a) {
     SamplingStudyOptions& o = a.sampling;
     o.reference = a.options.reference;
     o.output = a.options.output;
@@ -120,14 +120,14 @@ int run_meshing_study(StudyArgs& a) {
     return 0;
 }
 
-int run_study(StudyArgs& a) {
+int run_study_command(StudyArgs& a) {
     const bool sampling = !a.samplers.empty();
     if (sampling == !a.budgets.empty()) {
         throw InputError("study: give --budgets (a meshing study) or --samplers (a sampling study)" +
                          std::string(sampling ? ", not both" : ""));
     }
     refuse_mixed_flags(a, sampling);
-    return sampling ? run_sampling_study(a) : run_meshing_study(a);
+    return sampling ? run_sampling_study_command(a) : run_meshing_study(a);
 }
 
 // The options `add` puts on `cmd`.
@@ -200,7 +200,7 @@ Command study_command(CLI::App& app) {
     cmd->add_flag("--redo", o.redo_other_settings,
                   "compute again the cells of the output folder made with other settings");
     cmd->add_flag("-q,--quiet", a->quiet, "print only errors");
-    return {cmd, [a] { return run_study(*a); }, true};
+    return {cmd, [a] { return run_study_command(*a); }, true};
 }
 
 }  // namespace hmcr

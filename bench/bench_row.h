@@ -9,6 +9,9 @@
 
 namespace hmcr::bench {
 
+// Rays of the benchmark solves (the Cornell and cube-room rows, the scaling points).
+inline constexpr std::uint64_t kBenchRays = 2'684'000;
+
 struct RowSpec {
     std::string scene;  // a bundled name or a mesh/scene file
     std::string oracle;

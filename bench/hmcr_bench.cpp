@@ -27,9 +27,8 @@
 namespace hmcr::bench {
 namespace {
 
-constexpr std::uint64_t kRays = 2'684'000;
 
-// Epsilon for about 19,000 leaves at kRays, N_s = 10, seed 1 (found by bisection on log eps).
+// Epsilon for about 19,000 leaves at kBenchRays, N_s = 10, seed 1 (found by bisection on log eps).
 const std::map<std::pair<std::string, std::string>, double> kEpsilon = {
     {{"cornell", "power"}, 1.18e-06},   {{"cornell", "ks"}, 5.9e-03},
     {{"cornell", "mi"}, 3.57e-08},      {{"cornell", "kl"}, 6.6e-07},
@@ -43,7 +42,7 @@ const std::map<std::pair<std::string, std::string>, double> kEpsilon = {
 std::vector<nlohmann::json> g_rows;
 
 void bench_solve(benchmark::State& state, const std::string& scene, const std::string& oracle) {
-    RowSpec spec{scene, oracle, kEpsilon.at({scene, oracle}), kRays, int(state.range(0))};
+    RowSpec spec{scene, oracle, kEpsilon.at({scene, oracle}), kBenchRays, int(state.range(0))};
     for (auto _ : state) {
         const RowResult r = run_row(spec);
         state.SetIterationTime(r.shooting_seconds);

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bench/bench_row.h"
 #include "studies/montage.h"
 #include "studies/plot.h"
 #include "viz/image.h"
@@ -20,7 +21,6 @@ namespace hmcr::bench {
 namespace {
 
 constexpr const char* kOracle = "kl";
-constexpr std::uint64_t kRays = 2'684'000;
 
 struct Point {
     std::string study, scene;
@@ -83,15 +83,15 @@ std::vector<nlohmann::json> run_scaling_study(const std::string& self,
                                               const std::filesystem::path& plot) {
     std::vector<Point> points;
     for (const char* size : {"100", "1k", "10k", "100k"}) {
-        points.push_back({"patches", (scenes / fmt::format("office-{}.obj", size)).string(), kRays, 2});
+        points.push_back({"patches", (scenes / fmt::format("office-{}.obj", size)).string(), kBenchRays, 2});
     }
-    points.push_back({"patches", "office", kRays, 2});
+    points.push_back({"patches", "office", kBenchRays, 2});
     for (std::uint64_t rays : {std::uint64_t(1'000'000), std::uint64_t(10'000'000),
                                std::uint64_t(100'000'000)}) {
         points.push_back({"rays", "office", rays, 2});
     }
     for (int threads : {1, 2}) {
-        points.push_back({"threads", (scenes / "office-100k.obj").string(), kRays, threads});
+        points.push_back({"threads", (scenes / "office-100k.obj").string(), kBenchRays, threads});
     }
     fmt::print("\nscaling study: {} on the office, each point in its own process\n", kOracle);
     fmt::print("{:>8} {:>9} {:>10} {:>7} {:>9} {:>8} {:>8} {:>9} {:>9} {:>7} {:>8}\n", "study",

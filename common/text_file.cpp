@@ -80,4 +80,9 @@ nlohmann::json read_json_file(const fs::path& path) {
     }
 }
 
+std::string_view without_bom(std::string_view text) {
+    constexpr std::string_view kBom = "\xEF\xBB\xBF";
+    return text.substr(0, kBom.size()) == kBom ? text.substr(kBom.size()) : text;
+}
+
 }  // namespace hmcr

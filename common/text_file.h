@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 #include "common/error.h"
 
@@ -20,6 +21,9 @@ inline constexpr std::uint64_t kMaxTextBytes = std::uint64_t(4) << 30;
 // cannot be read.
 std::string read_text_file(const std::filesystem::path& path,
                            std::uint64_t max_bytes = kMaxTextBytes);
+
+// The text after a UTF-8 byte-order mark, if it starts with one (editors on Windows write it).
+std::string_view without_bom(std::string_view text);
 
 // The parsed JSON file; a syntax error is "PATH:LINE: why".
 nlohmann::json read_json_file(const std::filesystem::path& path);

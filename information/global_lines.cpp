@@ -16,7 +16,7 @@
 namespace hmcr {
 namespace {
 
-constexpr std::uint64_t kBlock = 1024;  // lines per parallel task (fixed: results are too)
+constexpr std::uint64_t kLinesPerTask = 1024;  // lines per parallel task (fixed: results are too)
 constexpr std::uint64_t kGlobalKey = 0x676c6f62616cULL;  // beyond every patch index
 constexpr int kMaxHits = 1 << 16;  // a line crossing more surfaces is cut (never in practice)
 
@@ -141,13 +141,13 @@ ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& sc
     // refused before it is allocated.
     require_memory(24.0 * double(options.lines), fmt::format("{} global lines", options.lines));
     const Sphere sphere = bounding_sphere(patches);
-    std::vector<Block> blocks((options.lines + kBlock - 1) / kBlock);
+    std::vector<Block> blocks((options.lines + kLinesPerTask - 1) / kLinesPerTask);
     parallel_blocks(blocks.size(), progress, [&](std::uint64_t i) {
         set_tracing_float_mode();
         Block& block = blocks[i];
         block.tally = KernelTally(b);
-        const std::uint64_t k1 = std::min<std::uint64_t>(options.lines, (i + 1) * kBlock);
-        for (std::uint64_t k = i * kBlock; k < k1; ++k) {
+        const std::uint64_t k1 = std::min<std::uint64_t>(options.lines, (i + 1) * kLinesPerTask);
+        for (std::uint64_t k = i * kLinesPerTask; k < k1; ++k) {
             trace_line(patches, scene, sphere, options.seed, k, block.hits);
             add_line(patches, b, std::uint32_t(k % b), block);
         }

@@ -13,7 +13,7 @@
 namespace hmcr {
 namespace {
 
-constexpr std::uint64_t kBlock = 4096;  // rays per parallel task (fixed: results are too)
+constexpr std::uint64_t kRaysPerTask = 4096;  // rays per parallel task (fixed: results are too)
 
 struct RayOutcome {
     std::uint32_t target = ChannelSamples::kNoPatch;
@@ -72,11 +72,12 @@ ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& sce
     out.lines = start.back();
     out.target.assign(out.lines, ChannelSamples::kNoPatch);
 
-    const std::uint64_t blocks = (out.lines + kBlock - 1) / kBlock;
+    const std::uint64_t blocks = (out.lines + kRaysPerTask - 1) / kRaysPerTask;
     std::vector<KernelTally> tallies(blocks, KernelTally(b));
     parallel_blocks(blocks, progress, [&](std::uint64_t block) {
         set_tracing_float_mode();
-        const std::uint64_t g0 = block * kBlock, g1 = std::min(out.lines, g0 + kBlock);
+        const std::uint64_t g0 = block * kRaysPerTask;
+        const std::uint64_t g1 = std::min(out.lines, g0 + kRaysPerTask);
         auto i = std::uint32_t(std::upper_bound(start.begin(), start.end(), g0) - start.begin() - 1);
         for (std::uint64_t g = g0; g < g1; ++g) {
             while (g >= start[i + 1]) ++i;

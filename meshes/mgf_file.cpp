@@ -9,11 +9,6 @@
 namespace hmcr {
 namespace {
 
-std::string_view without_bom(std::string_view text) {
-    constexpr std::string_view kBom = "\xEF\xBB\xBF";
-    return text.substr(0, kBom.size()) == kBom ? text.substr(kBom.size()) : text;
-}
-
 // Joins escaped newlines and keeps the statements that are not comments.
 std::vector<MgfStatement> split_statements(std::string_view text, const std::string& path) {
     std::vector<MgfStatement> out;

@@ -9,6 +9,7 @@
 #include <climits>
 #include <cmath>
 
+#include "common/text_file.h"
 #include "meshes/scene.h"
 
 namespace hmcr {
@@ -190,11 +191,6 @@ bool is_known_mtl_statement(std::string_view key) {
         "decal", "refl", "norm", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor"};
     if (key.rfind("map_", 0) == 0) return true;
     return std::find(std::begin(kKnown), std::end(kKnown), key) != std::end(kKnown);
-}
-
-std::string_view without_bom(std::string_view text) {
-    constexpr std::string_view kBom = "\xEF\xBB\xBF";
-    return text.substr(0, kBom.size()) == kBom ? text.substr(kBom.size()) : text;
 }
 
 // The tokens of a line up to a comment: '#' at the start of a token starts one.

@@ -50,14 +50,6 @@ Corners corners_of(const PolygonSoup& soup, std::size_t k, const std::vector<int
     return c;
 }
 
-double largest_edge(const Corners& c) {
-    double longest = 0;
-    for (std::size_t i = 0; i < c.size(); ++i) {
-        longest = std::max(longest, (c.p[(i + 1) % c.size()] - c.p[i]).norm());
-    }
-    return longest;
-}
-
 // Corner i repeats the next one, or spans no area with its neighbours (the tolerance of the
 // patch checks, relative to the polygon's largest edge).
 bool corner_is_degenerate(const Corners& c, std::size_t i, double limit) {
@@ -68,7 +60,7 @@ bool corner_is_degenerate(const Corners& c, std::size_t i, double limit) {
 
 // Takes such corners out until none is left; true when any was.
 bool remove_degenerate_corners(Corners& c) {
-    const double edge = largest_edge(c);
+    const double edge = largest_edge(c.p);
     const double limit = kDegenerateAreaRatio * edge * edge;
     bool removed = false, changed = true;
     while (changed) {

@@ -28,14 +28,6 @@ Eigen::Vector3d newell_normal(const std::vector<Eigen::Vector3d>& p) {
     return n;
 }
 
-double largest_edge(const std::vector<Eigen::Vector3d>& p) {
-    double longest = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        longest = std::max(longest, (p[(i + 1) % p.size()] - p[i]).norm());
-    }
-    return longest;
-}
-
 // The polygon in its plane, with the tolerance below which a turn counts as zero.
 struct Polygon2 {
     std::vector<Point2> p;

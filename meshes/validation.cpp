@@ -23,14 +23,6 @@ Eigen::Vector3d corner_turn(const std::vector<Eigen::Vector3d>& p, std::size_t i
     return (p[i] - prev).cross(next - p[i]);
 }
 
-double largest_edge(const std::vector<Eigen::Vector3d>& p) {
-    double longest = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        longest = std::max(longest, (p[(i + 1) % p.size()] - p[i]).norm());
-    }
-    return longest;
-}
-
 std::optional<std::string> check_repeated(const std::vector<int>& ids) {
     for (std::size_t i = 0; i < ids.size(); ++i) {
         for (std::size_t j = i + 1; j < ids.size(); ++j) {
@@ -111,6 +103,15 @@ std::optional<std::string> check_channels(const Material& m, const Eigen::Vector
 }
 
 }  // namespace
+
+double largest_edge(const std::vector<Eigen::Vector3d>& p) {
+    double longest = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        longest = std::max(longest, (p[(i + 1) % p.size()] - p[i]).norm());
+    }
+    return longest;
+}
+
 
 bool quad_is_planar(const std::vector<Eigen::Vector3d>& corners) {
     const auto [distance, tolerance] = off_plane(corners);

@@ -21,6 +21,9 @@ inline constexpr double kPlanarityRatio = 1e-4;        // off-plane distance / d
 // values overflow the sums of power into infinities (a solve that never ends).
 inline constexpr double kMaxRadiance = 1e20;
 
+// The longest edge of a closed polygon: the length the degeneracy tolerances are relative to.
+double largest_edge(const std::vector<Eigen::Vector3d>& corners);
+
 // Whether the 4th corner of a quad lies within kPlanarityRatio x its longer diagonal of the plane
 // of the other three.
 bool quad_is_planar(const std::vector<Eigen::Vector3d>& corners);

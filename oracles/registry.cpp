@@ -50,9 +50,15 @@ const Oracle* oracle_named(std::string_view name) {
     return nullptr;
 }
 
+std::vector<std::string> oracle_name_list() {
+    std::vector<std::string> names;
+    for (const Oracle* o : all_oracles()) names.emplace_back(o->name());
+    return names;
+}
+
 std::string oracle_names() {
     std::string names;
-    for (const Oracle* o : all_oracles()) names += (names.empty() ? "" : ", ") + std::string(o->name());
+    for (const std::string& name : oracle_name_list()) names += (names.empty() ? "" : ", ") + name;
     return names;
 }
 

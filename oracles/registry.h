@@ -15,6 +15,8 @@ const std::vector<const Oracle*>& all_oracles();
 const Oracle* oracle_named(std::string_view name);
 // The oracle called name; throws std::invalid_argument naming the valid ones.
 const Oracle& find_oracle(std::string_view name);
+// Every name, in the same order.
+std::vector<std::string> oracle_name_list();
 // "power, ks, ...": every name, for messages.
 std::string oracle_names();
 

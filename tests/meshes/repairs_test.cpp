@@ -16,14 +16,14 @@ using test::contains;
 using test::scene_error;
 using test::SceneFiles;
 
-constexpr const char* kMtl =
+constexpr const char* kRepairsMtl =
     "newmtl grey\nKd 0.5 0.5 0.5\n"
     "newmtl light\nKd 0 0 0\nKe 1 1 1\n"
     "newmtl white\nKd 1 1 1\n";
 
 // Lines 1-3; the test's statements start on line 4. The light (a unit square at z = 5, facing
 // down) is the last face of every file, so each test's own faces come first.
-constexpr const char* kHeader = "mtllib scene.mtl\nusemtl grey\n# body\n";
+constexpr const char* kRepairsHeader = "mtllib scene.mtl\nusemtl grey\n# body\n";
 constexpr const char* kLight = "usemtl light\nv 0 0 5\nv 0 1 5\nv 1 1 5\nv 1 0 5\nf -4 -3 -2 -1\n";
 
 struct Loaded {
@@ -33,8 +33,8 @@ struct Loaded {
 
 Loaded load(const std::string& body, bool strict = false) {
     SceneFiles files;
-    files.write("scene.mtl", kMtl);
-    const auto obj = files.write("scene.obj", kHeader + body + kLight);
+    files.write("scene.mtl", kRepairsMtl);
+    const auto obj = files.write("scene.obj", kRepairsHeader + body + kLight);
     LoadOptions options;
     options.strict = strict;
     Loaded out;

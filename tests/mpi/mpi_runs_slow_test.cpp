@@ -153,13 +153,6 @@ TEST_F(MpiStudy, CellsHandedOutToRanksMakeTheSameStudy) {
     }
 }
 
-std::size_t finished_cells(const fs::path& dir) {
-    std::size_t n = 0;
-    if (!fs::exists(dir / "cells")) return 0;
-    for (const auto& e : fs::directory_iterator(dir / "cells")) n += e.path().extension() == ".json";
-    return n;
-}
-
 // The process of rank `rank` whose command line mentions `marker`, or 0.
 pid_t rank_process(int rank, const std::string& marker) {
     for (const auto& e : fs::directory_iterator("/proc")) {

@@ -197,12 +197,6 @@ Calibrated calibrate(const Scene& scene, const Oracle& oracle, const Shadow& sha
     return run;
 }
 
-std::vector<std::string> oracle_names() {
-    std::vector<std::string> names;
-    for (const Oracle* o : all_oracles()) names.emplace_back(o->name());
-    return names;
-}
-
 class ShadowBoundary : public testing::TestWithParam<std::string> {};
 
 TEST_P(ShadowBoundary, LineOraclesRefineThePenumbraAndPowerDoesNot) {
@@ -236,7 +230,7 @@ TEST_P(ShadowBoundary, LineOraclesRefineThePenumbraAndPowerDoesNot) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryOracle, ShadowBoundary, testing::ValuesIn(oracle_names()),
+INSTANTIATE_TEST_SUITE_P(EveryOracle, ShadowBoundary, testing::ValuesIn(oracle_name_list()),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 }  // namespace

@@ -13,7 +13,7 @@ namespace {
 using nlohmann::json;
 
 // The error of applying `solver` to default options, or "" when it applies.
-std::string scene_error(const json& solver) {
+std::string solver_error(const json& solver) {
     SolverOptions o;
     try {
         apply_scene_settings(solver, "scene.json", o);
@@ -49,26 +49,26 @@ TEST(SolverSettings, SceneValuesApply) {
 // Every bad value is refused with the file and the key, never rounded, wrapped or clamped.
 TEST(SolverSettings, BadSceneValuesAreRefusedWithFileAndKey) {
     for (const json& rays : {json(-5), json(1e30), json(2.5), json("abc"), json(0)}) {
-        const std::string e = scene_error({{"rays", rays}});
+        const std::string e = solver_error({{"rays", rays}});
         EXPECT_EQ(e.rfind("scene.json: solver.rays: ", 0), 0u) << rays << ": " << e;
     }
-    EXPECT_NE(scene_error({{"seed", -1}}).find("solver.seed: must be a whole number"),
+    EXPECT_NE(solver_error({{"seed", -1}}).find("solver.seed: must be a whole number"),
               std::string::npos);
-    EXPECT_NE(scene_error({{"stop", 2}}).find("solver.stop: stop must be in (0, 1), got 2"),
+    EXPECT_NE(solver_error({{"stop", 2}}).find("solver.stop: stop must be in (0, 1), got 2"),
               std::string::npos);
-    EXPECT_NE(scene_error({{"epsilon", -1}}).find("solver.epsilon: epsilon must be positive"),
+    EXPECT_NE(solver_error({{"epsilon", -1}}).find("solver.epsilon: epsilon must be positive"),
               std::string::npos);
-    EXPECT_NE(scene_error({{"max_depth", 1.5}}).find("solver.max_depth"), std::string::npos);
-    EXPECT_NE(scene_error({{"oracle", "nope"}}).find("one of power, ks"), std::string::npos);
+    EXPECT_NE(solver_error({{"max_depth", 1.5}}).find("solver.max_depth"), std::string::npos);
+    EXPECT_NE(solver_error({{"oracle", "nope"}}).find("one of power, ks"), std::string::npos);
 }
 
 // Keys a scene may not set: unknown ones, and properties of a run rather than of a scene.
 TEST(SolverSettings, UnknownAndRunOnlyKeysAreRefused) {
-    EXPECT_NE(scene_error({{"ray", 5}}).find("scene.json: solver: unknown setting 'ray' (settings: "),
+    EXPECT_NE(solver_error({{"ray", 5}}).find("scene.json: solver: unknown setting 'ray' (settings: "),
               std::string::npos);
-    EXPECT_NE(scene_error({{"threads", 2}}).find("unknown setting 'threads'"), std::string::npos);
-    EXPECT_NE(scene_error({{"uniform_max_area", 1}}).find("unknown setting"), std::string::npos);
-    EXPECT_NE(scene_error(json::array()).find("must be a JSON object"), std::string::npos);
+    EXPECT_NE(solver_error({{"threads", 2}}).find("unknown setting 'threads'"), std::string::npos);
+    EXPECT_NE(solver_error({{"uniform_max_area", 1}}).find("unknown setting"), std::string::npos);
+    EXPECT_NE(solver_error(json::array()).find("must be a JSON object"), std::string::npos);
 }
 
 TEST(SolverSettings, SummaryNamesEverySetting) {

@@ -16,12 +16,6 @@
 namespace hmcr::test {
 namespace {
 
-std::vector<std::string> oracle_names() {
-    std::vector<std::string> names;
-    for (const Oracle* o : all_oracles()) names.emplace_back(o->name());
-    return names;
-}
-
 class EveryOracle : public testing::TestWithParam<std::string> {
 protected:
     SolverOptions options(std::uint64_t rays, std::uint64_t seed) const {
@@ -207,7 +201,7 @@ TEST_P(EveryOracle, RaysAddUpToTheRequestedTotal) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Oracles, EveryOracle, testing::ValuesIn(oracle_names()),
+INSTANTIATE_TEST_SUITE_P(Oracles, EveryOracle, testing::ValuesIn(oracle_name_list()),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 // Each bad value is rejected with a message naming it (the one line the CLI prints).

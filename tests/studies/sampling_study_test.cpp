@@ -34,7 +34,7 @@ public:
 };
 
 // The scene's views at size x size pixels, traced into dir with 64 uniform samples.
-void write_reference(const Scene& scene, int size, const fs::path& dir) {
+void write_small_reference(const Scene& scene, int size, const fs::path& dir) {
     std::vector<View> views = scene.views;
     for (View& v : views) v.width = v.height = size;
     TraceOptions o;
@@ -61,7 +61,7 @@ nlohmann::json without_seconds(nlohmann::json cell) {
 TEST(SamplingStudy, WritesEveryFileAndResumes) {
     const TempDir temp;
     const Scene scene = load_scene("cornell");
-    write_reference(scene, 12, temp.path() / "ref");
+    write_small_reference(scene, 12, temp.path() / "ref");
     EXPECT_EQ(read_reference_exposures(temp.path() / "ref").size(), 2u);
     const SamplingStudyOptions o = study(temp.path(), {"uniform", "kl", "entropy"}, 2);
     run_sampling_study(scene, o);
@@ -106,7 +106,7 @@ TEST(SamplingStudy, UnreachableTargetIsAFailedCell) {
                R"({"mesh": "furnace.obj", "views": [{"name": "inside", "position": [0.5, 0.5,)"
                R"( 0.05], "look_at": [0.5, 0.5, 1], "fov": 90, "width": 8, "height": 8}]})");
     const Scene scene = load_scene((temp.path() / "glow" / "glow.json").string());
-    write_reference(scene, 8, temp.path() / "ref");
+    write_small_reference(scene, 8, temp.path() / "ref");
     const SamplingStudyOptions o = study(temp.path(), {"uniform", "kl"}, 1);
     run_sampling_study(scene, o);
     const auto kl = nlohmann::json::parse(read_file(o.output / "cells" / "glow-kl-spp12-s1.json"));

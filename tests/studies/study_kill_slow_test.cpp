@@ -11,19 +11,13 @@
 #include <filesystem>
 #include <thread>
 
+#include "tests/support/cli_run.h"
 #include "tests/support/temp_dir.h"
 
 namespace hmcr::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::size_t finished_cells(const fs::path& dir) {
-    std::size_t n = 0;
-    if (!fs::exists(dir / "cells")) return 0;
-    for (const auto& e : fs::directory_iterator(dir / "cells")) n += e.path().extension() == ".json";
-    return n;
-}
 
 int run(const std::string& args, const fs::path& log) {
     const std::string cmd = std::string(HMCR_BINARY) + " " + args + " >/dev/null 2>" + log.string();

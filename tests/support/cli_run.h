@@ -61,4 +61,14 @@ inline std::map<std::string, std::string> snapshot(const std::filesystem::path& 
     return files;
 }
 
+// The cell files a study has finished in `dir` (each is written whole or not at all).
+inline std::size_t finished_cells(const std::filesystem::path& dir) {
+    std::size_t n = 0;
+    if (!std::filesystem::exists(dir / "cells")) return 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir / "cells")) {
+        n += e.path().extension() == ".json";
+    }
+    return n;
+}
+
 }  // namespace hmcr::test

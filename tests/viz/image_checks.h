@@ -7,6 +7,10 @@
 
 namespace hmcr::test {
 
+// Embree intersects in float: hit coordinates, distances and the values interpolated from them
+// carry about 1e-7 relative error.
+constexpr double kFloatTol = 1e-6;
+
 // Same size and bitwise the same value in every channel of every pixel.
 inline testing::AssertionResult identical(const Image& a, const Image& b) {
     if (a.width != b.width || a.height != b.height || a.pixels.size() != b.pixels.size()) {

@@ -14,8 +14,7 @@ namespace hmcr {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Embree intersects in float: interpolated values carry about 1e-7 relative error.
-constexpr double kFloatTol = 1e-6;
+using test::kFloatTol;
 
 // The unit square in z = 0 as two cells, the right one with a point in the middle of its right
 // edge (a conforming polygon's T-vertex), point radiosity B = pi * field(point).

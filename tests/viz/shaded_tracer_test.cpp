@@ -5,12 +5,12 @@
 #include <stdexcept>
 
 #include "radiosity/embree_scene.h"
+#include "tests/viz/image_checks.h"
 
 namespace hmcr {
 namespace {
 
-// Embree computes in float: a hit's (u, v) and distance carry about 1e-7 relative error.
-constexpr double kFloatTol = 1e-6;
+using test::kFloatTol;
 
 TEST(EmbreeSoup, ReportsTriangleBarycentricsAndDistance) {
     // Triangle 0 at z = 0, triangle 1 (a reversed copy) at z = -1 behind it.

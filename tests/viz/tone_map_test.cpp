@@ -5,10 +5,10 @@
 #include <limits>
 #include <numbers>
 
+#include "viz/image.h"  // Srgb8
+
 namespace hmcr {
 namespace {
-
-using Srgb8 = std::array<std::uint8_t, 3>;
 
 TEST(ToneMap, SrgbTransferFunction) {
     EXPECT_EQ(srgb_encode(0), 0);

@@ -46,7 +46,7 @@ Scene sample_scene() {
     return s;
 }
 
-vtkSmartPointer<vtkPolyData> read_vtp(const std::filesystem::path& path) {
+vtkSmartPointer<vtkPolyData> read_with_vtk(const std::filesystem::path& path) {
     vtkNew<vtkXMLPolyDataReader> reader;
     reader->SetFileName(path.c_str());
     reader->Update();
@@ -75,7 +75,7 @@ TEST_F(VtkExport, WritesGeometryAndArraysOfSpec) {
     const auto path = m_dir.path() / "out" / "scene.vtp";
     write_vtp(path, m_mesh, sample_metadata());
     EXPECT_EQ(m_dir.files(), std::vector<std::string>{"out/scene.vtp"});  // no temp file left
-    const auto pd = read_vtp(path);
+    const auto pd = read_with_vtk(path);
     ASSERT_EQ(pd->GetNumberOfPoints(), vtkIdType(m_mesh.points.size()));
     ASSERT_EQ(pd->GetNumberOfCells(), vtkIdType(m_scene.h->leaf_count()));
     ASSERT_EQ(pd->GetNumberOfPolys(), vtkIdType(m_mesh.cell_count()));
@@ -95,7 +95,7 @@ TEST_F(VtkExport, WritesGeometryAndArraysOfSpec) {
 TEST_F(VtkExport, ValuesRoundTrip) {
     const auto path = m_dir.path() / "scene.vtp";
     write_vtp(path, m_mesh, sample_metadata());
-    const auto pd = read_vtp(path);
+    const auto pd = read_with_vtk(path);
     const auto colors = point_colors(m_mesh);
     vtkDataArray* radiosity = pd->GetPointData()->GetArray("Radiosity");
     vtkDataArray* color = pd->GetPointData()->GetArray("RadiosityColor");
@@ -127,7 +127,7 @@ TEST_F(VtkExport, ValuesRoundTrip) {
 TEST_F(VtkExport, FieldDataHoldsRunDescription) {
     const auto path = m_dir.path() / "scene.vtp";
     write_vtp(path, m_mesh, sample_metadata());
-    const auto pd = read_vtp(path);
+    const auto pd = read_with_vtk(path);
     vtkFieldData* fd = pd->GetFieldData();
     auto string_value = [&](const char* name) {
         auto* a = vtkStringArray::SafeDownCast(fd->GetAbstractArray(name));
