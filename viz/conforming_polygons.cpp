@@ -207,6 +207,7 @@ class Builder {
             std::sort(positions.begin(), positions.end());
             positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
         }
+        m_out.offsets.reserve(m_h.leaf_count() + 1);
         m_h.for_each_leaf([&](const Element& e) { emit_polygon(e); });
         return std::move(m_out);
     }

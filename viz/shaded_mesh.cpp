@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <numeric>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 
@@ -13,20 +15,24 @@ namespace hmcr {
 namespace {
 
 // One use of a lattice vertex by a cell: the slot of the cell's polygon that names it.
+// 16 bytes: at 10^6 patches there are 4 x 10^6 of them, the largest block of the output stage.
 struct Incidence {
     std::uint32_t vertex = 0;
     std::uint32_t patch = 0;
     std::uint32_t cell = 0;
-    std::size_t slot = 0;
+    std::uint32_t slot = 0;
 };
 
 std::vector<Incidence> incidences(const ConformingPolygons& polys, const ShadedMesh& out) {
+    if (polys.polygon_vertices.size() > std::numeric_limits<std::uint32_t>::max()) {
+        throw std::length_error("more than 2^32 polygon corners in one solution");
+    }
     std::vector<Incidence> inc;
     inc.reserve(polys.polygon_vertices.size());
     for (std::size_t c = 0; c + 1 < polys.offsets.size(); ++c) {
         for (auto s = polys.offsets[c]; s < polys.offsets[c + 1]; ++s) {
             inc.push_back({polys.polygon_vertices[s], std::uint32_t(out.patch_id[c]),
-                           std::uint32_t(c), std::size_t(s)});
+                           std::uint32_t(c), std::uint32_t(s)});
         }
     }
     std::sort(inc.begin(), inc.end(), [](const Incidence& a, const Incidence& b) {
@@ -92,6 +98,11 @@ class CreaseGrouping {
 };
 
 void fill_cells(const Hierarchy& h, ShadedMesh& out) {
+    const std::size_t leaves = h.leaf_count();
+    out.element_radiosity.reserve(leaves);
+    out.hierarchy_level.reserve(leaves);
+    out.patch_id.reserve(leaves);
+    out.element_area.reserve(leaves);
     h.for_each_leaf([&](const Element& e) {
         out.element_radiosity.push_back(e.radiosity);
         out.hierarchy_level.push_back(e.id.depth);
@@ -149,14 +160,15 @@ void emit_points(const Incidence* first, const Incidence* last, const LatticeVer
 }  // namespace
 
 ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees) {
-    const ConformingPolygons polys = build_conforming_polygons(h, mesh);
+    ConformingPolygons polys = build_conforming_polygons(h, mesh);
     ShadedMesh out;
     fill_cells(h, out);
-    out.offsets = polys.offsets;
     out.connectivity.assign(polys.polygon_vertices.size(), -1);
     out.points.reserve(polys.vertices.size());
     out.point_radiosity.reserve(polys.vertices.size());
     const std::vector<Incidence> inc = incidences(polys, out);
+    out.offsets = std::move(polys.offsets);
+    polys.polygon_vertices = {};  // in `inc` now
     CreaseGrouping grouping(h, mesh, crease_degrees);
     for (std::size_t i = 0; i < inc.size();) {
         std::size_t j = i;
