@@ -112,7 +112,6 @@ double largest_edge(const std::vector<Eigen::Vector3d>& p) {
     return longest;
 }
 
-
 bool quad_is_planar(const std::vector<Eigen::Vector3d>& corners) {
     const auto [distance, tolerance] = off_plane(corners);
     return distance <= tolerance;
