@@ -27,8 +27,7 @@
 namespace hmcr::bench {
 namespace {
 
-
-// Epsilon for about 19,000 leaves at kBenchRays, N_s = 10, seed 1 (found by bisection on log eps).
+// Epsilon for about 19,000 leaves at kBenchRays, N_s = 10, seed 1 (bisection on log eps).
 const std::map<std::pair<std::string, std::string>, double> kEpsilon = {
     {{"cornell", "power"}, 1.18e-06},   {{"cornell", "ks"}, 5.9e-03},
     {{"cornell", "mi"}, 3.57e-08},      {{"cornell", "kl"}, 6.6e-07},

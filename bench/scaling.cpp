@@ -83,7 +83,8 @@ std::vector<nlohmann::json> run_scaling_study(const std::string& self,
                                               const std::filesystem::path& plot) {
     std::vector<Point> points;
     for (const char* size : {"100", "1k", "10k", "100k"}) {
-        points.push_back({"patches", (scenes / fmt::format("office-{}.obj", size)).string(), kBenchRays, 2});
+        const std::string scene = (scenes / fmt::format("office-{}.obj", size)).string();
+        points.push_back({"patches", scene, kBenchRays, 2});
     }
     points.push_back({"patches", "office", kBenchRays, 2});
     for (std::uint64_t rays : {std::uint64_t(1'000'000), std::uint64_t(10'000'000),

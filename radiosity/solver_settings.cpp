@@ -27,6 +27,12 @@ std::string shown(const T& value) {
     }
 }
 
+// A bad value for a message, quoted (that is, cut short) once: a string as its text, anything
+// else as JSON.
+std::string got(const json& j) {
+    return ", got " + quote(j.is_string() ? j.get<std::string>() : j.dump());
+}
+
 // The JSON value as T, or a one-line reason it is not one.
 template <class T>
 T json_value(const json& j) {
@@ -35,7 +41,7 @@ T json_value(const json& j) {
         return j.get<std::string>();
     } else if constexpr (std::is_floating_point_v<T>) {
         if (!j.is_number() || !std::isfinite(j.get<double>())) {
-            throw InputError("must be a finite number, got " + quote(j.dump()));
+            throw InputError("must be a finite number" + got(j));
         }
         return j.get<T>();
     } else {
@@ -44,12 +50,12 @@ T json_value(const json& j) {
         const bool whole = j.is_number_integer() &&
                            (j.is_number_unsigned() || j.get<std::int64_t>() >= 0 ||
                             std::numeric_limits<T>::is_signed);
-        if (!whole) throw InputError("must be a whole number in range, got " + quote(j.dump()));
+        if (!whole) throw InputError("must be a whole number in range" + got(j));
         if constexpr (std::is_signed_v<T>) {
             const auto v = j.is_number_unsigned() ? std::numeric_limits<std::int64_t>::max()
                                                   : j.get<std::int64_t>();
             if (v < std::numeric_limits<T>::min() || v > std::numeric_limits<T>::max()) {
-                throw InputError("must be a whole number in range, got " + quote(j.dump()));
+                throw InputError("must be a whole number in range" + got(j));
             }
         }
         return j.get<T>();

@@ -211,7 +211,7 @@ TEST_F(Cli, SceneSolverSettingOfTheWrongTypeIsNamed) {
     j["solver"] = {{"rays", "many"}};
     std::ofstream(json) << j.dump();
     expect_clean_failure(hmcr("solve " + json.string() + " -o " + (m_dir / "out.vtp").string()),
-                         "plates.json: solver.rays: must be a whole number in range, got '\"many\"'");
+                         "plates.json: solver.rays: must be a whole number in range, got 'many'");
 }
 
 // A scene file's bad setting is an error even when the command line overrides it: the file is

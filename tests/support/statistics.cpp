@@ -80,7 +80,7 @@ double student_quantile(double alpha, double dof) {
 testing::AssertionResult t_test(const std::string& what, const std::vector<double>& samples,
                                 double expected, double bias_bound, int comparisons) {
     const Estimate e = estimate_mean(samples);
-    if (e.n < 2 || e.n > 31) return testing::AssertionFailure() << "t_test needs 2..31";
+    if (e.n < 2) return testing::AssertionFailure() << "t_test needs 2 samples or more";
     const double t = student_quantile(1e-3 / comparisons, double(e.n - 1));
     return within_standard_errors(what + " (t test, " + std::to_string(e.n) + " runs)", e.mean,
                                   expected, e.standard_error, bias_bound, t);

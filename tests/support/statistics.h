@@ -29,7 +29,7 @@ testing::AssertionResult within_standard_errors(const std::string& what, double 
 
 // One-sample Student t test of the mean of a few independent runs (e.g. one per seed) at
 // two-sided level 1e-3 / comparisons: a test that makes `comparisons` of them (one per patch)
-// keeps its own false-alarm rate at 1e-3 (Bonferroni). For 2..31 samples.
+// keeps its own false-alarm rate at 1e-3 (Bonferroni). For 2 samples or more.
 testing::AssertionResult t_test(const std::string& what, const std::vector<double>& samples,
                                 double expected, double bias_bound = 0, int comparisons = 1);
 
