@@ -5,7 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 
 namespace hmcr {
 namespace {
@@ -112,13 +111,12 @@ int edge_of_line(bool quad, int dir, std::int64_t c) {
 }
 
 struct LineRef {
-    std::uint64_t key = 0;  // mesh edge lines have the top bit set
     int dir = 0;
     std::int64_t c = 0;
-    int patch_edge = -1;
+    int patch_edge = -1;  // the patch edge the line runs along, or -1 inside the patch
 };
 
-LineRef line_of(const PatchTopology& t, std::uint32_t patch, GridPoint a, GridPoint b) {
+LineRef line_of(const PatchTopology& t, GridPoint a, GridPoint b) {
     LineRef l;
     if (a.u == b.u) {
         l.dir = 0, l.c = a.u;
@@ -128,11 +126,6 @@ LineRef line_of(const PatchTopology& t, std::uint32_t patch, GridPoint a, GridPo
         l.dir = 2, l.c = a.u + a.v;
     }
     l.patch_edge = edge_of_line(t.quad(), l.dir, l.c);
-    if (l.patch_edge >= 0) {
-        l.key = (std::uint64_t(1) << 63) | t.edge[l.patch_edge];
-    } else {
-        l.key = (std::uint64_t(patch) << 27) | (std::uint64_t(l.dir) << 25) | std::uint64_t(l.c);
-    }
     return l;
 }
 
@@ -152,32 +145,43 @@ GridPoint point_at(const LineRef& l, const PatchTopology& t, std::int64_t pos) {
     return {l.c - pos, pos};
 }
 
-struct VertexKey {
-    std::uint64_t owner = 0;  // kind in the top bits, then the mesh vertex, edge or patch
-    std::uint64_t where = 0;  // position along the edge, or packed grid coordinates
-    bool operator==(const VertexKey&) const = default;
-};
+constexpr std::uint32_t kNone = ~std::uint32_t(0);
 
-struct VertexKeyHash {
-    std::size_t operator()(const VertexKey& k) const {
-        return std::hash<std::uint64_t>()(k.owner * 0x9E3779B97F4A7C15ull ^ k.where);
+// Sorted distinct 64-bit keys, each with the output vertex it became (kNone until first used).
+// Flat arrays instead of hash maps: on the 10^6-patch office the maps held 400 MB at the
+// output's peak, these a few MB.
+struct KeyedVertices {
+    std::vector<std::uint64_t> keys;
+    std::vector<std::uint32_t> vertex;
+
+    void seal() {
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+        vertex.assign(keys.size(), kNone);
+    }
+    void clear() {
+        keys.clear();
+        vertex.clear();
+    }
+    std::uint32_t& at(std::uint64_t key) {
+        const auto it = std::lower_bound(keys.begin(), keys.end(), key);
+        if (it == keys.end() || *it != key) {
+            throw std::logic_error("conforming polygons: a leaf corner is missing from its index");
+        }
+        return vertex[it - keys.begin()];
     }
 };
 
-VertexKey make_key(VertexKind kind, std::uint32_t id, std::uint64_t where) {
-    return {(std::uint64_t(kind) << 62) | id, where};
+// A point strictly inside mesh edge `edge`, at canonical position `pos` (< 2^25).
+std::uint64_t edge_point_key(std::uint32_t edge, std::int64_t pos) {
+    return (std::uint64_t(edge) << 25) | std::uint64_t(pos);
 }
 
-VertexKey key_of(const PatchTopology& t, std::uint32_t patch, GridPoint p) {
-    const int k = edge_of_point(t.quad(), p);
-    if (k < 0) {
-        return make_key(VertexKind::patch_interior, patch, (std::uint64_t(p.u) << 32) | p.v);
-    }
-    const std::int64_t pos = along_edge(t.quad(), k, p);
-    if (pos == 0) return make_key(VertexKind::mesh_vertex, t.vertex[k], 0);
-    if (pos == kGrid)
-        return make_key(VertexKind::mesh_vertex, t.vertex[(k + 1) % t.corner_count], 0);
-    return make_key(VertexKind::mesh_edge, t.edge[k], canonical(t, k, pos));
+std::uint64_t interior_point_key(GridPoint p) { return (std::uint64_t(p.u) << 32) | p.v; }
+
+// A position on an interior line of the current patch.
+std::uint64_t line_point_key(const LineRef& l, std::int64_t pos) {
+    return (std::uint64_t(l.dir) << 52) | (std::uint64_t(l.c) << 26) | std::uint64_t(pos);
 }
 
 struct Leaf {
@@ -195,68 +199,130 @@ Leaf leaf_corners(const Element& e, bool quad) {
     return leaf;
 }
 
+// Mesh-edge points are shared by the two patches of the edge, so they are collected for the
+// whole mesh first; interior lines and points belong to one patch and are built patch by patch,
+// in the output's leaf order, so vertex numbers follow first use as before.
 class Builder {
   public:
     Builder(const Hierarchy& h, const PatchMesh& mesh)
-        : m_h(h), m_mesh(mesh), m_topo(patch_topology(mesh, h.patch_set())) {}
+        : m_h(h),
+          m_mesh(mesh),
+          m_topo(patch_topology(mesh, h.patch_set())),
+          m_mesh_vertex(mesh.n_vertices(), kNone) {}
 
     ConformingPolygons build() {
-        m_index.reserve(m_h.leaf_count());
-        m_h.for_each_leaf([&](const Element& e) { collect_corners(e); });
-        for (auto& [key, positions] : m_lines) {
-            std::sort(positions.begin(), positions.end());
-            positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
-        }
+        m_h.for_each_leaf([&](const Element& e) { collect_edge_points(e); });
+        m_edge_points.seal();
         m_out.offsets.reserve(m_h.leaf_count() + 1);
-        m_h.for_each_leaf([&](const Element& e) { emit_polygon(e); });
+        m_out.polygon_vertices.reserve(4 * m_h.leaf_count());
+        m_h.for_each_leaf([&](const Element& e) {
+            if (!m_patch_leaves.empty() && m_patch_leaves.front()->id.patch != e.id.patch) {
+                emit_patch();
+            }
+            m_patch_leaves.push_back(&e);
+        });
+        emit_patch();
         return std::move(m_out);
     }
 
   private:
-    // Pass 1: every leaf corner onto the supporting lines of the leaf's edges.
-    void collect_corners(const Element& e) {
+    // Every leaf corner strictly inside a mesh edge. Such a corner is also an end of a leaf
+    // edge along the mesh edge, since the leaves tile the patch, so these are the points that
+    // leaf edges on the mesh edge must list.
+    void collect_edge_points(const Element& e) {
         const PatchTopology& t = m_topo[e.id.patch];
         const Leaf leaf = leaf_corners(e, t.quad());
         for (int k = 0; k < leaf.count; ++k) {
-            const GridPoint a = leaf.corner[k], b = leaf.corner[(k + 1) % leaf.count];
-            const LineRef l = line_of(t, e.id.patch, a, b);
-            auto& positions = m_lines[l.key];
-            positions.push_back(position_on(l, t, a));
-            positions.push_back(position_on(l, t, b));
+            const int edge = edge_of_point(t.quad(), leaf.corner[k]);
+            if (edge < 0) continue;
+            const std::int64_t pos = along_edge(t.quad(), edge, leaf.corner[k]);
+            if (pos == 0 || pos == kGrid) continue;
+            m_edge_points.keys.push_back(edge_point_key(t.edge[edge], canonical(t, edge, pos)));
         }
     }
 
-    // Pass 2: each leaf edge with the corners strictly inside it, in order from a to b.
+    void emit_patch() {
+        const std::uint32_t patch = m_patch_leaves.front()->id.patch;
+        const PatchTopology& t = m_topo[patch];
+        m_interior_points.clear();
+        m_line_points.clear();
+        for (const Element* e : m_patch_leaves) {
+            const Leaf leaf = leaf_corners(*e, t.quad());
+            for (int k = 0; k < leaf.count; ++k) {
+                const GridPoint a = leaf.corner[k], b = leaf.corner[(k + 1) % leaf.count];
+                if (edge_of_point(t.quad(), a) < 0) {
+                    m_interior_points.keys.push_back(interior_point_key(a));
+                }
+                const LineRef l = line_of(t, a, b);
+                if (l.patch_edge >= 0) continue;
+                m_line_points.push_back(line_point_key(l, position_on(l, t, a)));
+                m_line_points.push_back(line_point_key(l, position_on(l, t, b)));
+            }
+        }
+        m_interior_points.seal();
+        std::sort(m_line_points.begin(), m_line_points.end());
+        m_line_points.erase(std::unique(m_line_points.begin(), m_line_points.end()),
+                            m_line_points.end());
+        for (const Element* e : m_patch_leaves) emit_polygon(*e);
+        m_patch_leaves.clear();
+    }
+
+    // Each leaf edge with the corners strictly inside it, in order from a to b.
     void emit_polygon(const Element& e) {
         const PatchTopology& t = m_topo[e.id.patch];
         const Leaf leaf = leaf_corners(e, t.quad());
         for (int k = 0; k < leaf.count; ++k) {
             const GridPoint a = leaf.corner[k], b = leaf.corner[(k + 1) % leaf.count];
             emit_vertex(e.id.patch, a);
-            const LineRef l = line_of(t, e.id.patch, a, b);
-            const auto& positions = m_lines.at(l.key);
+            const LineRef l = line_of(t, a, b);
             const std::int64_t pa = position_on(l, t, a), pb = position_on(l, t, b);
-            auto lo = std::upper_bound(positions.begin(), positions.end(), std::min(pa, pb));
-            auto hi = std::lower_bound(lo, positions.end(), std::max(pa, pb));
+            const auto key = [&](std::int64_t pos) {
+                return l.patch_edge >= 0 ? edge_point_key(t.edge[l.patch_edge], pos)
+                                         : line_point_key(l, pos);
+            };
+            const auto mask = (std::uint64_t(1) << (l.patch_edge >= 0 ? 25 : 26)) - 1;
+            const auto& points = l.patch_edge >= 0 ? m_edge_points.keys : m_line_points;
+            auto lo = std::upper_bound(points.begin(), points.end(), key(std::min(pa, pb)));
+            auto hi = std::lower_bound(lo, points.end(), key(std::max(pa, pb)));
             if (pa < pb) {
-                for (auto it = lo; it != hi; ++it) emit_vertex(e.id.patch, point_at(l, t, *it));
+                for (auto it = lo; it != hi; ++it) {
+                    emit_vertex(e.id.patch, point_at(l, t, std::int64_t(*it & mask)));
+                }
             } else {
-                for (auto it = hi; it != lo; --it) emit_vertex(e.id.patch, point_at(l, t, it[-1]));
+                for (auto it = hi; it != lo; --it) {
+                    emit_vertex(e.id.patch, point_at(l, t, std::int64_t(it[-1] & mask)));
+                }
             }
         }
         m_out.offsets.push_back(std::int64_t(m_out.polygon_vertices.size()));
     }
 
     void emit_vertex(std::uint32_t patch, GridPoint p) {
-        const VertexKey key = key_of(m_topo[patch], patch, p);
-        auto [it, inserted] = m_index.try_emplace(key, std::uint32_t(m_out.vertices.size()));
-        if (inserted) m_out.vertices.push_back(make_vertex(key, patch, p));
-        m_out.polygon_vertices.push_back(it->second);
+        const PatchTopology& t = m_topo[patch];
+        const int k = edge_of_point(t.quad(), p);
+        std::uint32_t* slot = nullptr;
+        VertexKind kind = VertexKind::patch_interior;
+        std::uint32_t id = patch;
+        if (k < 0) {
+            slot = &m_interior_points.at(interior_point_key(p));
+        } else if (const std::int64_t pos = along_edge(t.quad(), k, p); pos == 0 || pos == kGrid) {
+            kind = VertexKind::mesh_vertex;
+            id = t.vertex[pos == 0 ? k : (k + 1) % t.corner_count];
+            slot = &m_mesh_vertex[id];
+        } else {
+            kind = VertexKind::mesh_edge;
+            id = t.edge[k];
+            slot = &m_edge_points.at(edge_point_key(id, canonical(t, k, pos)));
+        }
+        if (*slot == kNone) {
+            *slot = std::uint32_t(m_out.vertices.size());
+            m_out.vertices.push_back(make_vertex(kind, id, patch, p));
+        }
+        m_out.polygon_vertices.push_back(*slot);
     }
 
-    LatticeVertex make_vertex(const VertexKey& key, std::uint32_t patch, GridPoint p) const {
-        const auto kind = VertexKind(key.owner >> 62);
-        const auto id = std::uint32_t(key.owner & 0xFFFFFFFFu);
+    LatticeVertex make_vertex(VertexKind kind, std::uint32_t id, std::uint32_t patch,
+                              GridPoint p) const {
         if (kind == VertexKind::mesh_vertex) {
             const auto& q = m_mesh.point(PatchMesh::VertexHandle(int(id)));
             return {kind, id, Vec3(q[0], q[1], q[2])};
@@ -268,8 +334,12 @@ class Builder {
     const Hierarchy& m_h;
     const PatchMesh& m_mesh;
     std::vector<PatchTopology> m_topo;
-    std::unordered_map<std::uint64_t, std::vector<std::int64_t>> m_lines;
-    std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> m_index;
+    std::vector<std::uint32_t> m_mesh_vertex;  // output vertex of each mesh vertex
+    KeyedVertices m_edge_points;
+    // The current patch: its leaves, interior leaf corners and interior line positions.
+    std::vector<const Element*> m_patch_leaves;
+    KeyedVertices m_interior_points;
+    std::vector<std::uint64_t> m_line_points;
     ConformingPolygons m_out;
 };
 
