@@ -50,6 +50,8 @@ void for_each_line(std::string_view text, const std::function<void(int, std::str
 
 // Splits a line at spaces and tabs (the only separators tinyobjloader knows).
 std::vector<std::string_view> split_tokens(std::string_view line);
+// The same into `tokens` (cleared first), to reuse its storage line after line.
+void split_tokens(std::string_view line, std::vector<std::string_view>& tokens);
 
 // Scans OBJ text; throws InputError "path:line: message" on the first bad statement: unknown
 // keyword, unparsable or non-finite number, a v, vt or vn index out of range, polygon with
