@@ -40,14 +40,17 @@ struct Corners {
     }
 };
 
-Corners corners_of(const PolygonSoup& soup, std::size_t k, const std::vector<int>& welded) {
-    Corners c;
+// Polygon k's corners into c, reusing its storage (a million polygons, not 3 million vectors).
+void corners_of(const PolygonSoup& soup, std::size_t k, const std::vector<int>& welded,
+                Corners& c) {
+    c.soup.clear();
+    c.ids.clear();
+    c.p.clear();
     for (std::uint32_t s : soup.corners(k)) {
         c.soup.push_back(s);
         c.ids.push_back(welded[s]);
         c.p.push_back(soup.positions[s]);
     }
-    return c;
 }
 
 // Corner i repeats the next one, or spans no area with its neighbours (the tolerance of the
@@ -115,24 +118,29 @@ std::vector<Corners> ear_clip(const Corners& c, const Where& where) {
     return out;
 }
 
-// What one polygon becomes, and the repairs that took.
-std::vector<Corners> repair_polygon(Corners c, const Where& where, RepairReport& report) {
+enum class Outcome { dropped, whole, pieces };
+
+// What one polygon becomes (itself, repaired in place, or `pieces`), and the repairs that took.
+Outcome repair_polygon(Corners& c, const Where& where, RepairReport& report,
+                       std::vector<Corners>& pieces) {
     if (remove_degenerate_corners(c)) {
         if (c.size() < 3) {
             report.add(RepairKind::degenerate_dropped, where);
-            return {};
+            return Outcome::dropped;
         }
         report.add(RepairKind::corners_removed, where);
     }
-    if (c.size() == 3 || (c.size() == 4 && !check_face_geometry(c.p, c.ids))) return {c};
+    if (c.size() == 3 || (c.size() == 4 && !check_face_geometry(c.p, c.ids))) return Outcome::whole;
     if (c.size() == 4 && !quad_is_planar(c.p)) {
         std::optional<std::vector<Corners>> halves = split_quad(c);
         if (!halves) throw InputError(std::string(where), "self-intersecting quad: its edges cross");
         report.add(RepairKind::quad_split, where);
-        return *halves;
+        pieces = std::move(*halves);
+        return Outcome::pieces;
     }
     report.add(RepairKind::triangulated, where);
-    return ear_clip(c, where);
+    pieces = ear_clip(c, where);
+    return Outcome::pieces;
 }
 
 // The ids (3 or 4 after the repairs) in the same cyclic order, starting at the smallest, then
@@ -183,15 +191,28 @@ RepairReport repair_soup(PolygonSoup& soup) {
     PolygonSoup out;
     std::unordered_map<FaceKey, std::size_t, FaceKeyHash> seen;  // cyclic key -> output polygon
     seen.reserve(soup.polygon_count());
+    const auto keep = [&](const Corners& c, std::size_t k, const Where& where) {
+        const auto [it, fresh] = seen.try_emplace(cyclic_key(c.ids), out.polygon_count());
+        if (!fresh && out.material[it->second] == soup.material[k]) {
+            report.add(RepairKind::duplicate_dropped, where);
+            return;
+        }
+        out.add_polygon(c.soup, soup.material[k], soup.place[k]);
+    };
+    Corners c;
+    std::vector<Corners> pieces;
     for (std::size_t k = 0; k < soup.polygon_count(); ++k) {
         const Where where{soup, soup.place[k]};
-        for (const Corners& c : repair_polygon(corners_of(soup, k, welded), where, report)) {
-            const auto [it, fresh] = seen.try_emplace(cyclic_key(c.ids), out.polygon_count());
-            if (!fresh && out.material[it->second] == soup.material[k]) {
-                report.add(RepairKind::duplicate_dropped, where);
-                continue;
-            }
-            out.add_polygon(c.soup, soup.material[k], soup.place[k]);
+        corners_of(soup, k, welded, c);
+        switch (repair_polygon(c, where, report, pieces)) {
+            case Outcome::dropped:
+                break;
+            case Outcome::whole:
+                keep(c, k, where);
+                break;
+            case Outcome::pieces:
+                for (const Corners& piece : pieces) keep(piece, k, where);
+                break;
         }
     }
     soup.corner_offsets = std::move(out.corner_offsets);
