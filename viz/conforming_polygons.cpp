@@ -222,6 +222,7 @@ class Builder {
             m_patch_leaves.push_back(&e);
         });
         emit_patch();
+        m_out.vertices.shrink_to_fit();  // kept through the output stage's peak
         return std::move(m_out);
     }
 

@@ -6,7 +6,6 @@
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
-#include <tuple>
 #include <utility>
 
 #include "viz/conforming_polygons.h"
@@ -15,30 +14,36 @@ namespace hmcr {
 namespace {
 
 // One use of a lattice vertex by a cell: the slot of the cell's polygon that names it.
-// 16 bytes: at 10^6 patches there are 4 x 10^6 of them, the largest block of the output stage.
 struct Incidence {
-    std::uint32_t vertex = 0;
-    std::uint32_t patch = 0;
     std::uint32_t cell = 0;
     std::uint32_t slot = 0;
 };
 
-std::vector<Incidence> incidences(const ConformingPolygons& polys, const ShadedMesh& out) {
+// The incidences grouped by vertex: those of vertex v are inc[first[v] .. first[v + 1]), in
+// slot order, which is also patch order (cells are in patch order). A counting sort: at 10^6
+// patches there are 4 x 10^6 incidences, the largest block of the output stage, and 8 bytes
+// each here instead of a sorted array of 16.
+struct VertexIncidences {
+    std::vector<std::uint32_t> first;
+    std::vector<Incidence> inc;
+};
+
+VertexIncidences incidences(const ConformingPolygons& polys) {
     if (polys.polygon_vertices.size() > std::numeric_limits<std::uint32_t>::max()) {
         throw std::length_error("more than 2^32 polygon corners in one solution");
     }
-    std::vector<Incidence> inc;
-    inc.reserve(polys.polygon_vertices.size());
+    VertexIncidences v;
+    v.first.assign(polys.vertices.size() + 1, 0);
+    for (std::uint32_t vertex : polys.polygon_vertices) ++v.first[vertex + 1];
+    std::partial_sum(v.first.begin(), v.first.end(), v.first.begin());
+    std::vector<std::uint32_t> next(v.first.begin(), v.first.end() - 1);
+    v.inc.resize(polys.polygon_vertices.size());
     for (std::size_t c = 0; c + 1 < polys.offsets.size(); ++c) {
         for (auto s = polys.offsets[c]; s < polys.offsets[c + 1]; ++s) {
-            inc.push_back({polys.polygon_vertices[s], std::uint32_t(out.patch_id[c]),
-                           std::uint32_t(c), std::uint32_t(s)});
+            v.inc[next[polys.polygon_vertices[s]]++] = {std::uint32_t(c), std::uint32_t(s)};
         }
     }
-    std::sort(inc.begin(), inc.end(), [](const Incidence& a, const Incidence& b) {
-        return std::tuple(a.vertex, a.patch, a.slot) < std::tuple(b.vertex, b.patch, b.slot);
-    });
-    return inc;
+    return v;
 }
 
 // Groups the patches meeting at a vertex into blend groups: two patches blend when they share a
@@ -131,7 +136,8 @@ void emit_points(const Incidence* first, const Incidence* last, const LatticeVer
                  CreaseGrouping& grouping, ShadedMesh& out) {
     std::vector<std::uint32_t> patches;
     for (auto* i = first; i != last; ++i) {
-        if (patches.empty() || patches.back() != i->patch) patches.push_back(i->patch);
+        const auto patch = std::uint32_t(out.patch_id[i->cell]);
+        if (patches.empty() || patches.back() != patch) patches.push_back(patch);
     }
     const std::vector<int> group = grouping.groups(v, patches);
     std::vector<std::int64_t> point_of_group(patches.size(), -1);
@@ -139,7 +145,7 @@ void emit_points(const Incidence* first, const Incidence* last, const LatticeVer
     std::vector<double> area(patches.size(), 0.0);
     std::size_t p = 0;
     for (auto* i = first; i != last; ++i) {
-        while (patches[p] != i->patch) ++p;
+        while (patches[p] != std::uint32_t(out.patch_id[i->cell])) ++p;
         const int g = group[p];
         if (point_of_group[g] < 0) {
             point_of_group[g] = std::int64_t(out.points.size());
@@ -166,20 +172,19 @@ ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double c
     out.connectivity.assign(polys.polygon_vertices.size(), -1);
     out.points.reserve(polys.vertices.size());
     out.point_radiosity.reserve(polys.vertices.size());
-    const std::vector<Incidence> inc = incidences(polys, out);
+    const VertexIncidences vi = incidences(polys);
     out.offsets = std::move(polys.offsets);
-    polys.polygon_vertices = {};  // in `inc` now
+    polys.polygon_vertices = {};  // in `vi` now
     CreaseGrouping grouping(h, mesh, crease_degrees);
-    for (std::size_t i = 0; i < inc.size();) {
-        std::size_t j = i;
-        while (j < inc.size() && inc[j].vertex == inc[i].vertex) ++j;
-        const LatticeVertex& v = polys.vertices[inc[i].vertex];
-        if (inc[i].patch == inc[j - 1].patch) {  // inside one patch: the common case
-            emit_point(&inc[i], &inc[j], v.position, out);
+    for (std::size_t v = 0; v < polys.vertices.size(); ++v) {
+        const Incidence* first = vi.inc.data() + vi.first[v];
+        const Incidence* last = vi.inc.data() + vi.first[v + 1];
+        if (first == last) continue;
+        if (out.patch_id[first->cell] == out.patch_id[last[-1].cell]) {  // the common case
+            emit_point(first, last, polys.vertices[v].position, out);
         } else {
-            emit_points(&inc[i], &inc[j], v, grouping, out);
+            emit_points(first, last, polys.vertices[v], grouping, out);
         }
-        i = j;
     }
     return out;
 }
