@@ -126,11 +126,28 @@ OpenMesh::FaceHandle add_patch(PatchMesh& mesh, const std::vector<int>& ids,
 }
 
 // `materials[material_of[f]]` is face f's material.
-PatchMesh make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
-                    const std::vector<Material>& materials,
-                    const std::vector<std::uint32_t>& material_of, std::size_t vertex_count) {
-    PatchMesh mesh;
-    mesh.reserve(vertex_count, soup.corner_ids.size() / 2, soup.polygon_count());  // closed: exact
+// The distinct edges of the welded polygons, so that OpenMesh's edge arrays are reserved
+// exactly: an open mesh has more than corners / 2 edges, and an array that grows past its
+// reserve keeps twice the room (133 instead of 67 MB on the 10^6-patch office).
+std::size_t edge_count(const PolygonSoup& soup, const std::vector<int>& id) {
+    std::vector<std::uint64_t> edges;
+    edges.reserve(soup.corner_ids.size());
+    for (std::size_t f = 0; f < soup.polygon_count(); ++f) {
+        const auto c = soup.corners(f);
+        for (std::size_t k = 0; k < c.size(); ++k) {
+            const auto a = std::uint32_t(id[c[k]]), b = std::uint32_t(id[c[(k + 1) % c.size()]]);
+            edges.push_back((std::uint64_t(std::min(a, b)) << 32) | std::max(a, b));
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    return std::size_t(std::unique(edges.begin(), edges.end()) - edges.begin());
+}
+
+void make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
+               const std::vector<Material>& materials,
+               const std::vector<std::uint32_t>& material_of, std::size_t vertex_count,
+               PatchMesh& mesh) {
+    mesh.reserve(vertex_count, edge_count(soup, id), soup.polygon_count());
     auto reflectance = reflectance_prop(mesh);
     auto emission = emission_prop(mesh);
     auto source_line = source_line_prop(mesh);
@@ -147,7 +164,6 @@ PatchMesh make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
         emission[fh] = OpenMesh::Vec3d(e.x(), e.y(), e.z());
         source_line[fh] = int(soup.place[f].line);
     }
-    return mesh;
 }
 
 }  // namespace
@@ -166,6 +182,12 @@ std::string PolygonSoup::where(SourcePlace p) const {
 }
 
 PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options) {
+    PatchMesh mesh;
+    build_patch_mesh(soup, options, mesh);
+    return mesh;
+}
+
+void build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options, PatchMesh& mesh) {
     const std::string top = soup.files.empty() ? "mesh" : soup.files.front().string();
     if (soup.polygon_count() == 0) throw InputError(top, "no faces");
     check_default_material(options, top);
@@ -198,7 +220,7 @@ PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options) 
     if (!(emitted > 0) && options.use == SceneUse::solve) {
         throw InputError(top, "no face emits light (give a material used by a face Ke > 0)");
     }
-    return make_mesh(soup, id, materials, material_of, vertex_count);
+    make_mesh(soup, id, materials, material_of, vertex_count, mesh);
 }
 
 }  // namespace hmcr

@@ -185,8 +185,8 @@ void check_mesh_extension(const fs::path& mesh, const std::string& where) {
     }
 }
 
-void take_mesh(Scene& scene, MeshFile file, const LoadOptions& options) {
-    scene.mesh = std::move(file.mesh);
+void take_mesh(Scene& scene, const fs::path& path, const LoadOptions& options) {
+    MeshReport file = load_mesh(path, options, scene.mesh);
     scene.inputs.insert(scene.inputs.end(), file.files.begin(), file.files.end());
     scene.warnings = std::move(file.warnings);
     scene.repairs = std::move(file.repairs);
@@ -249,7 +249,7 @@ Scene load_json_scene(const fs::path& path, const std::string& name, LoadOptions
         options.default_material =
             parse_default_material(j["default_material"], file, options.strict);
     }
-    take_mesh(scene, load_mesh(scene.mesh_path, options), options);
+    take_mesh(scene, scene.mesh_path, options);
     if (scene.views.empty()) scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
@@ -261,7 +261,7 @@ Scene load_mesh_scene(const fs::path& path, LoadOptions options) {
     scene.source = path;
     scene.mesh_path = path;
     options.default_material.reset();
-    take_mesh(scene, load_mesh(path, options), options);
+    take_mesh(scene, path, options);
     scene.views.push_back(default_view(scene.mesh));
     return scene;
 }
@@ -277,7 +277,7 @@ Scene load_file(const fs::path& path, const LoadOptions& options) {
 
 // Tells the reader's warnings, repairs the soup unless strict (telling the repairs' warnings),
 // and builds the patch mesh.
-MeshFile load_soup(PolygonSoup soup, const LoadOptions& options) {
+MeshReport load_soup(PolygonSoup soup, const LoadOptions& options, PatchMesh& mesh) {
     const auto tell = [&](std::size_t from) {
         if (!options.warn) return;
         for (std::size_t w = from; w < soup.warnings.size(); ++w) options.warn(soup.warnings[w]);
@@ -294,8 +294,8 @@ MeshFile load_soup(PolygonSoup soup, const LoadOptions& options) {
     if (options.use == SceneUse::geometry && !options.default_material) {
         effective.default_material = Material{"default", Eigen::Vector3d::Constant(0.5), {0, 0, 0}};
     }
-    PatchMesh mesh = build_patch_mesh(soup, effective);
-    return {std::move(mesh), soup.files, std::move(soup.warnings), std::move(repairs)};
+    build_patch_mesh(soup, effective, mesh);
+    return {soup.files, std::move(soup.warnings), std::move(repairs)};
 }
 
 }  // namespace
@@ -312,24 +312,34 @@ const View& find_view(const Scene& scene, const std::string& name) {
                                  quote(name), names));
 }
 
-MeshFile load_mesh(const fs::path& path, const LoadOptions& options) {
+MeshReport load_mesh(const fs::path& path, const LoadOptions& options, PatchMesh& mesh) {
     if (path.extension() == ".mgf") {
         MgfOptions mgf;
         mgf.curve_segments = options.curve_segments.value_or(kDefaultCurveSegments);
-        return load_soup(read_mgf(path, mgf), options);
+        return load_soup(read_mgf(path, mgf), options, mesh);
     }
     if (path.extension() != ".obj") {
         throw InputError(path.string(), "hmcr reads .obj and .mgf meshes");
     }
-    return load_obj_file(path, options);
+    return load_soup(read_obj(path), options, mesh);
+}
+
+MeshFile load_mesh(const fs::path& path, const LoadOptions& options) {
+    MeshFile file;
+    static_cast<MeshReport&>(file) = load_mesh(path, options, file.mesh);
+    return file;
 }
 
 MeshFile load_obj_file(const fs::path& path, const LoadOptions& options) {
-    return load_soup(read_obj(path), options);
+    MeshFile file;
+    static_cast<MeshReport&>(file) = load_soup(read_obj(path), options, file.mesh);
+    return file;
 }
 
 PatchMesh load_obj(const fs::path& obj, const LoadOptions& options) {
-    return load_obj_file(obj, options).mesh;
+    PatchMesh mesh;
+    load_soup(read_obj(obj), options, mesh);
+    return mesh;
 }
 
 fs::path scene_directory() {
