@@ -15,6 +15,8 @@
 #include <limits>
 #include <string>
 
+#include "oracles/registry.h"
+
 namespace hmcr {
 
 enum class SettingScope { scene_file, command_line, internal };
@@ -63,7 +65,6 @@ std::uint64_t default_max_elements();
 inline constexpr double kOracleDefault = std::numeric_limits<double>::quiet_NaN();
 
 bool is_oracle_name(const std::string& name);
-std::string oracle_names();
 
 struct SolverOptions {
 #define HMCR_FIELD(type, name, default_value, ...) type name = default_value;

@@ -41,6 +41,15 @@ protected:
         refused("render " + vtp + " --scene plates.json -o x.png", needle);
         refused("info " + vtp + " --scene plates.json", needle);
     }
+    // good.vtp's bytes changed by `edit`, written as NAME: refused as "NAME: damaged VTK file:
+    // WHAT".
+    void expect_damaged(const std::string& name, const std::function<void(std::string&)>& edit,
+                        const std::string& what) {
+        std::string bytes = read_file(dir() / "good.vtp");
+        edit(bytes);
+        m_temp.write(name, bytes);
+        expect_refused(name, name + ": damaged VTK file: " + what);
+    }
 };
 
 TEST_F(HostileSolution, CellsThatAreNotPolygonsAreRefused) {
@@ -107,54 +116,45 @@ TEST_F(HostileSolution, GarbageIsRefused) {
 // Sizes VTK would trust: a block count of 2^31 in the first appended array's header made the
 // reader take gigabytes and a minute (found by the fuzzer); a huge NumberOfPoints likewise.
 TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
-    std::string bytes = read_file(dir() / "good.vtp");
-    const std::size_t data = bytes.find('_', bytes.find("<AppendedData")) + 1;
-    std::string blocks = bytes;
-    blocks.replace(data, 4, std::string("\x00\x00\x00\x80", 4));
-    m_temp.write("blocks.vtp", blocks);
-    expect_refused("blocks.vtp", "blocks.vtp: damaged VTK file: the array at offset 0 declares");
-    std::string points = bytes;
-    const std::size_t at = points.find("NumberOfPoints=\"") + 16;
-    points.replace(at, points.find('"', at) - at, "900000000000");
-    m_temp.write("points.vtp", points);
-    expect_refused("points.vtp", "points.vtp: damaged VTK file: NumberOfPoints is '900000000000'");
+    const std::string bytes = read_file(dir() / "good.vtp");
+    const auto first_array = [](const std::string& b) {
+        return b.find('_', b.find("<AppendedData")) + 1;
+    };
+    const auto replace = [](std::size_t at, std::size_t n, std::string with) {
+        return [=](std::string& b) { b.replace(at, n, with); };
+    };
+    expect_damaged("blocks.vtp", replace(first_array(bytes), 4, std::string("\x00\x00\x00\x80", 4)),
+                   "the array at offset 0 declares");
+    const std::size_t at = bytes.find("NumberOfPoints=\"") + 16;
+    const std::size_t count = bytes.find('"', at) - at;
+    expect_damaged("points.vtp", replace(at, count, "900000000000"),
+                   "NumberOfPoints is '900000000000'");
     // A count of 400 digits: std::stod would throw out_of_range (an internal error).
-    points.replace(at, 12, std::string(400, '9'));
-    m_temp.write("digits.vtp", points);
-    expect_refused("digits.vtp", "digits.vtp: damaged VTK file: NumberOfPoints is '999");
+    expect_damaged("digits.vtp", replace(at, count, std::string(400, '9')),
+                   "NumberOfPoints is '999");
     // No blocks but a last block of some bytes: another null dereference in VTK (fuzzer).
-    std::string header = bytes;
-    const std::size_t first = header.find('_', header.find("<AppendedData")) + 1;
-    header.replace(first, 12, std::string("\x00\x00\x00\x00\x00\x80\x00\x00\x08\x00\x00\x00", 12));
-    m_temp.write("header.vtp", header);
-    expect_refused("header.vtp", "header.vtp: damaged VTK file: the array at offset 0 has a block header");
+    expect_damaged("header.vtp",
+                   replace(first_array(bytes), 12,
+                           std::string("\x00\x00\x00\x00\x00\x80\x00\x00\x08\x00\x00\x00", 12)),
+                   "the array at offset 0 has a block header");
     // An unknown type name crashed VTK's reader (a null array dereferenced; the fuzzer again).
-    std::string type = bytes;
-    type.replace(type.find("type=\"Float64\""), 15, "type=\"Float65\"");
-    m_temp.write("type.vtp", type);
-    expect_refused("type.vtp", "type.vtp: damaged VTK file: an array of unknown type 'Float65'");
+    const std::size_t type = bytes.find("type=\"Float64\"");
+    expect_damaged("type.vtp", replace(type, 15, "type=\"Float65\""),
+                   "an array of unknown type 'Float65'");
     // An array without a type: another null dereference in VTK (fuzzer).
-    std::string untyped = bytes;
-    untyped.replace(untyped.find("type=\"Float64\""), 14, "Numi=\"Float64\"");
-    m_temp.write("untyped.vtp", untyped);
-    expect_refused("untyped.vtp", "untyped.vtp: damaged VTK file: an array without a type");
+    expect_damaged("untyped.vtp", replace(type, 14, "Numi=\"Float64\""), "an array without a type");
     // Bytes before the '_' marker: VTK takes the first for the marker and reads every header
     // off by their count (a 3 GB allocation, fuzzer).
-    std::string marker = bytes;
-    marker.insert(marker.find('_', marker.find("<AppendedData")), "\xe0\xe8 ");
-    m_temp.write("marker.vtp", marker);
-    expect_refused("marker.vtp", "marker.vtp: damaged VTK file: appended data without its '_' marker");
+    expect_damaged("marker.vtp", replace(first_array(bytes) - 1, 0, "\xe0\xe8 "),
+                   "appended data without its '_' marker");
     // An element VTK reads as an array though it is none: another null dereference (fuzzer).
-    std::string element = bytes;
-    element.replace(element.find("<DataArray"), 10, "<Dattr    ");
-    m_temp.write("element.vtp", element);
-    expect_refused("element.vtp", "element.vtp: damaged VTK file: an element 'Dattr' that no .vtp of hmcr holds");
+    expect_damaged("element.vtp", replace(bytes.find("<DataArray"), 10, "<Dattr    "),
+                   "an element 'Dattr' that no .vtp of hmcr holds");
     // Points of 6 components: VTK refuses them but leaks what it read (LeakSanitizer, fuzzer).
-    std::string six = bytes;
-    const std::size_t points_at = six.find("NumberOfComponents=\"3\"", six.find("<Points>"));
-    six.replace(points_at, 22, "NumberOfComponents=\"6\"");
-    m_temp.write("six.vtp", six);
-    expect_refused("six.vtp", "six.vtp: damaged VTK file: its points do not have 3 components");
+    expect_damaged("six.vtp",
+                   replace(bytes.find("NumberOfComponents=\"3\"", bytes.find("<Points>")), 22,
+                           "NumberOfComponents=\"6\""),
+                   "its points do not have 3 components");
     // VTK reads offset="19i" as 19, inside another array: a 2.7 GB header and 26 s (fuzzer).
     // Every spelling XML allows is checked: single quotes, spaces around '='.
     const std::size_t offset = bytes.find("offset=\"", bytes.find("offset=\"") + 1);
@@ -162,16 +162,11 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
     const std::string number = bytes.substr(value, end - value);
     for (const std::string& spelling :
          {"offset=\"" + number + "i\"", "offset='" + number + "i'", "offset = '" + number + "i'"}) {
-        std::string odd = bytes;
-        odd.replace(offset, end + 1 - offset, spelling);
-        m_temp.write("offset.vtp", odd);
-        expect_refused("offset.vtp", "offset.vtp: damaged VTK file: offset is '" + number +
-                                         "i', not a plain number");
+        expect_damaged("offset.vtp", replace(offset, end + 1 - offset, spelling),
+                       "offset is '" + number + "i', not a plain number");
     }
-    std::string quoted = bytes;
-    quoted.replace(at - 16, bytes.find('"', at) + 1 - (at - 16), "NumberOfPoints='900000000000'");
-    m_temp.write("quoted.vtp", quoted);
-    expect_refused("quoted.vtp", "quoted.vtp: damaged VTK file: NumberOfPoints is '900000000000'");
+    expect_damaged("quoted.vtp", replace(at - 16, count + 17, "NumberOfPoints='900000000000'"),
+                   "NumberOfPoints is '900000000000'");
 }
 
 }  // namespace

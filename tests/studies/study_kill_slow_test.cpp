@@ -19,12 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& args, const fs::path& log) {
-    const std::string cmd = std::string(HMCR_BINARY) + " " + args + " >/dev/null 2>" + log.string();
-    const int status = std::system(cmd.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 std::size_t temp_files(const fs::path& dir) {
     std::size_t n = 0;
     for (const auto& e : fs::recursive_directory_iterator(dir)) {
@@ -39,8 +33,8 @@ TEST_P(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
     const int signal = GetParam();
     TempDir dir;
     const fs::path ref = dir.path() / "ref", out = dir.path() / "study";
-    ASSERT_EQ(run("reference plates --max-area 0.05 --rays 20000 -q -o " + ref.string(),
-                  dir.path() / "ref.log"), 0);
+    ASSERT_EQ(run_hmcr("reference plates --max-area 0.05 --rays 20000 -q -o " + ref.string(),
+                       dir.path(), 600).exit_code, 0);
     const std::string study = "study plates --reference " + ref.string() +
                               " --budgets 60,120 --oracles power,kl --seeds 2 --rays 400000 -o " +
                               out.string();
@@ -68,8 +62,9 @@ TEST_P(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
     ASSERT_LT(before, 8u) << "the study finished before it could be killed";
     EXPECT_FALSE(fs::exists(out / "table.md"));
 
-    ASSERT_EQ(run(study, dir.path() / "rerun.log"), 0);
-    const std::string log = read_file(dir.path() / "rerun.log");
+    const CliRun rerun = run_hmcr(study, dir.path(), 600);
+    ASSERT_EQ(rerun.exit_code, 0) << rerun.err;
+    const std::string& log = rerun.err;
     std::size_t skipped = 0;
     for (std::size_t at = 0; (at = log.find("done before, skipped", at)) != std::string::npos; ++at) {
         ++skipped;
