@@ -4,8 +4,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
+#include <vector>
 
 #include "bench/embree_floor.h"
 #include "common/memory.h"
@@ -16,6 +18,7 @@
 namespace hmcr::bench {
 
 constexpr int kLines = 10;
+constexpr double kRepeatBelowSeconds = 5;
 
 RowResult run_row(const RowSpec& spec) {
     RowResult r;
@@ -31,6 +34,13 @@ RowResult run_row(const RowSpec& spec) {
     o.threads = spec.threads;
     const Solution sol = solve(scene.mesh, o);
     const SolveStats& st = sol.stats;
+    // Run to run, shooting times on this virtual machine vary by up to 30%: a solve of a few
+    // seconds is run three times and its median time kept (the solution is the same each time).
+    std::vector<double> shooting{st.shooting_seconds};
+    while (shooting.size() < 3 && st.shooting_seconds < kRepeatBelowSeconds) {
+        shooting.push_back(solve(scene.mesh, o).stats.shooting_seconds);
+    }
+    std::sort(shooting.begin(), shooting.end());
     r.patches = sol.hierarchy->patch_count();
     r.leaves = st.leaves;
     r.elements = st.elements;
@@ -41,7 +51,7 @@ RowResult run_row(const RowSpec& spec) {
     r.cache_hit_rate = lookups > 0 && st.cache_capacity ? double(st.cache_hits) / lookups : 0;
     r.oracle_seconds = st.oracle_seconds;
     r.setup_seconds = st.setup_seconds;
-    r.shooting_seconds = st.shooting_seconds;
+    r.shooting_seconds = shooting[shooting.size() / 2];
     r.solver_bytes = st.hierarchy_bytes + st.cache_bytes;
     tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, spec.threads);
     const EmbreeScene embree(sol.hierarchy->patch_set().patches);
