@@ -90,7 +90,6 @@ MeshFile load_mesh(const std::filesystem::path& path, const LoadOptions& options
 MeshReport load_mesh(const std::filesystem::path& path, const LoadOptions& options,
                      PatchMesh& mesh);
 // An OBJ file whatever its extension, and its mesh alone.
-MeshFile load_obj_file(const std::filesystem::path& obj, const LoadOptions& options = {});
 PatchMesh load_obj(const std::filesystem::path& obj, const LoadOptions& options = {});
 
 // Accepts a bundled scene name ("cornell"), a JSON scene file, or a mesh file (.obj, .mgf).

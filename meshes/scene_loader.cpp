@@ -330,12 +330,6 @@ MeshFile load_mesh(const fs::path& path, const LoadOptions& options) {
     return file;
 }
 
-MeshFile load_obj_file(const fs::path& path, const LoadOptions& options) {
-    MeshFile file;
-    static_cast<MeshReport&>(file) = load_soup(read_obj(path), options, file.mesh);
-    return file;
-}
-
 PatchMesh load_obj(const fs::path& obj, const LoadOptions& options) {
     PatchMesh mesh;
     load_soup(read_obj(obj), options, mesh);

@@ -243,6 +243,7 @@ class Builder {
     }
 
     void emit_patch() {
+        if (m_patch_leaves.empty()) return;  // a hierarchy without patches
         const std::uint32_t patch = m_patch_leaves.front()->id.patch;
         const PatchTopology& t = m_topo[patch];
         m_interior_points.clear();
