@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <climits>
@@ -15,6 +16,9 @@
 
 namespace hmcr {
 namespace {
+
+// Spaces and tabs: the only separators tinyobjloader knows.
+bool is_separator(char c) { return c == ' ' || c == '\t'; }
 
 [[noreturn]] void fail(const std::string& path, int line, const std::string& message) {
     throw InputError(at(path, line), message);
@@ -73,17 +77,13 @@ constexpr const char* kAttributePlurals[3] = {"vertices", "texture coordinates",
 // statements read so far; positive ones may not exceed the file's count of that kind.
 void check_reference(std::string_view token, const VertexCounts& so_far, const VertexCounts& total,
                      const std::string& path, int line) {
+    const std::size_t count = std::size_t(std::count(token.begin(), token.end(), '/')) + 1;
     std::array<std::string_view, 3> parts;
-    std::size_t count = 0;  // 4: more than three parts
-    for (std::string_view rest = token;;) {
-        if (count == 3) {
-            count = 4;
-            break;
-        }
+    std::string_view rest = token;
+    for (std::size_t i = 0; i < std::min<std::size_t>(count, 3); ++i) {
         const std::size_t slash = rest.find('/');
-        parts[count++] = rest.substr(0, slash);
-        if (slash == std::string_view::npos) break;
-        rest.remove_prefix(slash + 1);
+        parts[i] = rest.substr(0, slash);
+        rest.remove_prefix(slash == std::string_view::npos ? rest.size() : slash + 1);
     }
     const bool shape_ok = count <= 3 && !(count == 2 && parts[1].empty());
     if (!shape_ok) fail(path, line, fmt::format("bad vertex reference {}", quote(token)));
@@ -155,19 +155,23 @@ void scan_obj_statement(const std::vector<std::string_view>& tokens, int line, O
     }
 }
 
+// The first token of a line: the statement's keyword.
+std::string_view first_token(std::string_view line) {
+    std::size_t start = 0;
+    while (start < line.size() && is_separator(line[start])) ++start;
+    std::size_t end = start;
+    while (end < line.size() && !is_separator(line[end])) ++end;
+    return line.substr(start, end - start);
+}
+
 // Counts the statements of each kind first: positive indices may refer further down.
 VertexCounts count_vertices(std::string_view text) {
     VertexCounts count;
     for_each_line(text, [&](int, std::string_view line) {
-        std::size_t i = 0;
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-        if (i == line.size() || line[i] != 'v') return;
-        const char kind = i + 1 < line.size() ? line[i + 1] : ' ';
-        if (kind == ' ' || kind == '\t') ++count.positions;
-        if ((kind == 't' || kind == 'n') &&
-            (i + 2 == line.size() || line[i + 2] == ' ' || line[i + 2] == '\t')) {
-            ++(kind == 't' ? count.texcoords : count.normals);
-        }
+        const std::string_view key = first_token(line);
+        if (key == "v") ++count.positions;
+        if (key == "vt") ++count.texcoords;
+        if (key == "vn") ++count.normals;
     });
     return count;
 }
@@ -246,15 +250,14 @@ void for_each_line(std::string_view text, const std::function<void(int, std::str
 }
 
 void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) {
-    const auto separator = [](char c) { return c == ' ' || c == '\t'; };
     tokens.clear();
     for (std::size_t i = 0; i < line.size();) {
-        if (separator(line[i])) {
+        if (is_separator(line[i])) {
             ++i;
             continue;
         }
         const std::size_t start = i;
-        while (i < line.size() && !separator(line[i])) ++i;
+        while (i < line.size() && !is_separator(line[i])) ++i;
         tokens.push_back(line.substr(start, i - start));
     }
 }
