@@ -147,6 +147,11 @@ GridPoint point_at(const LineRef& l, const PatchTopology& t, std::int64_t pos) {
 
 constexpr std::uint32_t kNone = ~std::uint32_t(0);
 
+void sort_unique(std::vector<std::uint64_t>& keys) {
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+}
+
 // Sorted distinct 64-bit keys, each with the output vertex it became (kNone until first used).
 // Flat arrays instead of hash maps: on the 10^6-patch office the maps held 400 MB at the
 // output's peak, these a few MB.
@@ -155,8 +160,7 @@ struct KeyedVertices {
     std::vector<std::uint32_t> vertex;
 
     void seal() {
-        std::sort(keys.begin(), keys.end());
-        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+        sort_unique(keys);
         vertex.assign(keys.size(), kNone);
     }
     void clear() {
@@ -262,9 +266,7 @@ class Builder {
             }
         }
         m_interior_points.seal();
-        std::sort(m_line_points.begin(), m_line_points.end());
-        m_line_points.erase(std::unique(m_line_points.begin(), m_line_points.end()),
-                            m_line_points.end());
+        sort_unique(m_line_points);
         for (const Element* e : m_patch_leaves) emit_polygon(*e);
         m_patch_leaves.clear();
     }
