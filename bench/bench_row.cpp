@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <vector>
@@ -40,7 +39,6 @@ RowResult run_row(const RowSpec& spec) {
     while (shooting.size() < 3 && st.shooting_seconds < kRepeatBelowSeconds) {
         shooting.push_back(solve(scene.mesh, o).stats.shooting_seconds);
     }
-    std::sort(shooting.begin(), shooting.end());
     r.patches = sol.hierarchy->patch_count();
     r.leaves = st.leaves;
     r.elements = st.elements;
@@ -51,7 +49,7 @@ RowResult run_row(const RowSpec& spec) {
     r.cache_hit_rate = lookups > 0 && st.cache_capacity ? double(st.cache_hits) / lookups : 0;
     r.oracle_seconds = st.oracle_seconds;
     r.setup_seconds = st.setup_seconds;
-    r.shooting_seconds = shooting[shooting.size() / 2];
+    r.shooting_seconds = median(shooting);
     r.solver_bytes = st.hierarchy_bytes + st.cache_bytes;
     tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, spec.threads);
     const EmbreeScene embree(sol.hierarchy->patch_set().patches);

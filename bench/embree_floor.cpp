@@ -8,6 +8,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <utility>
 
 #include "radiosity/kernel.h"
 #include "radiosity/rng.h"
@@ -25,8 +26,7 @@ double median_of(int runs, const std::function<void()>& run) {
         run();
         s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    std::sort(t.begin(), t.end());
-    return t[t.size() / 2];
+    return median(std::move(t));
 }
 
 double trace_first_hits(const EmbreeScene& scene, const std::vector<Ray>& rays, int runs) {
@@ -62,6 +62,11 @@ double trace_occlusions(const EmbreeScene& scene, const std::vector<Segment>& se
 }
 
 }  // namespace
+
+double median(std::vector<double> seconds) {
+    std::sort(seconds.begin(), seconds.end());
+    return seconds[seconds.size() / 2];
+}
 
 std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream) {
     std::vector<double> cumulative;

@@ -17,6 +17,9 @@ struct Segment {
     Vec3 from, to;
 };
 
+// The median of some timings (the middle one after sorting).
+double median(std::vector<double> seconds);
+
 // Incoherent first-hit rays: area-uniform origins on the patches, cosine directions (`stream`
 // keys the random numbers, for chunks).
 std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream);
