@@ -1,9 +1,15 @@
 #include "radiosity/refinement.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <vector>
 
+#include "common/radix_sort.h"
 #include "radiosity/kernel.h"
 #include "radiosity/rng.h"
 
@@ -75,10 +81,10 @@ double geometric_factor(const RefinementContext& ctx, const Element& receiver,
 }  // namespace
 
 double link_value(const RefinementContext& ctx, const Element& receiver, const Element& source,
-                  RefinementCounters& counters) {
+                  RefinementCounters& counters, std::uint64_t rays) {
     const double w = link_weight(ctx, receiver, source);
     if (w <= 0) return 0;  // nothing to transport: no refinement can matter
-    ++counters.oracle_calls;
+    counters.oracle_calls += rays;
     return w * geometric_factor(ctx, receiver, source, counters);
 }
 
@@ -98,6 +104,116 @@ Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch,
         h.subdivide(*e);
         e = &h.child_containing(*e, &e == &i ? y_uv : x_uv);
     }
+}
+
+namespace {
+
+// A group this large splits its children's descents between threads.
+constexpr std::size_t kParallelRays = 2048;
+
+// refine_link's loop for the rays rays[index[0..n)], which all reach the link (i, j). A refused
+// link's rays are scattered by child into `scratch` (the same range of a second buffer), which
+// becomes the children's `index`.
+void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* rays,
+             std::uint32_t* index, std::uint32_t* scratch, std::size_t n,
+             RefinementCounters& counters) {
+    Hierarchy& h = ctx.hierarchy;
+    for (;;) {
+        const bool split_i = h.can_subdivide(*i), split_j = h.can_subdivide(*j);
+        if (!split_i && !split_j) break;
+        if (link_value(ctx, *i, *j, counters, n) < ctx.threshold) break;
+        const bool on_i = split_i && (!split_j || i->area >= j->area);
+        Element*& e = on_i ? i : j;
+        Element* const children = h.subdivide(*e);
+        const bool quad = h.patch(*e).is_quad();
+        std::array<std::size_t, 4> count{};
+        for (std::size_t t = 0; t < n; ++t) {
+            LinkQuery& q = rays[index[t]];
+            q.child = std::uint8_t(e->domain.child_containing(quad, on_i ? q.y_uv : q.x_uv));
+            ++count[q.child];
+        }
+        const int first = rays[index[0]].child;
+        if (count[std::size_t(first)] == n) {  // all in one child: the loop goes on
+            e = &children[first];
+            continue;
+        }
+        std::array<std::size_t, 5> start{};
+        for (std::size_t k = 0; k < 4; ++k) start[k + 1] = start[k] + count[k];
+        std::array<std::size_t, 4> next{start[0], start[1], start[2], start[3]};
+        for (std::size_t t = 0; t < n; ++t) scratch[next[rays[index[t]].child]++] = index[t];
+        auto child_descent = [&](std::size_t k, RefinementCounters& c) {
+            if (count[k] == 0) return;
+            Element* child = &children[k];
+            descend(ctx, on_i ? child : i, on_i ? j : child, rays, scratch + start[k],
+                    index + start[k], count[k], c);
+        };
+        if (n < kParallelRays) {
+            for (std::size_t k = 0; k < 4; ++k) child_descent(k, counters);
+            return;
+        }
+        std::array<RefinementCounters, 4> sub{};
+        tbb::parallel_for(std::size_t(0), std::size_t(4),
+                          [&](std::size_t k) { child_descent(k, sub[k]); });
+        for (const RefinementCounters& c : sub) counters += c;
+        return;
+    }
+    for (std::size_t t = 0; t < n; ++t) rays[index[t]].receiver = i;
+}
+
+}  // namespace
+
+void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
+                  RefinementCounters& counters) {
+    Hierarchy& h = ctx.hierarchy;
+    if (ctx.fixed_mesh) {
+        tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
+            queries[k].receiver = &h.locate(h.root(queries[k].receiver_patch), queries[k].y_uv);
+        });
+        return;
+    }
+    // Grouped by (receiver patch, source patch), each group's queries copied together so that
+    // its descent reads a compact block. The buffers are kept between batches (they are the
+    // calling thread's; other threads use them through the pointers below).
+    const std::uint64_t patches = h.patch_count();
+    thread_local std::vector<Keyed<std::uint32_t>> keyed, keyed_scratch;
+    thread_local std::vector<LinkQuery> grouped_buffer;
+    thread_local std::vector<std::uint32_t> index_buffer, scratch_buffer;
+    keyed.resize(queries.size());
+    Keyed<std::uint32_t>* const keys = keyed.data();
+    tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
+        keys[k] = {queries[k].receiver_patch * patches + queries[k].source_patch, std::uint32_t(k)};
+    });
+    radix_sort(keyed, keyed_scratch);
+    grouped_buffer.resize(queries.size());
+    index_buffer.resize(queries.size());
+    scratch_buffer.resize(queries.size());
+    LinkQuery* const grouped = grouped_buffer.data();
+    std::uint32_t* const index = index_buffer.data();
+    std::uint32_t* const scratch = scratch_buffer.data();
+    const Keyed<std::uint32_t>* const sorted = keyed.data();
+    tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t t) {
+        grouped[t] = queries[sorted[t].value];
+        index[t] = std::uint32_t(t);
+    });
+    std::vector<std::size_t> group_start;
+    for (std::size_t t = 0; t < keyed.size(); ++t) {
+        if (t == 0 || keyed[t].key != keyed[t - 1].key) group_start.push_back(t);
+    }
+    group_start.push_back(keyed.size());
+    tbb::enumerable_thread_specific<RefinementCounters> local;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, group_start.size() - 1, 1), [&](auto r) {
+        RefinementCounters& c = local.local();
+        for (std::size_t g = r.begin(); g < r.end(); ++g) {
+            const std::size_t first = group_start[g], n = group_start[g + 1] - first;
+            descend(ctx, &h.root(grouped[first].receiver_patch),
+                    &h.root(grouped[first].source_patch), grouped, index + first, scratch + first,
+                    n, c);
+        }
+    });
+    for (const RefinementCounters& c : local) counters += c;
+    tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t t) {
+        queries[sorted[t].value].receiver = grouped[t].receiver;
+    });
 }
 
 }  // namespace hmcr

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "oracles/oracle.h"
 #include "radiosity/embree_scene.h"
@@ -40,13 +41,32 @@ struct RefinementCounters {
     }
 };
 
+// One ray's descent: its patches and points, and the receiver element it ends on.
+struct LinkQuery {
+    std::uint32_t receiver_patch = 0, source_patch = 0;
+    Vec2 y_uv{0, 0}, x_uv{0, 0};  // the hit point on the receiver, the origin on the source
+    Element* receiver = nullptr;  // set by refine_links
+    std::uint8_t child = 0;       // scratch: the child holding the ray's point
+};
+
 // Descends from (root of receiver_patch, root of source_patch), subdividing the larger element
-// of a refused link towards the hit point y (receiver) or the ray origin x (source).
+// of a refused link towards the hit point y (receiver) or the ray origin x (source). One ray at
+// a time from the roots, as SPEC section 3 states it: the reference refine_links is tested
+// against.
 Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch, const Vec2& y_uv,
                      std::uint32_t source_patch, const Vec2& x_uv, RefinementCounters& counters);
 
-// The oracle's value of a link divided by Phi_max is compared with epsilon; this is the value.
-double link_value(const RefinementContext& ctx, const Element& receiver, const Element& source,
+// The same descent for many rays at once, each ending on the element refine_link would give
+// it. Rays of one (receiver patch, source patch) pair share the upper levels of their descents,
+// so each link on their shared paths is decided once for all of them, and the rays split
+// between a refused link's children as their points do. Parallel; oracle_calls counts every
+// ray's decisions, as refine_link does, so it does not depend on how rays are grouped.
+void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
                   RefinementCounters& counters);
+
+// The oracle's value of a link divided by Phi_max is compared with epsilon; this is the value.
+// Counted as `rays` decisions (oracle_calls) when the link carries anything.
+double link_value(const RefinementContext& ctx, const Element& receiver, const Element& source,
+                  RefinementCounters& counters, std::uint64_t rays = 1);
 
 }  // namespace hmcr

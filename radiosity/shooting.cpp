@@ -29,7 +29,6 @@ namespace {
 enum class Fate : std::uint8_t { deposited, escaped, back_face };
 
 struct RayResult {
-    Element* receiver = nullptr;
     Rgb power = Rgb::Zero();  // the ray's power (deposited: rho * power / A was added later)
     Fate fate = Fate::escaped;
 };
@@ -49,9 +48,9 @@ RayStart start_ray(const Hierarchy& h, const IterationSources& sources, Rng& rng
     return {&leaf, x_uv, src.point(x_uv), dir};
 }
 
+// Steps 3 and 4; a deposited ray's descent (step 5) is written to `query`, for refine_links.
 RayResult trace_ray(const RefinementContext& ctx, const IterationSources& sources,
-                    double power_scale, Rng& rng,
-                    RefinementCounters& counters) {
+                    double power_scale, Rng& rng, LinkQuery& query) {
     const Hierarchy& h = ctx.hierarchy;
     const RayStart start = start_ray(h, sources, rng);
     RayResult r;
@@ -63,8 +62,10 @@ RayResult trace_ray(const RefinementContext& ctx, const IterationSources& source
         r.fate = Fate::back_face;
         return r;
     }
-    const Vec2 y_uv = rcv.param(start.x + hit->distance * start.direction);
-    r.receiver = &refine_link(ctx, hit->patch, y_uv, start.leaf->id.patch, start.x_uv, counters);
+    query.receiver_patch = hit->patch;
+    query.source_patch = start.leaf->id.patch;
+    query.y_uv = rcv.param(start.x + hit->distance * start.direction);
+    query.x_uv = start.x_uv;
     r.fate = Fate::deposited;
     return r;
 }
@@ -105,17 +106,20 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     const double power_scale = sources.total / double(rays);  // S / N_iter
     out.quantum = PowerQuantum::for_iteration(power_scale * sources.max_share, rays);
     struct Chunk {
-        RefinementCounters counters;
         Quanta shot{}, escaped{}, back_face{};
     };
     std::vector<Chunk> chunks;
     // Each ray's deposit, added after the batch by one thread: atomic adds from both threads
     // onto the few hot elements of a small scene made 2 threads 20% slower.
     struct Deposit {
-        Element* receiver = nullptr;
         Quanta quanta{};
+        bool lands = false;  // on a front face: the descent finds its element
     };
-    std::vector<Deposit> deposits(std::min(slice.end - slice.begin, kBatchRays));
+    const std::uint64_t batch = std::min(slice.end - slice.begin, kBatchRays);
+    std::vector<Deposit> deposits(batch);
+    // The batch's descents are made together, after its rays are traced, so that rays between
+    // the same patches decide their shared links once (refine_links).
+    std::vector<LinkQuery> queries(batch);
     for (std::uint64_t first = slice.begin; first < slice.end; first += kBatchRays) {
         const std::uint64_t n = std::min(kBatchRays, slice.end - first);
         chunks.assign((n + kGrain - 1) / kGrain, {});
@@ -124,7 +128,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             Chunk& chunk = chunks[c];
             for (std::uint64_t k = c * kGrain; k < std::min(n, (c + 1) * kGrain); ++k) {
                 Rng rng(ctx.seed, iteration, first + k);
-                const RayResult r = trace_ray(ctx, sources, power_scale, rng, chunk.counters);
+                const RayResult r = trace_ray(ctx, sources, power_scale, rng, queries[k]);
                 const double dither = rng.uniform();
                 const Quanta power = out.quantum.count(r.power, dither);
                 add(chunk.shot, power);
@@ -133,15 +137,22 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
                 deposits[k] = {};
                 if (r.fate != Fate::deposited) continue;
                 // SPEC section 3, step 6: received += rho * Phi (over A when pushed).
-                const Patch& p = ctx.hierarchy.patch(*r.receiver);
-                deposits[k] = {r.receiver, out.quantum.count(p.reflectance * r.power, dither)};
+                const Patch& p = ctx.hierarchy.patch_set().patches[queries[k].receiver_patch];
+                deposits[k] = {out.quantum.count(p.reflectance * r.power, dither), true};
             }
         });
+        std::size_t landed = 0;
         for (std::uint64_t k = 0; k < n; ++k) {
-            if (deposits[k].receiver) add(deposits[k].receiver->received, deposits[k].quanta);
+            if (deposits[k].lands) queries[landed++] = queries[k];
+        }
+        RefinementCounters counters;
+        refine_links(ctx, {queries.data(), landed}, counters);
+        out.counters += counters;
+        for (std::uint64_t k = 0, q = 0; k < n; ++k) {
+            if (!deposits[k].lands) continue;
+            add(queries[q++].receiver->received, deposits[k].quanta);
         }
         for (const Chunk& c : chunks) {
-            out.counters += c.counters;
             add(out.shot_power, c.shot);
             add(out.escaped_power, c.escaped);
             add(out.back_face_power, c.back_face);

@@ -57,10 +57,12 @@ TEST(LinkCache, EvictionAndSizeDoNotChangeTheSolution) {
     const Solution tiny = solve(scene.mesh, o);
     o.cache_mb = 0;
     const Solution none = solve(scene.mesh, o);
-    EXPECT_GT(big.stats.cache_hits, 10 * big.stats.oracle_evaluations);
     EXPECT_GT(tiny.stats.cache_evictions, 0u);
     EXPECT_EQ(none.stats.cache_hits, 0u);
-    EXPECT_EQ(none.stats.oracle_evaluations, none.stats.oracle_calls);
+    // The same links are decided whatever the cache holds; it only answers some of them.
+    EXPECT_GT(big.stats.cache_hits, 0u);
+    EXPECT_EQ(big.stats.cache_hits + big.stats.oracle_evaluations, none.stats.oracle_evaluations);
+    EXPECT_EQ(tiny.stats.cache_hits + tiny.stats.oracle_evaluations, none.stats.oracle_evaluations);
     expect_same(leaves_of(big), leaves_of(tiny));
     expect_same(leaves_of(big), leaves_of(none));
 }

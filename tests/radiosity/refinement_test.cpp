@@ -1,0 +1,125 @@
+// The grouped descent (refine_links, what shooting uses) against the one-ray descent from the
+// patch roots that SPEC section 3 states (refine_link): for every oracle, on quads and on
+// triangles, every ray must end on the same element, the two hierarchies must be the same and
+// the decisions counted the same; the grouped one must evaluate fewer links.
+#include <gtest/gtest.h>
+
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+#include "meshes/scene.h"
+#include "oracles/registry.h"
+#include "radiosity/embree_scene.h"
+#include "radiosity/refinement.h"
+#include "radiosity/rng.h"
+#include "tests/support/test_scenes.h"
+
+namespace hmcr::test {
+namespace {
+
+// A hierarchy in which every patch has unshot radiosity, so that every link carries power.
+std::unique_ptr<Hierarchy> lit_hierarchy(const PatchMesh& mesh) {
+    auto h = std::make_unique<Hierarchy>(build_patch_set(mesh), HierarchyLimits{});
+    for (std::size_t p = 0; p < h->patch_count(); ++p) {
+        h->root(p).radiosity = h->root(p).unshot = Rgb(1.0, 0.5, 0.25);
+    }
+    return h;
+}
+
+// A parameter point of a patch: uniform, or now and then one on a child boundary or a corner
+// (where the descent's choice of child is decided by a comparison that is exactly equal).
+Vec2 point_on(const Patch& p, Rng& rng) {
+    const double pick = rng.uniform();
+    Vec2 uv(rng.uniform(), rng.uniform());
+    if (pick < 0.04) uv = Vec2(0.5, 0.25);
+    else if (pick < 0.08) uv = Vec2(1, 1);
+    else if (pick < 0.12) uv = Vec2(0, 0.5);
+    else if (pick < 0.16) uv = Vec2(0.25, 0.25);
+    return p.is_quad() || uv.sum() <= 1 ? uv : Vec2(Vec2(1, 1) - uv);
+}
+
+// Rays concentrated on a few patch pairs (groups larger than the parallel split), the rest spread.
+std::vector<LinkQuery> queries_for(const Hierarchy& h, std::size_t n) {
+    Rng rng(5, 1);
+    std::vector<LinkQuery> out(n);
+    const std::uint32_t patches = std::uint32_t(h.patch_count());
+    auto any = [&] { return std::uint32_t(rng.uniform() * patches); };
+    for (LinkQuery& q : out) {
+        if (rng.uniform() < 0.6) {
+            const std::uint32_t pair = std::uint32_t(rng.uniform() * 3);
+            q.receiver_patch = pair % patches;
+            q.source_patch = (pair + 1 + patches / 2) % patches;
+        } else {
+            q.receiver_patch = any();
+            q.source_patch = any();
+        }
+        q.y_uv = point_on(h.patch_set().patches[q.receiver_patch], rng);
+        q.x_uv = point_on(h.patch_set().patches[q.source_patch], rng);
+    }
+    return out;
+}
+
+std::vector<ElementId> element_ids(const Hierarchy& h) {
+    std::vector<ElementId> ids;
+    h.for_each_element([&](const Element& e) { ids.push_back(e.id); });
+    return ids;
+}
+
+// Below the oracles' defaults, so that the descents go several levels deep.
+constexpr double kEpsilonScale = 0.01;
+
+class GroupedDescent : public testing::TestWithParam<std::string> {
+protected:
+    void expect_same_as_one_ray_descents(const PatchMesh& mesh) {
+        const Oracle& oracle = find_oracle(GetParam());
+        const auto grouped = lit_hierarchy(mesh), single = lit_hierarchy(mesh);
+        const EmbreeScene scene(grouped->patch_set().patches);
+        auto context = [&](Hierarchy& h) {
+            return RefinementContext{h,
+                                     oracle,
+                                     scene,
+                                     kEpsilonScale * oracle.default_epsilon() *
+                                         h.patch_set().max_emitted_power,
+                                     4,
+                                     11};
+        };
+        std::vector<LinkQuery> queries = queries_for(*grouped, 12'000);
+        RefinementCounters grouped_counts, single_counts;
+        {
+            const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+            refine_links(context(*grouped), queries, grouped_counts);
+        }
+        int deepest = 0;
+        for (const LinkQuery& q : queries) {
+            const Element& e = refine_link(context(*single), q.receiver_patch, q.y_uv,
+                                           q.source_patch, q.x_uv, single_counts);
+            ASSERT_NE(q.receiver, nullptr);
+            ASSERT_EQ(q.receiver->id, e.id) << q.y_uv.transpose() << " / " << q.x_uv.transpose();
+            deepest = std::max(deepest, int(e.id.depth));
+        }
+        EXPECT_GE(deepest, 4) << "the test should refine";
+        EXPECT_EQ(element_ids(*grouped), element_ids(*single));
+        EXPECT_EQ(grouped_counts.oracle_calls, single_counts.oracle_calls);
+        EXPECT_EQ(single_counts.oracle_evaluations, single_counts.oracle_calls);
+        EXPECT_LT(grouped_counts.oracle_evaluations, single_counts.oracle_evaluations);
+    }
+};
+
+TEST_P(GroupedDescent, QuadsEndWhereOneRayDescentsEnd) {
+    expect_same_as_one_ray_descents(load_scene("cornell").mesh);
+}
+
+TEST_P(GroupedDescent, TrianglesEndWhereOneRayDescentsEnd) {
+    std::vector<TestPolygon> sphere = inward_icosphere(1, 1.0, Rgb::Constant(0.5));
+    sphere.front().emission = Rgb::Constant(1);
+    expect_same_as_one_ray_descents(make_patch_mesh(sphere));
+}
+
+INSTANTIATE_TEST_SUITE_P(Oracles, GroupedDescent, testing::ValuesIn(oracle_name_list()),
+                         [](const testing::TestParamInfo<std::string>& p) { return p.param; });
+
+}  // namespace
+}  // namespace hmcr::test
