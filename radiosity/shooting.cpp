@@ -18,7 +18,7 @@ IterationSources::IterationSources(const Hierarchy& h) {
         if (w <= 0) return;
         total += w;
         max_share = max_share.max(e.unshot / channel_sum(e.unshot));
-        leaves.push_back(&e);
+        leaves.push_back({e.unshot, channel_sum(e.unshot), e.domain, e.id.patch});
         weights.push_back(w);
     });
     if (!leaves.empty()) alias.emplace(weights);
@@ -35,14 +35,14 @@ struct RayResult {
 
 // Step 3: a source leaf by unshot power, a uniform point on it, a cosine direction.
 struct RayStart {
-    const Element* leaf;
+    const IterationSources::Leaf* leaf;
     Vec2 x_uv;
     Vec3 x, direction;
 };
 
 RayStart start_ray(const Hierarchy& h, const IterationSources& sources, Rng& rng) {
-    const Element& leaf = sources.pick(rng.uniform());
-    const Patch& src = h.patch(leaf);
+    const IterationSources::Leaf& leaf = sources.pick(rng.uniform());
+    const Patch& src = h.patch_set().patches[leaf.patch];
     const Vec2 x_uv = sample_element(src, leaf.domain, rng.uniform(), rng.uniform());
     const Vec3 dir = sample_cosine_hemisphere(src.normal, rng.uniform(), rng.uniform());
     return {&leaf, x_uv, src.point(x_uv), dir};
@@ -54,7 +54,7 @@ RayResult trace_ray(const RefinementContext& ctx, const IterationSources& source
     const Hierarchy& h = ctx.hierarchy;
     const RayStart start = start_ray(h, sources, rng);
     RayResult r;
-    r.power = power_scale * start.leaf->unshot / channel_sum(start.leaf->unshot);
+    r.power = power_scale * start.leaf->unshot / start.leaf->unshot_sum;
     const auto hit = ctx.scene.first_hit(start.x, start.direction);
     if (!hit) return r;
     const Patch& rcv = h.patch_set().patches[hit->patch];
@@ -63,7 +63,7 @@ RayResult trace_ray(const RefinementContext& ctx, const IterationSources& source
         return r;
     }
     query.receiver_patch = hit->patch;
-    query.source_patch = start.leaf->id.patch;
+    query.source_patch = start.leaf->patch;
     query.y_uv = rcv.param(start.x + hit->distance * start.direction);
     query.x_uv = start.x_uv;
     r.fate = Fate::deposited;
@@ -91,7 +91,7 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
         if (!hit) continue;
         const Patch& rcv = h.patch_set().patches[hit->patch];
         if (rcv.normal.dot(start.direction) >= 0) continue;
-        const Rgb unit = start.leaf->unshot / channel_sum(start.leaf->unshot);
+        const Rgb unit = start.leaf->unshot / start.leaf->unshot_sum;
         reflected += channel_sum(rcv.reflectance * unit);
     }
     return reflected / double(rays);
