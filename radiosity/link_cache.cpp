@@ -73,6 +73,11 @@ std::optional<double> LinkCache::find(const Element* receiver, const Element* so
     return found;
 }
 
+void LinkCache::prefetch(const Element* receiver, const Element* source) const {
+    const std::uint64_t h = hash(receiver, source);
+    _mm_prefetch(reinterpret_cast<const char*>(&m_sets[h & (m_set_count - 1)]), _MM_HINT_T0);
+}
+
 std::optional<double> LinkCache::find_shared(const Set& s, const Element* receiver,
                                              const Element* source) const {
     constexpr auto relaxed = std::memory_order_relaxed;

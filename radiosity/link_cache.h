@@ -30,6 +30,8 @@ public:
 
     std::optional<double> find(const Element* receiver, const Element* source) const;
     void insert(const Element* receiver, const Element* source, double factor);
+    // Starts loading the pair's set into the CPU cache, for a find() that will come soon.
+    void prefetch(const Element* receiver, const Element* source) const;
 
     std::size_t capacity() const { return m_set_count * kWays; }  // pairs
     std::size_t bytes() const { return m_set_count * sizeof(Set); }

@@ -141,6 +141,12 @@ void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* ra
         for (std::size_t k = 0; k < 4; ++k) start[k + 1] = start[k] + count[k];
         std::array<std::size_t, 4> next{start[0], start[1], start[2], start[3]};
         for (std::size_t t = 0; t < n; ++t) scratch[next[rays[index[t]].child]++] = index[t];
+        // The children's links are decided one after another; their cache sets load meanwhile.
+        if (ctx.cache && ctx.oracle.uses_lines()) {
+            for (std::size_t k = 0; k < 4; ++k) {
+                if (count[k] > 0) ctx.cache->prefetch(on_i ? &children[k] : i, on_i ? j : &children[k]);
+            }
+        }
         auto child_descent = [&](std::size_t k, RefinementCounters& c) {
             if (count[k] == 0) return;
             Element* child = &children[k];
