@@ -9,7 +9,6 @@
 #include <chrono>
 #include <vector>
 
-#include "common/radix_sort.h"
 #include "radiosity/kernel.h"
 #include "radiosity/rng.h"
 
@@ -169,7 +168,7 @@ void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* ra
 }  // namespace
 
 void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
-                  RefinementCounters& counters) {
+                  RefinementCounters& counters, DescentScratch& buffers) {
     Hierarchy& h = ctx.hierarchy;
     if (ctx.fixed_mesh) {
         tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
@@ -178,24 +177,21 @@ void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
         return;
     }
     // Grouped by (receiver patch, source patch), each group's queries copied together so that
-    // its descent reads a compact block. The buffers are kept between batches (they are the
-    // calling thread's; other threads use them through the pointers below).
+    // its descent reads a compact block.
     const std::uint64_t patches = h.patch_count();
-    thread_local std::vector<Keyed<std::uint32_t>> keyed, keyed_scratch;
-    thread_local std::vector<LinkQuery> grouped_buffer;
-    thread_local std::vector<std::uint32_t> index_buffer, scratch_buffer;
+    auto& keyed = buffers.keyed;
     keyed.resize(queries.size());
     Keyed<std::uint32_t>* const keys = keyed.data();
     tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
         keys[k] = {queries[k].receiver_patch * patches + queries[k].source_patch, std::uint32_t(k)};
     });
-    radix_sort(keyed, keyed_scratch);
-    grouped_buffer.resize(queries.size());
-    index_buffer.resize(queries.size());
-    scratch_buffer.resize(queries.size());
-    LinkQuery* const grouped = grouped_buffer.data();
-    std::uint32_t* const index = index_buffer.data();
-    std::uint32_t* const scratch = scratch_buffer.data();
+    radix_sort(keyed, buffers.keyed_scratch);
+    buffers.grouped.resize(queries.size());
+    buffers.index.resize(queries.size());
+    buffers.scratch.resize(queries.size());
+    LinkQuery* const grouped = buffers.grouped.data();
+    std::uint32_t* const index = buffers.index.data();
+    std::uint32_t* const scratch = buffers.scratch.data();
     const Keyed<std::uint32_t>* const sorted = keyed.data();
     tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t t) {
         grouped[t] = queries[sorted[t].value];

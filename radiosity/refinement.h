@@ -4,7 +4,9 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
+#include "common/radix_sort.h"
 #include "oracles/oracle.h"
 #include "radiosity/embree_scene.h"
 #include "radiosity/hierarchy.h"
@@ -56,13 +58,20 @@ struct LinkQuery {
 Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch, const Vec2& y_uv,
                      std::uint32_t source_patch, const Vec2& x_uv, RefinementCounters& counters);
 
+// refine_links' buffers, kept by the caller between calls.
+struct DescentScratch {
+    std::vector<Keyed<std::uint32_t>> keyed, keyed_scratch;
+    std::vector<LinkQuery> grouped;
+    std::vector<std::uint32_t> index, scratch;
+};
+
 // The same descent for many rays at once, each ending on the element refine_link would give
 // it. Rays of one (receiver patch, source patch) pair share the upper levels of their descents,
 // so each link on their shared paths is decided once for all of them, and the rays split
 // between a refused link's children as their points do. Parallel; oracle_calls counts every
 // ray's decisions, as refine_link does, so it does not depend on how rays are grouped.
 void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
-                  RefinementCounters& counters);
+                  RefinementCounters& counters, DescentScratch& scratch);
 
 // The oracle's value of a link divided by Phi_max is compared with epsilon; this is the value.
 // Counted as `rays` decisions (oracle_calls) when the link carries anything.

@@ -120,6 +120,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     // The batch's descents are made together, after its rays are traced, so that rays between
     // the same patches decide their shared links once (refine_links).
     std::vector<LinkQuery> queries(batch);
+    DescentScratch scratch;
     for (std::uint64_t first = slice.begin; first < slice.end; first += kBatchRays) {
         const std::uint64_t n = std::min(kBatchRays, slice.end - first);
         chunks.assign((n + kGrain - 1) / kGrain, {});
@@ -146,7 +147,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             if (deposits[k].lands) queries[landed++] = queries[k];
         }
         RefinementCounters counters;
-        refine_links(ctx, {queries.data(), landed}, counters);
+        refine_links(ctx, {queries.data(), landed}, counters, scratch);
         out.counters += counters;
         for (std::uint64_t k = 0, q = 0; k < n; ++k) {
             if (!deposits[k].lands) continue;

@@ -90,7 +90,8 @@ protected:
         RefinementCounters grouped_counts, single_counts;
         {
             const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
-            refine_links(context(*grouped), queries, grouped_counts);
+            DescentScratch scratch;
+            refine_links(context(*grouped), queries, grouped_counts, scratch);
         }
         int deepest = 0;
         for (const LinkQuery& q : queries) {
