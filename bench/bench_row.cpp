@@ -49,7 +49,8 @@ RowResult run_row(const RowSpec& spec) {
         r.solver_bytes = st.hierarchy_bytes + st.cache_bytes;
         tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, spec.threads);
         const EmbreeScene embree(sol.hierarchy->patch_set().patches);
-        r.floor_seconds = solve_floor_seconds(embree, *sol.hierarchy, st.rays, st.lines_cast, kLines);
+        r.floor_seconds =
+            solve_floor_seconds(embree, *sol.hierarchy, st.rays, st.lines_cast, kLines);
         r.peak_bytes = peak_memory_bytes();
     }
     // Run to run, shooting times on this virtual machine vary by up to 30%: a solve of a few

@@ -143,7 +143,8 @@ void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* ra
         // The children's links are decided one after another; their cache sets load meanwhile.
         if (ctx.cache && ctx.oracle.uses_lines()) {
             for (std::size_t k = 0; k < 4; ++k) {
-                if (count[k] > 0) ctx.cache->prefetch(on_i ? &children[k] : i, on_i ? j : &children[k]);
+                if (count[k] == 0) continue;
+                ctx.cache->prefetch(on_i ? &children[k] : i, on_i ? j : &children[k]);
             }
         }
         auto child_descent = [&](std::size_t k, RefinementCounters& c) {

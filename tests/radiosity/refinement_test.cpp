@@ -101,7 +101,9 @@ protected:
             ASSERT_EQ(q.receiver->id, e.id) << q.y_uv.transpose() << " / " << q.x_uv.transpose();
             deepest = std::max(deepest, int(e.id.depth));
         }
-        EXPECT_GE(deepest, 4) << "the test should refine";
+        // A guard that the test refines at all: `vt` on the triangles goes 3 levels deep with
+        // clang and 4 with gcc (their floating point differs), the others deeper.
+        EXPECT_GE(deepest, 3) << "the test should refine";
         EXPECT_EQ(element_ids(*grouped), element_ids(*single));
         EXPECT_EQ(grouped_counts.oracle_calls, single_counts.oracle_calls);
         EXPECT_EQ(single_counts.oracle_evaluations, single_counts.oracle_calls);
