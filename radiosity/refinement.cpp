@@ -87,6 +87,23 @@ double link_value(const RefinementContext& ctx, const Element& receiver, const E
     return w * geometric_factor(ctx, receiver, source, counters);
 }
 
+namespace {
+
+// One step of the descent at the link (i, j), for both descents below: accepted (both at the
+// limits, or the oracle's value below the threshold), or which element to split if refused:
+// the larger one that may still be split. Counted as `rays` decisions.
+enum class Step { accept, split_receiver, split_source };
+
+Step next_step(const RefinementContext& ctx, const Element& i, const Element& j,
+               RefinementCounters& counters, std::uint64_t rays) {
+    const bool split_i = ctx.hierarchy.can_subdivide(i), split_j = ctx.hierarchy.can_subdivide(j);
+    if (!split_i && !split_j) return Step::accept;
+    if (link_value(ctx, i, j, counters, rays) < ctx.threshold) return Step::accept;
+    return split_i && (!split_j || i.area >= j.area) ? Step::split_receiver : Step::split_source;
+}
+
+}  // namespace
+
 Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch, const Vec2& y_uv,
                      std::uint32_t source_patch, const Vec2& x_uv, RefinementCounters& counters) {
     Hierarchy& h = ctx.hierarchy;
@@ -94,12 +111,11 @@ Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch,
     if (ctx.fixed_mesh) return h.locate(*i, y_uv);
     Element* j = &h.root(source_patch);
     for (;;) {
-        const bool split_i = h.can_subdivide(*i), split_j = h.can_subdivide(*j);
-        if (!split_i && !split_j) return *i;  // both at the limits: accept
-        if (link_value(ctx, *i, *j, counters) < ctx.threshold) return *i;
-        // Refused: the larger element that may still be split is replaced by its child holding
-        // the ray's point on it (the hit point y on the receiver, the origin x on the source).
-        Element*& e = split_i && (!split_j || i->area >= j->area) ? i : j;
+        const Step step = next_step(ctx, *i, *j, counters, 1);
+        if (step == Step::accept) return *i;
+        // Refused: the element split is replaced by its child holding the ray's point on it
+        // (the hit point y on the receiver, the origin x on the source).
+        Element*& e = step == Step::split_receiver ? i : j;
         h.subdivide(*e);
         e = &h.child_containing(*e, &e == &i ? y_uv : x_uv);
     }
@@ -118,10 +134,9 @@ void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* ra
              RefinementCounters& counters) {
     Hierarchy& h = ctx.hierarchy;
     for (;;) {
-        const bool split_i = h.can_subdivide(*i), split_j = h.can_subdivide(*j);
-        if (!split_i && !split_j) break;
-        if (link_value(ctx, *i, *j, counters, n) < ctx.threshold) break;
-        const bool on_i = split_i && (!split_j || i->area >= j->area);
+        const Step step = next_step(ctx, *i, *j, counters, n);
+        if (step == Step::accept) break;
+        const bool on_i = step == Step::split_receiver;
         Element*& e = on_i ? i : j;
         Element* const children = h.subdivide(*e);
         const bool quad = h.patch(*e).is_quad();
@@ -198,7 +213,8 @@ void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
         grouped[t] = queries[sorted[t].value];
         index[t] = std::uint32_t(t);
     });
-    std::vector<std::size_t> group_start;
+    auto& group_start = buffers.group_start;
+    group_start.clear();
     for (std::size_t t = 0; t < keyed.size(); ++t) {
         if (t == 0 || keyed[t].key != keyed[t - 1].key) group_start.push_back(t);
     }

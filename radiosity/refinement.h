@@ -63,6 +63,7 @@ struct DescentScratch {
     std::vector<Keyed<std::uint32_t>> keyed, keyed_scratch;
     std::vector<LinkQuery> grouped;
     std::vector<std::uint32_t> index, scratch;
+    std::vector<std::size_t> group_start;  // where each (receiver, source) group begins
 };
 
 // The same descent for many rays at once, each ending on the element refine_link would give
