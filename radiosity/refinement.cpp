@@ -201,7 +201,7 @@ void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
     tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
         keys[k] = {queries[k].receiver_patch * patches + queries[k].source_patch, std::uint32_t(k)};
     });
-    radix_sort(keyed, buffers.keyed_scratch);
+    radix_sort(keyed, buffers.keyed_scratch);  // swaps the two vectors: `keys` may be stale
     buffers.grouped.resize(queries.size());
     buffers.index.resize(queries.size());
     buffers.scratch.resize(queries.size());
