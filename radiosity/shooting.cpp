@@ -1,8 +1,12 @@
 #include "radiosity/shooting.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 #include "radiosity/kernel.h"
@@ -108,58 +112,105 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     struct Chunk {
         Quanta shot{}, escaped{}, back_face{};
     };
-    std::vector<Chunk> chunks;
     // Each ray's deposit, added after the batch by one thread: atomic adds from both threads
     // onto the few hot elements of a small scene made 2 threads 20% slower.
     struct Deposit {
         Quanta quanta{};
         bool lands = false;  // on a front face: the descent finds its element
     };
-    const std::uint64_t batch = std::min(slice.end - slice.begin, kBatchRays);
-    std::vector<Deposit> deposits(batch);
     // The batch's descents are made together, after its rays are traced, so that rays between
     // the same patches decide their shared links once (refine_links).
-    std::vector<LinkQuery> queries(batch);
-    DescentScratch scratch;
-    for (std::uint64_t first = slice.begin; first < slice.end; first += kBatchRays) {
-        const std::uint64_t n = std::min(kBatchRays, slice.end - first);
-        chunks.assign((n + kGrain - 1) / kGrain, {});
-        tbb::parallel_for(std::uint64_t(0), chunks.size(), [&](std::uint64_t c) {
+    struct Batch {
+        std::uint64_t first = 0, n = 0;
+        std::vector<Chunk> chunks;
+        std::vector<Deposit> deposits;
+        std::vector<LinkQuery> queries;
+    };
+    if (slice.begin >= slice.end) return out;
+    const std::uint64_t batch_rays = std::min(slice.end - slice.begin, kBatchRays);
+    // One thread cannot overlap anything: it reuses one batch's buffers, which stay in cache.
+    const bool overlap = std::min<std::size_t>(tbb::this_task_arena::max_concurrency(),
+                                               tbb::global_control::active_value(
+                                                   tbb::global_control::max_allowed_parallelism)) > 1;
+    std::array<Batch, 2> batches;
+    for (Batch& b : batches) {
+        b.deposits.resize(batch_rays);
+        b.queries.resize(batch_rays);
+        if (!overlap) break;
+    }
+    auto trace = [&](Batch& b, std::uint64_t first) {
+        b.first = first;
+        b.n = std::min(kBatchRays, slice.end - first);
+        b.chunks.assign((b.n + kGrain - 1) / kGrain, {});
+        tbb::parallel_for(std::uint64_t(0), b.chunks.size(), [&](std::uint64_t c) {
             set_tracing_float_mode();
-            Chunk& chunk = chunks[c];
-            for (std::uint64_t k = c * kGrain; k < std::min(n, (c + 1) * kGrain); ++k) {
+            Chunk& chunk = b.chunks[c];
+            for (std::uint64_t k = c * kGrain; k < std::min(b.n, (c + 1) * kGrain); ++k) {
                 Rng rng(ctx.seed, iteration, first + k);
-                const RayResult r = trace_ray(ctx, sources, power_scale, rng, queries[k]);
+                const RayResult r = trace_ray(ctx, sources, power_scale, rng, b.queries[k]);
                 const double dither = rng.uniform();
                 const Quanta power = out.quantum.count(r.power, dither);
                 add(chunk.shot, power);
                 if (r.fate == Fate::escaped) add(chunk.escaped, power);
                 if (r.fate == Fate::back_face) add(chunk.back_face, power);
-                deposits[k] = {};
+                b.deposits[k] = {};
                 if (r.fate != Fate::deposited) continue;
                 // SPEC section 3, step 6: received += rho * Phi (over A when pushed).
-                const Patch& p = ctx.hierarchy.patch_set().patches[queries[k].receiver_patch];
-                deposits[k] = {out.quantum.count(p.reflectance * r.power, dither), true};
+                const Patch& p = ctx.hierarchy.patch_set().patches[b.queries[k].receiver_patch];
+                b.deposits[k] = {out.quantum.count(p.reflectance * r.power, dither), true};
             }
         });
+    };
+    DescentScratch scratch;
+    auto finish = [&](Batch& b) {
         std::size_t landed = 0;
-        for (std::uint64_t k = 0; k < n; ++k) {
-            if (deposits[k].lands) queries[landed++] = queries[k];
+        for (std::uint64_t k = 0; k < b.n; ++k) {
+            if (b.deposits[k].lands) b.queries[landed++] = b.queries[k];
         }
         RefinementCounters counters;
-        refine_links(ctx, {queries.data(), landed}, counters, scratch);
+        refine_links(ctx, {b.queries.data(), landed}, counters, scratch);
         out.counters += counters;
-        for (std::uint64_t k = 0, q = 0; k < n; ++k) {
-            if (!deposits[k].lands) continue;
-            add(queries[q++].receiver->received, deposits[k].quanta);
+        for (std::uint64_t k = 0, q = 0; k < b.n; ++k) {
+            if (!b.deposits[k].lands) continue;
+            add(b.queries[q++].receiver->received, b.deposits[k].quanta);
         }
-        for (const Chunk& c : chunks) {
+        for (const Chunk& c : b.chunks) {
             add(out.shot_power, c.shot);
             add(out.escaped_power, c.escaped);
             add(out.back_face_power, c.back_face);
         }
-        out.rays += n;
+        out.rays += b.n;
         if (on_batch) on_batch(out.rays);
+    };
+    // Tracing reads only the patches, the sources and the Embree scene, never the hierarchy, so
+    // the next batch is traced while this one descends and deposits: the batch's sequential
+    // steps (compaction, sort, deposits) then overlap the next batch's rays on other threads.
+    // The batches still descend and deposit in order, so the bits are the same.
+    trace(batches[0], slice.begin);
+    for (std::size_t current = 0;;) {
+        Batch& b = batches[current];
+        const std::uint64_t next = b.first + b.n;
+        if (next >= slice.end) {
+            finish(b);
+            break;
+        }
+        if (!overlap) {
+            finish(b);
+            trace(b, next);
+            continue;
+        }
+        Batch& following = batches[current ^ 1];
+        tbb::task_group tracing;
+        tracing.run([&trace, &following, next] { trace(following, next); });
+        try {
+            finish(b);
+        } catch (...) {  // an interrupt from on_batch: the tracing task must end first
+            tracing.cancel();
+            tracing.wait();
+            throw;
+        }
+        tracing.wait();
+        current ^= 1;
     }
     return out;
 }
