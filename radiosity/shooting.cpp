@@ -1,12 +1,13 @@
 #include "radiosity/shooting.h"
 
-#include <tbb/parallel_for.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "radiosity/kernel.h"
@@ -74,6 +75,35 @@ RayResult trace_ray(const RefinementContext& ctx, const IterationSources& source
     return r;
 }
 
+}  // namespace
+
+struct ShootingBuffers::Impl {
+    struct Chunk {
+        Quanta shot{}, escaped{}, back_face{};
+    };
+    // Each ray's deposit, added after the batch by one thread: atomic adds from both threads
+    // onto the few hot elements of a small scene made 2 threads 20% slower.
+    struct Deposit {
+        Quanta quanta{};
+        bool lands = false;  // on a front face: the descent finds its element
+    };
+    // The batch's descents are made together, after its rays are traced, so that rays between
+    // the same patches decide their shared links once (refine_links).
+    struct Batch {
+        std::uint64_t first = 0, n = 0;
+        std::vector<Chunk> chunks;
+        std::vector<Deposit> deposits;
+        std::vector<LinkQuery> queries;
+    };
+    std::array<Batch, 2> batches;  // the second while the first descends (2 threads or more)
+    DescentScratch descent;
+};
+
+ShootingBuffers::ShootingBuffers() : m_impl(std::make_unique<Impl>()) {}
+ShootingBuffers::~ShootingBuffers() = default;
+
+namespace {
+
 constexpr std::uint64_t kBatchRays = 1 << 16;
 constexpr std::uint64_t kGrain = 256;
 
@@ -103,36 +133,23 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
 
 IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
                                  std::uint32_t iteration, std::uint64_t rays, RaySlice slice,
-                                 const std::function<void(std::uint64_t)>& on_batch) {
+                                 const std::function<void(std::uint64_t)>& on_batch,
+                                 ShootingBuffers* buffers) {
     IterationOutcome out;
     if (rays == 0 || sources.total <= 0) return out;
     slice.end = std::min(slice.end, rays);
     const double power_scale = sources.total / double(rays);  // S / N_iter
     out.quantum = PowerQuantum::for_iteration(power_scale * sources.max_share, rays);
-    struct Chunk {
-        Quanta shot{}, escaped{}, back_face{};
-    };
-    // Each ray's deposit, added after the batch by one thread: atomic adds from both threads
-    // onto the few hot elements of a small scene made 2 threads 20% slower.
-    struct Deposit {
-        Quanta quanta{};
-        bool lands = false;  // on a front face: the descent finds its element
-    };
-    // The batch's descents are made together, after its rays are traced, so that rays between
-    // the same patches decide their shared links once (refine_links).
-    struct Batch {
-        std::uint64_t first = 0, n = 0;
-        std::vector<Chunk> chunks;
-        std::vector<Deposit> deposits;
-        std::vector<LinkQuery> queries;
-    };
     if (slice.begin >= slice.end) return out;
     const std::uint64_t batch_rays = std::min(slice.end - slice.begin, kBatchRays);
     // One thread cannot overlap anything: it reuses one batch's buffers, which stay in cache.
     const bool overlap = std::min<std::size_t>(tbb::this_task_arena::max_concurrency(),
                                                tbb::global_control::active_value(
                                                    tbb::global_control::max_allowed_parallelism)) > 1;
-    std::array<Batch, 2> batches;
+    std::optional<ShootingBuffers> own;
+    if (!buffers) buffers = &own.emplace();
+    using Batch = ShootingBuffers::Impl::Batch;
+    std::array<Batch, 2>& batches = buffers->impl().batches;
     for (Batch& b : batches) {
         b.deposits.resize(batch_rays);
         b.queries.resize(batch_rays);
@@ -144,7 +161,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
         b.chunks.assign((b.n + kGrain - 1) / kGrain, {});
         tbb::parallel_for(std::uint64_t(0), b.chunks.size(), [&](std::uint64_t c) {
             set_tracing_float_mode();
-            Chunk& chunk = b.chunks[c];
+            ShootingBuffers::Impl::Chunk& chunk = b.chunks[c];
             for (std::uint64_t k = c * kGrain; k < std::min(b.n, (c + 1) * kGrain); ++k) {
                 Rng rng(ctx.seed, iteration, first + k);
                 const RayResult r = trace_ray(ctx, sources, power_scale, rng, b.queries[k]);
@@ -161,7 +178,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             }
         });
     };
-    DescentScratch scratch;
+    DescentScratch& scratch = buffers->impl().descent;
     auto finish = [&](Batch& b) {
         std::size_t landed = 0;
         for (std::uint64_t k = 0; k < b.n; ++k) {
@@ -174,7 +191,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             if (!b.deposits[k].lands) continue;
             add(b.queries[q++].receiver->received, b.deposits[k].quanta);
         }
-        for (const Chunk& c : b.chunks) {
+        for (const auto& c : b.chunks) {
             add(out.shot_power, c.shot);
             add(out.escaped_power, c.escaped);
             add(out.back_face_power, c.back_face);

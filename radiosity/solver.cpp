@@ -99,6 +99,7 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
     RaySchedule schedule(options.rays, options.stop * emitted);
     Rgb unshot = h.unshot_power();
     // The cap only guards against a scene that never converges; stop ends real solves.
+    ShootingBuffers buffers;
     for (std::uint32_t it = 0; channel_sum(unshot) >= options.stop * emitted && it < 10'000; ++it) {
         const auto t0 = Clock::now();
         IterationRecord rec;
@@ -113,11 +114,14 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
         IterationOutcome out;
         together(ranks, [&] {
             const RaySlice slice = slice_of(rec.rays, ranks.rank(), ranks.size());
-            out = shoot_iteration(ctx, sources, it, rec.rays, slice, [&](std::uint64_t n) {
-                const double done = double(done_before) + double(n) * ranks.size();
-                progress.advance(std::min(1.0, done / double(options.rays)));
-                throw_if_interrupted();
-            });
+            out = shoot_iteration(
+                ctx, sources, it, rec.rays, slice,
+                [&](std::uint64_t n) {
+                    const double done = double(done_before) + double(n) * ranks.size();
+                    progress.advance(std::min(1.0, done / double(options.rays)));
+                    throw_if_interrupted();
+                },
+                &buffers);
         });
         merge_iteration(h, out, ranks, !fixed_mesh);
         st.shooting_seconds += seconds_since(t0);
