@@ -2,10 +2,36 @@
 
 #include <bit>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 
 #include "common/hash.h"
 
 namespace hmcr {
+
+FaceMaterials::FaceMaterials(const PatchMesh& mesh) : m_mesh(mesh) {
+    OpenMesh::MPropHandleT<std::vector<FaceMaterial>> table;
+    if (!mesh.get_property_handle(table, kMaterialsProp) ||
+        !mesh.get_property_handle(m_index, kMaterialProp)) {
+        throw std::invalid_argument("patch mesh has no material properties");
+    }
+    m_table = &mesh.property(table);
+}
+
+const FaceMaterial& FaceMaterials::operator[](OpenMesh::FaceHandle f) const {
+    const std::uint32_t m = m_mesh.property(m_index, f);
+    if (m >= m_table->size()) {
+        throw std::invalid_argument("face " + std::to_string(f.idx()) + " names material " +
+                                    std::to_string(m) + " of " + std::to_string(m_table->size()));
+    }
+    return (*m_table)[m];
+}
+
+void set_face_material(PatchMesh& mesh, OpenMesh::FaceHandle f, const FaceMaterial& material) {
+    std::vector<FaceMaterial>& table = *materials_prop(mesh);
+    material_prop(mesh)[f] = std::uint32_t(table.size());
+    table.push_back(material);
+}
 
 std::string geometry_hash(const PatchMesh& mesh) {
     Fnv1a h;

@@ -148,8 +148,13 @@ void make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
                const std::vector<std::uint32_t>& material_of, std::size_t vertex_count,
                PatchMesh& mesh) {
     mesh.reserve(vertex_count, edge_count(soup, id), soup.polygon_count());
-    auto reflectance = reflectance_prop(mesh);
-    auto emission = emission_prop(mesh);
+    std::vector<FaceMaterial>& table = *materials_prop(mesh);
+    for (const Material& m : materials) {
+        const Eigen::Vector3d e = std::numbers::pi * m.ke;
+        table.push_back({OpenMesh::Vec3d(m.kd.x(), m.kd.y(), m.kd.z()),
+                          OpenMesh::Vec3d(e.x(), e.y(), e.z())});
+    }
+    auto material = material_prop(mesh);
     auto source_line = source_line_prop(mesh);
     std::vector<OpenMesh::VertexHandle> handles(vertex_count), corners;
     std::vector<int> ids;
@@ -158,10 +163,7 @@ void make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
     for (std::size_t f = 0; f < soup.polygon_count(); ++f) {
         welded_face(soup, f, id, ids, points);
         const OpenMesh::FaceHandle fh = add_patch(mesh, ids, points, handles, corners);
-        const Material& m = materials[material_of[f]];
-        reflectance[fh] = OpenMesh::Vec3d(m.kd.x(), m.kd.y(), m.kd.z());
-        const Eigen::Vector3d e = std::numbers::pi * m.ke;
-        emission[fh] = OpenMesh::Vec3d(e.x(), e.y(), e.z());
+        material[fh] = material_of[f];
         source_line[fh] = int(soup.place[f].line);
     }
 }

@@ -99,8 +99,7 @@ OpenMesh::FPropHandleT<T> face_property(const PatchMesh& mesh, const char* name)
 
 PatchSet build_patch_set(const PatchMesh& mesh) {
     PatchSet set;
-    const auto rho_h = face_property<OpenMesh::Vec3d>(mesh, kReflectanceProp);
-    const auto emit_h = face_property<OpenMesh::Vec3d>(mesh, kEmissionProp);
+    const FaceMaterials materials(mesh);
     set.patches.reserve(mesh.n_faces());
     for (auto f : mesh.faces()) {
         Patch p;
@@ -110,8 +109,9 @@ PatchSet build_patch_set(const PatchMesh& mesh) {
             p.corner[p.corner_count++] = Vec3(pt[0], pt[1], pt[2]);
         }
         p.finalize();
-        const auto& rho = mesh.property(rho_h, f);
-        const auto& emit = mesh.property(emit_h, f);
+        const FaceMaterial& m = materials[f];
+        const auto& rho = m.reflectance;
+        const auto& emit = m.emission;
         p.reflectance = Rgb(rho[0], rho[1], rho[2]);
         p.emission = Rgb(emit[0], emit[1], emit[2]);
         set.total_area += p.area;

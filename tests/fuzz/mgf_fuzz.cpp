@@ -33,12 +33,13 @@ void check_soup(const PolygonSoup& soup) {
 }
 
 void check_mesh(PatchMesh& mesh) {
-    auto reflectance = reflectance_prop(mesh);
+    const FaceMaterials material(mesh);
     for (auto fh : mesh.faces()) {
         if (mesh.valence(fh) < 3 || mesh.valence(fh) > 4)
             crash("face that is neither a triangle nor a quad");
         for (int c = 0; c < 3; ++c) {
-            if (!(reflectance[fh][c] >= 0 && reflectance[fh][c] <= 1)) crash("bad reflectance");
+            const double rho = material[fh].reflectance[c];
+            if (!(rho >= 0 && rho <= 1)) crash("bad reflectance");
         }
     }
 }

@@ -14,8 +14,7 @@ namespace {
 
 void check_mesh(PatchMesh& mesh) {
     if (mesh.n_faces() == 0) crash("loaded a mesh without faces");
-    auto reflectance = reflectance_prop(mesh);
-    auto emission = emission_prop(mesh);
+    const FaceMaterials material(mesh);
     auto line = source_line_prop(mesh);
     double emitted = 0;
     for (auto fh : mesh.faces()) {
@@ -23,9 +22,10 @@ void check_mesh(PatchMesh& mesh) {
         if (valence < 3 || valence > 4) crash("face that is neither a triangle nor a quad");
         for (int c = 0; c < 3; ++c) {
             // 1 is accepted with a warning (README: Repairs), above is refused.
-            if (!(reflectance[fh][c] >= 0 && reflectance[fh][c] <= 1)) crash("bad reflectance");
-            if (!(emission[fh][c] >= 0 && std::isfinite(emission[fh][c]))) crash("bad emission");
-            emitted += emission[fh][c];
+            const double rho = material[fh].reflectance[c], e = material[fh].emission[c];
+            if (!(rho >= 0 && rho <= 1)) crash("bad reflectance");
+            if (!(e >= 0 && std::isfinite(e))) crash("bad emission");
+            emitted += e;
         }
         if (line[fh] <= 0) crash("face without a source line");
     }

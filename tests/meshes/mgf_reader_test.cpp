@@ -365,7 +365,7 @@ namespace hmcr {
 namespace {
 
 double mesh_area(PatchMesh& mesh, Eigen::Vector3d& emitted_power) {
-    auto emission = emission_prop(mesh);
+    const FaceMaterials material(mesh);
     double area = 0;
     emitted_power.setZero();
     for (auto fh : mesh.faces()) {
@@ -375,7 +375,8 @@ double mesh_area(PatchMesh& mesh, Eigen::Vector3d& emitted_power) {
         }
         const double a = area_vector(p).norm();
         area += a;
-        emitted_power += a * Eigen::Vector3d(emission[fh][0], emission[fh][1], emission[fh][2]);
+        const auto& e = material[fh].emission;
+        emitted_power += a * Eigen::Vector3d(e[0], e[1], e[2]);
     }
     return area;
 }

@@ -61,13 +61,12 @@ TEST(ObjLoader, LoadsFacesMaterialsAndLines) {
     files.write("scene.mtl", kMtl);
     PatchMesh mesh = load_obj(files.write("scene.obj", std::string(kHeader) + kTwoQuads));
     ASSERT_EQ(mesh.n_faces(), 2u);
-    auto reflectance = reflectance_prop(mesh);
-    auto emission = emission_prop(mesh);
+    const FaceMaterials material(mesh);
     auto line = source_line_prop(mesh);
     const OpenMesh::FaceHandle grey(0), light(1);
-    EXPECT_EQ(reflectance[grey], OpenMesh::Vec3d(0.5, 0.5, 0.5));
-    EXPECT_EQ(emission[grey], OpenMesh::Vec3d(0, 0, 0));
-    EXPECT_EQ(emission[light], OpenMesh::Vec3d(1, 2, 3) * std::numbers::pi);
+    EXPECT_EQ(material[grey].reflectance, OpenMesh::Vec3d(0.5, 0.5, 0.5));
+    EXPECT_EQ(material[grey].emission, OpenMesh::Vec3d(0, 0, 0));
+    EXPECT_EQ(material[light].emission, OpenMesh::Vec3d(1, 2, 3) * std::numbers::pi);
     EXPECT_EQ(line[grey], 11);
     EXPECT_EQ(line[light], 13);
 }
@@ -109,9 +108,9 @@ TEST(ObjLoader, DefaultMaterialForFacesWithout) {
     options.default_material = Material{"default", {0.25, 0.5, 0.75}, {2, 2, 2}};
     PatchMesh mesh = load_obj(obj, options);
     ASSERT_EQ(mesh.n_faces(), 1u);
-    EXPECT_EQ(reflectance_prop(mesh)[OpenMesh::FaceHandle(0)], OpenMesh::Vec3d(0.25, 0.5, 0.75));
-    EXPECT_EQ(emission_prop(mesh)[OpenMesh::FaceHandle(0)],
-              OpenMesh::Vec3d(2, 2, 2) * std::numbers::pi);
+    const FaceMaterial& m = FaceMaterials(mesh)[OpenMesh::FaceHandle(0)];
+    EXPECT_EQ(m.reflectance, OpenMesh::Vec3d(0.25, 0.5, 0.75));
+    EXPECT_EQ(m.emission, OpenMesh::Vec3d(2, 2, 2) * std::numbers::pi);
 }
 
 TEST(ObjLoader, UnreadableFile) {

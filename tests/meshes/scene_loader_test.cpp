@@ -89,8 +89,9 @@ TEST(SceneLoader, DefaultMaterialFromJson) {
                           "ke": [4, 5, 6]}})");
     Scene scene = load_scene(json.string());
     const OpenMesh::FaceHandle f(0);
-    EXPECT_EQ(reflectance_prop(scene.mesh)[f], OpenMesh::Vec3d(0.1, 0.2, 0.3));
-    EXPECT_EQ(emission_prop(scene.mesh)[f], OpenMesh::Vec3d(4, 5, 6) * std::numbers::pi);
+    const FaceMaterial& m = FaceMaterials(scene.mesh)[f];
+    EXPECT_EQ(m.reflectance, OpenMesh::Vec3d(0.1, 0.2, 0.3));
+    EXPECT_EQ(m.emission, OpenMesh::Vec3d(4, 5, 6) * std::numbers::pi);
     ASSERT_EQ(scene.views.size(), 1u);  // no "views": the default view
 }
 

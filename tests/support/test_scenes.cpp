@@ -7,8 +7,8 @@ namespace hmcr::test {
 
 PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons) {
     PatchMesh mesh;
-    auto rho = reflectance_prop(mesh);
-    auto emit = emission_prop(mesh);
+    std::vector<FaceMaterial>& table = *materials_prop(mesh);
+    auto material = material_prop(mesh);
     auto line = source_line_prop(mesh);
     std::map<std::array<double, 3>, PatchMesh::VertexHandle> welded;
     for (const TestPolygon& p : polygons) {
@@ -26,8 +26,9 @@ PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons) {
             for (auto& v : vs) v = mesh.add_vertex(mesh.point(v));
             f = mesh.add_face(vs);
         }
-        rho[f] = {p.reflectance[0], p.reflectance[1], p.reflectance[2]};
-        emit[f] = {p.emission[0], p.emission[1], p.emission[2]};
+        material[f] = std::uint32_t(table.size());
+        table.push_back({{p.reflectance[0], p.reflectance[1], p.reflectance[2]},
+                          {p.emission[0], p.emission[1], p.emission[2]}});
         line[f] = 0;
     }
     return mesh;

@@ -124,7 +124,7 @@ TEST(ShadedMesh, CoplanarPatchesShareConformingPoints) {
 // A light in a ceiling: coplanar, but B jumps with E, so the edge is not blended.
 TEST(ShadedMesh, CoplanarPatchesOfDifferentMaterialsAreNotBlended) {
     Scene s = split_pair(true);
-    emission_prop(s.mesh)[PatchMesh::FaceHandle(1)] = OpenMesh::Vec3d(2, 2, 2);
+    set_face_material(s.mesh, PatchMesh::FaceHandle(1), {{0.5, 0.5, 0.5}, {2, 2, 2}});
     s.h = std::make_unique<Hierarchy>(build_patch_set(s.mesh), HierarchyLimits{0, 24});
     s.at(0, {0});
     fill(s, 0, 1);

@@ -26,12 +26,9 @@ inline PatchMesh make_mesh(const std::vector<Vec3>& points,
         for (int i : f) fv.push_back(v[i]);
         EXPECT_TRUE(mesh.add_face(fv).is_valid());
     }
-    auto rho = reflectance_prop(mesh);
-    auto emit = emission_prop(mesh);
-    for (auto f : mesh.faces()) {
-        rho[f] = OpenMesh::Vec3d(0.5, 0.5, 0.5);
-        emit[f] = OpenMesh::Vec3d(0, 0, 0);
-    }
+    (*materials_prop(mesh)).push_back({{0.5, 0.5, 0.5}, {0, 0, 0}});
+    auto material = material_prop(mesh);
+    for (auto f : mesh.faces()) material[f] = 0;
     return mesh;
 }
 
