@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -54,9 +55,10 @@ public:
     struct Impl;  // opaque: keeps RTC types out of this header
 
 private:
-    void build(const std::vector<std::array<float, 3>>& vertices,
-               const std::vector<std::array<unsigned, 3>>& triangles, const Vec3& lo,
-               const Vec3& hi);
+    // The BVH of `triangle_count` triangles over `vertex_count` vertices, which fill(vertices,
+    // triangles) writes straight into Embree's buffers: 3 floats, 3 vertex indices each.
+    void build(std::size_t vertex_count, std::size_t triangle_count, const Vec3& lo,
+               const Vec3& hi, const std::function<void(float*, unsigned*)>& fill);
 
     Impl* m_impl;
     std::vector<std::uint32_t> m_triangle_patch;
