@@ -18,13 +18,13 @@ FaceMaterials::FaceMaterials(const PatchMesh& mesh) : m_mesh(mesh) {
     m_table = &mesh.property(table);
 }
 
-const FaceMaterial& FaceMaterials::operator[](OpenMesh::FaceHandle f) const {
+std::uint32_t FaceMaterials::index(OpenMesh::FaceHandle f) const {
     const std::uint32_t m = m_mesh.property(m_index, f);
     if (m >= m_table->size()) {
         throw std::invalid_argument("face " + std::to_string(f.idx()) + " names material " +
                                     std::to_string(m) + " of " + std::to_string(m_table->size()));
     }
-    return (*m_table)[m];
+    return m;
 }
 
 void set_face_material(PatchMesh& mesh, OpenMesh::FaceHandle f, const FaceMaterial& material) {

@@ -46,7 +46,9 @@ class FaceMaterials {
     // Throws std::invalid_argument when the mesh lacks the properties.
     explicit FaceMaterials(const PatchMesh& mesh);
     // Throws std::invalid_argument when the face's index is not in the table.
-    const FaceMaterial& operator[](OpenMesh::FaceHandle f) const;
+    std::uint32_t index(OpenMesh::FaceHandle f) const;
+    const FaceMaterial& operator[](OpenMesh::FaceHandle f) const { return (*m_table)[index(f)]; }
+    const std::vector<FaceMaterial>& table() const { return *m_table; }
 
   private:
     const PatchMesh& m_mesh;

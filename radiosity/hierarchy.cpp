@@ -22,7 +22,7 @@ Hierarchy::Hierarchy(PatchSet patches, HierarchyLimits limits)
         r.id = {std::uint32_t(i), 0, 0};
         r.area = p.area;
         r.centre = p.point(r.domain.centre(p.is_quad()));
-        r.radiosity = r.unshot = p.emission;
+        r.radiosity = r.unshot = m_patches.emission(p);
     }
 }
 

@@ -100,6 +100,11 @@ OpenMesh::FPropHandleT<T> face_property(const PatchMesh& mesh, const char* name)
 PatchSet build_patch_set(const PatchMesh& mesh) {
     PatchSet set;
     const FaceMaterials materials(mesh);
+    set.materials.clear();
+    for (const FaceMaterial& m : materials.table()) {
+        set.materials.push_back({Rgb(m.reflectance[0], m.reflectance[1], m.reflectance[2]),
+                                 Rgb(m.emission[0], m.emission[1], m.emission[2])});
+    }
     set.patches.reserve(mesh.n_faces());
     for (auto f : mesh.faces()) {
         Patch p;
@@ -109,14 +114,11 @@ PatchSet build_patch_set(const PatchMesh& mesh) {
             p.corner[p.corner_count++] = Vec3(pt[0], pt[1], pt[2]);
         }
         p.finalize();
-        const FaceMaterial& m = materials[f];
-        const auto& rho = m.reflectance;
-        const auto& emit = m.emission;
-        p.reflectance = Rgb(rho[0], rho[1], rho[2]);
-        p.emission = Rgb(emit[0], emit[1], emit[2]);
+        p.material = materials.index(f);
+        const Rgb& emission = set.emission(p);
         set.total_area += p.area;
-        set.emitted_power += p.area * p.emission;
-        set.max_emitted_power = std::max(set.max_emitted_power, p.area * p.emission.maxCoeff());
+        set.emitted_power += p.area * emission;
+        set.max_emitted_power = std::max(set.max_emitted_power, p.area * emission.maxCoeff());
         set.patches.push_back(p);
     }
     return set;

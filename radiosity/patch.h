@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "meshes/patch_mesh.h"
@@ -17,11 +18,10 @@ namespace hmcr {
 
 struct Patch {
     std::array<Vec3, 4> corner;  // corner[3] unused on triangles
-    int corner_count = 3;
     Vec3 normal{0, 0, 1};        // unit, right-hand rule of the corner order (the front side)
     double area = 0;
-    Rgb reflectance = Rgb::Zero();
-    Rgb emission = Rgb::Zero();  // emitted radiosity E, W/m^2
+    int corner_count = 3;
+    std::uint32_t material = 0;  // index into PatchSet::materials
 
     bool is_quad() const { return corner_count == 4; }
     // Computes normal, area and the cached map data below from the corners.
@@ -41,16 +41,29 @@ struct Patch {
 private:
     // Cached by finalize(): the patch-plane frame and the map's edge vectors in it.
     Vec3 m_axis_x{1, 0, 0}, m_axis_y{0, 1, 0};
-    Vec2 m_e1{1, 0}, m_e2{0, 1}, m_g{0, 0};  // quads: e2 is corner 3 - corner 0
     Vec3 m_jacobian{0, 0, 0};                // J(u, v) = c0 + c1 u + c2 v
+    Vec2 m_e1{1, 0}, m_e2{0, 1}, m_g{0, 0};  // quads: e2 is corner 3 - corner 0
+};
+// A million patches are 256 MB: the material is an index, and the 16-byte aligned 2D vectors
+// come last, after 208 bytes, so that no padding is needed (320 bytes with both).
+static_assert(sizeof(Patch) == 256);
+
+struct PatchMaterial {
+    Rgb reflectance = Rgb::Zero();
+    Rgb emission = Rgb::Zero();  // emitted radiosity E, W/m^2
 };
 
-// The patches of a mesh in face order, plus the scene constants the oracles need.
+// The patches of a mesh in face order, their materials, and the scene constants the oracles
+// need.
 struct PatchSet {
     std::vector<Patch> patches;
+    std::vector<PatchMaterial> materials{PatchMaterial{}};  // patches name them by index
     double total_area = 0;          // A_T
     double max_emitted_power = 0;   // Phi_max: largest A_i * max_c E_i,c of any patch
     Rgb emitted_power = Rgb::Zero();  // sum of A_i * E_i
+
+    const Rgb& reflectance(const Patch& p) const { return materials[p.material].reflectance; }
+    const Rgb& emission(const Patch& p) const { return materials[p.material].emission; }
 };
 
 PatchSet build_patch_set(const PatchMesh& mesh);

@@ -20,7 +20,8 @@ namespace {
 // first choice was the unshot Delta B_j, which refines later iterations much less.
 double link_weight(const RefinementContext& ctx, const Element& receiver, const Element& source) {
     const Rgb& b = ctx.total_weight ? source.radiosity : source.unshot;
-    return (ctx.hierarchy.patch(receiver).reflectance * b).maxCoeff();
+    const Hierarchy& h = ctx.hierarchy;
+    return (h.patch_set().reflectance(h.patch(receiver)) * b).maxCoeff();
 }
 
 std::uint64_t element_key(const ElementId& id) {

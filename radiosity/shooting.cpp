@@ -126,7 +126,7 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
         const Patch& rcv = h.patch_set().patches[hit->patch];
         if (rcv.normal.dot(start.direction) >= 0) continue;
         const Rgb unit = start.leaf->unshot / start.leaf->unshot_sum;
-        reflected += channel_sum(rcv.reflectance * unit);
+        reflected += channel_sum(h.patch_set().reflectance(rcv) * unit);
     }
     return reflected / double(rays);
 }
@@ -173,8 +173,9 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
                 b.deposits[k] = {};
                 if (r.fate != Fate::deposited) continue;
                 // SPEC section 3, step 6: received += rho * Phi (over A when pushed).
-                const Patch& p = ctx.hierarchy.patch_set().patches[b.queries[k].receiver_patch];
-                b.deposits[k] = {out.quantum.count(p.reflectance * r.power, dither), true};
+                const PatchSet& ps = ctx.hierarchy.patch_set();
+                const Rgb& rho = ps.reflectance(ps.patches[b.queries[k].receiver_patch]);
+                b.deposits[k] = {out.quantum.count(rho * r.power, dither), true};
             }
         });
     };

@@ -7,7 +7,7 @@ namespace hmcr {
 Rgb reflected_power(const Hierarchy& h) {
     Rgb sum = Rgb::Zero();
     for (std::size_t p = 0; p < h.patch_count(); ++p) {
-        sum += h.root(p).area * (h.root(p).radiosity - h.patch_set().patches[p].emission);
+        sum += h.root(p).area * (h.root(p).radiosity - h.patch_set().emission(h.patch_set().patches[p]));
     }
     return sum;
 }

@@ -29,7 +29,8 @@ Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint6
 
 ObjectErrorOptions reflected_error_options(const PatchMesh& mesh) {
     ObjectErrorOptions o;
-    for (const Patch& p : build_patch_set(mesh).patches) o.emission.push_back(p.emission);
+    const PatchSet set = build_patch_set(mesh);
+    for (const Patch& p : set.patches) o.emission.push_back(set.emission(p));
     return o;
 }
 

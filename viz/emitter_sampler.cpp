@@ -7,12 +7,12 @@
 
 namespace hmcr {
 
-EmitterSampler::EmitterSampler(const std::vector<Patch>& patches)
-    : m_pdf_area(patches.size(), 0.0) {
+EmitterSampler::EmitterSampler(const PatchSet& set) : m_pdf_area(set.patches.size(), 0.0) {
+    const std::vector<Patch>& patches = set.patches;
     std::vector<double> power;
     double total = 0;
     for (std::uint32_t i = 0; i < patches.size(); ++i) {
-        const double w = patches[i].area * channel_sum(patches[i].emission);
+        const double w = patches[i].area * channel_sum(set.emission(patches[i]));
         if (!(w > 0)) continue;
         m_emitters.push_back(i);
         power.push_back(w);

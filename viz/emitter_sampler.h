@@ -21,7 +21,7 @@ struct EmitterPoint {
 class EmitterSampler {
 public:
     // Throws std::invalid_argument when nothing emits.
-    explicit EmitterSampler(const std::vector<Patch>& patches);
+    explicit EmitterSampler(const PatchSet& set);
 
     // A point from three uniforms in [0, 1): the patch, then two for the point.
     EmitterPoint sample(const std::vector<Patch>& patches, double xi_patch, double xi1,

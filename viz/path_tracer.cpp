@@ -53,11 +53,14 @@ std::string PathOptions::to_string() const {
 }
 
 PathTracer::PathTracer(const PatchSet& patches, const PathOptions& options)
-    : m_patches(patches.patches), m_scene(m_patches), m_lights(m_patches), m_options(options) {
+    : m_patches(patches.patches), m_scene(m_patches), m_lights(patches), m_options(options) {
     if (options.max_depth < 0 || options.roulette_depth < 1) {
         throw std::invalid_argument("bad path options: " + options.to_string());
     }
-    for (const Patch& p : m_patches) m_le.push_back(p.emission / kPi);
+    for (const Patch& p : m_patches) {
+        m_le.push_back(patches.emission(p) / kPi);
+        m_rho.push_back(patches.reflectance(p));
+    }
 }
 
 CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& rng) const {
@@ -79,13 +82,14 @@ Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
     Rgb sum = Rgb::Zero(), beta = Rgb::Ones();
     for (int bounce = 1; bounce <= m_options.max_depth; ++bounce) {
         const Patch& p = m_patches[v.patch];
-        if ((p.reflectance <= 0).all()) break;
+        const Rgb& rho = m_rho[v.patch];
+        if ((rho <= 0).all()) break;
         if (m_options.estimator != Estimator::bsdf) {
-            sum += beta * p.reflectance * next_event(v, rng, rays);
+            sum += beta * rho * next_event(v, rng, rays);
         }
         const double xi1 = rng.uniform(), xi2 = rng.uniform();
         const Vec3 wi = sample_cosine_hemisphere(p.normal, xi1, xi2);
-        beta *= p.reflectance;  // f cos / pdf = (rho / pi) cos / (cos / pi)
+        beta *= rho;  // f cos / pdf = (rho / pi) cos / (cos / pi)
         ++rays;
         const auto hit = m_scene.first_hit(v.point, wi);
         if (!hit) break;

@@ -68,7 +68,8 @@ private:
     Rgb radiance(Vertex v, Rng& rng, std::uint32_t& rays) const;
 
     std::vector<Patch> m_patches;
-    std::vector<Rgb> m_le;  // Le = E / pi per patch
+    std::vector<Rgb> m_le;   // Le = E / pi per patch
+    std::vector<Rgb> m_rho;  // reflectance per patch
     EmbreeScene m_scene;
     EmitterSampler m_lights;
     PathOptions m_options;

@@ -81,8 +81,9 @@ class CreaseGrouping {
         const auto& ps = m_h.patch_set().patches;
         const Patch& p0 = ps[f0.idx()];
         const Patch& p1 = ps[f1.idx()];
-        const bool same_material =
-            (p0.reflectance == p1.reflectance).all() && (p0.emission == p1.emission).all();
+        const PatchSet& set = m_h.patch_set();
+        const bool same_material = (set.reflectance(p0) == set.reflectance(p1)).all() &&
+                                   (set.emission(p0) == set.emission(p1)).all();
         if (same_material && p0.normal.dot(p1.normal) > m_cos_crease) {
             m_parent[find(a)] = find(b);
         }

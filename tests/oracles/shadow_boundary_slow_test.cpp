@@ -129,13 +129,13 @@ bool is_horizontal_rectangle(const Patch& p) {
     return std::abs(p.normal.z()) == 1 && std::abs(p.area / (b.hi - b.lo).prod() - 1) < 1e-12;
 }
 
-bool is_floor(const Patch& p) { return p.reflectance.maxCoeff() > 0; }
+bool is_floor(const PatchSet& set, const Patch& p) { return set.reflectance(p).maxCoeff() > 0; }
 
 Mesh measure(const Hierarchy& h, const Shadow& shadow, double margin) {
     Mesh m;
     const Box far_lit = shadow.penumbra.grown(margin), far_umbra = shadow.umbra.grown(-margin);
     h.for_each_leaf([&](const Element& e) {
-        if (!is_floor(h.patch(e))) return;
+        if (!is_floor(h.patch_set(), h.patch(e))) return;
         ++m.floor_leaves;
         const Vec2 c = e.centre.head<2>();
         Density* d = nullptr;
@@ -205,9 +205,9 @@ TEST_P(ShadowBoundary, LineOraclesRefineThePenumbraAndPowerDoesNot) {
     const PatchSet patches = build_patch_set(scene.mesh);
     const Patch *emitter = nullptr, *occluder = nullptr;
     for (const Patch& p : patches.patches) {
-        if (p.emission.maxCoeff() > 0)
+        if (patches.emission(p).maxCoeff() > 0)
             emitter = &p;
-        else if (!is_floor(p))
+        else if (!is_floor(patches, p))
             occluder = &p;
     }
     ASSERT_TRUE(emitter && occluder);

@@ -133,8 +133,9 @@ void expect_energy_balance(const Solution& sol) {
     Rgb absorbed = Rgb::Zero();
     for (std::size_t p = 0; p < h.patch_count(); ++p) {
         const Patch& patch = h.patch_set().patches[p];
-        const Rgb irradiance = (h.root(p).radiosity - patch.emission) / patch.reflectance;
-        absorbed += patch.area * (1 - patch.reflectance) * irradiance;
+        const Rgb& rho = h.patch_set().reflectance(patch);
+        const Rgb irradiance = (h.root(p).radiosity - h.patch_set().emission(patch)) / rho;
+        absorbed += patch.area * (1 - rho) * irradiance;
     }
     Rgb reflected = Rgb::Zero();
     for (const auto& it : sol.stats.iterations) reflected += it.unshot_after;
