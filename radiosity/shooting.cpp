@@ -143,9 +143,10 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     if (slice.begin >= slice.end) return out;
     const std::uint64_t batch_rays = std::min(slice.end - slice.begin, kBatchRays);
     // One thread cannot overlap anything: it reuses one batch's buffers, which stay in cache.
-    const bool overlap = std::min<std::size_t>(tbb::this_task_arena::max_concurrency(),
-                                               tbb::global_control::active_value(
-                                                   tbb::global_control::max_allowed_parallelism)) > 1;
+    const auto threads = std::min<std::size_t>(
+        tbb::this_task_arena::max_concurrency(),
+        tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+    const bool overlap = threads > 1;
     std::optional<ShootingBuffers> own;
     if (!buffers) buffers = &own.emplace();
     using Batch = ShootingBuffers::Impl::Batch;

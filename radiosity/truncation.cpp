@@ -6,8 +6,9 @@ namespace hmcr {
 
 Rgb reflected_power(const Hierarchy& h) {
     Rgb sum = Rgb::Zero();
+    const PatchSet& set = h.patch_set();
     for (std::size_t p = 0; p < h.patch_count(); ++p) {
-        sum += h.root(p).area * (h.root(p).radiosity - h.patch_set().emission(h.patch_set().patches[p]));
+        sum += h.root(p).area * (h.root(p).radiosity - set.emission(set.patches[p]));
     }
     return sum;
 }
