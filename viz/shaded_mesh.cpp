@@ -78,10 +78,9 @@ class CreaseGrouping {
         if (!f0.is_valid() || !f1.is_valid()) return;
         const int a = index_of(patches, f0.idx()), b = index_of(patches, f1.idx());
         if (a < 0 || b < 0) return;
-        const auto& ps = m_h.patch_set().patches;
-        const Patch& p0 = ps[f0.idx()];
-        const Patch& p1 = ps[f1.idx()];
         const PatchSet& set = m_h.patch_set();
+        const Patch& p0 = set.patches[f0.idx()];
+        const Patch& p1 = set.patches[f1.idx()];
         const bool same_material = (set.reflectance(p0) == set.reflectance(p1)).all() &&
                                    (set.emission(p0) == set.emission(p1)).all();
         if (same_material && p0.normal.dot(p1.normal) > m_cos_crease) {
