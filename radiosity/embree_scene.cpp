@@ -15,6 +15,16 @@ struct EmbreeScene::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     std::string error;  // first error reported by Embree's callback
+
+    Impl() = default;
+    Impl(const Impl&) = delete;
+    Impl& operator=(const Impl&) = delete;
+    // Here rather than in ~EmbreeScene, so that a constructor that throws (an index out of
+    // range, an Embree error) releases them too.
+    ~Impl() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
 };
 
 namespace {
@@ -65,7 +75,7 @@ void set_tracing_float_mode() {
 // Both scenes are counted first and written straight into Embree's buffers: on the 10^6-patch
 // office, vectors grown corner by corner and then copied held up to 150 MB more while the BVH
 // was built, the peak of the whole solve.
-EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(new Impl) {
+EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(std::make_unique<Impl>()) {
     std::size_t vertex_count = 0, triangle_count = 0;
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
     for (const Patch& p : patches) {
@@ -97,7 +107,7 @@ EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(new Impl) {
 
 EmbreeScene::EmbreeScene(const std::vector<Vec3>& points,
                          const std::vector<std::array<unsigned, 3>>& triangles)
-    : m_impl(new Impl) {
+    : m_impl(std::make_unique<Impl>()) {
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
     for (const Vec3& c : points) {
         lo = lo.cwiseMin(c);
@@ -107,7 +117,6 @@ EmbreeScene::EmbreeScene(const std::vector<Vec3>& points,
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
         for (unsigned i : triangles[t]) {
             if (i >= points.size()) {
-                delete m_impl;  // the destructor does not run for a throwing constructor
                 throw std::invalid_argument("triangle " + std::to_string(t) + " names vertex " +
                                             std::to_string(i) + " of " +
                                             std::to_string(points.size()));
@@ -129,7 +138,7 @@ void EmbreeScene::build(std::size_t vertex_count, std::size_t triangle_count, co
     // No "threads=N": with TBB in the process it would cap all TBB parallelism.
     m_impl->device = rtcNewDevice(nullptr);
     if (!m_impl->device) throw std::runtime_error("cannot create the Embree device");
-    rtcSetDeviceErrorFunction(m_impl->device, on_embree_error, m_impl);
+    rtcSetDeviceErrorFunction(m_impl->device, on_embree_error, m_impl.get());
     m_offset = 1e-6 * std::max(1e-9, (hi - lo).norm());
 
     m_impl->scene = rtcNewScene(m_impl->device);
@@ -143,6 +152,7 @@ void EmbreeScene::build(std::size_t vertex_count, std::size_t triangle_count, co
         auto* ib = static_cast<unsigned*>(
             rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                     3 * sizeof(unsigned), triangle_count));
+        if (!m_impl->error.empty()) rtcReleaseGeometry(geom);  // before the throw below
         throw_if_failed(*m_impl, "allocating Embree buffers");
         fill(vb, ib);
         rtcCommitGeometry(geom);
@@ -153,11 +163,7 @@ void EmbreeScene::build(std::size_t vertex_count, std::size_t triangle_count, co
     throw_if_failed(*m_impl, "building the Embree scene");
 }
 
-EmbreeScene::~EmbreeScene() {
-    if (m_impl->scene) rtcReleaseScene(m_impl->scene);
-    if (m_impl->device) rtcReleaseDevice(m_impl->device);
-    delete m_impl;
-}
+EmbreeScene::~EmbreeScene() = default;
 
 std::optional<Hit> EmbreeScene::first_hit(const Vec3& origin, const Vec3& direction) const {
     const RTCRayHit rh = intersect(m_impl->scene, origin, direction, m_offset);

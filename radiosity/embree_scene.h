@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -60,7 +61,7 @@ private:
     void build(std::size_t vertex_count, std::size_t triangle_count, const Vec3& lo,
                const Vec3& hi, const std::function<void(float*, unsigned*)>& fill);
 
-    Impl* m_impl;
+    std::unique_ptr<Impl> m_impl;
     std::vector<std::uint32_t> m_triangle_patch;
     double m_offset = 0;
 };
