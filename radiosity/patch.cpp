@@ -3,8 +3,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
-#include <string>
 
 namespace hmcr {
 namespace {
@@ -83,19 +81,6 @@ double Patch::region_area(const Vec2* uv, int count) const {
     const Vec3 d = point(uv[3]);
     return 0.5 * (c - a).cross(d - b).norm();  // exact for planar quads
 }
-
-namespace {
-
-template <class T>
-OpenMesh::FPropHandleT<T> face_property(const PatchMesh& mesh, const char* name) {
-    OpenMesh::FPropHandleT<T> h;
-    if (!mesh.get_property_handle(h, name)) {
-        throw std::invalid_argument(std::string("patch mesh has no face property ") + name);
-    }
-    return h;
-}
-
-}  // namespace
 
 PatchSet build_patch_set(const PatchMesh& mesh) {
     PatchSet set;
