@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <stdexcept>
 
 #include "radiosity/hierarchy.h"
 #include "radiosity/rng.h"
@@ -25,6 +26,24 @@ void subdivide_everywhere(Hierarchy& h, Element& e, int depth) {
     if (depth == 0) return;
     Element* c = h.subdivide(e);
     for (int k = 0; k < 4; ++k) subdivide_everywhere(h, c[k], depth - 1);
+}
+
+// Each patch reads its material from the mesh's table by the face's index; a face naming a
+// material the table lacks, or a mesh without the table, is refused instead of read past.
+TEST(PatchSet, MaterialsComeFromTheMeshTableByIndex) {
+    PatchMesh mesh = make_patch_mesh(quad_and_triangle());
+    const PatchSet set = build_patch_set(mesh);
+    ASSERT_EQ(set.patches.size(), 2u);
+    EXPECT_TRUE((set.reflectance(set.patches[0]) == Rgb::Constant(0.5)).all());
+    EXPECT_TRUE((set.emission(set.patches[0]) == Rgb::Zero()).all());
+    EXPECT_TRUE((set.emission(set.patches[1]) == Rgb::Constant(1)).all());
+    EXPECT_DOUBLE_EQ(set.max_emitted_power, set.patches[1].area);
+    material_prop(mesh)[OpenMesh::FaceHandle(1)] = 7;
+    EXPECT_THROW(build_patch_set(mesh), std::invalid_argument);
+    PatchMesh bare;
+    bare.add_face(bare.add_vertex({0, 0, 0}), bare.add_vertex({1, 0, 0}),
+                  bare.add_vertex({0, 1, 0}));
+    EXPECT_THROW(build_patch_set(bare), std::invalid_argument);
 }
 
 TEST(Hierarchy, ChildAreasSumToTheParent) {
