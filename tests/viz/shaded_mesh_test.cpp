@@ -14,13 +14,13 @@ namespace {
 
 constexpr double kEps = 1e-12;  // exact arithmetic up to rounding of unit-sized scenes
 
-Vec3 at_param(const Scene& s, int patch, double u, double v) {
+Vec3 at_param(const MeshHierarchy& s, int patch, double u, double v) {
     return s.h->patch_set().patches[patch].point(Vec2(u, v));
 }
 
 // Cells follow the canonical leaf order with their data; polygons are counter-clockwise around
 // the patch normal with the leaf's area; the patches are covered exactly; no T-junctions.
-void expect_well_formed(const Scene& s, const ShadedMesh& m) {
+void expect_well_formed(const MeshHierarchy& s, const ShadedMesh& m) {
     ASSERT_EQ(m.cell_count(), s.h->leaf_count());
     ASSERT_EQ(m.point_radiosity.size(), m.points.size());
     std::size_t c = 0;
@@ -48,7 +48,7 @@ std::size_t distinct_positions(const ShadedMesh& m) {
 }
 
 // Every leaf of the scene gets B = value.
-void fill(Scene& s, int patch, double value) {
+void fill(MeshHierarchy& s, int patch, double value) {
     s.for_leaves(patch, [&](Element& e) { e.radiosity = Rgb::Constant(value); });
 }
 
@@ -59,7 +59,7 @@ Rgb value_at(const ShadedMesh& m, const Vec3& x) {
 }
 
 TEST(ShadedMesh, QuadLeavesBecomeConformingCells) {
-    Scene s(make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}}));
+    MeshHierarchy s(make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}}));
     s.at(0, {0, 3, 1});
     s.at(0, {3, 2});
     const ShadedMesh m = s.shade();
@@ -68,7 +68,7 @@ TEST(ShadedMesh, QuadLeavesBecomeConformingCells) {
 }
 
 TEST(ShadedMesh, VertexValueIsAreaWeightedAverageOfLeavesAround) {
-    Scene s(make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}}));
+    MeshHierarchy s(make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}}));
     s.at(0, {0, 0});
     // Children 1..3 of the root (area 1/4) and the four grandchildren below child 0 (1/16).
     for (int k = 1; k < 4; ++k) s.at(0, {k}).radiosity = Rgb::Constant(k);
@@ -85,7 +85,7 @@ TEST(ShadedMesh, VertexValueIsAreaWeightedAverageOfLeavesAround) {
 }
 
 TEST(ShadedMesh, LinearFieldIsReproducedAtInteriorVertices) {
-    Scene s(make_mesh({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}}));
+    MeshHierarchy s(make_mesh({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}}));
     for (int a = 0; a < 4; ++a) {
         for (int b = 0; b < 4; ++b) s.at(0, {a, b});
     }
@@ -103,8 +103,8 @@ TEST(ShadedMesh, LinearFieldIsReproducedAtInteriorVertices) {
 }
 
 // Patch 0 split once (B = 1, leaves of area 1/4), patch 1 left whole (B = 3, area 1).
-Scene split_pair(bool coplanar) {
-    Scene s(two_quads(coplanar));
+MeshHierarchy split_pair(bool coplanar) {
+    MeshHierarchy s(two_quads(coplanar));
     s.at(0, {0});
     fill(s, 0, 1);
     fill(s, 1, 3);
@@ -112,7 +112,7 @@ Scene split_pair(bool coplanar) {
 }
 
 TEST(ShadedMesh, CoplanarPatchesShareConformingPoints) {
-    Scene s = split_pair(true);
+    MeshHierarchy s = split_pair(true);
     const ShadedMesh m = s.shade();
     expect_well_formed(s, m);
     EXPECT_EQ(m.points.size(), distinct_positions(m));
@@ -123,7 +123,7 @@ TEST(ShadedMesh, CoplanarPatchesShareConformingPoints) {
 
 // A light in a ceiling: coplanar, but B jumps with E, so the edge is not blended.
 TEST(ShadedMesh, CoplanarPatchesOfDifferentMaterialsAreNotBlended) {
-    Scene s = split_pair(true);
+    MeshHierarchy s = split_pair(true);
     set_face_material(s.mesh, PatchMesh::FaceHandle(1), {{0.5, 0.5, 0.5}, {2, 2, 2}});
     s.h = std::make_unique<Hierarchy>(build_patch_set(s.mesh), HierarchyLimits{0, 24});
     s.at(0, {0});
@@ -140,7 +140,7 @@ TEST(ShadedMesh, CoplanarPatchesOfDifferentMaterialsAreNotBlended) {
 }
 
 TEST(ShadedMesh, CoplanarPatchesWithDeepSubdivisionConform) {
-    Scene s(two_quads(true));
+    MeshHierarchy s(two_quads(true));
     s.at(0, {1, 3, 1, 3, 1});
     s.at(0, {3, 1, 1});
     s.at(1, {0, 2, 0});
@@ -151,7 +151,7 @@ TEST(ShadedMesh, CoplanarPatchesWithDeepSubdivisionConform) {
 }
 
 TEST(ShadedMesh, CreaseSplitsPointsBetweenPerpendicularPatches) {
-    Scene s = split_pair(false);
+    MeshHierarchy s = split_pair(false);
     const ShadedMesh m = s.shade();
     expect_well_formed(s, m);
     for (const Vec3& x : {Vec3(1, 0.5, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)}) {
@@ -169,7 +169,7 @@ TEST(ShadedMesh, CreaseSplitsPointsBetweenPerpendicularPatches) {
 }
 
 TEST(ShadedMesh, WideCreaseAngleBlendsPerpendicularPatches) {
-    Scene s = split_pair(false);
+    MeshHierarchy s = split_pair(false);
     const ShadedMesh m = s.shade(100);
     expect_well_formed(s, m);
     EXPECT_EQ(m.points.size(), distinct_positions(m));
@@ -177,7 +177,7 @@ TEST(ShadedMesh, WideCreaseAngleBlendsPerpendicularPatches) {
 }
 
 TEST(ShadedMesh, TrianglesWithInvertedChildrenConform) {
-    Scene s(two_triangles());
+    MeshHierarchy s(two_triangles());
     s.at(0, {3, 3, 0});  // middle child, its middle child (upright again), a corner below
     s.at(0, {3, 1});
     s.at(0, {1, 2, 3});
@@ -190,7 +190,7 @@ TEST(ShadedMesh, TrianglesWithInvertedChildrenConform) {
 }
 
 TEST(ShadedMesh, TriangleVertexValueOnHypotenuse) {
-    Scene s(make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+    MeshHierarchy s(make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
     s.at(0, {3, 0});
     for (int k = 0; k < 3; ++k) s.at(0, {k}).radiosity = Rgb::Constant(k);
     for (int k = 0; k < 4; ++k) s.at(0, {3, k}).radiosity = Rgb::Constant(10 * (k + 1));
@@ -203,7 +203,7 @@ TEST(ShadedMesh, TriangleVertexValueOnHypotenuse) {
 }
 
 TEST(ShadedMesh, RejectsMeshThatDoesNotMatchHierarchy) {
-    Scene s(two_quads(true));
+    MeshHierarchy s(two_quads(true));
     const PatchMesh other = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
     EXPECT_THROW(build_shaded_mesh(*s.h, other), std::invalid_argument);
 }

@@ -32,12 +32,13 @@ inline PatchMesh make_mesh(const std::vector<Vec3>& points,
     return mesh;
 }
 
-// Mesh and hierarchy together; the hierarchy's limits allow deep subdivision.
-struct Scene {
+// Mesh and hierarchy together; the hierarchy's limits allow deep subdivision. Not named Scene:
+// a test in namespace hmcr::test that means hmcr::Scene may share a unity batch with this file.
+struct MeshHierarchy {
     PatchMesh mesh;
     std::unique_ptr<Hierarchy> h;
 
-    explicit Scene(PatchMesh m) : mesh(std::move(m)) {
+    explicit MeshHierarchy(PatchMesh m) : mesh(std::move(m)) {
         h = std::make_unique<Hierarchy>(build_patch_set(mesh), HierarchyLimits{0, 24});
     }
     Element& root(int patch) { return h->root(patch); }

@@ -37,8 +37,8 @@ VtpMetadata sample_metadata() {
 }
 
 // Floor and wall at a right angle, split unevenly, with a gradient on the floor.
-Scene sample_scene() {
-    Scene s(two_quads(false));
+MeshHierarchy sample_scene() {
+    MeshHierarchy s(two_quads(false));
     s.at(0, {1, 2});
     s.at(1, {3});
     s.for_leaves(0, [&](Element& e) { e.radiosity = Rgb(1, 2, 3) * e.centre.y(); });
@@ -67,7 +67,7 @@ void expect_array(vtkAbstractArray* a, int type, int components, bool rgb_names)
 class VtkExport : public testing::Test {
   protected:
     TempDir m_dir;
-    Scene m_scene = sample_scene();
+    MeshHierarchy m_scene = sample_scene();
     ShadedMesh m_mesh = m_scene.shade();
 };
 

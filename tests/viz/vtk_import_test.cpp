@@ -12,7 +12,7 @@ namespace hmcr::test {
 namespace {
 
 TEST(VtkImport, ReadsBackWhatWasWritten) {
-    Scene s(two_quads(true));
+    MeshHierarchy s(two_quads(true));
     s.at(0, {1, 2});
     s.for_leaves(0, [&](Element& e) { e.radiosity = Rgb(1, 2, 3) * (1 + e.centre.x()); });
     const ShadedMesh m = s.shade();
