@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <numbers>
 
 #include "meshes/scene.h"
@@ -135,6 +136,21 @@ TEST(Repairs, ExactDuplicateIsDroppedAReversedOneIsNot) {
                          "scene.obj:8: duplicate face: same vertices as the face on line 7, "
                          "facing the other way"));
     EXPECT_TRUE(contains(load(tri + "usemtl white\nf 1 2 3\n").error, "with another material"));
+}
+
+TEST(Repairs, EveryLaterCopyIsDroppedTheFirstKeptInItsPlace) {
+    // Faces on lines 8-12: A, B, A from another corner, B from another corner, A again.
+    const Loaded r = load("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                          "f 1 2 3\nf 1 3 4\nf 2 3 1\nf 4 1 3\nf 1 2 3\n");
+    ASSERT_TRUE(r.error.empty()) << r.error;
+    ASSERT_EQ(r.file.mesh.n_faces(), 2u + 1);  // and the light
+    EXPECT_EQ(r.file.repairs[RepairKind::duplicate_dropped].count, 3u);
+    EXPECT_TRUE(contains(r.file.repairs[RepairKind::duplicate_dropped].first, "scene.obj:10"));
+    // The kept faces are A then B, in file order: B's corners are vertices 0, 2 and 3.
+    std::vector<int> b;
+    for (auto v : r.file.mesh.fv_range(OpenMesh::FaceHandle(1))) b.push_back(v.idx());
+    std::sort(b.begin(), b.end());
+    EXPECT_EQ(b, (std::vector<int>{0, 2, 3}));
 }
 
 TEST(Repairs, ReflectanceOneIsAcceptedWithAWarningAboveOneIsNot) {
