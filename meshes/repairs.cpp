@@ -167,12 +167,12 @@ void drop_duplicates(PolygonSoup& out, const std::vector<FaceKey>& keys, const P
     std::vector<Record> sorted(keys.size());
     for (std::size_t j = 0; j < keys.size(); ++j) sorted[j] = {keys[j], std::uint32_t(j)};
     std::sort(sorted.begin(), sorted.end(), [](const Record& a, const Record& b) {
-        return a.key != b.key ? a.key < b.key : a.index < b.index;
+        return key_order(a.key, a.index, b.key, b.index);
     });
     std::vector<bool> dropped(keys.size(), false);
     bool any = false;
     for (std::size_t s = 1, first = 0; s < sorted.size(); ++s) {
-        if (sorted[s].key != sorted[first].key) {
+        if (!same_key(sorted[s].key, sorted[first].key)) {
             first = s;
         } else if (out.material[sorted[s].index] == out.material[sorted[first].index]) {
             dropped[sorted[s].index] = any = true;

@@ -146,13 +146,13 @@ std::optional<std::pair<std::size_t, std::size_t>> find_duplicate_face(
     std::vector<std::uint32_t> order(faces.size());
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return faces[a] != faces[b] ? faces[a] < faces[b] : a < b;
+        return key_order(faces[a], a, faces[b], b);
     });
     std::optional<std::pair<std::size_t, std::size_t>> first;
     for (std::size_t k = 1; k < order.size(); ++k) {
-        if (faces[order[k]] != faces[order[k - 1]]) continue;
+        if (!same_key(faces[order[k]], faces[order[k - 1]])) continue;
         // order[k - 1] is the group's first face when order[k] is its second
-        if (k >= 2 && faces[order[k - 2]] == faces[order[k]]) continue;
+        if (k >= 2 && same_key(faces[order[k - 2]], faces[order[k]])) continue;
         if (!first || order[k] < first->first) first = std::make_pair(order[k], order[k - 1]);
     }
     return first;
