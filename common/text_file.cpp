@@ -53,8 +53,12 @@ std::string read_text_file(const fs::path& path, std::uint64_t max_bytes) {
     check_readable(path, max_bytes);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "cannot be read");
-    // Read in chunks up to the limit, whatever the size said: a file may grow meanwhile.
+    // Read in chunks up to the limit, whatever the size said: a file may grow meanwhile. The
+    // size said is reserved: grown by doubling, a 48 MB file was copied 10 times into fresh pages.
     std::string text;
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (!ec) text.reserve(std::size_t(std::min<std::uintmax_t>(size, max_bytes)));
     char chunk[1 << 16];
     while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
         text.append(chunk, std::size_t(in.gcount()));

@@ -221,6 +221,7 @@ void for_each_clean_line(
     const std::function<void(int, const std::vector<std::string_view>&)>& visit,
     std::string& clean) {
     std::vector<std::string_view> tokens;  // one buffer for every line
+    clean.reserve(clean.size() + text.size() + 1);  // not grown by doubling: fresh pages cost
     for_each_line(without_bom(text), [&](int number, std::string_view line) {
         reject_nul(line, path, number);
         statement_tokens(line, tokens);

@@ -145,7 +145,10 @@ PolygonSoup read_obj(const fs::path& obj) {
     const std::string mtl_text = read_materials(obj, lines, mtl_lines, soup);
     const tinyobj::ObjReader reader = parse_with_tinyobj(lines.clean_text, mtl_text, path);
     const std::vector<tinyobj::real_t>& xyz = reader.GetAttrib().vertices;
-    for (std::size_t k = 0; k + 2 < xyz.size(); k += 3) soup.positions.emplace_back(xyz[k], xyz[k + 1], xyz[k + 2]);
+    soup.positions.reserve(xyz.size() / 3);
+    for (std::size_t k = 0; k + 2 < xyz.size(); k += 3) {
+        soup.positions.emplace_back(xyz[k], xyz[k + 1], xyz[k + 2]);
+    }
     add_materials(reader, mtl_lines, soup);
     add_polygons(reader, lines, soup);
     return soup;
