@@ -76,6 +76,7 @@ nlohmann::json to_json(const RowResult& r) {
             {"oracle_evaluations", r.oracle_evaluations},
             {"lines_cast", r.lines_cast},
             {"cache_hit_rate", r.cache_hit_rate},
+            {"oracle_cpu_seconds", r.oracle_seconds},
             {"load_seconds", r.load_seconds},
             {"setup_seconds", r.setup_seconds},
             {"seconds", r.shooting_seconds},
