@@ -205,11 +205,16 @@ PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options) 
 }
 
 void build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options, PatchMesh& mesh) {
+    build_patch_mesh(soup, weld(soup.positions), options, mesh);
+}
+
+void build_patch_mesh(const PolygonSoup& soup, const Welding& welding, const LoadOptions& options,
+                      PatchMesh& mesh) {
     const std::string top = soup.files.empty() ? "mesh" : soup.files.front().string();
     if (soup.polygon_count() == 0) throw InputError(top, "no faces");
     check_default_material(options, top);
-    std::size_t vertex_count = 0;
-    const std::vector<int> id = weld(soup.positions, vertex_count);
+    const std::vector<int>& id = welding.id;
+    const std::size_t vertex_count = welding.count;
     // Each distinct material is resolved and checked once (at its first face, where an error
     // is reported), then referred to by index.
     std::vector<Material> materials;

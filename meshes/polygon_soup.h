@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "meshes/scene.h"
+#include "meshes/weld.h"
 
 namespace hmcr {
 
@@ -57,5 +58,8 @@ struct PolygonSoup {
 PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options);
 // The same built into `mesh`, which must be empty.
 void build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options, PatchMesh& mesh);
+// The same with the soup's welding, weld(soup.positions), already made.
+void build_patch_mesh(const PolygonSoup& soup, const Welding& welding, const LoadOptions& options,
+                      PatchMesh& mesh);
 
 }  // namespace hmcr

@@ -212,10 +212,11 @@ void accept_reflectance_one(PolygonSoup& soup, RepairReport& report) {
 
 }  // namespace
 
-RepairReport repair_soup(PolygonSoup& soup) {
+RepairReport repair_soup(PolygonSoup& soup) { return repair_soup(soup, weld(soup.positions)); }
+
+RepairReport repair_soup(PolygonSoup& soup, const Welding& welding) {
     RepairReport report;
-    std::size_t welded_count = 0;
-    const std::vector<int> welded = weld(soup.positions, welded_count);
+    const std::vector<int>& welded = welding.id;
     PolygonSoup out;
     std::vector<FaceKey> keys;  // each output polygon's cyclic key
     keys.reserve(soup.polygon_count());

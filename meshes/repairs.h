@@ -4,6 +4,7 @@
 
 #include "meshes/polygon_soup.h"
 #include "meshes/repair_report.h"
+#include "meshes/weld.h"
 
 namespace hmcr {
 
@@ -13,5 +14,8 @@ namespace hmcr {
 // The soup's other content (positions, materials, places) is kept; new polygons keep the place
 // of the one they replace.
 RepairReport repair_soup(PolygonSoup& soup);
+// The same with the soup's welding, weld(soup.positions), already made. The repairs keep the
+// positions, so the welding stays valid for build_patch_mesh.
+RepairReport repair_soup(PolygonSoup& soup, const Welding& welding);
 
 }  // namespace hmcr

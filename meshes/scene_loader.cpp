@@ -284,9 +284,10 @@ MeshReport load_soup(PolygonSoup soup, const LoadOptions& options, PatchMesh& me
     };
     tell(0);
     RepairReport repairs;
+    const Welding welding = weld(soup.positions);  // once: the repairs keep the positions
     if (!options.strict) {
         const std::size_t told = soup.warnings.size();
-        repairs = repair_soup(soup);
+        repairs = repair_soup(soup, welding);
         tell(told);
     }
     LoadOptions effective = options;
@@ -294,7 +295,7 @@ MeshReport load_soup(PolygonSoup soup, const LoadOptions& options, PatchMesh& me
     if (options.use == SceneUse::geometry && !options.default_material) {
         effective.default_material = Material{"default", Eigen::Vector3d::Constant(0.5), {0, 0, 0}};
     }
-    build_patch_mesh(soup, effective, mesh);
+    build_patch_mesh(soup, welding, effective, mesh);
     return {soup.files, std::move(soup.warnings), std::move(repairs)};
 }
 

@@ -15,7 +15,7 @@ namespace hmcr {
 // position (an allocation and a tree insert each, twice per load) was a fifth of the load.
 // The key is each coordinate's bits after adding +0, which turns -0 into +0: equal keys are
 // equal numbers, and the order is total even for a NaN (std::sort needs one).
-std::vector<int> weld(const std::vector<Eigen::Vector3d>& positions, std::size_t& welded_count) {
+Welding weld(const std::vector<Eigen::Vector3d>& positions) {
     if (positions.size() > std::size_t(std::numeric_limits<int>::max())) {
         throw std::length_error("more than 2^31 positions in one mesh");
     }
@@ -42,13 +42,14 @@ std::vector<int> weld(const std::vector<Eigen::Vector3d>& positions, std::size_t
         const bool starts_group = s == 0 || !same(sorted[s - 1], sorted[s]);
         first[sorted[s].index] = int(starts_group ? sorted[s].index : first[sorted[s - 1].index]);
     }
-    std::vector<int> id(positions.size());
+    Welding w;
+    w.id.resize(positions.size());
     int next = 0;
     for (std::size_t k = 0; k < positions.size(); ++k) {
-        id[k] = first[k] == int(k) ? next++ : id[std::size_t(first[k])];
+        w.id[k] = first[k] == int(k) ? next++ : w.id[std::size_t(first[k])];
     }
-    welded_count = std::size_t(next);
-    return id;
+    w.count = std::size_t(next);
+    return w;
 }
 
 }  // namespace hmcr

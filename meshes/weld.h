@@ -8,8 +8,11 @@
 
 namespace hmcr {
 
-// id[k] of positions[k]: equal positions share an id; ids count up from 0 in order of first
-// appearance. welded_count is the number of distinct positions.
-std::vector<int> weld(const std::vector<Eigen::Vector3d>& positions, std::size_t& welded_count);
+struct Welding {
+    std::vector<int> id;    // id[k] of positions[k]: equal positions share an id, counting up
+                            // from 0 in order of first appearance
+    std::size_t count = 0;  // the number of distinct positions
+};
+Welding weld(const std::vector<Eigen::Vector3d>& positions);
 
 }  // namespace hmcr

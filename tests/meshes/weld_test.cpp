@@ -15,10 +15,9 @@ using Points = std::vector<Eigen::Vector3d>;
 TEST(Weld, EqualPositionsShareTheIdOfTheirFirstAppearance) {
     const Points p{{1, 2, 3}, {0, 0, 0}, {1, 2, 3}, {-0.0, 0, -0.0},
                    {1, 2, std::nextafter(3.0, 4.0)}, {0, 0, 0}, {1, 2, 3}};
-    std::size_t count = 0;
-    const std::vector<int> id = weld(p, count);
-    EXPECT_EQ(id, (std::vector<int>{0, 1, 0, 1, 2, 1, 0}));
-    EXPECT_EQ(count, 3u);
+    const Welding w = weld(p);
+    EXPECT_EQ(w.id, (std::vector<int>{0, 1, 0, 1, 2, 1, 0}));
+    EXPECT_EQ(w.count, 3u);
 }
 
 TEST(Weld, AgreesWithAPairwiseComparisonOnManyRepeatedPositions) {
@@ -28,8 +27,8 @@ TEST(Weld, AgreesWithAPairwiseComparisonOnManyRepeatedPositions) {
     std::uniform_int_distribution<int> coord(-3, 3);
     Points p;
     for (int k = 0; k < 2000; ++k) p.emplace_back(coord(rng), coord(rng) * 0.5, coord(rng));
-    std::size_t count = 0;
-    const std::vector<int> id = weld(p, count);
+    const Welding w = weld(p);
+    const std::vector<int>& id = w.id;
     std::vector<std::size_t> firsts;
     for (std::size_t k = 0; k < p.size(); ++k) {
         std::size_t f = 0;
@@ -41,13 +40,13 @@ TEST(Weld, AgreesWithAPairwiseComparisonOnManyRepeatedPositions) {
             EXPECT_EQ(id[k], id[f]) << "position " << k;
         }
     }
-    EXPECT_EQ(count, firsts.size());
+    EXPECT_EQ(w.count, firsts.size());
 }
 
 TEST(Weld, NoPositionsNoIds) {
-    std::size_t count = 5;
-    EXPECT_TRUE(weld({}, count).empty());
-    EXPECT_EQ(count, 0u);
+    const Welding w = weld({});
+    EXPECT_TRUE(w.id.empty());
+    EXPECT_EQ(w.count, 0u);
 }
 
 }  // namespace
