@@ -4,7 +4,9 @@
 
 namespace hmcr {
 
-AliasTable::AliasTable(const std::vector<double>& weights) {
+AliasTable::AliasTable(const std::vector<double>& weights) { assign(weights); }
+
+void AliasTable::assign(const std::vector<double>& weights) {
     const std::size_t n = weights.size();
     if (n == 0) throw std::invalid_argument("alias table needs at least one weight");
     double total = 0;

@@ -11,6 +11,8 @@ namespace hmcr {
 class AliasTable {
 public:
     explicit AliasTable(const std::vector<double>& weights);
+    // The table of new weights, in the storage of the old one.
+    void assign(const std::vector<double>& weights);
 
     // Index i with probability weights[i] / (sum of the weights), from one uniform in [0, 1).
     std::size_t sample(double xi) const;

@@ -16,17 +16,26 @@
 
 namespace hmcr {
 
-IterationSources::IterationSources(const Hierarchy& h) {
-    std::vector<double> weights;
+void IterationSources::rebuild(const Hierarchy& h) {
+    leaves.clear();
+    m_weights.clear();
+    total = 0;
+    max_share = Rgb::Zero();
     h.for_each_leaf([&](const Element& e) {
         const double w = e.area * channel_sum(e.unshot);
         if (w <= 0) return;
         total += w;
         max_share = max_share.max(e.unshot / channel_sum(e.unshot));
         leaves.push_back({e.unshot, channel_sum(e.unshot), e.domain, e.id.patch});
-        weights.push_back(w);
+        m_weights.push_back(w);
     });
-    if (!leaves.empty()) alias.emplace(weights);
+    if (leaves.empty()) {
+        alias.reset();
+    } else if (alias) {
+        alias->assign(m_weights);
+    } else {
+        alias.emplace(m_weights);
+    }
 }
 
 namespace {

@@ -29,8 +29,15 @@ struct IterationSources {
     Rgb max_share = Rgb::Zero();     // the largest Delta B_c / sum_c Delta B_c of a leaf
     std::optional<AliasTable> alias;  // none when nothing is left to shoot
 
-    explicit IterationSources(const Hierarchy& h);
+    IterationSources() = default;
+    explicit IterationSources(const Hierarchy& h) { rebuild(h); }
+    // The sources of h's unshot power now, in the storage of the previous iteration's: built
+    // while the other threads wait, they were also faulting fresh pages every iteration.
+    void rebuild(const Hierarchy& h);
     const Leaf& pick(double xi) const { return leaves[alias->sample(xi)]; }
+
+private:
+    std::vector<double> m_weights;  // A_l |Delta B_l|, for the alias table
 };
 
 // The rays of an iteration that one process shoots: [begin, end) of its N (MPI ranks share an

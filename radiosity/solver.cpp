@@ -100,11 +100,12 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
     Rgb unshot = h.unshot_power();
     // The cap only guards against a scene that never converges; stop ends real solves.
     ShootingBuffers buffers;
+    IterationSources sources;
     for (std::uint32_t it = 0; channel_sum(unshot) >= options.stop * emitted && it < 10'000; ++it) {
         const auto t0 = Clock::now();
         IterationRecord rec;
         rec.unshot_before = unshot;
-        const IterationSources sources(h);
+        sources.rebuild(h);
         const double ratio = reflected_fraction(ctx, sources, it, kPilotRays);
         rec.rays = schedule.next(channel_sum(unshot), ratio);
         // Out of rays before the stop criterion: what is unshot stays unshot (an iteration of
