@@ -29,8 +29,6 @@ struct IterationSources {
     Rgb max_share = Rgb::Zero();     // the largest Delta B_c / sum_c Delta B_c of a leaf
     std::optional<AliasTable> alias;  // none when nothing is left to shoot
 
-    IterationSources() = default;
-    explicit IterationSources(const Hierarchy& h) { rebuild(h); }
     // The sources of h's unshot power now, in the storage of the previous iteration's: built
     // while the other threads wait, they were also faulting fresh pages every iteration.
     void rebuild(const Hierarchy& h);
