@@ -53,14 +53,14 @@ std::string PathOptions::to_string() const {
 }
 
 PathTracer::PathTracer(const PatchSet& patches, const PathOptions& options)
-    : m_patches(patches.patches), m_scene(m_patches), m_lights(patches), m_options(options) {
+    : m_set(patches), m_scene(m_set.patches), m_lights(m_set), m_options(options) {
     if (options.max_depth < 0 || options.roulette_depth < 1) {
         throw std::invalid_argument("bad path options: " + options.to_string());
     }
-    for (const Patch& p : m_patches) {
-        m_le.push_back(patches.emission(p) / kPi);
-        m_rho.push_back(patches.reflectance(p));
-    }
+}
+
+Rgb PathTracer::emitted(std::uint32_t patch) const {
+    return m_set.emission(m_set.patches[patch]) / kPi;
 }
 
 CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& rng) const {
@@ -68,7 +68,7 @@ CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& r
     s.rays = 1;
     const auto hit = m_scene.first_hit(origin, direction);
     if (!hit) return s;
-    const Patch& p = m_patches[hit->patch];
+    const Patch& p = m_set.patches[hit->patch];
     const double cos_eye = -p.normal.dot(direction);
     if (cos_eye <= 0) return s;  // a back face: black
     s.geometry = cos_eye / (hit->distance * hit->distance);
@@ -81,8 +81,8 @@ CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& r
 Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
     Rgb sum = Rgb::Zero(), beta = Rgb::Ones();
     for (int bounce = 1; bounce <= m_options.max_depth; ++bounce) {
-        const Patch& p = m_patches[v.patch];
-        const Rgb& rho = m_rho[v.patch];
+        const Patch& p = m_set.patches[v.patch];
+        const Rgb& rho = m_set.reflectance(p);
         if ((rho <= 0).all()) break;
         if (m_options.estimator != Estimator::bsdf) {
             sum += beta * rho * next_event(v, rng, rays);
@@ -93,7 +93,7 @@ Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
         ++rays;
         const auto hit = m_scene.first_hit(v.point, wi);
         if (!hit) break;
-        const Patch& q = m_patches[hit->patch];
+        const Patch& q = m_set.patches[hit->patch];
         const double cos_q = -q.normal.dot(wi);
         if (cos_q <= 0) break;  // a back face absorbs
         const double pdf_light =
@@ -117,13 +117,13 @@ Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
 // rho times it is the directly reflected radiance.
 Rgb PathTracer::next_event(const Vertex& v, Rng& rng, std::uint32_t& rays) const {
     const double xi = rng.uniform(), xi1 = rng.uniform(), xi2 = rng.uniform();
-    const EmitterPoint e = m_lights.sample(m_patches, xi, xi1, xi2);
+    const EmitterPoint e = m_lights.sample(m_set.patches, xi, xi1, xi2);
     const Vec3 d = e.point - v.point;
     const double r2 = d.squaredNorm();
     if (!(r2 > 0)) return Rgb::Zero();
     const Vec3 w = d / std::sqrt(r2);
-    const double cos_x = m_patches[v.patch].normal.dot(w);
-    const double cos_y = -m_patches[e.patch].normal.dot(w);
+    const double cos_x = m_set.patches[v.patch].normal.dot(w);
+    const double cos_y = -m_set.patches[e.patch].normal.dot(w);
     if (cos_x <= 0 || cos_y <= 0) return Rgb::Zero();
     ++rays;
     if (!m_scene.visible(v.point, e.point)) return Rgb::Zero();

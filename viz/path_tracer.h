@@ -63,13 +63,11 @@ public:
 
 private:
     struct Vertex;  // a surface point a path reflects at
-    Rgb emitted(std::uint32_t patch) const { return m_le[patch]; }
+    Rgb emitted(std::uint32_t patch) const;  // Le = E / pi
     Rgb next_event(const Vertex& v, Rng& rng, std::uint32_t& rays) const;
     Rgb radiance(Vertex v, Rng& rng, std::uint32_t& rays) const;
 
-    std::vector<Patch> m_patches;
-    std::vector<Rgb> m_le;   // Le = E / pi per patch
-    std::vector<Rgb> m_rho;  // reflectance per patch
+    PatchSet m_set;
     EmbreeScene m_scene;
     EmitterSampler m_lights;
     PathOptions m_options;
