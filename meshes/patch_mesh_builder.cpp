@@ -200,12 +200,8 @@ std::string PolygonSoup::where(SourcePlace p) const {
 
 PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options) {
     PatchMesh mesh;
-    build_patch_mesh(soup, options, mesh);
-    return mesh;
-}
-
-void build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options, PatchMesh& mesh) {
     build_patch_mesh(soup, weld(soup.positions), options, mesh);
+    return mesh;
 }
 
 void build_patch_mesh(const PolygonSoup& soup, const Welding& welding, const LoadOptions& options,

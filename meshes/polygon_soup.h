@@ -56,9 +56,8 @@ struct PolygonSoup {
 // checked (geometry, material), no duplicate faces, an emitter when the scene is to be solved.
 // Throws InputError at the place of the first problem.
 PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options);
-// The same built into `mesh`, which must be empty.
-void build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options, PatchMesh& mesh);
-// The same with the soup's welding, weld(soup.positions), already made.
+// The same built into `mesh`, which must be empty, with the soup's welding, weld(soup.positions),
+// already made.
 void build_patch_mesh(const PolygonSoup& soup, const Welding& welding, const LoadOptions& options,
                       PatchMesh& mesh);
 
