@@ -31,7 +31,8 @@ std::string plain_message(const std::exception& e) {
     return out.substr(0, token) + "last read: " + quote(std::string_view(out).substr(token + kLastRead.size()));
 }
 
-void check_readable(const fs::path& path, std::uint64_t max_bytes) {
+// Returns the size the file system gives (0 when it gives none).
+std::uintmax_t check_readable(const fs::path& path, std::uint64_t max_bytes) {
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (!fs::exists(status)) throw InputError(path.string(), "no such file");
@@ -45,20 +46,19 @@ void check_readable(const fs::path& path, std::uint64_t max_bytes) {
                                             " bytes, more than the limit of " +
                                             std::to_string(max_bytes) + " for a text file");
     }
+    return ec ? 0 : size;
 }
 
 }  // namespace
 
 std::string read_text_file(const fs::path& path, std::uint64_t max_bytes) {
-    check_readable(path, max_bytes);
+    const std::uintmax_t size = check_readable(path, max_bytes);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "cannot be read");
     // Read in chunks up to the limit, whatever the size said: a file may grow meanwhile. The
     // size said is reserved: grown by doubling, a 48 MB file was copied 10 times into fresh pages.
     std::string text;
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (!ec) text.reserve(std::size_t(std::min<std::uintmax_t>(size, max_bytes)));
+    text.reserve(std::size_t(size));  // at most max_bytes: check_readable refused more
     char chunk[1 << 16];
     while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
         text.append(chunk, std::size_t(in.gcount()));
