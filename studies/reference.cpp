@@ -8,6 +8,7 @@
 #include "common/rgb_json.h"
 #include "common/text_file.h"
 #include "common/atomic_file.h"
+#include "meshes/patch_mesh.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
 #include "viz/solution_file.h"
@@ -27,10 +28,15 @@ Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint6
 
 }  // namespace
 
+// Read from the mesh's material table: the patch set (256 bytes a patch) is not needed for it.
 ObjectErrorOptions reflected_error_options(const PatchMesh& mesh) {
     ObjectErrorOptions o;
-    const PatchSet set = build_patch_set(mesh);
-    for (const Patch& p : set.patches) o.emission.push_back(set.emission(p));
+    const FaceMaterials materials(mesh);
+    o.emission.reserve(mesh.n_faces());
+    for (auto f : mesh.faces()) {
+        const OpenMesh::Vec3d& e = materials[f].emission;
+        o.emission.emplace_back(e[0], e[1], e[2]);
+    }
     return o;
 }
 
