@@ -31,7 +31,7 @@ PatchSet leaf_patches(const ShadedMesh& mesh) {
                                         std::to_string(k.size()) + " corners, not 3 or 4");
         }
         Patch p;
-        p.corner_count = int(k.size());
+        p.corner_count = std::uint8_t(k.size());
         for (std::size_t i = 0; i < k.size(); ++i) p.corner[i] = k[i];
         p.finalize();
         set.total_area += p.area;

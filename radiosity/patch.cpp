@@ -7,8 +7,6 @@
 namespace hmcr {
 namespace {
 
-double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 Vec2 clamp_to_unit(Vec2 uv) { return uv.cwiseMax(0.0).cwiseMin(1.0); }
 
 // Inverse of the bilinear map, in 2D plane coordinates: q = u e1 + v e3 + u v g.
@@ -48,25 +46,23 @@ void Patch::finalize() {
     normal = n.normalized();
     area = 0.5 * n.norm();
     m_axis_x = (corner[1] - corner[0]).normalized();
-    m_axis_y = normal.cross(m_axis_x);
-    auto to2 = [&](const Vec3& w) { return Vec2(w.dot(m_axis_x), w.dot(m_axis_y)); };
+    const Vec3 axis_y = normal.cross(m_axis_x);
+    auto to2 = [&](const Vec3& w) { return Vec2(w.dot(m_axis_x), w.dot(axis_y)); };
     m_e1 = to2(corner[1] - corner[0]);
+    m_parallelogram = false;
     if (!is_quad()) {
         m_e2 = to2(corner[2] - corner[0]);
-        m_jacobian = Vec3(2 * area, 0, 0);
         return;
     }
     m_e2 = to2(corner[3] - corner[0]);
     m_g = to2(corner[0] - corner[1] + corner[2] - corner[3]);
-    // In the plane, J = cross2(e1 + v g, e2 + u g), affine because cross2(g, g) = 0.
-    m_jacobian = Vec3(cross2(m_e1, m_e2), cross2(m_e1, m_g), cross2(m_g, m_e2));
-    // Snap the linear terms of (numerically) parallelograms to zero: their Jacobian is constant.
-    if (m_g.norm() <= 1e-12 * (m_e1.norm() + m_e2.norm())) m_jacobian[1] = m_jacobian[2] = 0;
+    // (Numerically) parallelograms: the linear terms of the Jacobian are taken as zero.
+    m_parallelogram = m_g.norm() <= 1e-12 * (m_e1.norm() + m_e2.norm());
 }
 
 Vec2 Patch::param(const Vec3& p) const {
     const Vec3 w = p - corner[0];
-    const Vec2 q(w.dot(m_axis_x), w.dot(m_axis_y));
+    const Vec2 q(w.dot(m_axis_x), w.dot(normal.cross(m_axis_x)));
     if (is_quad()) return inverse_bilinear(q, m_e1, m_e2, m_g);
     const double det = cross2(m_e1, m_e2);
     Vec2 uv(cross2(q, m_e2) / det, cross2(m_e1, q) / det);

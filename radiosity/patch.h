@@ -16,12 +16,15 @@
 
 namespace hmcr {
 
+// The z component of the cross product of two plane vectors.
+inline double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
 struct Patch {
     std::array<Vec3, 4> corner;  // corner[3] unused on triangles
     Vec3 normal{0, 0, 1};        // unit, right-hand rule of the corner order (the front side)
     double area = 0;
-    int corner_count = 3;
     std::uint32_t material = 0;  // index into PatchSet::materials
+    std::uint8_t corner_count = 3;
 
     bool is_quad() const { return corner_count == 4; }
     // Computes normal, area and the cached map data below from the corners.
@@ -33,20 +36,33 @@ struct Patch {
     // Area of the region with the given parameter-space corners (3 or 4 of them).
     double region_area(const Vec2* uv, int count) const;
     // |dP/du x dP/dv| at uv: constant on triangles, affine in (u, v) on planar quads.
-    double jacobian(const Vec2& uv) const { return m_jacobian.dot(Vec3(1, uv.x(), uv.y())); }
+    double jacobian(const Vec2& uv) const {
+        return jacobian_coefficients().dot(Vec3(1, uv.x(), uv.y()));
+    }
+    // (c0, c1, c2) of J(u, v) = c0 + c1 u + c2 v. Triangles: twice the area. Quads, in the
+    // plane: J = cross2(e1 + v g, e2 + u g), affine because cross2(g, g) = 0.
+    Vec3 jacobian_coefficients() const {
+        if (!is_quad()) return {2 * area, 0, 0};
+        if (m_parallelogram) return {cross2(m_e1, m_e2), 0, 0};
+        return {cross2(m_e1, m_e2), cross2(m_e1, m_g), cross2(m_g, m_e2)};
+    }
     // A quad whose bilinear map is affine (rectangles among them): uniform (u, v) is uniform
     // by area.
-    bool is_parallelogram() const { return is_quad() && m_jacobian[1] == 0 && m_jacobian[2] == 0; }
+    bool is_parallelogram() const { return m_parallelogram; }
 
 private:
-    // Cached by finalize(): the patch-plane frame and the map's edge vectors in it.
-    Vec3 m_axis_x{1, 0, 0}, m_axis_y{0, 1, 0};
-    Vec3 m_jacobian{0, 0, 0};                // J(u, v) = c0 + c1 u + c2 v
+    // Cached by finalize(): the map's edge vectors in the patch-plane frame (axis_x, normal x
+    // axis_x). The frame's y axis and the Jacobian's coefficients are recomputed where they are
+    // needed, from the same expressions, so they are the same bits: a hit's parameters cost one
+    // cross product more, and the Jacobian is asked for once per element map, not per ray.
+    bool m_parallelogram = false;
+    Vec3 m_axis_x{1, 0, 0};
     Vec2 m_e1{1, 0}, m_e2{0, 1}, m_g{0, 0};  // quads: e2 is corner 3 - corner 0
 };
-// A million patches are 256 MB: the material is an index, and the 16-byte aligned 2D vectors
-// come last, after 208 bytes, so that no padding is needed (320 bytes with both).
-static_assert(sizeof(Patch) == 256);
+// A million patches are 208 MB: the material is an index, the flag and the corner count fill
+// the 8 bytes after it, and the 16-byte aligned 2D vectors come last, after 160 bytes, so that
+// no padding is needed.
+static_assert(sizeof(Patch) == 208);
 
 struct PatchMaterial {
     Rgb reflectance = Rgb::Zero();
