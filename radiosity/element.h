@@ -30,7 +30,6 @@ struct Element {
     Rgb radiosity = Rgb::Zero();  // B
     Rgb unshot = Rgb::Zero();     // Delta B, shot in the next iteration
     Quanta received{};            // power received in the current iteration, in its quanta
-    Element* parent = nullptr;
     std::atomic<Element*> first_child{nullptr};  // 4 consecutive children, or none
 
     Element() = default;

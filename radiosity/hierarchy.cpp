@@ -40,7 +40,6 @@ void Hierarchy::init_child(Element& parent, int k, Element& child) const {
     child.radiosity = parent.radiosity;
     child.unshot = parent.unshot;
     child.received = {};
-    child.parent = &parent;
     child.first_child.store(nullptr, std::memory_order_relaxed);
 }
 

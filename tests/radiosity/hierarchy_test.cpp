@@ -93,7 +93,6 @@ TEST(Hierarchy, IdentitiesAreTheChildPathsAndUnique) {
     EXPECT_EQ(ids.size(), 64u + 1u);
     const Element& e = h.root(0).children()[2].children()[1].children()[3];
     EXPECT_EQ(e.id.to_string(), "0/213");
-    EXPECT_EQ(e.parent->id.to_string(), "0/21");
     EXPECT_EQ(h.element_count(), 2u + 4 + 16 + 64);
     EXPECT_EQ(h.leaf_count(), 65u);
 }
@@ -102,12 +101,16 @@ TEST(Hierarchy, UniformSubdivisionSplitsExactlyTheElementsAboveTheArea) {
     Hierarchy h = make_hierarchy();
     const double max_area = 0.01;
     h.subdivide_uniformly(max_area);
-    h.for_each_leaf([&](const Element& e) {
-        EXPECT_LE(e.area, max_area);
-        if (e.parent) {
-            EXPECT_GT(e.parent->area, max_area);
+    // Every split element is above the area, every leaf at or below it.
+    auto check = [&](auto&& self, const Element& e) -> void {
+        if (e.is_leaf()) {
+            EXPECT_LE(e.area, max_area);
+            return;
         }
-    });
+        EXPECT_GT(e.area, max_area);
+        for (int k = 0; k < 4; ++k) self(self, e.children()[k]);
+    };
+    for (std::uint32_t p = 0; p < h.patch_count(); ++p) check(check, h.root(p));
     EXPECT_GT(h.leaf_count(), 100u);
 }
 
