@@ -84,10 +84,55 @@ void set_tracing_float_mode() {
 // 10^6-patch office, vectors grown corner by corner and then copied held up to 150 MB more while
 // the BVH was built, the peak of the whole solve.
 EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(std::make_unique<Impl>()) {
-    std::size_t vertex_count = 0, triangle_count = 0;
+    std::size_t corners = 0;
+    for (const Patch& p : patches) corners += p.corner_count;
+    build_patches(patches, corners, [&](float* vertex, unsigned* index) {
+        unsigned base = 0;
+        for (std::uint32_t i = 0; i < patches.size(); ++i) {
+            const Patch& p = patches[i];
+            for (int k = 0; k < p.corner_count; ++k) {
+                for (int c = 0; c < 3; ++c) *vertex++ = float(p.corner[k][c]);
+            }
+            const unsigned v[4] = {base, base + 1, base + 2, base + 3};
+            add_patch_triangles(i, v, p.is_quad(), index);
+            base += unsigned(p.corner_count);
+        }
+    });
+}
+
+EmbreeScene::EmbreeScene(const PatchMesh& mesh, const std::vector<Patch>& patches)
+    : m_impl(std::make_unique<Impl>()) {
+    if (mesh.n_faces() != patches.size()) {
+        throw std::invalid_argument("the mesh has " + std::to_string(mesh.n_faces()) +
+                                    " faces for " + std::to_string(patches.size()) + " patches");
+    }
+    build_patches(patches, mesh.n_vertices(), [&](float* vertex, unsigned* index) {
+        for (auto v : mesh.vertices()) {
+            for (int c = 0; c < 3; ++c) *vertex++ = float(mesh.point(v)[c]);
+        }
+        for (auto f : mesh.faces()) {
+            unsigned v[4];
+            int k = 0;
+            for (auto fv : mesh.fv_range(f)) {
+                if (k == patches[f.idx()].corner_count) break;
+                v[k++] = unsigned(fv.idx());
+            }
+            if (k != patches[f.idx()].corner_count) {
+                throw std::invalid_argument("face " + std::to_string(f.idx()) +
+                                            " has other corners than its patch");
+            }
+            add_patch_triangles(std::uint32_t(f.idx()), v, k == 4, index);
+        }
+    });
+}
+
+// A triangle soup's bounds are its vertices'; a patch scene's are its patches' corners, whatever
+// vertices the buffers hold, so that both constructions have the same self-hit offset.
+void EmbreeScene::build_patches(const std::vector<Patch>& patches, std::size_t vertex_count,
+                                const std::function<void(float*, unsigned*)>& fill) {
+    std::size_t triangle_count = 0;
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
     for (const Patch& p : patches) {
-        vertex_count += std::size_t(p.corner_count);
         triangle_count += p.is_quad() ? 2 : 1;
         for (int k = 0; k < p.corner_count; ++k) {
             lo = lo.cwiseMin(p.corner[k]);
@@ -95,22 +140,17 @@ EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(std::make_u
         }
     }
     m_triangle_patch.reserve(triangle_count);
-    build(vertex_count, triangle_count, lo, hi, [&](float* vertex, unsigned* index) {
-        unsigned base = 0;
-        for (std::uint32_t i = 0; i < patches.size(); ++i) {
-            const Patch& p = patches[i];
-            for (int k = 0; k < p.corner_count; ++k) {
-                for (int c = 0; c < 3; ++c) *vertex++ = float(p.corner[k][c]);
-            }
-            for (unsigned t : {base, base + 1, base + 2}) *index++ = t;
-            m_triangle_patch.push_back(i);
-            if (p.is_quad()) {
-                for (unsigned t : {base, base + 2, base + 3}) *index++ = t;
-                m_triangle_patch.push_back(i);
-            }
-            base += unsigned(p.corner_count);
-        }
-    });
+    build(vertex_count, triangle_count, lo, hi, fill);
+}
+
+void EmbreeScene::add_patch_triangles(std::uint32_t patch, const unsigned* v, bool quad,
+                                      unsigned*& index) {
+    for (int k : {0, 1, 2}) *index++ = v[k];
+    m_triangle_patch.push_back(patch);
+    if (quad) {
+        for (int k : {0, 2, 3}) *index++ = v[k];
+        m_triangle_patch.push_back(patch);
+    }
 }
 
 EmbreeScene::EmbreeScene(const std::vector<Vec3>& points,

@@ -34,7 +34,7 @@ TEST(EmbreeSoup, ReportsTriangleBarycentricsAndDistance) {
 }
 
 TEST(EmbreeSoup, EmptyAndInvalidSoups) {
-    const EmbreeScene empty({}, {});
+    const EmbreeScene empty(std::vector<Vec3>{}, {});
     EXPECT_FALSE(empty.first_hit_triangle(Vec3(0, 0, 1), Vec3(0, 0, -1)));
     EXPECT_THROW(EmbreeScene({Vec3(0, 0, 0)}, {{0, 0, 1}}), std::invalid_argument);
 }

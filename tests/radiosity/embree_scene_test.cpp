@@ -1,0 +1,77 @@
+// The Embree scene built from the mesh (vertices shared between patches) against the one built
+// from the patches alone (every patch's corners its own): the same triangles in the same order,
+// so every query must give the same bits.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "meshes/scene.h"
+#include "radiosity/embree_scene.h"
+#include "radiosity/kernel.h"
+#include "radiosity/rng.h"
+#include "radiosity/sampling.h"
+#include "tests/support/test_scenes.h"
+
+namespace hmcr::test {
+namespace {
+
+// Rays from uniform points of random patches in cosine directions, and segments between two
+// such points: hits, their triangles and barycentric coordinates, and visibility, bit for bit.
+void expect_same_queries(const PatchMesh& mesh) {
+    const PatchSet set = build_patch_set(mesh);
+    const EmbreeScene own(set.patches), shared(mesh, set.patches);
+    EXPECT_EQ(own.offset(), shared.offset());
+    Rng rng(20261125, 0);
+    auto random_point = [&](const Patch*& patch) {
+        patch = &set.patches[std::size_t(rng.uniform() * double(set.patches.size()))];
+        return patch->point(sample_element(*patch, Domain::root(), rng.uniform(), rng.uniform()));
+    };
+    int hits = 0, blocked = 0;
+    for (int i = 0; i < 20'000; ++i) {
+        const Patch* p = nullptr;
+        const Vec3 x = random_point(p);
+        const Vec3 d = sample_cosine_hemisphere(p->normal, rng.uniform(), rng.uniform());
+        const auto a = own.first_hit_triangle(x, d), b = shared.first_hit_triangle(x, d);
+        ASSERT_EQ(a.has_value(), b.has_value()) << "ray " << i;
+        if (a) {
+            ++hits;
+            EXPECT_EQ(a->triangle, b->triangle) << "ray " << i;
+            EXPECT_EQ(a->u, b->u) << "ray " << i;
+            EXPECT_EQ(a->v, b->v) << "ray " << i;
+            EXPECT_EQ(a->distance, b->distance) << "ray " << i;
+            EXPECT_EQ(own.first_hit(x, d)->patch, shared.first_hit(x, d)->patch) << "ray " << i;
+        }
+        const Patch* q = nullptr;
+        const Vec3 y = random_point(q);
+        const bool seen = own.visible(x, y);
+        blocked += !seen;
+        EXPECT_EQ(seen, shared.visible(x, y)) << "segment " << i;
+    }
+    // The queries must have exercised both outcomes, or the comparison says nothing.
+    EXPECT_GT(hits, 10'000);
+    EXPECT_GT(blocked, 100);
+}
+
+TEST(EmbreeScene, SharedVerticesGiveTheSameHitsOnTheCornellBox) {
+    expect_same_queries(load_scene("cornell").mesh);
+}
+
+TEST(EmbreeScene, SharedVerticesGiveTheSameHitsOnTriangles) {
+    std::vector<TestPolygon> polys = inward_icosphere(2, 1.0, Rgb::Constant(0.5));
+    // A box of quads inside, so that segments are blocked.
+    for (const TestPolygon& p : inward_box(Vec3(-0.3, -0.3, -0.3), Vec3(0.3, 0.3, 0.3), 2,
+                                           Rgb::Constant(0.5), Rgb::Zero())) {
+        polys.push_back(p);
+    }
+    expect_same_queries(make_patch_mesh(polys));
+}
+
+TEST(EmbreeScene, AMeshThatIsNotThePatchesIsRefused) {
+    const PatchMesh mesh = load_scene("cornell").mesh;
+    PatchSet set = build_patch_set(mesh);
+    set.patches.pop_back();
+    EXPECT_THROW(EmbreeScene(mesh, set.patches), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hmcr::test
