@@ -59,7 +59,6 @@ nlohmann::json budget_json(const BudgetOptions& budget, const std::vector<Budget
 nlohmann::json run_summary(const Scene& scene, const Solution& solution, const RunTimings& timings,
                            const std::string& command_line, const std::string& output) {
     const SolveStats& st = solution.stats;
-    const Hierarchy& h = *solution.hierarchy;
     return {
         {"hmcr_version", HMCR_VERSION},
         {"command", command_line},
@@ -68,11 +67,11 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
          {{"name", scene.name},
           {"source", scene.source.string()},
           {"mesh", scene.mesh_path.string()},
-          {"patches", h.patch_count()},
+          {"patches", scene.mesh.n_faces()},
           {"strict", scene.strict},
           {"repairs", scene.repairs.to_json()},
-          {"total_area_m2", h.patch_set().total_area},
-          {"max_emitted_power_w", h.patch_set().max_emitted_power}}},
+          {"total_area_m2", st.total_area},
+          {"max_emitted_power_w", st.max_emitted_power}}},
         {"options", options_json(solution.options, st)},
         {"counts",
          {{"rays", st.rays},

@@ -98,12 +98,15 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     timings.load_seconds = seconds_since(start);
 
     TerminalProgress progress(mode, "hmcr " + scene.name);
-    const BudgetResult found = solve_scene(scene, args, progress);
-    const Solution& sol = found.solution;
+    BudgetResult found = solve_scene(scene, args, progress);
+    Solution& sol = found.solution;
     if (!Ranks::world().root()) return 0;  // every rank holds the solution; rank 0 writes it
 
     const auto t_out = std::chrono::steady_clock::now();
-    write_solution(vtp, sol, scene, args.crease_degrees, double(sol.stats.iterations.size()));
+    // Nothing needs the tree after the output: the shading releases it as early as it can.
+    const ShadedMesh shaded =
+        build_shaded_mesh(std::move(sol.hierarchy), scene.mesh, args.crease_degrees);
+    write_solution(vtp, shaded, sol, scene, double(sol.stats.iterations.size()));
     write_paraview_state(pvsm, vtp, find_view(scene, ""));
     timings.output_seconds = seconds_since(t_out);
     timings.total_seconds = seconds_since(start);

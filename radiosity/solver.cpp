@@ -72,6 +72,8 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
     PatchSet patches = build_patch_set(mesh);
     if (patches.max_emitted_power <= 0) throw InputError("the scene emits no light");
     st.emitted_power = patches.emitted_power;
+    st.total_area = patches.total_area;
+    st.max_emitted_power = patches.max_emitted_power;
     const EmbreeScene scene(mesh, patches.patches);
     sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
                                                 HierarchyLimits{options.min_area, options.max_depth, options.max_elements});

@@ -34,6 +34,8 @@ struct SolveStats {
     int threads = 0;                 // worker threads used (by each rank)
     int ranks = 1;                   // MPI processes that shared the rays
     Rgb emitted_power = Rgb::Zero();
+    double total_area = 0;          // of the patches, m^2
+    double max_emitted_power = 0;   // of one patch, in its brightest channel, W
     Rgb shot_power = Rgb::Zero();       // sum over iterations of the rays' power
     Rgb escaped_power = Rgb::Zero();    // shot power that left the scene
     Rgb back_face_power = Rgb::Zero();  // shot power absorbed by back faces

@@ -189,17 +189,28 @@ void emit_points(const Incidence* first, const Incidence* last, const LatticeVer
     }
 }
 
-}  // namespace
-
-ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees) {
-    ConformingPolygons polys = build_conforming_polygons(h, mesh);
+// What the shading takes from the tree: the conforming polygons, the cells' data and which
+// faces blend across each mesh edge. The rest needs only these and the mesh.
+struct FromTree {
+    ConformingPolygons polys;
     ShadedMesh out;
-    fill_cells(h, out);
+    CreaseGrouping grouping;
+};
+
+FromTree take_from_tree(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees) {
+    FromTree t{build_conforming_polygons(h, mesh), {}, CreaseGrouping(h, mesh, crease_degrees)};
+    fill_cells(h, t.out);
+    return t;
+}
+
+ShadedMesh finish(FromTree t) {
+    ConformingPolygons& polys = t.polys;
+    ShadedMesh& out = t.out;
+    CreaseGrouping& grouping = t.grouping;
     out.connectivity.assign(polys.polygon_vertices.size(), -1);
     const VertexIncidences vi = incidences(polys);
     out.offsets = std::move(polys.offsets);
     polys.polygon_vertices = {};  // in `vi` now
-    CreaseGrouping grouping(h, mesh, crease_degrees);
     auto for_each_vertex = [&](auto&& one_patch, auto&& several) {
         for (std::size_t v = 0; v < polys.vertices.size(); ++v) {
             const Incidence* first = vi.inc.data() + vi.first[v];
@@ -234,7 +245,20 @@ ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double c
         [&](const Incidence* first, const Incidence* last, const LatticeVertex& v) {
             emit_points(first, last, v, grouping, scratch, out);
         });
-    return out;
+    return std::move(out);
+}
+
+}  // namespace
+
+ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees) {
+    return finish(take_from_tree(h, mesh, crease_degrees));
+}
+
+ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, const PatchMesh& mesh,
+                             double crease_degrees) {
+    FromTree taken = take_from_tree(*h, mesh, crease_degrees);
+    h.reset();
+    return finish(std::move(taken));
 }
 
 }  // namespace hmcr

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "meshes/patch_mesh.h"
@@ -31,5 +32,10 @@ struct ShadedMesh {
 // normals differ by `crease_degrees` or more are not blended and get separate points.
 // Throws std::invalid_argument when the mesh does not match the hierarchy.
 ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees = 30);
+// The same, for a tree nobody needs afterwards: it is released as soon as the conforming
+// polygons, the cells' data and the crease flags are taken from it, before the largest arrays
+// of the output are built. At 10^6 patches the tree and its patches are 400 MB.
+ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, const PatchMesh& mesh,
+                             double crease_degrees = 30);
 
 }  // namespace hmcr

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "meshes/scene.h"
+#include "radiosity/patch.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/temp_dir.h"
 
@@ -91,6 +93,11 @@ TEST_F(Cli, SolveWritesTheMeshAndASummaryWithCountsAndTimings) {
     const auto summary = nlohmann::json::parse(read_file(m_dir / "sub" / "plates.json"));
     EXPECT_EQ(summary["options"]["seed"], 4);
     EXPECT_EQ(summary["options"]["threads"], 2);
+    // The scene's totals are those of its patches (the tree is gone when the summary is written).
+    const PatchSet set = build_patch_set(load_scene("plates").mesh);
+    EXPECT_EQ(summary["scene"]["patches"], set.patches.size());
+    EXPECT_EQ(summary["scene"]["total_area_m2"].get<double>(), set.total_area);
+    EXPECT_EQ(summary["scene"]["max_emitted_power_w"].get<double>(), set.max_emitted_power);
     EXPECT_NEAR(summary["counts"]["rays"].get<double>(), 20000, 400);
     EXPECT_GT(summary["counts"]["leaves"].get<int>(), 1);
     EXPECT_GE(summary["timings_s"]["total"].get<double>(), summary["timings_s"]["solve"].get<double>());
