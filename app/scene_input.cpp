@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include "common/memory.h"
+
 namespace hmcr {
 
 void add_scene_flags(CLI::App& command, SceneFlags& flags) {
@@ -26,6 +28,7 @@ Scene load_scene_reporting(const std::string& name_or_path, bool quiet, SceneUse
         if (!quiet) fmt::print(stderr, "hmcr: warning: {}\n", w);
     };
     Scene scene = load_scene(name_or_path, options);
+    return_freed_memory();
     if (!quiet && !scene.repairs.empty()) {
         fmt::print(stderr, "hmcr: repaired {}: {} (--strict refuses them)\n",
                    scene.mesh_path.string(), scene.repairs.summary());
