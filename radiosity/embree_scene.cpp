@@ -111,17 +111,16 @@ EmbreeScene::EmbreeScene(const PatchMesh& mesh, const std::vector<Patch>& patche
             for (int c = 0; c < 3; ++c) *vertex++ = float(mesh.point(v)[c]);
         }
         for (auto f : mesh.faces()) {
+            const Patch& p = patches[f.idx()];
+            if (mesh.valence(f) != p.corner_count) {
+                throw std::invalid_argument("face " + std::to_string(f.idx()) + " has " +
+                                            std::to_string(mesh.valence(f)) + " corners, its patch " +
+                                            std::to_string(p.corner_count));
+            }
             unsigned v[4];
             int k = 0;
-            for (auto fv : mesh.fv_range(f)) {
-                if (k == patches[f.idx()].corner_count) break;
-                v[k++] = unsigned(fv.idx());
-            }
-            if (k != patches[f.idx()].corner_count) {
-                throw std::invalid_argument("face " + std::to_string(f.idx()) +
-                                            " has other corners than its patch");
-            }
-            add_patch_triangles(std::uint32_t(f.idx()), v, k == 4, index);
+            for (auto fv : mesh.fv_range(f)) v[k++] = unsigned(fv.idx());
+            add_patch_triangles(std::uint32_t(f.idx()), v, p.is_quad(), index);
         }
     });
 }

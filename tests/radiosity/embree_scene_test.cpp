@@ -69,6 +69,8 @@ TEST(EmbreeScene, SharedVerticesGiveTheSameHitsOnTriangles) {
 TEST(EmbreeScene, AMeshThatIsNotThePatchesIsRefused) {
     const PatchMesh mesh = load_scene("cornell").mesh;
     PatchSet set = build_patch_set(mesh);
+    set.patches[3].corner_count = 3;  // a quad of the mesh
+    EXPECT_THROW(EmbreeScene(mesh, set.patches), std::invalid_argument);
     set.patches.pop_back();
     EXPECT_THROW(EmbreeScene(mesh, set.patches), std::invalid_argument);
 }
