@@ -39,6 +39,11 @@ struct Patch {
     double jacobian(const Vec2& uv) const {
         return jacobian_coefficients().dot(Vec3(1, uv.x(), uv.y()));
     }
+    // A quad whose bilinear map is affine (rectangles among them): uniform (u, v) is uniform
+    // by area.
+    bool is_parallelogram() const { return m_parallelogram; }
+
+private:
     // (c0, c1, c2) of J(u, v) = c0 + c1 u + c2 v. Triangles: twice the area. Quads, in the
     // plane: J = cross2(e1 + v g, e2 + u g), affine because cross2(g, g) = 0.
     Vec3 jacobian_coefficients() const {
@@ -46,11 +51,7 @@ struct Patch {
         if (m_parallelogram) return {cross2(m_e1, m_e2), 0, 0};
         return {cross2(m_e1, m_e2), cross2(m_e1, m_g), cross2(m_g, m_e2)};
     }
-    // A quad whose bilinear map is affine (rectangles among them): uniform (u, v) is uniform
-    // by area.
-    bool is_parallelogram() const { return m_parallelogram; }
 
-private:
     // Cached by finalize(): the map's edge vectors in the patch-plane frame (axis_x, normal x
     // axis_x). The frame's y axis and the Jacobian's coefficients are recomputed where they are
     // needed, from the same expressions, so they are the same bits: a hit's parameters cost one
@@ -60,8 +61,8 @@ private:
     Vec3 m_axis_x{1, 0, 0};
     Vec2 m_e1{1, 0}, m_e2{0, 1}, m_g{0, 0};  // quads: e2 is corner 3 - corner 0
 };
-// A million patches are 208 MB: the material is an index, the flag and the corner count fill
-// the 8 bytes after it, and the 16-byte aligned 2D vectors come last, after 160 bytes, so that
+// A million patches are 208 MB: the material index, the corner count and the flag share the 8
+// bytes after the area, and the 16-byte aligned 2D vectors come last, after 160 bytes, so that
 // no padding is needed.
 static_assert(sizeof(Patch) == 208);
 
