@@ -28,7 +28,7 @@ Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint6
 
 }  // namespace
 
-// Read from the mesh's material table: the patch set (256 bytes a patch) is not needed for it.
+// Read from the mesh's material table: the patch set (208 bytes a patch) is not needed for it.
 ObjectErrorOptions reflected_error_options(const PatchMesh& mesh) {
     ObjectErrorOptions o;
     const FaceMaterials materials(mesh);
