@@ -168,6 +168,27 @@ TEST(ShadedMesh, CreaseSplitsPointsBetweenPerpendicularPatches) {
     }
 }
 
+// `hmcr solve` hands its tree over, to be released half-way: the mesh must be the same.
+TEST(ShadedMesh, ATreeHandedOverGivesTheSameMesh) {
+    MeshHierarchy s = split_pair(false);
+    const ShadedMesh kept = s.shade();
+    const ShadedMesh handed = build_shaded_mesh(std::move(s.h), s.mesh);
+    EXPECT_EQ(handed.points, kept.points);
+    EXPECT_EQ(handed.offsets, kept.offsets);
+    EXPECT_EQ(handed.connectivity, kept.connectivity);
+    EXPECT_EQ(handed.hierarchy_level, kept.hierarchy_level);
+    EXPECT_EQ(handed.patch_id, kept.patch_id);
+    EXPECT_EQ(handed.element_area, kept.element_area);
+    ASSERT_EQ(handed.point_radiosity.size(), kept.point_radiosity.size());
+    for (std::size_t i = 0; i < kept.point_radiosity.size(); ++i) {
+        EXPECT_TRUE((handed.point_radiosity[i] == kept.point_radiosity[i]).all()) << i;
+    }
+    ASSERT_EQ(handed.element_radiosity.size(), kept.element_radiosity.size());
+    for (std::size_t c = 0; c < kept.element_radiosity.size(); ++c) {
+        EXPECT_TRUE((handed.element_radiosity[c] == kept.element_radiosity[c]).all()) << c;
+    }
+}
+
 TEST(ShadedMesh, WideCreaseAngleBlendsPerpendicularPatches) {
     MeshHierarchy s = split_pair(false);
     const ShadedMesh m = s.shade(100);
