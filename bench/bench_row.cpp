@@ -48,7 +48,7 @@ RowResult run_row(const RowSpec& spec) {
         r.setup_seconds = st.setup_seconds;
         r.solver_bytes = st.hierarchy_bytes + st.cache_bytes;
         tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, spec.threads);
-        const EmbreeScene embree(scene.mesh, sol.hierarchy->patch_set().patches);  // the solver's
+        const EmbreeScene embree(sol.hierarchy->patch_set());  // the solver's
         r.floor_seconds =
             solve_floor_seconds(embree, *sol.hierarchy, st.rays, st.lines_cast, kLines);
         r.peak_bytes = peak_memory_bytes();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/hash.h"
+#include "common/memory.h"
 
 namespace hmcr {
 
@@ -31,6 +32,11 @@ void set_face_material(PatchMesh& mesh, OpenMesh::FaceHandle f, const FaceMateri
     std::vector<FaceMaterial>& table = *materials_prop(mesh);
     material_prop(mesh)[f] = std::uint32_t(table.size());
     table.push_back(material);
+}
+
+void release(PatchMesh& mesh) {
+    mesh.clear();
+    return_freed_memory();
 }
 
 std::string geometry_hash(const PatchMesh& mesh) {

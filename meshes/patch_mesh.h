@@ -59,6 +59,9 @@ class FaceMaterials {
 // Gives face f a material of its own, appended to the table (for meshes built by hand).
 void set_face_material(PatchMesh& mesh, OpenMesh::FaceHandle f, const FaceMaterial& material);
 
+// Empties the mesh and gives its memory back (for a caller that keeps what it needs of it).
+void release(PatchMesh& mesh);
+
 // A fingerprint of the patches' geometry (corner count and the exact bits of every corner, in
 // face order): a solution records it, so that it is never read with another scene.
 std::string geometry_hash(const PatchMesh& mesh);

@@ -100,27 +100,35 @@ EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(std::make_u
     });
 }
 
-EmbreeScene::EmbreeScene(const PatchMesh& mesh, const std::vector<Patch>& patches)
-    : m_impl(std::make_unique<Impl>()) {
-    if (mesh.n_faces() != patches.size()) {
-        throw std::invalid_argument("the mesh has " + std::to_string(mesh.n_faces()) +
-                                    " faces for " + std::to_string(patches.size()) + " patches");
+EmbreeScene::EmbreeScene(const PatchSet& set) : m_impl(std::make_unique<Impl>()) {
+    const std::vector<Patch>& patches = set.patches;
+    const FaceVertices& mesh = set.vertices;
+    if (mesh.faces.size() != patches.size()) {
+        throw std::invalid_argument("the patch set has the mesh vertices of " +
+                                    std::to_string(mesh.faces.size()) + " faces for " +
+                                    std::to_string(patches.size()) + " patches");
     }
-    build_patches(patches, mesh.n_vertices(), [&](float* vertex, unsigned* index) {
-        for (auto v : mesh.vertices()) {
-            for (int c = 0; c < 3; ++c) *vertex++ = float(mesh.point(v)[c]);
-        }
-        for (auto f : mesh.faces()) {
-            const Patch& p = patches[f.idx()];
-            if (mesh.valence(f) != p.corner_count) {
-                throw std::invalid_argument("face " + std::to_string(f.idx()) + " has " +
-                                            std::to_string(mesh.valence(f)) + " corners, its patch " +
+    build_patches(patches, mesh.vertex_count, [&](float* vertex, unsigned* index) {
+        for (std::uint32_t i = 0; i < patches.size(); ++i) {
+            const Patch& p = patches[i];
+            const auto& v = mesh.faces[i];
+            if (mesh.corner_count(i) != p.corner_count) {
+                throw std::invalid_argument("face " + std::to_string(i) + " has " +
+                                            std::to_string(mesh.corner_count(i)) +
+                                            " corners, its patch " +
                                             std::to_string(p.corner_count));
             }
-            unsigned v[4];
-            int k = 0;
-            for (auto fv : mesh.fv_range(f)) v[k++] = unsigned(fv.idx());
-            add_patch_triangles(std::uint32_t(f.idx()), v, p.is_quad(), index);
+            // A vertex is written once per patch that meets there, each time the same value:
+            // the patches' corners are the mesh's points.
+            for (int k = 0; k < p.corner_count; ++k) {
+                if (v[k] >= mesh.vertex_count) {
+                    throw std::invalid_argument("face " + std::to_string(i) + " names vertex " +
+                                                std::to_string(v[k]) + " of " +
+                                                std::to_string(mesh.vertex_count));
+                }
+                for (int c = 0; c < 3; ++c) vertex[3 * v[k] + c] = float(p.corner[k][c]);
+            }
+            add_patch_triangles(i, v.data(), p.is_quad(), index);
         }
     });
 }

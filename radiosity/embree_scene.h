@@ -34,9 +34,9 @@ public:
     // Each patch's corners are vertices of their own.
     explicit EmbreeScene(const std::vector<Patch>& patches);
     // The same scene, the same hits, with the mesh's vertices shared by the patches that meet
-    // there: at 10^6 patches 13 MB of vertices instead of 50. Face i must be patch i (throws
-    // std::invalid_argument otherwise).
-    EmbreeScene(const PatchMesh& mesh, const std::vector<Patch>& patches);
+    // there: at 10^6 patches 13 MB of vertices instead of 50. The patches must have their mesh
+    // vertices (throws std::invalid_argument otherwise).
+    explicit EmbreeScene(const PatchSet& set);
     // A triangle soup: indices into `vertices`. Degenerate triangles are allowed (never hit).
     // Throws std::invalid_argument on an index out of range.
     EmbreeScene(const std::vector<Vec3>& vertices,

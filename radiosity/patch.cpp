@@ -86,6 +86,7 @@ PatchSet build_patch_set(const PatchMesh& mesh) {
         set.materials.push_back({Rgb(m.reflectance[0], m.reflectance[1], m.reflectance[2]),
                                  Rgb(m.emission[0], m.emission[1], m.emission[2])});
     }
+    set.vertices = face_vertices(mesh);
     set.patches.reserve(mesh.n_faces());
     for (auto f : mesh.faces()) {
         Patch p;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "meshes/connectivity.h"
 #include "meshes/patch_mesh.h"
 #include "common/types.h"
 
@@ -71,10 +72,13 @@ struct PatchMaterial {
     Rgb emission = Rgb::Zero();  // emitted radiosity E, W/m^2
 };
 
-// The patches of a mesh in face order, their materials, and the scene constants the oracles
-// need.
+// The patches of a mesh in face order, their materials, the mesh vertex of each corner, and the
+// scene constants the oracles need.
 struct PatchSet {
     std::vector<Patch> patches;
+    // Which mesh vertex each corner is (empty for patches made without a mesh): the mesh
+    // connectivity that the Embree scene and the output need, so nothing needs the mesh itself.
+    FaceVertices vertices;
     std::vector<PatchMaterial> materials{PatchMaterial{}};  // patches name them by index
     double total_area = 0;          // A_T
     double max_emitted_power = 0;   // Phi_max: largest A_i * max_c E_i,c of any patch

@@ -54,7 +54,7 @@ double SolveStats::back_face_fraction() const {
 namespace {
 
 // `shape`: a frozen mesh to solve on, or none (refine, or the uniform mesh of uniform_max_area).
-Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy* shape,
+Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierarchy* shape,
                     Progress& progress, const Ranks& ranks) {
     validate(options);
     const auto start = Clock::now();
@@ -69,12 +69,12 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
     st.threads = threads;
     st.ranks = ranks.size();
 
-    PatchSet patches = build_patch_set(mesh);
     if (patches.max_emitted_power <= 0) throw InputError("the scene emits no light");
     st.emitted_power = patches.emitted_power;
     st.total_area = patches.total_area;
     st.max_emitted_power = patches.max_emitted_power;
-    const EmbreeScene scene(mesh, patches.patches);
+    st.patches = patches.patches.size();
+    const EmbreeScene scene(patches);
     sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
                                                 HierarchyLimits{options.min_area, options.max_depth, options.max_elements});
     Hierarchy& h = *sol.hierarchy;
@@ -157,12 +157,17 @@ Solution solve_with(const PatchMesh& mesh, const SolverOptions& options, const H
 
 Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& progress,
                const Ranks& ranks) {
-    return solve_with(mesh, options, nullptr, progress, ranks);
+    return solve_with(build_patch_set(mesh), options, nullptr, progress, ranks);
+}
+
+Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress,
+               const Ranks& ranks) {
+    return solve_with(std::move(patches), options, nullptr, progress, ranks);
 }
 
 Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy& shape,
                        Progress& progress) {
-    return solve_with(mesh, options, &shape, progress, Ranks::single());
+    return solve_with(build_patch_set(mesh), options, &shape, progress, Ranks::single());
 }
 
 }  // namespace hmcr

@@ -33,6 +33,7 @@ struct SolveStats {
     double epsilon = 0;              // the value used (the oracle's default if not given)
     int threads = 0;                 // worker threads used (by each rank)
     int ranks = 1;                   // MPI processes that shared the rays
+    std::size_t patches = 0;
     Rgb emitted_power = Rgb::Zero();
     double total_area = 0;          // of the patches, m^2
     double max_emitted_power = 0;   // of one patch, in its brightest channel, W
@@ -57,6 +58,10 @@ struct Solution {
 // Reports the fraction of the rays shot to `progress`. `ranks` share every iteration's rays
 // (rank_merge.h) and all return the same solution, bit for bit, as one process would.
 Solution solve(const PatchMesh& mesh, const SolverOptions& options,
+               Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
+// The same from the mesh's patches (build_patch_set), so that the mesh can be released before
+// the rays are shot.
+Solution solve(PatchSet patches, const SolverOptions& options,
                Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 
 // The same solve on a frozen mesh: the leaves of `shape` (a solution of the same mesh), no

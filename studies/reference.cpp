@@ -47,10 +47,10 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progr
     Reference ref;
     progress.stage("solving with seed " + std::to_string(seed));
     ref.solution = solve_uniform(scene, o, seed, progress, ranks);
-    ref.mesh = shade(ref.solution, scene.mesh, o.crease_degrees);
+    ref.mesh = shade(ref.solution, o.crease_degrees);
     progress.stage("solving with seed " + std::to_string(seed + 1) + " for the convergence report");
     const Solution second = solve_uniform(scene, o, seed + 1, progress, ranks);
-    const ShadedMesh second_mesh = shade(second, scene.mesh, o.crease_degrees);
+    const ShadedMesh second_mesh = shade(second, o.crease_degrees);
     ref.truncation = truncation_bias(ref.solution);
     ref.seed_difference = (reflected_power(*second.hierarchy) - ref.truncation.reflected).cwiseAbs() /
                           ref.truncation.reflected.cwiseMax(1e-300);
@@ -84,7 +84,7 @@ std::vector<std::filesystem::path> reference_files(const std::filesystem::path& 
 void write_reference(const std::filesystem::path& dir, const Scene& scene,
                      const Reference& ref, const ReferenceOptions& o, nlohmann::json summary) {
     const SolveStats& st = ref.solution.stats;
-    write_solution(dir / "reference.vtp", ref.mesh, ref.solution, scene,
+    write_solution(dir / "reference.vtp", ref.mesh, ref.solution, scene_identity(scene),
                    double(st.iterations.size()));
     nlohmann::json views = nlohmann::json::object(), errors = nlohmann::json::object();
     for (const auto& [name, view] : ref.views) {

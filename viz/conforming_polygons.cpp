@@ -24,33 +24,42 @@ struct PatchTopology {
     bool quad() const { return corner_count == 4; }
 };
 
-std::vector<PatchTopology> patch_topology(const PatchMesh& mesh, const PatchSet& set) {
-    if (mesh.n_faces() != set.patches.size()) {
-        throw std::invalid_argument("shaded mesh: the mesh has " + std::to_string(mesh.n_faces()) +
-                                    " faces but the hierarchy " +
-                                    std::to_string(set.patches.size()) + " patches");
-    }
-    std::vector<PatchTopology> topo(mesh.n_faces());
-    for (auto f : mesh.faces()) {
-        PatchTopology& t = topo[f.idx()];
-        std::array<PatchMesh::VertexHandle, 4> v;
-        for (auto vh : mesh.fv_range(f)) {
-            if (t.corner_count == 4) break;
-            v[t.corner_count++] = vh;
+// The patches' mesh vertices and edges, checked against the patches once.
+class MeshTopology {
+  public:
+    MeshTopology(const PatchSet& set, const FaceEdges& edges)
+        : m_vertices(set.vertices), m_edges(edges) {
+        if (m_vertices.faces.size() != set.patches.size()) {
+            throw std::invalid_argument("shaded mesh: the patch set has the mesh vertices of " +
+                                        std::to_string(m_vertices.faces.size()) +
+                                        " faces for " + std::to_string(set.patches.size()) +
+                                        " patches");
         }
-        if (t.corner_count != set.patches[f.idx()].corner_count || mesh.valence(f) > 4) {
-            throw std::invalid_argument("shaded mesh: face " + std::to_string(f.idx()) +
-                                        " does not match its patch");
+        for (std::size_t f = 0; f < set.patches.size(); ++f) {
+            if (m_vertices.corner_count(f) != set.patches[f].corner_count) {
+                throw std::invalid_argument("shaded mesh: face " + std::to_string(f) +
+                                            " does not match its patch");
+            }
         }
-        for (int k = 0; k < t.corner_count; ++k) {
-            const auto next = v[(k + 1) % t.corner_count];
-            t.vertex[k] = v[k].idx();
-            t.edge[k] = mesh.edge_handle(mesh.find_halfedge(v[k], next)).idx();
-            t.forward[k] = v[k].idx() < next.idx();
+        if (m_edges.faces.size() != m_vertices.faces.size()) {
+            throw std::invalid_argument("shaded mesh: the edges are not the patches' own");
         }
     }
-    return topo;
-}
+    std::uint32_t vertex_count() const { return m_vertices.vertex_count; }
+    PatchTopology operator[](std::uint32_t patch) const {
+        PatchTopology t;
+        const auto& v = m_vertices.faces[patch];
+        t.corner_count = m_vertices.corner_count(patch);
+        t.vertex = v;
+        t.edge = m_edges.faces[patch];
+        for (int k = 0; k < t.corner_count; ++k) t.forward[k] = v[k] < v[(k + 1) % t.corner_count];
+        return t;
+    }
+
+  private:
+    const FaceVertices& m_vertices;
+    const FaceEdges& m_edges;
+};
 
 // Position along patch edge k, measured from corner k, of a grid point on that edge.
 std::int64_t along_edge(bool quad, int k, GridPoint p) {
@@ -208,11 +217,8 @@ Leaf leaf_corners(const Element& e, bool quad) {
 // in the output's leaf order, so vertex numbers follow first use as before.
 class Builder {
   public:
-    Builder(const Hierarchy& h, const PatchMesh& mesh)
-        : m_h(h),
-          m_mesh(mesh),
-          m_topo(patch_topology(mesh, h.patch_set())),
-          m_mesh_vertex(mesh.n_vertices(), kNone) {}
+    Builder(const Hierarchy& h, const FaceEdges& edges)
+        : m_h(h), m_topo(h.patch_set(), edges), m_mesh_vertex(m_topo.vertex_count(), kNone) {}
 
     ConformingPolygons build() {
         m_h.for_each_leaf([&](const Element& e) { collect_edge_points(e); });
@@ -235,7 +241,7 @@ class Builder {
     // edge along the mesh edge, since the leaves tile the patch, so these are the points that
     // leaf edges on the mesh edge must list.
     void collect_edge_points(const Element& e) {
-        const PatchTopology& t = m_topo[e.id.patch];
+        const PatchTopology t = m_topo[e.id.patch];
         const Leaf leaf = leaf_corners(e, t.quad());
         for (int k = 0; k < leaf.count; ++k) {
             const int edge = edge_of_point(t.quad(), leaf.corner[k]);
@@ -249,7 +255,7 @@ class Builder {
     void emit_patch() {
         if (m_patch_leaves.empty()) return;  // a hierarchy without patches
         const std::uint32_t patch = m_patch_leaves.front()->id.patch;
-        const PatchTopology& t = m_topo[patch];
+        const PatchTopology t = m_topo[patch];
         m_interior_points.clear();
         m_line_points.clear();
         for (const Element* e : m_patch_leaves) {
@@ -273,7 +279,7 @@ class Builder {
 
     // Each leaf edge with the corners strictly inside it, in order from a to b.
     void emit_polygon(const Element& e) {
-        const PatchTopology& t = m_topo[e.id.patch];
+        const PatchTopology t = m_topo[e.id.patch];
         const Leaf leaf = leaf_corners(e, t.quad());
         for (int k = 0; k < leaf.count; ++k) {
             const GridPoint a = leaf.corner[k], b = leaf.corner[(k + 1) % leaf.count];
@@ -302,16 +308,18 @@ class Builder {
     }
 
     void emit_vertex(std::uint32_t patch, GridPoint p) {
-        const PatchTopology& t = m_topo[patch];
+        const PatchTopology t = m_topo[patch];
         const int k = edge_of_point(t.quad(), p);
         std::uint32_t* slot = nullptr;
         VertexKind kind = VertexKind::patch_interior;
         std::uint32_t id = patch;
+        int corner = -1;  // of the patch, for a mesh vertex
         if (k < 0) {
             slot = &m_interior_points.at(interior_point_key(p));
         } else if (const std::int64_t pos = along_edge(t.quad(), k, p); pos == 0 || pos == kGrid) {
             kind = VertexKind::mesh_vertex;
-            id = t.vertex[pos == 0 ? k : (k + 1) % t.corner_count];
+            corner = pos == 0 ? k : (k + 1) % t.corner_count;
+            id = t.vertex[corner];
             slot = &m_mesh_vertex[id];
         } else {
             kind = VertexKind::mesh_edge;
@@ -320,24 +328,22 @@ class Builder {
         }
         if (*slot == kNone) {
             *slot = std::uint32_t(m_out.vertices.size());
-            m_out.vertices.push_back(make_vertex(kind, id, patch, p));
+            m_out.vertices.push_back(make_vertex(kind, id, patch, corner, p));
         }
         m_out.polygon_vertices.push_back(*slot);
     }
 
-    LatticeVertex make_vertex(VertexKind kind, std::uint32_t id, std::uint32_t patch,
+    // A mesh vertex is its patch's corner, the mesh's point itself.
+    LatticeVertex make_vertex(VertexKind kind, std::uint32_t id, std::uint32_t patch, int corner,
                               GridPoint p) const {
-        if (kind == VertexKind::mesh_vertex) {
-            const auto& q = m_mesh.point(PatchMesh::VertexHandle(int(id)));
-            return {kind, id, Vec3(q[0], q[1], q[2])};
-        }
+        const Patch& q = m_h.patch_set().patches[patch];
+        if (kind == VertexKind::mesh_vertex) return {kind, id, q.corner[corner]};
         const Vec2 uv(double(p.u) / kGrid, double(p.v) / kGrid);
-        return {kind, id, m_h.patch_set().patches[patch].point(uv)};
+        return {kind, id, q.point(uv)};
     }
 
     const Hierarchy& m_h;
-    const PatchMesh& m_mesh;
-    std::vector<PatchTopology> m_topo;
+    MeshTopology m_topo;
     std::vector<std::uint32_t> m_mesh_vertex;  // output vertex of each mesh vertex
     KeyedVertices m_edge_points;
     // The current patch: its leaves, interior leaf corners and interior line positions.
@@ -349,8 +355,8 @@ class Builder {
 
 }  // namespace
 
-ConformingPolygons build_conforming_polygons(const Hierarchy& h, const PatchMesh& mesh) {
-    return Builder(h, mesh).build();
+ConformingPolygons build_conforming_polygons(const Hierarchy& h, const FaceEdges& edges) {
+    return Builder(h, edges).build();
 }
 
 }  // namespace hmcr

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "meshes/patch_mesh.h"
+#include "meshes/connectivity.h"
 #include "radiosity/hierarchy.h"
 #include "common/types.h"
 
@@ -41,7 +41,8 @@ struct ConformingPolygons {
     std::vector<std::uint32_t> polygon_vertices;  // indices into vertices, counter-clockwise
 };
 
-// Face i of `mesh` is patch i of `h`; throws std::invalid_argument when they do not match.
-ConformingPolygons build_conforming_polygons(const Hierarchy& h, const PatchMesh& mesh);
+// The mesh is the patches' own: PatchSet::vertices, and `edges` = face_edges() of them. Throws
+// std::invalid_argument when the patches have no mesh vertices or they do not match.
+ConformingPolygons build_conforming_polygons(const Hierarchy& h, const FaceEdges& edges);
 
 }  // namespace hmcr

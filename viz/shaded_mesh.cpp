@@ -56,21 +56,29 @@ class CreaseGrouping {
   public:
     // Whether the faces across each mesh edge blend is decided once per edge: the grouping runs
     // twice at every vertex that patches share (to count the points, then to emit them), and
-    // asks about each edge from both of its ends. Deciding it there, from two patches anywhere in the patch array,
-    // was the largest part of the output stage at 10^6 patches.
-    CreaseGrouping(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees)
-        : m_mesh(mesh), m_blends(mesh.n_edges(), 0) {
+    // asks about each edge from both of its ends. Deciding it there, from two patches anywhere
+    // in the patch array, was the largest part of the output stage at 10^6 patches. The faces'
+    // vertices and edges are kept (32 bytes a face), so the tree can go.
+    CreaseGrouping(const Hierarchy& h, FaceEdges edges, double crease_degrees)
+        : m_vertices(h.patch_set().vertices),
+          m_edges(std::move(edges)),
+          m_blends(m_edges.edge_count, 0) {
         const double cos_crease = std::cos(crease_degrees * std::numbers::pi / 180.0);
         const PatchSet& set = h.patch_set();
-        for (auto e : mesh.edges()) {
-            const auto f0 = mesh.face_handle(mesh.halfedge_handle(e, 0));
-            const auto f1 = mesh.face_handle(mesh.halfedge_handle(e, 1));
-            if (!f0.is_valid() || !f1.is_valid()) continue;
-            const Patch& p0 = set.patches[f0.idx()];
-            const Patch& p1 = set.patches[f1.idx()];
-            const bool same_material = (set.reflectance(p0) == set.reflectance(p1)).all() &&
-                                       (set.emission(p0) == set.emission(p1)).all();
-            m_blends[e.idx()] = same_material && p0.normal.dot(p1.normal) > cos_crease;
+        std::vector<std::uint32_t> first_face(m_edges.edge_count, kNoCorner);
+        for (std::uint32_t f = 0; f < m_edges.faces.size(); ++f) {
+            for (int k = 0; k < m_vertices.corner_count(f); ++k) {
+                const std::uint32_t e = m_edges.faces[f][k];
+                if (first_face[e] == kNoCorner) {
+                    first_face[e] = f;
+                    continue;
+                }
+                const Patch& p0 = set.patches[first_face[e]];
+                const Patch& p1 = set.patches[f];
+                const bool same_material = (set.reflectance(p0) == set.reflectance(p1)).all() &&
+                                           (set.emission(p0) == set.emission(p1)).all();
+                m_blends[e] = same_material && p0.normal.dot(p1.normal) > cos_crease;
+            }
         }
     }
 
@@ -79,37 +87,46 @@ class CreaseGrouping {
                 std::vector<int>& group) {
         m_parent.resize(patches.size());
         std::iota(m_parent.begin(), m_parent.end(), 0);
-        if (patches.size() > 1 && v.kind == VertexKind::mesh_edge) {
-            join_across(PatchMesh::EdgeHandle(int(v.id)), patches);
-        } else if (patches.size() > 1 && v.kind == VertexKind::mesh_vertex) {
-            for (auto e : m_mesh.ve_range(PatchMesh::VertexHandle(int(v.id)))) {
-                join_across(e, patches);
-            }
+        if (patches.size() > 1 && v.kind != VertexKind::patch_interior) {
+            join_across_sides(v, patches);
         }
         group.resize(patches.size());
         for (std::size_t i = 0; i < patches.size(); ++i) group[i] = find(int(i));
     }
 
   private:
-    void join_across(PatchMesh::EdgeHandle e, const std::vector<std::uint32_t>& patches) {
-        if (!m_blends[e.idx()]) return;
-        const auto f0 = m_mesh.face_handle(m_mesh.halfedge_handle(e, 0));
-        const auto f1 = m_mesh.face_handle(m_mesh.halfedge_handle(e, 1));
-        const int a = index_of(patches, f0.idx()), b = index_of(patches, f1.idx());
-        if (a >= 0 && b >= 0) m_parent[find(a)] = find(b);
-    }
-    static int index_of(const std::vector<std::uint32_t>& patches, int patch) {
-        auto it = std::find(patches.begin(), patches.end(), std::uint32_t(patch));
-        return it == patches.end() ? -1 : int(it - patches.begin());
+    // Two of the patches join when they have a side on the same blending mesh edge through v
+    // (a mesh edge, or an edge with v at one end).
+    void join_across_sides(const LatticeVertex& v, const std::vector<std::uint32_t>& patches) {
+        m_sides.clear();
+        for (std::size_t i = 0; i < patches.size(); ++i) {
+            const auto& fv = m_vertices.faces[patches[i]];
+            const auto& fe = m_edges.faces[patches[i]];
+            const int n = m_vertices.corner_count(patches[i]);
+            for (int k = 0; k < n; ++k) {
+                const bool through_v = v.kind == VertexKind::mesh_edge
+                                           ? fe[k] == v.id
+                                           : fv[k] == v.id || fv[(k + 1) % n] == v.id;
+                if (through_v && m_blends[fe[k]]) m_sides.push_back({fe[k], int(i)});
+            }
+        }
+        std::sort(m_sides.begin(), m_sides.end());
+        for (std::size_t j = 1; j < m_sides.size(); ++j) {
+            if (m_sides[j].first == m_sides[j - 1].first) {
+                m_parent[find(m_sides[j - 1].second)] = find(m_sides[j].second);
+            }
+        }
     }
     int find(int i) {
         while (m_parent[i] != i) i = m_parent[i] = m_parent[m_parent[i]];
         return i;
     }
 
-    const PatchMesh& m_mesh;
+    FaceVertices m_vertices;
+    FaceEdges m_edges;
     std::vector<std::uint8_t> m_blends;  // by mesh edge: its two faces blend
     std::vector<int> m_parent;
+    std::vector<std::pair<std::uint32_t, int>> m_sides;  // (mesh edge, patch) at one vertex
 };
 
 void fill_cells(const Hierarchy& h, ShadedMesh& out) {
@@ -190,15 +207,17 @@ void emit_points(const Incidence* first, const Incidence* last, const LatticeVer
 }
 
 // What the shading takes from the tree: the conforming polygons, the cells' data and which
-// faces blend across each mesh edge. The rest needs only these and the mesh.
+// faces blend across each mesh edge. The rest needs only these.
 struct FromTree {
     ConformingPolygons polys;
     ShadedMesh out;
     CreaseGrouping grouping;
 };
 
-FromTree take_from_tree(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees) {
-    FromTree t{build_conforming_polygons(h, mesh), {}, CreaseGrouping(h, mesh, crease_degrees)};
+FromTree take_from_tree(const Hierarchy& h, double crease_degrees) {
+    FaceEdges edges = face_edges(h.patch_set().vertices);
+    ConformingPolygons polys = build_conforming_polygons(h, edges);
+    FromTree t{std::move(polys), {}, CreaseGrouping(h, std::move(edges), crease_degrees)};
     fill_cells(h, t.out);
     return t;
 }
@@ -250,13 +269,12 @@ ShadedMesh finish(FromTree t) {
 
 }  // namespace
 
-ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees) {
-    return finish(take_from_tree(h, mesh, crease_degrees));
+ShadedMesh build_shaded_mesh(const Hierarchy& h, double crease_degrees) {
+    return finish(take_from_tree(h, crease_degrees));
 }
 
-ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, const PatchMesh& mesh,
-                             double crease_degrees) {
-    FromTree taken = take_from_tree(*h, mesh, crease_degrees);
+ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, double crease_degrees) {
+    FromTree taken = take_from_tree(*h, crease_degrees);
     h.reset();
     return finish(std::move(taken));
 }

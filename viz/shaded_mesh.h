@@ -6,7 +6,6 @@
 #include <memory>
 #include <vector>
 
-#include "meshes/patch_mesh.h"
 #include "radiosity/hierarchy.h"
 #include "common/types.h"
 
@@ -28,14 +27,14 @@ struct ShadedMesh {
     std::size_t cell_count() const { return offsets.size() - 1; }
 };
 
-// Face i of `mesh` must be patch i of `h` (h was built from build_patch_set(mesh)). Patches whose
-// normals differ by `crease_degrees` or more are not blended and get separate points.
-// Throws std::invalid_argument when the mesh does not match the hierarchy.
-ShadedMesh build_shaded_mesh(const Hierarchy& h, const PatchMesh& mesh, double crease_degrees = 30);
+// The patches of `h` must have their mesh vertices (h was built from build_patch_set(mesh)): the
+// output shares points along mesh edges and at mesh vertices. Patches whose normals differ by
+// `crease_degrees` or more are not blended and get separate points. Throws
+// std::invalid_argument when the patches have no mesh vertices or they do not match.
+ShadedMesh build_shaded_mesh(const Hierarchy& h, double crease_degrees = 30);
 // The same, for a tree nobody needs afterwards: it is released as soon as the conforming
 // polygons, the cells' data and the crease flags are taken from it, before the largest arrays
 // of the output are built. At 10^6 patches the tree and its patches are 400 MB.
-ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, const PatchMesh& mesh,
-                             double crease_degrees = 30);
+ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, double crease_degrees = 30);
 
 }  // namespace hmcr

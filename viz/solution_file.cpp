@@ -6,7 +6,12 @@
 
 namespace hmcr {
 
-VtpMetadata vtp_metadata(const Solution& solution, const Scene& scene, double time_value) {
+SceneIdentity scene_identity(const Scene& scene) {
+    return {scene.name, scene.mesh.n_faces(), geometry_hash(scene.mesh)};
+}
+
+VtpMetadata vtp_metadata(const Solution& solution, const SceneIdentity& scene,
+                         double time_value) {
     const SolveStats& st = solution.stats;
     const bool uniform = solution.options.uniform_max_area > 0;
     return {uniform ? "uniform" : solution.options.oracle,
@@ -18,24 +23,24 @@ VtpMetadata vtp_metadata(const Solution& solution, const Scene& scene, double ti
             st.iterations.size(),
             time_value,
             scene.name,
-            scene.mesh.n_faces(),
-            geometry_hash(scene.mesh),
+            scene.patches,
+            scene.geometry_hash,
             solution.options.link_weight};
 }
 
-ShadedMesh shade(const Solution& solution, const PatchMesh& mesh, double crease_degrees) {
-    return build_shaded_mesh(*solution.hierarchy, mesh, crease_degrees);
+ShadedMesh shade(const Solution& solution, double crease_degrees) {
+    return build_shaded_mesh(*solution.hierarchy, crease_degrees);
 }
 
 void write_solution(const std::filesystem::path& vtp, const ShadedMesh& shaded,
-                    const Solution& solution, const Scene& scene, double time_value) {
+                    const Solution& solution, const SceneIdentity& scene, double time_value) {
     write_vtp(vtp, shaded, vtp_metadata(solution, scene, time_value));
 }
 
 ShadedMesh write_solution(const std::filesystem::path& vtp, const Solution& solution,
                           const Scene& scene, double crease_degrees, double time_value) {
-    ShadedMesh shaded = shade(solution, scene.mesh, crease_degrees);
-    write_solution(vtp, shaded, solution, scene, time_value);
+    ShadedMesh shaded = shade(solution, crease_degrees);
+    write_solution(vtp, shaded, solution, scene_identity(scene), time_value);
     return shaded;
 }
 

@@ -12,19 +12,27 @@
 
 namespace hmcr {
 
+// What a solution file records of its scene, taken before `hmcr solve` releases the mesh.
+struct SceneIdentity {
+    std::string name;
+    std::size_t patches = 0;
+    std::string geometry_hash;  // geometry_hash() of the mesh
+};
+SceneIdentity scene_identity(const Scene& scene);
+
 // The metadata of a solve of the scene: its oracle ("uniform" for a fixed uniform mesh, which
 // has no epsilon and no lines), epsilon, lines, rays, seed, leaves, iterations, and the scene's
 // name, patch count and geometry hash. time_value is ParaView's time of the file (a study puts
 // the budget there, to step through budgets).
-VtpMetadata vtp_metadata(const Solution& solution, const Scene& scene, double time_value);
+VtpMetadata vtp_metadata(const Solution& solution, const SceneIdentity& scene, double time_value);
 
-// The shaded leaves of the solution of `mesh` (patches meeting at crease_degrees or more are
-// not blended).
-ShadedMesh shade(const Solution& solution, const PatchMesh& mesh, double crease_degrees);
+// The shaded leaves of the solution (patches meeting at crease_degrees or more are not
+// blended).
+ShadedMesh shade(const Solution& solution, double crease_degrees);
 
 // Writes the shaded mesh of the solution atomically.
 void write_solution(const std::filesystem::path& vtp, const ShadedMesh& shaded,
-                    const Solution& solution, const Scene& scene, double time_value);
+                    const Solution& solution, const SceneIdentity& scene, double time_value);
 // shade() then write_solution(); returns the mesh for whoever measures it next.
 ShadedMesh write_solution(const std::filesystem::path& vtp, const Solution& solution,
                           const Scene& scene, double crease_degrees, double time_value);

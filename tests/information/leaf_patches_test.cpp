@@ -22,7 +22,7 @@ TEST(LeafPatches, CellsBecomeTheirLeavesWithTheSameArea) {
     o.epsilon = 1e-3;
     o.rays = 200'000;
     const Solution sol = solve(mesh, o);
-    const ShadedMesh shaded = build_shaded_mesh(*sol.hierarchy, mesh);
+    const ShadedMesh shaded = build_shaded_mesh(*sol.hierarchy);
     const PatchSet leaves = leaf_patches(shaded);
     ASSERT_EQ(leaves.patches.size(), sol.stats.leaves);
     std::size_t with_t_junctions = 0;

@@ -1,6 +1,6 @@
-// The Embree scene built from the mesh (vertices shared between patches) against the one built
-// from the patches alone (every patch's corners its own): the same triangles in the same order,
-// so every query must give the same bits.
+// The Embree scene built from the patches' mesh vertices (shared between patches) against the
+// one built from the patches alone (every patch's corners its own): the same triangles in the
+// same order, so every query must give the same bits.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -19,7 +19,7 @@ namespace {
 // such points: hits, their triangles and barycentric coordinates, and visibility, bit for bit.
 void expect_same_queries(const PatchMesh& mesh) {
     const PatchSet set = build_patch_set(mesh);
-    const EmbreeScene own(set.patches), shared(mesh, set.patches);
+    const EmbreeScene own(set.patches), shared(set);
     EXPECT_EQ(own.offset(), shared.offset());
     Rng rng(20261125, 0);
     auto random_point = [&](const Patch*& patch) {
@@ -66,13 +66,21 @@ TEST(EmbreeScene, SharedVerticesGiveTheSameHitsOnTriangles) {
     expect_same_queries(make_patch_mesh(polys));
 }
 
-TEST(EmbreeScene, AMeshThatIsNotThePatchesIsRefused) {
-    const PatchMesh mesh = load_scene("cornell").mesh;
-    PatchSet set = build_patch_set(mesh);
+TEST(EmbreeScene, MeshVerticesThatAreNotThePatchesAreRefused) {
+    const PatchSet good = build_patch_set(load_scene("cornell").mesh);
+    PatchSet set = good;
     set.patches[3].corner_count = 3;  // a quad of the mesh
-    EXPECT_THROW(EmbreeScene(mesh, set.patches), std::invalid_argument);
+    EXPECT_THROW(EmbreeScene{set}, std::invalid_argument);
+    set = good;
     set.patches.pop_back();
-    EXPECT_THROW(EmbreeScene(mesh, set.patches), std::invalid_argument);
+    EXPECT_THROW(EmbreeScene{set}, std::invalid_argument);
+    set = good;
+    set.vertices.faces[5][1] = set.vertices.vertex_count;
+    EXPECT_THROW(EmbreeScene{set}, std::invalid_argument);
+    set = good;
+    set.vertices = {};  // patches made without a mesh
+    EXPECT_THROW(EmbreeScene{set}, std::invalid_argument);
+    EXPECT_NO_THROW(EmbreeScene{good});
 }
 
 }  // namespace

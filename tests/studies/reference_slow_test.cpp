@@ -31,7 +31,7 @@ TEST(Reference, SeedsDifferMuchLessThanA2000ElementPowerSolutionErrs) {
     SolverOptions so;
     so.oracle = "power";
     const BudgetResult power = solve_for_budget(scene.mesh, so, {2000, 0.02});
-    const ShadedMesh mesh = build_shaded_mesh(*power.solution.hierarchy, scene.mesh);
+    const ShadedMesh mesh = build_shaded_mesh(*power.solution.hierarchy);
     const ObjectError power_error =
         object_space_error(mesh, ref.mesh, reflected_error_options(scene.mesh));
     std::printf("reference seeds differ by %.4f; power at %zu leaves is off by %.4f (%.1fx)\n",

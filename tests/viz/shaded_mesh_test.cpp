@@ -172,7 +172,7 @@ TEST(ShadedMesh, CreaseSplitsPointsBetweenPerpendicularPatches) {
 TEST(ShadedMesh, ATreeHandedOverGivesTheSameMesh) {
     MeshHierarchy s = split_pair(false);
     const ShadedMesh kept = s.shade();
-    const ShadedMesh handed = build_shaded_mesh(std::move(s.h), s.mesh);
+    const ShadedMesh handed = build_shaded_mesh(std::move(s.h));
     EXPECT_EQ(handed.points, kept.points);
     EXPECT_EQ(handed.offsets, kept.offsets);
     EXPECT_EQ(handed.connectivity, kept.connectivity);
@@ -223,10 +223,18 @@ TEST(ShadedMesh, TriangleVertexValueOnHypotenuse) {
     EXPECT_TRUE(value_at(m, at_param(s, 0, 0.25, 0.25)).isApprox(expected, kEps));
 }
 
-TEST(ShadedMesh, RejectsMeshThatDoesNotMatchHierarchy) {
-    MeshHierarchy s(two_quads(true));
-    const PatchMesh other = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
-    EXPECT_THROW(build_shaded_mesh(*s.h, other), std::invalid_argument);
+TEST(ShadedMesh, RejectsPatchesWithoutTheirMeshVertices) {
+    const PatchMesh mesh = two_quads(true);
+    PatchSet set = build_patch_set(mesh);
+    set.vertices = face_vertices(make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+    EXPECT_THROW(build_shaded_mesh(Hierarchy(set, {})), std::invalid_argument);
+    set.vertices = face_vertices(make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}},
+                                           {{0, 1, 2}, {1, 3, 2}}));
+    EXPECT_THROW(build_shaded_mesh(Hierarchy(set, {})), std::invalid_argument);
+    set.vertices = {};
+    EXPECT_THROW(build_shaded_mesh(Hierarchy(set, {})), std::invalid_argument);
+    set.vertices = face_vertices(mesh);
+    EXPECT_NO_THROW(build_shaded_mesh(Hierarchy(set, {})));
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ TEST(SolvedMesh, IsConformingAndContinuousWithinEachSmoothRegion) {
     o.rays = 100'000;
     o.epsilon = 1e-4;
     const Solution sol = solve(mesh, o);
-    const ShadedMesh m = build_shaded_mesh(*sol.hierarchy, mesh);
+    const ShadedMesh m = build_shaded_mesh(*sol.hierarchy);
     ASSERT_EQ(m.cell_count(), sol.stats.leaves);
     ASSERT_GT(m.cell_count(), 500u);
     EXPECT_TRUE(conforming(m));

@@ -54,7 +54,7 @@ struct MeshHierarchy {
         auto visit = [&](const Element& e) { f(const_cast<Element&>(e)); };
         Hierarchy::visit_leaves(root(patch), visit);
     }
-    ShadedMesh shade(double crease = 30) const { return build_shaded_mesh(*h, mesh, crease); }
+    ShadedMesh shade(double crease = 30) const { return build_shaded_mesh(*h, crease); }
 };
 
 // Unit square in z = 0 (patch 0) and, sharing its edge x = 1, either the square [1,2]x[0,1]
