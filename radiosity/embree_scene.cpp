@@ -153,10 +153,13 @@ void EmbreeScene::build_patches(const std::vector<Patch>& patches, std::size_t v
 void EmbreeScene::add_patch_triangles(std::uint32_t patch, const unsigned* v, bool quad,
                                       unsigned*& index) {
     for (int k : {0, 1, 2}) *index++ = v[k];
-    m_triangle_patch.push_back(patch);
+    m_triangle_patch.push(false);
     if (quad) {
         for (int k : {0, 2, 3}) *index++ = v[k];
-        m_triangle_patch.push_back(patch);
+        m_triangle_patch.push(true);
+    }
+    if (m_triangle_patch[m_triangle_patch.size() - 1] != patch) {
+        throw std::logic_error("Embree scene: the patches' triangles are out of order");
     }
 }
 
@@ -177,7 +180,7 @@ EmbreeScene::EmbreeScene(const std::vector<Vec3>& points,
                                             std::to_string(points.size()));
             }
         }
-        m_triangle_patch.push_back(t);  // a soup's "patch" is the triangle itself
+        m_triangle_patch.push(false);  // a soup's "patch" is the triangle itself
     }
     if (points.empty()) lo = hi = Vec3::Zero();
     build(points.size(), triangles.size(), lo, hi, [&](float* vertex, unsigned* index) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "radiosity/patch.h"
+#include "radiosity/triangle_patches.h"
 
 namespace hmcr {
 
@@ -74,7 +75,7 @@ private:
                              unsigned*& index);
 
     std::unique_ptr<Impl> m_impl;
-    std::vector<std::uint32_t> m_triangle_patch;
+    TrianglePatches m_triangle_patch;
     double m_offset = 0;
 };
 
