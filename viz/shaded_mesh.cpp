@@ -65,11 +65,12 @@ class CreaseGrouping {
           m_blends(m_edges.edge_count, 0) {
         const double cos_crease = std::cos(crease_degrees * std::numbers::pi / 180.0);
         const PatchSet& set = h.patch_set();
-        std::vector<std::uint32_t> first_face(m_edges.edge_count, kNoCorner);
+        constexpr std::uint32_t kNoFace = ~std::uint32_t(0);
+        std::vector<std::uint32_t> first_face(m_edges.edge_count, kNoFace);
         for (std::uint32_t f = 0; f < m_edges.faces.size(); ++f) {
             for (int k = 0; k < m_vertices.corner_count(f); ++k) {
                 const std::uint32_t e = m_edges.faces[f][k];
-                if (first_face[e] == kNoCorner) {
+                if (first_face[e] == kNoFace) {
                     first_face[e] = f;
                     continue;
                 }
