@@ -3,7 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include <stdexcept>
 #include <vector>
 
 #include "meshes/scene.h"
@@ -46,15 +45,10 @@ TEST(Connectivity, QuadsWithTJunctionsAreTheMeshsOwn) {
 }
 
 TEST(Connectivity, TrianglesAndQuadsAreTheMeshsOwn) {
-    std::vector<TestPolygon> polys = inward_icosphere(2, 1.0, Rgb::Constant(0.5));
-    for (const TestPolygon& p : inward_box(Vec3(-0.3, -0.3, -0.3), Vec3(0.3, 0.3, 0.3), 3,
-                                           Rgb::Constant(0.5), Rgb::Zero())) {
-        polys.push_back(p);
-    }
-    expect_same_as_openmesh(make_patch_mesh(polys));
+    expect_same_as_openmesh(sphere_around_box());
 }
 
-// An edge shared by two faces has one number; a boundary edge has one face.
+// An edge shared by two faces has one number, the one of its first appearance.
 TEST(Connectivity, TwoTrianglesShareOneEdge) {
     FaceVertices v;
     v.vertex_count = 4;

@@ -107,4 +107,13 @@ std::vector<TestPolygon> inward_icosphere(int level, double radius, const Rgb& r
     return faces;
 }
 
+PatchMesh sphere_around_box() {
+    std::vector<TestPolygon> polys = inward_icosphere(2, 1.0, Rgb::Constant(0.5));
+    for (const TestPolygon& p : inward_box(Vec3(-0.3, -0.3, -0.3), Vec3(0.3, 0.3, 0.3), 2,
+                                           Rgb::Constant(0.5), Rgb::Zero())) {
+        polys.push_back(p);
+    }
+    return make_patch_mesh(polys);
+}
+
 }  // namespace hmcr::test

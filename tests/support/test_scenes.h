@@ -28,4 +28,8 @@ std::vector<TestPolygon> inward_box(const Vec3& lo, const Vec3& hi, int n, const
 // Icosahedron subdivided `level` times and projected on the sphere; faces point inward.
 std::vector<TestPolygon> inward_icosphere(int level, double radius, const Rgb& rho);
 
+// Triangles and quads in one mesh: the unit icosphere (level 2) around the box [-0.3, 0.3]^3
+// of 2 x 2 quads a face, which blocks segments across the sphere. Grey, no light.
+PatchMesh sphere_around_box();
+
 }  // namespace hmcr::test
