@@ -94,7 +94,7 @@ EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(std::make_u
                 for (int c = 0; c < 3; ++c) *vertex++ = float(p.corner[k][c]);
             }
             const unsigned v[4] = {base, base + 1, base + 2, base + 3};
-            add_patch_triangles(i, v, p.is_quad(), index);
+            add_patch_triangles(v, p.is_quad(), index);
             base += unsigned(p.corner_count);
         }
     });
@@ -128,7 +128,7 @@ EmbreeScene::EmbreeScene(const PatchSet& set) : m_impl(std::make_unique<Impl>())
                 }
                 for (int c = 0; c < 3; ++c) vertex[3 * v[k] + c] = float(p.corner[k][c]);
             }
-            add_patch_triangles(i, v.data(), p.is_quad(), index);
+            add_patch_triangles(v.data(), p.is_quad(), index);
         }
     });
 }
@@ -150,16 +150,12 @@ void EmbreeScene::build_patches(const std::vector<Patch>& patches, std::size_t v
     build(vertex_count, triangle_count, lo, hi, fill);
 }
 
-void EmbreeScene::add_patch_triangles(std::uint32_t patch, const unsigned* v, bool quad,
-                                      unsigned*& index) {
+void EmbreeScene::add_patch_triangles(const unsigned* v, bool quad, unsigned*& index) {
     for (int k : {0, 1, 2}) *index++ = v[k];
     m_triangle_patch.push(false);
     if (quad) {
         for (int k : {0, 2, 3}) *index++ = v[k];
         m_triangle_patch.push(true);
-    }
-    if (m_triangle_patch[m_triangle_patch.size() - 1] != patch) {
-        throw std::logic_error("Embree scene: the patches' triangles are out of order");
     }
 }
 

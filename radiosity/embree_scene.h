@@ -70,9 +70,9 @@ private:
     // build() for patches: their bounds, and the triangles add_patch_triangles() writes.
     void build_patches(const std::vector<Patch>& patches, std::size_t vertex_count,
                        const std::function<void(float*, unsigned*)>& fill);
-    // Patch `patch` with corners at vertices v: (v0, v1, v2), and (v0, v2, v3) for a quad.
-    void add_patch_triangles(std::uint32_t patch, const unsigned* v, bool quad,
-                             unsigned*& index);
+    // The next patch, with corners at vertices v: (v0, v1, v2), and (v0, v2, v3) for a quad.
+    // Patches are added in order: a triangle's patch follows from its number.
+    void add_patch_triangles(const unsigned* v, bool quad, unsigned*& index);
 
     std::unique_ptr<Impl> m_impl;
     TrianglePatches m_triangle_patch;
