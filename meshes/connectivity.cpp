@@ -13,19 +13,13 @@ FaceVertices face_vertices(const PatchMesh& mesh) {
     out.vertex_count = std::uint32_t(mesh.n_vertices());
     out.faces.reserve(mesh.n_faces());
     for (auto f : mesh.faces()) {
-        std::array<std::uint32_t, 4> v{kNoCorner, kNoCorner, kNoCorner, kNoCorner};
-        int n = 0;
-        for (auto fv : mesh.fv_range(f)) {
-            if (n == 4) {
-                n = 5;
-                break;
-            }
-            v[n++] = std::uint32_t(fv.idx());
-        }
-        if (n < 3 || n > 4) {
+        if (mesh.valence(f) < 3 || mesh.valence(f) > 4) {
             throw std::invalid_argument("face " + std::to_string(f.idx()) +
                                         " is not a triangle or a quad");
         }
+        std::array<std::uint32_t, 4> v{kNoCorner, kNoCorner, kNoCorner, kNoCorner};
+        int n = 0;
+        for (auto fv : mesh.fv_range(f)) v[n++] = std::uint32_t(fv.idx());
         out.faces.push_back(v);
     }
     return out;
@@ -41,7 +35,7 @@ FaceEdges face_edges(const FaceVertices& vertices) {
     }
     auto ends = [&](std::size_t side) {
         const auto& f = vertices.faces[side / 4];
-        const int n = f[3] == kNoCorner ? 3 : 4, k = int(side % 4);
+        const int n = vertices.corner_count(side / 4), k = int(side % 4);
         return std::pair(f[k], f[(k + 1) % n]);
     };
     auto is_side = [&](std::size_t side) {

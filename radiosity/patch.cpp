@@ -90,10 +90,11 @@ PatchSet build_patch_set(const PatchMesh& mesh) {
     set.patches.reserve(mesh.n_faces());
     for (auto f : mesh.faces()) {
         Patch p;
-        p.corner_count = 0;
-        for (auto v : mesh.fv_range(f)) {
-            const auto& pt = mesh.point(v);
-            p.corner[p.corner_count++] = Vec3(pt[0], pt[1], pt[2]);
+        p.corner_count = std::uint8_t(set.vertices.corner_count(f.idx()));
+        const auto& corners = set.vertices.faces[f.idx()];
+        for (int k = 0; k < p.corner_count; ++k) {
+            const auto& pt = mesh.point(PatchMesh::VertexHandle(int(corners[k])));
+            p.corner[k] = Vec3(pt[0], pt[1], pt[2]);
         }
         p.finalize();
         p.material = materials.index(f);
