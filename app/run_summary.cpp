@@ -67,7 +67,7 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
          {{"name", scene.name},
           {"source", scene.source.string()},
           {"mesh", scene.mesh_path.string()},
-          {"patches", solution.stats.patches},
+          {"patches", st.patches},
           {"strict", scene.strict},
           {"repairs", scene.repairs.to_json()},
           {"total_area_m2", st.total_area},

@@ -33,7 +33,7 @@ struct SolveStats {
     double epsilon = 0;              // the value used (the oracle's default if not given)
     int threads = 0;                 // worker threads used (by each rank)
     int ranks = 1;                   // MPI processes that shared the rays
-    std::size_t patches = 0;
+    std::size_t patches = 0;        // in the scene
     Rgb emitted_power = Rgb::Zero();
     double total_area = 0;          // of the patches, m^2
     double max_emitted_power = 0;   // of one patch, in its brightest channel, W

@@ -52,13 +52,13 @@ SolutionFile read_solution(const std::filesystem::path& vtp) {
 
 SolutionFile read_solution(const std::filesystem::path& vtp, const Scene& scene) {
     SolutionFile file = read_solution(vtp);
-    const std::string hash = geometry_hash(scene.mesh);
-    if (file.meta.patch_count != scene.mesh.n_faces() || file.meta.geometry_hash != hash) {
+    const SceneIdentity id = scene_identity(scene);
+    if (file.meta.patch_count != id.patches || file.meta.geometry_hash != id.geometry_hash) {
         throw InputError(vtp.string(), fmt::format("is a solution of scene {} ({} patches, "
                                                    "geometry {}), not of {} ({} patches, geometry {})",
                                                    quote(file.meta.scene), file.meta.patch_count,
-                                                   file.meta.geometry_hash, quote(scene.name),
-                                                   scene.mesh.n_faces(), hash));
+                                                   file.meta.geometry_hash, quote(id.name),
+                                                   id.patches, id.geometry_hash));
     }
     return file;
 }
