@@ -51,7 +51,6 @@ RowResult run_row(const RowSpec& spec) {
         const EmbreeScene embree(sol.hierarchy->patch_set());  // the solver's
         r.floor_seconds =
             solve_floor_seconds(embree, *sol.hierarchy, st.rays, st.lines_cast, kLines);
-        r.peak_bytes = peak_memory_bytes();
     }
     // Run to run, shooting times on this virtual machine vary by up to 30%: a solve of a few
     // seconds is run three times and its median time kept (the solution is the same each time).
@@ -61,6 +60,7 @@ RowResult run_row(const RowSpec& spec) {
         shooting.push_back(solve(scene.mesh, o).stats.shooting_seconds);
     }
     r.shooting_seconds = median(shooting);
+    r.peak_bytes = peak_memory_bytes();
     return r;
 }
 

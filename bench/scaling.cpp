@@ -1,7 +1,6 @@
 #include "bench/scaling.h"
 
 #include <spawn.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,7 +27,8 @@ struct Point {
     int threads;
 };
 
-// Runs `self --row ...` and returns its JSON row with the child's own peak memory.
+// Runs `self --row ...` and returns its JSON row, whose peak memory is the child's own. (The
+// kernel's ru_maxrss of a spawned child would count this process's memory too: common/memory.)
 nlohmann::json run_point(const std::string& self, const Point& p) {
     const std::string rays = std::to_string(p.rays), threads = std::to_string(p.threads);
     std::vector<std::string> args = {self, "--row", p.scene, kOracle, "nan", rays, threads};
@@ -51,14 +51,12 @@ nlohmann::json run_point(const std::string& self, const Point& p) {
     for (ssize_t n; (n = read(out[0], buffer, sizeof buffer)) > 0;) text.append(buffer, std::size_t(n));
     close(out[0]);
     int status = 0;
-    rusage usage{};
-    wait4(pid, &status, 0, &usage);
+    waitpid(pid, &status, 0);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         throw std::runtime_error(fmt::format("scaling point {} {} failed", p.scene, rays));
     }
     nlohmann::json row = nlohmann::json::parse(text);
     row["study"] = p.study;
-    row["peak_bytes"] = std::uint64_t(usage.ru_maxrss) * 1024;  // the child's whole life
     return row;
 }
 

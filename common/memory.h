@@ -8,7 +8,8 @@
 namespace hmcr {
 
 std::uint64_t physical_memory_bytes();  // installed RAM (0 if unknown)
-std::uint64_t peak_memory_bytes();      // peak resident memory of this process so far
+std::uint64_t peak_memory_bytes();      // peak resident memory of this process so far (its own,
+                                        // not its parent's: see memory.cpp)
 
 // Gives the pages of freed heap memory back to the system. After loading a large scene, the
 // allocator keeps the pages of the load's freed temporaries (100 MB at 10^6 patches), and the

@@ -1,11 +1,16 @@
 // The command line as a user meets it: bad input gets one line on stderr, exit code 2 and
 // no output file; a good run writes the .vtp and its JSON summary.
 #include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "meshes/scene.h"
 #include "radiosity/patch.h"
@@ -83,6 +88,33 @@ TEST_F(Cli, OraclesAndScenesAreListed) {
     EXPECT_NE(o.out.find("power"), std::string::npos);
     const CliRun s = hmcr("scenes");
     EXPECT_NE(s.out.find("cube-room"), std::string::npos);
+}
+
+// A sweep script that holds much memory starts each solve with posix_spawn, as Python's
+// subprocess does. The solve's summary must give its own peak, not the script's.
+TEST_F(Cli, PeakMemoryIsTheSolvesOwnNotItsParents) {
+    const std::string vtp = (m_dir / "p.vtp").string();
+    auto spawned_solve_peak = [&] {
+        std::vector<std::string> args = {HMCR_BINARY, "solve", "plates", "--rays", "20000",
+                                         "-q", "-o", vtp};
+        std::vector<char*> argv;
+        for (std::string& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        pid_t pid = 0;
+        EXPECT_EQ(posix_spawn(&pid, HMCR_BINARY, nullptr, nullptr, argv.data(), environ), 0);
+        int status = 0;
+        EXPECT_EQ(waitpid(pid, &status, 0), pid);
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+        return nlohmann::json::parse(read_file(m_dir / "p.json"))["memory"]["peak_bytes"]
+            .get<double>();
+    };
+    const double alone = spawned_solve_peak();
+    std::vector<char> held(std::size_t(512) << 20, 1);  // now resident in this process
+    const double beside = spawned_solve_peak();
+    EXPECT_GT(alone, 0);
+    // The same solve, so about the same peak; counting the parent would add about 512 MB.
+    EXPECT_LT(beside, alone + double(held.size()) / 2) << "the parent's memory was counted";
+    EXPECT_EQ(held[held.size() / 3], 1);  // still held while the solve ran
 }
 
 TEST_F(Cli, SolveWritesTheMeshAndASummaryWithCountsAndTimings) {
