@@ -34,14 +34,12 @@ struct SolveArgs {
     SceneFlags scene_flags;
 };
 
-// One solve at epsilon of the mesh's patches, or the probes of a budget search (each a full
-// solve that builds its patches from the mesh).
+// One solve at epsilon of the mesh's patches, or without them the probes of a budget search
+// (each a full solve that builds its patches from the mesh).
 BudgetResult solve_scene(const Scene& scene, std::optional<PatchSet> patches,
                          const SolveArgs& args, Progress& progress) {
     const Ranks& ranks = Ranks::world();
-    if (args.budget.leaves > 0) {
-        return solve_for_budget(scene.mesh, args.options, args.budget, progress, ranks);
-    }
+    if (!patches) return solve_for_budget(scene.mesh, args.options, args.budget, progress, ranks);
     progress.stage("shooting rays");
     BudgetResult out;
     out.solution = solve(std::move(*patches), args.options, progress, ranks);
