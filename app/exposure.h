@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "viz/image.h"
+#include "image/image.h"
 
 namespace CLI {
 class App;

@@ -2,7 +2,7 @@
 #include <fmt/core.h>
 
 #include "app/command.h"
-#include "viz/sampling/registry.h"
+#include "trace/criteria/registry.h"
 
 namespace hmcr {
 

@@ -16,7 +16,7 @@
 #include "common/memory.h"
 #include "common/output_paths.h"
 #include "common/stopwatch.h"
-#include "viz/density_map.h"
+#include "image/density_map.h"
 
 namespace hmcr {
 namespace {

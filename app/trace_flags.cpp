@@ -6,7 +6,7 @@
 
 #include "app/count.h"
 #include "common/error.h"
-#include "viz/sampling/registry.h"
+#include "trace/criteria/registry.h"
 
 namespace hmcr {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "meshes/scene.h"
-#include "viz/trace_image.h"
+#include "trace/trace_image.h"
 
 namespace hmcr {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "radiosity/embree_scene.h"
+#include "rays/embree_scene.h"
 #include "radiosity/hierarchy.h"
 
 namespace hmcr::bench {

@@ -12,7 +12,7 @@
 #include "bench/bench_row.h"
 #include "studies/montage.h"
 #include "studies/plot.h"
-#include "viz/image.h"
+#include "image/image.h"
 
 extern char** environ;
 

@@ -6,7 +6,7 @@
 
 #include "common/error.h"
 #include "common/interrupt.h"
-#include "radiosity/kernel.h"
+#include "rays/point_kernel.h"
 
 namespace hmcr {
 

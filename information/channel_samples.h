@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "common/progress.h"
-#include "radiosity/embree_scene.h"
-#include "radiosity/patch.h"
+#include "rays/embree_scene.h"
+#include "rays/patch.h"
 
 namespace hmcr {
 

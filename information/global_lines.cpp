@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "common/memory.h"
-#include "radiosity/rng.h"
-#include "radiosity/sampling.h"
+#include "rays/rng.h"
+#include "rays/sampling.h"
 #include "information/channel_samples.h"
 
 namespace hmcr {

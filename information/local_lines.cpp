@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "common/memory.h"
-#include "radiosity/kernel.h"
-#include "radiosity/rng.h"
-#include "radiosity/sampling.h"
+#include "rays/element_sampler.h"
+#include "rays/rng.h"
+#include "rays/sampling.h"
 #include "information/channel_samples.h"
 
 namespace hmcr {

@@ -22,8 +22,8 @@
 #include <cstddef>
 #include <nlohmann/json_fwd.hpp>
 
-#include "radiosity/embree_scene.h"
-#include "radiosity/patch.h"
+#include "rays/embree_scene.h"
+#include "rays/patch.h"
 #include "information/channel_samples.h"
 
 namespace hmcr {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "radiosity/domain.h"
+#include "rays/domain.h"
 #include "radiosity/power_quanta.h"
 #include "common/types.h"
 

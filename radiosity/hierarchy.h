@@ -11,7 +11,7 @@
 #include "common/error.h"
 #include "radiosity/element.h"
 #include "radiosity/element_arena.h"
-#include "radiosity/patch.h"
+#include "rays/patch.h"
 
 namespace hmcr {
 

@@ -9,8 +9,8 @@
 #include <chrono>
 #include <vector>
 
-#include "radiosity/kernel.h"
-#include "radiosity/rng.h"
+#include "radiosity/line_sampler.h"
+#include "rays/rng.h"
 
 namespace hmcr {
 namespace {

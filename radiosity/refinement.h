@@ -8,7 +8,7 @@
 
 #include "common/radix_sort.h"
 #include "oracles/oracle.h"
-#include "radiosity/embree_scene.h"
+#include "rays/embree_scene.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/link_cache.h"
 

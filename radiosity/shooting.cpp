@@ -10,9 +10,9 @@
 #include <optional>
 #include <vector>
 
-#include "radiosity/kernel.h"
-#include "radiosity/rng.h"
-#include "radiosity/sampling.h"
+#include "rays/element_sampler.h"
+#include "rays/rng.h"
+#include "rays/sampling.h"
 
 namespace hmcr {
 

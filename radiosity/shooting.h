@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "radiosity/alias_table.h"
+#include "rays/alias_table.h"
 #include "radiosity/refinement.h"
 
 namespace hmcr {

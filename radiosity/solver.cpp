@@ -11,7 +11,7 @@
 #include "common/interrupt.h"
 #include "common/stopwatch.h"
 #include "oracles/registry.h"
-#include "radiosity/embree_scene.h"
+#include "rays/embree_scene.h"
 #include "radiosity/link_cache.h"
 #include "radiosity/rank_merge.h"
 #include "radiosity/ray_schedule.h"

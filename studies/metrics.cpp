@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "studies/table_fields.h"
-#include "viz/tone_map.h"
+#include "image/tone_map.h"
 
 namespace hmcr {
 namespace {

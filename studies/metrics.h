@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "viz/image.h"
+#include "image/image.h"
 
 namespace hmcr {
 

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "viz/image.h"
+#include "image/image.h"
 
 namespace hmcr {
 

@@ -11,7 +11,7 @@
 #include <tuple>
 #include <vector>
 
-#include "radiosity/embree_scene.h"
+#include "rays/embree_scene.h"
 #include "viz/shaded_tracer.h"
 
 namespace hmcr {

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "viz/shaded_mesh.h"
+#include "radiosity/shaded_mesh.h"
 #include "viz/shaded_tracer.h"
 
 namespace hmcr {

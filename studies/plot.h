@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "viz/image.h"
+#include "image/image.h"
 
 namespace hmcr {
 

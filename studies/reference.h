@@ -21,10 +21,10 @@
 #include "meshes/scene.h"
 #include "radiosity/solver.h"
 #include "radiosity/truncation.h"
-#include "viz/image.h"
+#include "image/image.h"
 #include "studies/metrics.h"
 #include "studies/object_space_error.h"
-#include "viz/shaded_mesh.h"
+#include "radiosity/shaded_mesh.h"
 
 namespace hmcr {
 

@@ -11,12 +11,12 @@
 #include "common/error.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
-#include "radiosity/patch.h"
+#include "rays/patch.h"
 #include "studies/cell_handout.h"
 #include "studies/montage.h"
 #include "studies/traced_reference.h"
-#include "viz/density_map.h"
-#include "viz/sampling/registry.h"
+#include "image/density_map.h"
+#include "trace/criteria/registry.h"
 
 namespace hmcr {
 namespace {

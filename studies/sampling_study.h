@@ -38,7 +38,7 @@
 #include "common/progress.h"
 #include "meshes/scene.h"
 #include "studies/metrics.h"
-#include "viz/trace_image.h"
+#include "trace/trace_image.h"
 
 namespace hmcr {
 

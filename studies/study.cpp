@@ -11,7 +11,7 @@
 
 #include "meshes/scene.h"
 #include "oracles/registry.h"
-#include "radiosity/patch.h"
+#include "rays/patch.h"
 #include "radiosity/solver_settings.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
@@ -19,7 +19,7 @@
 #include "studies/cell_handout.h"
 #include "studies/reference.h"
 #include "studies/traced_reference.h"
-#include "viz/image.h"
+#include "image/image.h"
 #include "viz/paraview_collection.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"

@@ -13,7 +13,7 @@
 #include "studies/study.h"
 #include "studies/table_fields.h"
 #include "common/atomic_file.h"
-#include "viz/image.h"
+#include "image/image.h"
 
 namespace hmcr {
 namespace {

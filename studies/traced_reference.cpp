@@ -6,7 +6,7 @@
 #include "common/error.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
-#include "radiosity/patch.h"
+#include "rays/patch.h"
 #include "studies/reference.h"
 #include "viz/renderer.h"
 

@@ -23,8 +23,8 @@
 
 #include "common/progress.h"
 #include "meshes/scene.h"
-#include "viz/image.h"
-#include "viz/trace_image.h"
+#include "image/image.h"
+#include "trace/trace_image.h"
 
 namespace hmcr {
 

@@ -6,8 +6,9 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "viz/camera.h"
-#include "viz/tone_map.h"
+#include "image/camera.h"
+#include "image/tone_map.h"
+#include "viz/mesh_colors.h"
 
 namespace hmcr {
 namespace {

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "meshes/scene.h"
-#include "viz/image.h"
-#include "viz/shaded_mesh.h"
+#include "image/image.h"
+#include "radiosity/shaded_mesh.h"
 #include "viz/shaded_tracer.h"
 
 namespace hmcr {

@@ -14,9 +14,9 @@
 #include <optional>
 #include <vector>
 
-#include "radiosity/embree_scene.h"
+#include "rays/embree_scene.h"
 #include "common/types.h"
-#include "viz/shaded_mesh.h"
+#include "radiosity/shaded_mesh.h"
 
 namespace hmcr {
 

@@ -7,7 +7,7 @@
 
 #include "meshes/scene.h"
 #include "radiosity/solver.h"
-#include "viz/shaded_mesh.h"
+#include "radiosity/shaded_mesh.h"
 #include "viz/vtk_export.h"
 
 namespace hmcr {

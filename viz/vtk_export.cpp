@@ -25,7 +25,8 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
-#include "viz/tone_map.h"
+#include "image/tone_map.h"
+#include "viz/mesh_colors.h"
 #include "viz/vtk_console.h"
 
 #ifndef HMCR_VERSION

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "viz/shaded_mesh.h"
+#include "radiosity/shaded_mesh.h"
 
 namespace hmcr {
 

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "viz/shaded_mesh.h"
+#include "radiosity/shaded_mesh.h"
 #include "viz/vtk_export.h"
 
 namespace hmcr {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "meshes/scene.h"
-#include "radiosity/patch.h"
+#include "rays/patch.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/temp_dir.h"
 

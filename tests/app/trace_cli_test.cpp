@@ -7,7 +7,7 @@
 
 #include "tests/support/cli_run.h"
 #include "tests/support/temp_dir.h"
-#include "viz/image.h"
+#include "image/image.h"
 
 namespace hmcr::test {
 namespace {

@@ -2,7 +2,7 @@
 #include <cstdint>
 
 #include "tests/fuzz/fuzz_support.h"
-#include "viz/image.h"
+#include "image/image.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace hmcr::fuzz;

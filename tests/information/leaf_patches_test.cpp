@@ -9,7 +9,7 @@
 #include "tests/support/information.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
-#include "viz/shaded_mesh.h"
+#include "radiosity/shaded_mesh.h"
 
 namespace hmcr::test {
 namespace {

@@ -11,7 +11,7 @@
 #include <cmath>
 
 #include "oracles/registry.h"
-#include "radiosity/rng.h"
+#include "rays/rng.h"
 
 namespace hmcr::test {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "oracles/registry.h"
-#include "radiosity/rng.h"
+#include "rays/rng.h"
 
 namespace hmcr::test {
 namespace {

@@ -10,10 +10,12 @@
 
 #include <cmath>
 
-#include "radiosity/embree_scene.h"
+#include "rays/embree_scene.h"
 #include "radiosity/hierarchy.h"
-#include "radiosity/kernel.h"
-#include "radiosity/sampling.h"
+#include "radiosity/line_sampler.h"
+#include "rays/element_sampler.h"
+#include "rays/point_kernel.h"
+#include "rays/sampling.h"
 #include "tests/support/analytic.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"

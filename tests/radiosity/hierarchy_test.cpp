@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "radiosity/hierarchy.h"
-#include "radiosity/rng.h"
+#include "rays/rng.h"
 #include "tests/support/test_scenes.h"
 
 namespace hmcr::test {

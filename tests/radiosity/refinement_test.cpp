@@ -12,9 +12,9 @@
 
 #include "meshes/scene.h"
 #include "oracles/registry.h"
-#include "radiosity/embree_scene.h"
+#include "rays/embree_scene.h"
 #include "radiosity/refinement.h"
-#include "radiosity/rng.h"
+#include "rays/rng.h"
 #include "tests/support/test_scenes.h"
 
 namespace hmcr::test {

@@ -11,7 +11,7 @@
 #include "studies/reference.h"
 #include "studies/traced_reference.h"
 #include "tests/support/temp_dir.h"
-#include "viz/image.h"
+#include "image/image.h"
 
 namespace hmcr::test {
 namespace {

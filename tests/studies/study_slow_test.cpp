@@ -9,7 +9,7 @@
 #include "studies/reference.h"
 #include "studies/study.h"
 #include "tests/support/temp_dir.h"
-#include "viz/image.h"
+#include "image/image.h"
 
 namespace hmcr::test {
 namespace {

@@ -9,7 +9,7 @@
 // the realised counts.
 #pragma once
 
-#include "radiosity/patch.h"
+#include "rays/patch.h"
 #include "information/channel_samples.h"
 #include "information/scene_information.h"
 #include "tests/support/statistics.h"

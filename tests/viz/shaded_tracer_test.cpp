@@ -4,8 +4,8 @@
 
 #include <stdexcept>
 
-#include "radiosity/embree_scene.h"
-#include "tests/viz/image_checks.h"
+#include "rays/embree_scene.h"
+#include "tests/support/image_checks.h"
 
 namespace hmcr {
 namespace {

@@ -16,9 +16,9 @@
 #include <stdexcept>
 
 #include "tests/support/temp_dir.h"
-#include "tests/viz/viz_test_scenes.h"
+#include "tests/support/shaded_scenes.h"
 #include "common/atomic_file.h"
-#include "viz/tone_map.h"
+#include "viz/mesh_colors.h"
 
 namespace hmcr::test {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/temp_dir.h"
-#include "tests/viz/viz_test_scenes.h"
+#include "tests/support/shaded_scenes.h"
 #include "viz/vtk_export.h"
 
 namespace hmcr::test {

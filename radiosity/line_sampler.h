@@ -1,0 +1,18 @@
+// The line sampler of the line-based oracles (docs/design.md §4): N_s segments between
+// area-uniform points of two elements, each with its point-to-point kernel and visibility.
+#pragma once
+
+#include <span>
+
+#include "radiosity/hierarchy.h"
+#include "rays/embree_scene.h"
+#include "rays/rng.h"
+
+namespace hmcr {
+
+// Fills out[k] = F(x_k, y_k) for out.size() lines, x_k uniform on element i, y_k uniform on
+// element j, visibility from Embree (one coherent packet per 16 lines).
+void sample_kernel(const EmbreeScene& scene, const Hierarchy& hierarchy, const Element& i,
+                   const Element& j, Rng& rng, std::span<double> out);
+
+}  // namespace hmcr

@@ -1,0 +1,86 @@
+// Embree behind a small RAII facade: the rest of hmcr asks for first hits and visibility and
+// never touches RTC types. Quads are traced as two triangles; hits report the patch index.
+// A scene can also be built from a plain triangle soup (the renderer's Gouraud mesh): there a
+// "patch" is the triangle index, and first_hit_triangle() adds the hit's barycentric position.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "rays/patch.h"
+#include "rays/triangle_patches.h"
+
+namespace hmcr {
+
+struct Hit {
+    std::uint32_t patch = 0;
+    double distance = 0;  // along the (unit) direction
+};
+
+// A hit on a triangle of the soup: the hit point is (1 - u - v) p0 + u p1 + v p2 for the
+// triangle's vertices p0, p1, p2 in the order given (Embree's convention).
+struct TriangleHit {
+    std::uint32_t triangle = 0;
+    double u = 0, v = 0;
+    double distance = 0;  // along the (unit) direction
+};
+
+class EmbreeScene {
+public:
+    // Each patch's corners are vertices of their own.
+    explicit EmbreeScene(const std::vector<Patch>& patches);
+    // The same scene, the same hits, with the mesh's vertices shared by the patches that meet
+    // there: at 10^6 patches 13 MB of vertices instead of 50. The patches must have their mesh
+    // vertices (throws std::invalid_argument otherwise).
+    explicit EmbreeScene(const PatchSet& set);
+    // A triangle soup: indices into `vertices`. Degenerate triangles are allowed (never hit).
+    // Throws std::invalid_argument on an index out of range.
+    EmbreeScene(const std::vector<Vec3>& vertices,
+                const std::vector<std::array<unsigned, 3>>& triangles);
+    ~EmbreeScene();
+    EmbreeScene(const EmbreeScene&) = delete;
+    EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+    // First surface hit along a unit direction, ignoring hits closer than the self-hit offset.
+    std::optional<Hit> first_hit(const Vec3& origin, const Vec3& direction) const;
+    // first_hit() with the triangle and its barycentric coordinates (for a patch scene the
+    // triangle index counts the two triangles of each quad).
+    std::optional<TriangleHit> first_hit_triangle(const Vec3& origin, const Vec3& direction) const;
+    // Whether the open segment between two surface points is unoccluded.
+    bool visible(const Vec3& p, const Vec3& q) const;
+    // visible() for many segments at once, 16 per coherent packet (the segments of one element
+    // pair are coherent: SPEC section 4 line sampling).
+    void visible_many(std::span<const Vec3> p, std::span<const Vec3> q, std::span<bool> out) const;
+
+    double offset() const { return m_offset; }  // self-hit offset, metres
+
+    struct Impl;  // opaque: keeps RTC types out of this header
+
+private:
+    // The BVH of `triangle_count` triangles over `vertex_count` vertices, which fill(vertices,
+    // triangles) writes straight into Embree's buffers: 3 floats, 3 vertex indices each.
+    void build(std::size_t vertex_count, std::size_t triangle_count, const Vec3& lo,
+               const Vec3& hi, const std::function<void(float*, unsigned*)>& fill);
+
+    // build() for patches: their bounds, and the triangles add_patch_triangles() writes.
+    void build_patches(const std::vector<Patch>& patches, std::size_t vertex_count,
+                       const std::function<void(float*, unsigned*)>& fill);
+    // The next patch, with corners at vertices v: (v0, v1, v2), and (v0, v2, v3) for a quad.
+    // Patches are added in order: a triangle's patch follows from its number.
+    void add_patch_triangles(const unsigned* v, bool quad, unsigned*& index);
+
+    std::unique_ptr<Impl> m_impl;
+    TrianglePatches m_triangle_patch;
+    double m_offset = 0;
+};
+
+// Sets flush-to-zero and denormals-are-zero in the calling thread, as Embree recommends for
+// every thread that traces.
+void set_tracing_float_mode();
+
+}  // namespace hmcr

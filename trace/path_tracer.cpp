@@ -1,0 +1,136 @@
+#include "trace/path_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "rays/sampling.h"
+
+namespace hmcr {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double power_heuristic(double pdf, double other) { return pdf * pdf / (pdf * pdf + other * other); }
+
+// The hit point put back onto its patch's plane: Embree's float distance leaves it up to ~1e-7
+// of the path length off, and a point behind the surface would let a grazing bounce hit its own
+// patch from behind (a back face, so the path would be absorbed).
+Vec3 on_plane(const Patch& p, const Vec3& x) {
+    return x - p.normal * p.normal.dot(x - p.corner[0]);
+}
+
+}  // namespace
+
+struct PathTracer::Vertex {
+    Vec3 point;
+    std::uint32_t patch = 0;
+};
+
+std::string estimator_name(Estimator e) {
+    switch (e) {
+        case Estimator::nee:
+            return "nee";
+        case Estimator::bsdf:
+            return "bsdf";
+        default:
+            return "mis";
+    }
+}
+
+Estimator parse_estimator(const std::string& name) {
+    for (Estimator e : {Estimator::mis, Estimator::nee, Estimator::bsdf}) {
+        if (estimator_name(e) == name) return e;
+    }
+    throw std::invalid_argument("estimator must be mis, nee or bsdf, got '" + name + "'");
+}
+
+std::string PathOptions::to_string() const {
+    return "PathOptions{max_depth=" + std::to_string(max_depth) +
+           ", roulette_depth=" + std::to_string(roulette_depth) +
+           ", estimator=" + estimator_name(estimator) + "}";
+}
+
+PathTracer::PathTracer(const PatchSet& patches, const PathOptions& options)
+    : m_set(patches), m_scene(m_set.patches), m_lights(m_set), m_options(options) {
+    if (options.max_depth < 0 || options.roulette_depth < 1) {
+        throw std::invalid_argument("bad path options: " + options.to_string());
+    }
+}
+
+Rgb PathTracer::emitted(std::uint32_t patch) const {
+    return m_set.emission(m_set.patches[patch]) / kPi;
+}
+
+CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& rng) const {
+    CameraSample s;
+    s.rays = 1;
+    const auto hit = m_scene.first_hit(origin, direction);
+    if (!hit) return s;
+    const Patch& p = m_set.patches[hit->patch];
+    const double cos_eye = -p.normal.dot(direction);
+    if (cos_eye <= 0) return s;  // a back face: black
+    s.geometry = cos_eye / (hit->distance * hit->distance);
+    const Vertex v{on_plane(p, origin + hit->distance * direction), hit->patch};
+    s.radiance = emitted(hit->patch) + radiance(v, rng, s.rays);
+    return s;
+}
+
+// The reflected radiance leaving v towards the previous vertex, one path's estimate.
+Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
+    Rgb sum = Rgb::Zero(), beta = Rgb::Ones();
+    for (int bounce = 1; bounce <= m_options.max_depth; ++bounce) {
+        const Patch& p = m_set.patches[v.patch];
+        const Rgb& rho = m_set.reflectance(p);
+        if ((rho <= 0).all()) break;
+        if (m_options.estimator != Estimator::bsdf) {
+            sum += beta * rho * next_event(v, rng, rays);
+        }
+        const double xi1 = rng.uniform(), xi2 = rng.uniform();
+        const Vec3 wi = sample_cosine_hemisphere(p.normal, xi1, xi2);
+        beta *= rho;  // f cos / pdf = (rho / pi) cos / (cos / pi)
+        ++rays;
+        const auto hit = m_scene.first_hit(v.point, wi);
+        if (!hit) break;
+        const Patch& q = m_set.patches[hit->patch];
+        const double cos_q = -q.normal.dot(wi);
+        if (cos_q <= 0) break;  // a back face absorbs
+        const double pdf_light =
+            m_lights.pdf_area(hit->patch) * hit->distance * hit->distance / cos_q;
+        if (m_options.estimator == Estimator::bsdf || pdf_light == 0) {
+            sum += beta * emitted(hit->patch);
+        } else if (m_options.estimator == Estimator::mis) {
+            sum += beta * emitted(hit->patch) * power_heuristic(p.normal.dot(wi) / kPi, pdf_light);
+        }
+        v = {on_plane(q, v.point + hit->distance * wi), hit->patch};
+        if (bounce >= m_options.roulette_depth) {
+            const double survive = std::min(1.0, beta.maxCoeff());
+            if (rng.uniform() >= survive) break;
+            beta /= survive;
+        }
+    }
+    return sum;
+}
+
+// Next-event estimate of the irradiance at v from the emitters, divided by pi: the caller's
+// rho times it is the directly reflected radiance.
+Rgb PathTracer::next_event(const Vertex& v, Rng& rng, std::uint32_t& rays) const {
+    const double xi = rng.uniform(), xi1 = rng.uniform(), xi2 = rng.uniform();
+    const EmitterPoint e = m_lights.sample(m_set.patches, xi, xi1, xi2);
+    const Vec3 d = e.point - v.point;
+    const double r2 = d.squaredNorm();
+    if (!(r2 > 0)) return Rgb::Zero();
+    const Vec3 w = d / std::sqrt(r2);
+    const double cos_x = m_set.patches[v.patch].normal.dot(w);
+    const double cos_y = -m_set.patches[e.patch].normal.dot(w);
+    if (cos_x <= 0 || cos_y <= 0) return Rgb::Zero();
+    ++rays;
+    if (!m_scene.visible(v.point, e.point)) return Rgb::Zero();
+    const double weight = m_options.estimator == Estimator::mis
+                              ? power_heuristic(e.pdf_area * r2 / cos_y, cos_x / kPi)
+                              : 1.0;
+    return emitted(e.patch) * (weight * cos_x * cos_y / (r2 * kPi * e.pdf_area));
+}
+
+}  // namespace hmcr

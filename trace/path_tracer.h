@@ -1,0 +1,76 @@
+// A path tracer of the radiosity engine's scenes (issue 13): the same patches through the same
+// Embree facade, so that a traced image is an independent solution of the same light transport.
+//
+// Surfaces are Lambertian with reflectance rho; an emitter has radiance Le = E / pi (E its
+// emitted radiosity, pi Ke) from its front face only. Back faces of anything are black and
+// absorb, as in the radiosity engine, where a ray that hits a back face deposits nothing.
+//
+// The estimator of the radiance along a camera ray (Veach 1997, ch. 9; pbrt's path integrator):
+//   - next-event estimation: at every bounce one point y on the emitters (viz/emitter_sampler.h)
+//     and a shadow ray, contributing f cos_x cos_y Le / (r^2 p_A(y));
+//   - BSDF sampling: a cosine-distributed continuation, throughput times rho;
+//   - both kinds of path to an emitter weighed by the power heuristic (beta = 2) of their two
+//     densities in solid angle, p_bsdf = cos_x / pi and p_light = p_A(y) r^2 / cos_y;
+//   - Russian roulette from bounce `roulette_depth` on: continue with probability
+//     q = min(1, max channel of the throughput) and divide the throughput by q, which keeps the
+//     estimator unbiased;
+//   - at most `max_depth` bounces: paths with more reflections are cut, a bias below
+//     max_rho^(max_depth + 1) / (1 - max_rho) times the largest Le (2.6e-20 for the furnace).
+// Estimator::nee and Estimator::bsdf keep one of the two strategies alone (weight 1), for tests.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rays/embree_scene.h"
+#include "rays/patch.h"
+#include "rays/rng.h"
+#include "trace/emitter_sampler.h"
+
+namespace hmcr {
+
+enum class Estimator { mis, nee, bsdf };
+
+struct PathOptions {
+    int max_depth = 64;                    // bounces after the camera hit, >= 0
+    int roulette_depth = 3;                // Russian roulette from this bounce on, >= 1
+    Estimator estimator = Estimator::mis;  // how paths to emitters are found
+
+    std::string to_string() const;
+};
+
+// "mis", "nee", "bsdf"; parse_estimator throws std::invalid_argument on anything else.
+std::string estimator_name(Estimator e);
+Estimator parse_estimator(const std::string& name);
+
+// One camera ray's result: what the pixel sampling criteria see.
+struct CameraSample {
+    Rgb radiance = Rgb::Zero();  // W sr^-1 m^-2
+    double geometry = 0;         // cos(theta) / d^2 at the first hit (front faces; 0 otherwise)
+    std::uint32_t rays = 0;      // Embree queries cast, shadow rays included
+};
+
+class PathTracer {
+public:
+    // Throws std::invalid_argument on bad options or a scene where nothing emits.
+    PathTracer(const PatchSet& patches, const PathOptions& options);
+
+    // The caller's thread should have set_tracing_float_mode() (radiosity/embree_scene.h).
+    CameraSample trace(const Vec3& origin, const Vec3& direction, Rng& rng) const;
+
+    const PathOptions& options() const { return m_options; }
+
+private:
+    struct Vertex;  // a surface point a path reflects at
+    Rgb emitted(std::uint32_t patch) const;  // Le = E / pi
+    Rgb next_event(const Vertex& v, Rng& rng, std::uint32_t& rays) const;
+    Rgb radiance(Vertex v, Rng& rng, std::uint32_t& rays) const;
+
+    PatchSet m_set;
+    EmbreeScene m_scene;
+    EmitterSampler m_lights;
+    PathOptions m_options;
+};
+
+}  // namespace hmcr

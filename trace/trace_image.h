@@ -1,0 +1,72 @@
+// A path-traced image of a view (`hmcr trace`): the path tracer (viz/path_tracer.h) sampled
+// per pixel by a sampling criterion (viz/sampling/), uniformly or adaptively. With an adaptive
+// criterion the threshold is found for a mean number of samples per pixel
+// (viz/threshold_search.h) unless one is given. The image is the box-filtered mean radiance of
+// each pixel's samples and does not depend on the thread count.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "common/progress.h"
+#include "meshes/scene.h"
+#include "image/image.h"
+#include "trace/path_tracer.h"
+#include "trace/pixel_run.h"
+#include "trace/threshold_search.h"
+
+namespace hmcr {
+
+struct TraceOptions {
+    std::string sampler = "uniform";  // a criterion of viz/sampling/registry.cpp
+    double spp = 16;                  // mean samples per pixel: exact for uniform (a whole
+                                      // number), the search's target otherwise
+    double threshold = std::numeric_limits<double>::quiet_NaN();  // > 0: fixed, no search
+    double spp_tolerance = 0.02;  // accepted relative distance of the mean to spp
+    std::uint32_t max_spp = 0;    // most samples of one pixel, batch samplers; 0: 8 x spp
+    int tree_depth = 4;           // entropy samplers' quadtree depth limit, 1..12
+    std::uint64_t seed = 1;       // keys every sample's stream
+    int threads = 0;              // 0 = all cores; the image does not depend on it
+    // > 0: adaptive criteria see display values, radiance x this clamped to [0, 1]
+    // (viz/sampling/display_values.h); 0: physical radiance
+    double criterion_exposure = 0;
+    // Adaptive samplers: the image from fresh samples at the counts the criterion chose
+    // (fresh_image of viz/pixel_runs.h: unbiased, and about twice the rays)
+    bool fresh = false;
+    PathOptions path;
+
+    std::string to_string() const;
+};
+
+struct SampleCounts {
+    std::uint32_t min = 0, max = 0;
+    double mean = 0;
+};
+
+struct TraceResult {
+    Image image;                                                  // linear radiance
+    std::vector<std::uint32_t> samples;                           // per pixel, row-major
+    double threshold = std::numeric_limits<double>::quiet_NaN();  // used; NaN for uniform
+    std::vector<ThresholdProbe> probes;                           // of the search
+    std::uint64_t rays = 0;                                       // cast by the image's samples
+    std::uint64_t rays_traced = 0;  // also by samples the search took beyond the threshold
+    double seconds = 0;
+
+    SampleCounts counts() const;
+};
+
+// The most samples one pixel can get with these options (quadtree: 4^(depth + 1)).
+std::uint32_t max_samples_per_pixel(const TraceOptions& options);
+
+// Throws InputError on bad options: an unknown sampler (listing the valid ones), a target
+// outside what the sampler can give. Commands call it before any work; trace_image again.
+void validate_trace_options(const TraceOptions& options);
+
+// Throws InputError on bad options, SppNotReached when the search fails, and Interrupted
+// (common/interrupt.h) between pixels after a SIGINT or SIGTERM.
+TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceOptions& options,
+                        Progress& progress = no_progress());
+
+}  // namespace hmcr
