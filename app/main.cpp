@@ -70,6 +70,8 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         return fail(2, std::string(e.what()) + " (see hmcr --help)");
+    } catch (const InputError& e) {  // a name resolved where it is read: --oracle, --sampler
+        return fail(2, e.what());
     }
     for (const Command& c : commands) {
         if (!c.cli->parsed()) continue;

@@ -9,7 +9,7 @@ namespace hmcr {
 Command oracles_command(CLI::App& app) {
     auto* cmd = app.add_subcommand("oracles", "list the refinement oracles");
     return {cmd, [] {
-                for (const Oracle* o : all_oracles()) {
+                for (const Oracle* o : oracle_registry().all()) {
                     fmt::print("{:<8} {} (default epsilon {:g})\n", o->name(), o->description(),
                                o->default_epsilon());
                 }

@@ -9,7 +9,7 @@ namespace hmcr {
 Command samplers_command(CLI::App& app) {
     auto* cmd = app.add_subcommand("samplers", "list the pixel sampling criteria of `trace`");
     return {cmd, [] {
-                for (const Criterion* c : all_criteria()) {
+                for (const Criterion* c : criterion_registry().all()) {
                     fmt::print("{:<15} {}\n", c->name(), c->description());
                 }
                 return 0;

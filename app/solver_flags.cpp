@@ -23,13 +23,21 @@ const CLI::Validator& finite_number() {
 
 template <class T>
 CLI::Option* add_flag(CLI::App& command, const Setting<T>& s, T& field) {
-    CLI::Option* option = command.add_option(s.flag(), field, std::string(s.help));
-    if constexpr (std::is_same_v<T, std::uint64_t>) option->transform(count_notation());
-    if constexpr (std::is_floating_point_v<T>) {
-        option->check(finite_number());
-        if (std::isnan(field)) return option;  // "the oracle's": the help says so
+    if constexpr (NamedSetting<T>) {  // resolved here, where the name is read
+        return command
+            .add_option_function<std::string>(
+                s.flag(), [s, &field](const std::string& text) { field = parse_named(s, text); },
+                std::string(s.help))
+            ->default_str(std::string(SettingNames<T>::name(field)));
+    } else {
+        CLI::Option* option = command.add_option(s.flag(), field, std::string(s.help));
+        if constexpr (std::is_same_v<T, std::uint64_t>) option->transform(count_notation());
+        if constexpr (std::is_floating_point_v<T>) {
+            option->check(finite_number());
+            if (std::isnan(field)) return option;  // "the oracle's": the help says so
+        }
+        return option->capture_default_str();
     }
-    return option->capture_default_str();
 }
 
 }  // namespace

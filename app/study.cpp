@@ -11,6 +11,7 @@
 
 #include "app/command.h"
 #include "app/count.h"
+#include "app/named_list.h"
 #include "app/scene_input.h"
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
@@ -18,6 +19,7 @@
 #include "common/output_paths.h"
 #include "studies/sampling_study.h"
 #include "studies/study.h"
+#include "trace/criteria/registry.h"
 
 namespace hmcr {
 namespace {
@@ -89,7 +91,7 @@ int run_sampling_study_command(StudyArgs& a) {
     o.trace.seed = a.options.solver.seed;
     o.trace.threads = a.options.solver.threads;
     o.redo_other_settings = a.options.redo_other_settings;
-    o.samplers = split_commas(a.samplers);
+    o.samplers = named_list(criterion_registry(), split_commas(a.samplers));
     apply_trace_flags(a.trace_flags, o.trace);
     validate_sampling_study(o);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
@@ -102,7 +104,7 @@ int run_sampling_study_command(StudyArgs& a) {
 
 int run_meshing_study(StudyArgs& a) {
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
-    a.options.oracles = split_commas(a.oracles);
+    a.options.oracles = named_list(oracle_registry(), split_commas(a.oracles));
     if (!a.mesh_rays.empty()) {
         const auto rays = parse_count(a.mesh_rays);
         if (!rays || *rays > kMaxRays) {

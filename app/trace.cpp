@@ -51,7 +51,7 @@ nlohmann::json summary(const TraceArgs& a, const Scene& scene, const View& view,
             {"view", view.name},
             {"width", view.width},
             {"height", view.height},
-            {"sampler", o.sampler},
+            {"sampler", o.sampler->name()},
             {"spp",
              {{"target", o.spp},
               {"achieved", c.mean},
@@ -118,7 +118,7 @@ int run_trace(TraceArgs& a, const std::string& command_line) {
                           summary(a, scene, view, r, exposure, command_line).dump(2) + "\n");
     if (!a.quiet) {
         fmt::print("{} {}: {} at {:.2f} samples per pixel, {} rays, {:.1f} s -> {}\n", scene.name,
-                   view.name, a.options.sampler, r.counts().mean, r.rays_traced, r.seconds,
+                   view.name, a.options.sampler->name(), r.counts().mean, r.rays_traced, r.seconds,
                    png.string());
     }
     return 0;

@@ -17,8 +17,12 @@ bool wanted(const std::set<std::string>& except, const std::string& name) {
 
 void add_sampling_flags(CLI::App& cmd, TraceOptions& o, const std::set<std::string>& except) {
     if (wanted(except, "sampler")) {
-        cmd.add_option("--sampler", o.sampler, "pixel sampling criterion (`hmcr samplers`)")
-            ->capture_default_str();
+        // Resolved here, where the name is read.
+        cmd.add_option_function<std::string>(
+               "--sampler",
+               [&o](const std::string& name) { o.sampler = &find_named(criterion_registry(), name); },
+               "pixel sampling criterion (`hmcr samplers`)")
+            ->default_str(std::string(o.sampler->name()));
     }
     if (wanted(except, "spp")) {
         cmd.add_option("--spp", o.spp,
@@ -72,7 +76,6 @@ void add_trace_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
 }
 
 void apply_trace_flags(const TraceFlags& flags, TraceOptions& o) {
-    find_criterion(o.sampler);  // an unknown name lists the valid ones
     try {
         o.path.estimator = parse_estimator(flags.estimator);
     } catch (const std::invalid_argument& e) {

@@ -28,7 +28,7 @@ struct TraceReferenceArgs {
 
 int run_trace_reference(TraceReferenceArgs& a, const std::string& command_line) {
     apply_trace_flags(a.flags, a.options);
-    a.options.sampler = "uniform";
+    a.options.sampler = &uniform_criterion();
     validate_trace_options(a.options);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     const std::filesystem::path dir(a.output);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench/embree_floor.h"
+#include "common/error.h"
 #include "common/memory.h"
 #include "common/stopwatch.h"
 #include "meshes/scene.h"
@@ -26,7 +27,7 @@ RowResult run_row(const RowSpec& spec) {
     const Scene scene = load_scene(spec.scene);
     r.load_seconds = seconds_since(start);
     SolverOptions o;
-    o.oracle = spec.oracle;
+    o.oracle = &find_named(oracle_registry(), spec.oracle);
     o.epsilon = spec.epsilon;
     o.rays = spec.rays;
     o.lines = kLines;

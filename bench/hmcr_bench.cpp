@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     const std::string results = take_flag(argc, argv, "--results");
     const std::string scaling = take_flag(argc, argv, "--scaling");
     for (const char* scene : {"cornell", "cube-room"}) {
-        for (const hmcr::Oracle* o : hmcr::all_oracles()) {
+        for (const hmcr::Oracle* o : hmcr::oracle_registry().all()) {
             const std::string oracle(o->name());
             if (!kEpsilon.count({scene, oracle})) continue;
             benchmark::RegisterBenchmark((std::string(scene) + "/" + oracle).c_str(), bench_solve,

@@ -7,7 +7,6 @@
 #include <optional>
 #include <stdexcept>
 
-#include "oracles/registry.h"
 #include "radiosity/solver_settings.h"
 
 namespace hmcr {
@@ -91,7 +90,7 @@ BudgetResult Search::run() {
         fail(fmt::format("the scene has {} patches, the fewest leaves a solve can have", patches));
     }
     const double start = std::isnan(m_options.epsilon)
-                             ? find_oracle(m_options.oracle).default_epsilon()
+                             ? m_options.oracle->default_epsilon()
                              : m_options.epsilon;
     double x = std::log(start);
     for (int k = 0; k < m_budget.max_probes; ++k) {

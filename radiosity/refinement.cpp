@@ -19,7 +19,7 @@ namespace {
 // The papers write it with the total radiosity B_j, as RenderPark's power oracle weighs; hmcr's
 // first choice was the unshot Delta B_j, which refines later iterations much less.
 double link_weight(const RefinementContext& ctx, const Element& receiver, const Element& source) {
-    const Rgb& b = ctx.total_weight ? source.radiosity : source.unshot;
+    const Rgb& b = ctx.link_weight == LinkWeight::total ? source.radiosity : source.unshot;
     const Hierarchy& h = ctx.hierarchy;
     return (h.patch_set().reflectance(h.patch(receiver)) * b).maxCoeff();
 }

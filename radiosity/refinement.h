@@ -11,9 +11,11 @@
 #include "rays/embree_scene.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/link_cache.h"
+#include "radiosity/solver_options.h"
 
 namespace hmcr {
 
+// What every descent of a solve shares. Built with designated initialisers (.oracle = ...).
 struct RefinementContext {
     Hierarchy& hierarchy;
     const Oracle& oracle;
@@ -23,7 +25,7 @@ struct RefinementContext {
     std::uint64_t seed = 0;
     LinkCache* cache = nullptr;  // geometric factors of line-based oracles; none: recompute
     bool fixed_mesh = false;     // deposit on the existing leaf at the hit, ask no oracle
-    bool total_weight = false;   // w_ij from the source's B (RenderPark's), else its Delta B
+    LinkWeight link_weight = LinkWeight::unshot;  // w_ij from the source's Delta B or B
 };
 
 struct RefinementCounters {

@@ -10,7 +10,6 @@
 #include "common/error.h"
 #include "common/interrupt.h"
 #include "common/stopwatch.h"
-#include "oracles/registry.h"
 #include "rays/embree_scene.h"
 #include "radiosity/link_cache.h"
 #include "radiosity/rank_merge.h"
@@ -64,7 +63,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     Solution sol;
     sol.options = options;
     SolveStats& st = sol.stats;
-    const Oracle& oracle = find_oracle(options.oracle);
+    const Oracle& oracle = *options.oracle;
     st.epsilon = std::isnan(options.epsilon) ? oracle.default_epsilon() : options.epsilon;
     st.threads = threads;
     st.ranks = ranks.size();
@@ -86,15 +85,15 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     }
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
-    const RefinementContext ctx{h,
-                                oracle,
-                                scene,
-                                st.epsilon * h.patch_set().max_emitted_power,
-                                options.lines,
-                                options.seed,
-                                cache.get(),
-                                fixed_mesh,
-                                options.link_weight == "total"};
+    const RefinementContext ctx{.hierarchy = h,
+                                .oracle = oracle,
+                                .scene = scene,
+                                .threshold = st.epsilon * h.patch_set().max_emitted_power,
+                                .lines = options.lines,
+                                .seed = options.seed,
+                                .cache = cache.get(),
+                                .fixed_mesh = fixed_mesh,
+                                .link_weight = options.link_weight};
     st.setup_seconds = seconds_since(start);
 
     const double emitted = channel_sum(st.emitted_power);

@@ -13,7 +13,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "oracles/registry.h"
 
@@ -21,9 +23,35 @@ namespace hmcr {
 
 enum class SettingScope { scene_file, command_line, internal };
 
+// The refinement oracle of a solve, resolved from its name where the name is read.
+using OracleRef = const Oracle*;
+const Oracle* default_oracle();  // kl
+
+// The weight w_ij of a link: the receiver's reflectance times the source's unshot radiosity
+// (Delta B) or its total radiosity (B, RenderPark's), docs/design.md §4.4.
+enum class LinkWeight { unshot, total };
+std::string_view name(LinkWeight weight);  // "unshot", "total"
+
+// Settings whose values are names (flags, scene files and summaries spell them): parse gives
+// none for a name that is not one.
+template <class T>
+struct SettingNames;
+template <>
+struct SettingNames<OracleRef> {
+    static std::optional<OracleRef> parse(std::string_view name);
+    static std::string_view name(OracleRef oracle) { return oracle->name(); }
+};
+template <>
+struct SettingNames<LinkWeight> {
+    static std::optional<LinkWeight> parse(std::string_view name);
+    static std::string_view name(LinkWeight weight) { return hmcr::name(weight); }
+};
+template <class T>
+concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
+
 // clang-format off
 #define HMCR_SOLVER_SETTINGS(X)                                                                   \
-    X(std::string,   oracle,    "kl",       is_oracle_name(v),       "one of " + oracle_names(),       \
+    X(OracleRef,     oracle,    default_oracle(), v != nullptr,      "one of " + oracle_registry().names(),  \
       scene_file, "refinement oracle (`hmcr oracles` lists them)")                                \
     X(double,        epsilon,   kOracleDefault, std::isnan(v) || v > 0, "positive",             \
       scene_file, "refinement threshold; a link is accepted when value / Phi_max < epsilon "     \
@@ -40,7 +68,7 @@ enum class SettingScope { scene_file, command_line, internal };
       scene_file, "elements at or below this area, relative to the total, are not split")        \
     X(int,           max_depth, 16,         v >= 0 && v <= 24,       "in 0..24",                  \
       scene_file, "quadtree depth limit")                                                        \
-    X(std::string,   link_weight, "unshot", v == "unshot" || v == "total", "unshot or total",  \
+    X(LinkWeight,    link_weight, LinkWeight::unshot, true,           "unshot or total",            \
       scene_file, "a link's weight w_ij: the receiver's reflectance times the source's unshot "  \
                   "(Delta B) or total (B) radiosity")                                           \
     X(double,        stop,      0.01,       v > 0 && v < 1,          "in (0, 1)",                 \
@@ -64,7 +92,6 @@ std::uint64_t default_max_elements();
 // epsilon's default: the oracle's own (Oracle::default_epsilon).
 inline constexpr double kOracleDefault = std::numeric_limits<double>::quiet_NaN();
 
-bool is_oracle_name(const std::string& name);
 
 struct SolverOptions {
 #define HMCR_FIELD(type, name, default_value, ...) type name = default_value;

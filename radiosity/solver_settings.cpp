@@ -10,7 +10,6 @@
 #include "common/error.h"
 #include "common/memory.h"
 #include "radiosity/element.h"
-#include "oracles/registry.h"
 
 namespace hmcr {
 namespace {
@@ -22,6 +21,11 @@ template <class T>
 std::string shown(const T& value) {
     if constexpr (std::is_same_v<T, std::string>) {
         return quote(value);
+    } else if constexpr (NamedSetting<T>) {
+        if constexpr (std::is_pointer_v<T>) {
+            if (value == nullptr) return "none";
+        }
+        return quote(SettingNames<T>::name(value));
     } else {
         return fmt::format("{}", value);
     }
@@ -35,10 +39,13 @@ std::string got(const json& j) {
 
 // The JSON value as T, or a one-line reason it is not one.
 template <class T>
-T json_value(const json& j) {
+T json_value([[maybe_unused]] const Setting<T>& s, const json& j) {
     if constexpr (std::is_same_v<T, std::string>) {
         if (!j.is_string()) throw InputError("must be a string");
         return j.get<std::string>();
+    } else if constexpr (NamedSetting<T>) {
+        if (!j.is_string()) throw InputError("must be a string");
+        return parse_named(s, j.get<std::string>());
     } else if constexpr (std::is_floating_point_v<T>) {
         if (!j.is_number() || !std::isfinite(j.get<double>())) {
             throw InputError("must be a finite number" + got(j));
@@ -62,12 +69,16 @@ T json_value(const json& j) {
     }
 }
 
+// "min-area must be in [0, 1), got 2".
+[[noreturn]] void refuse(std::string_view setting, std::string_view range, std::string_view got) {
+    std::string name(setting);
+    std::replace(name.begin(), name.end(), '_', '-');
+    throw InputError(fmt::format("{} must be {}, got {}", name, range, got));
+}
+
 template <class T>
 void check(const Setting<T>& s, const T& value) {
-    if (s.valid(value)) return;
-    std::string name(s.name);
-    std::replace(name.begin(), name.end(), '_', '-');
-    throw InputError(fmt::format("{} must be {}, got {}", name, s.range, shown(value)));
+    if (!s.valid(value)) refuse(s.name, s.range, shown(value));
 }
 
 }  // namespace
@@ -78,12 +89,36 @@ std::string Setting<T>::flag() const {
     std::replace(f.begin(), f.end(), '_', '-');
     return f;
 }
-template struct Setting<std::string>;
+template struct Setting<OracleRef>;
+template struct Setting<LinkWeight>;
 template struct Setting<double>;
 template struct Setting<int>;
 template struct Setting<std::uint64_t>;
 
-bool is_oracle_name(const std::string& name) { return oracle_named(name) != nullptr; }
+template <NamedSetting T>
+T parse_named(const Setting<T>& s, std::string_view text) {
+    if (const std::optional<T> value = SettingNames<T>::parse(text)) return *value;
+    refuse(s.name, s.range, quote(text));
+}
+template OracleRef parse_named(const Setting<OracleRef>&, std::string_view);
+template LinkWeight parse_named(const Setting<LinkWeight>&, std::string_view);
+
+const Oracle* default_oracle() { return oracle_registry().find("kl"); }
+
+std::optional<OracleRef> SettingNames<OracleRef>::parse(std::string_view name) {
+    if (const Oracle* o = oracle_registry().find(name)) return o;
+    return std::nullopt;
+}
+
+std::optional<LinkWeight> SettingNames<LinkWeight>::parse(std::string_view name) {
+    if (name == "unshot") return LinkWeight::unshot;
+    if (name == "total") return LinkWeight::total;
+    return std::nullopt;
+}
+
+std::string_view name(LinkWeight weight) {
+    return weight == LinkWeight::total ? "total" : "unshot";
+}
 
 std::uint64_t default_max_elements() {
     const std::uint64_t memory = physical_memory_bytes();
@@ -108,7 +143,7 @@ void apply_scene_settings(const json& solver, const std::string& where, SolverOp
             if (!solver.contains(key)) return;
             const std::string place = fmt::format("{}: solver.{}", where, setting.name);
             try {
-                field = json_value<T>(solver.at(key));
+                field = json_value<T>(setting, solver.at(key));
                 check(setting, field);
             } catch (const InputError& e) {
                 throw InputError(place, e.what());
@@ -125,8 +160,16 @@ void apply_scene_settings(const json& solver, const std::string& where, SolverOp
 
 json settings_json(const SolverOptions& options) {
     json j = json::object();
-    for_each_setting([&](const auto& setting, const auto& value) { j[std::string(setting.name)] = value; },
-                     options);
+    for_each_setting(
+        [&](const auto& setting, const auto& value) {
+            using T = std::remove_cvref_t<decltype(value)>;
+            if constexpr (NamedSetting<T>) {
+                j[std::string(setting.name)] = std::string(SettingNames<T>::name(value));
+            } else {
+                j[std::string(setting.name)] = value;
+            }
+        },
+        options);
     return j;
 }
 

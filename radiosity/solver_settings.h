@@ -34,6 +34,11 @@ void for_each_setting(F&& f, Options&... options) {
 #undef HMCR_VISIT
 }
 
+// The value a name stands for; throws InputError "NAME must be RANGE, got 'TEXT'" for a name
+// that is none (a flag's or a scene file's text).
+template <NamedSetting T>
+T parse_named(const Setting<T>& setting, std::string_view text);
+
 // Throws InputError "NAME must be RANGE, got VALUE" for the first setting out of range.
 void validate(const SolverOptions& options);
 

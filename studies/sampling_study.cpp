@@ -24,28 +24,16 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-std::vector<std::string> expand_samplers(const std::vector<std::string>& names) {
-    std::vector<std::string> out;
-    for (const std::string& n : names) {
-        if (n == "all") {
-            for (const Criterion* c : all_criteria()) out.emplace_back(c->name());
-        } else {
-            out.emplace_back(find_criterion(n).name());  // an unknown name lists the valid ones
+void validate(const SamplingStudyOptions& o) {
+    if (o.samplers.empty()) throw InputError("study: no sampler given");
+    for (auto it = o.samplers.begin(); it != o.samplers.end(); ++it) {
+        if (std::find(o.samplers.begin(), it, *it) != it) {
+            throw InputError(fmt::format("study: sampler {} is given twice", (*it)->name()));
         }
     }
-    if (out.empty()) throw InputError("study: no sampler given");
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        if (std::count(out.begin(), out.begin() + std::ptrdiff_t(i), out[i])) {
-            throw InputError(fmt::format("study: sampler {} is given twice", out[i]));
-        }
-    }
-    return out;
-}
-
-void validate(const SamplingStudyOptions& o, const std::vector<std::string>& samplers) {
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
     if (o.output.empty()) throw InputError("study: no output folder given");
-    for (const std::string& s : samplers) {
+    for (const Criterion* s : o.samplers) {
         TraceOptions t = o.trace;
         t.sampler = s;
         validate_trace_options(t);  // the spp target each sampler can reach
@@ -53,7 +41,7 @@ void validate(const SamplingStudyOptions& o, const std::vector<std::string>& sam
 }
 
 struct CellTask {
-    std::string sampler;
+    const Criterion* sampler = nullptr;
     std::uint64_t seed = 0;
     std::string name;
 };
@@ -79,7 +67,6 @@ private:
     const Scene& m_scene;
     const SamplingStudyOptions& m_options;
     Progress& m_progress;
-    std::vector<std::string> m_samplers;
     std::vector<CellTask> m_tasks;
     nlohmann::json m_settings;
     std::map<std::string, TracedView> m_reference;
@@ -88,12 +75,13 @@ private:
 };
 
 SamplingStudy::SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, Progress& progress)
-    : m_scene(scene), m_options(o), m_progress(progress), m_samplers(expand_samplers(o.samplers)) {
-    validate(o, m_samplers);
-    for (const std::string& s : m_samplers)
+    : m_scene(scene), m_options(o), m_progress(progress) {
+    validate(o);
+    for (const Criterion* s : o.samplers)
         for (int k = 0; k < o.seeds; ++k) {
             const std::uint64_t seed = o.trace.seed + std::uint64_t(k);
-            m_tasks.push_back({s, seed, sampling_cell_name(scene.name, s, o.trace.spp, seed)});
+            m_tasks.push_back(
+                {s, seed, sampling_cell_name(scene.name, std::string(s->name()), o.trace.spp, seed)});
         }
     m_settings = sampling_study_settings(scene, o);
 }
@@ -103,7 +91,7 @@ std::optional<SamplingCell> SamplingStudy::previous_cell(std::size_t index) {
     CellFileRule<SamplingCell> rule;
     rule.parse = sampling_cell_from_json;
     rule.is_this_cell = [&](const SamplingCell& c) {
-        return c.scene == m_scene.name && c.sampler == t.sampler && c.spp == m_options.trace.spp &&
+        return c.scene == m_scene.name && c.sampler == t.sampler->name() && c.spp == m_options.trace.spp &&
                c.seed == t.seed;
     };
     rule.settings = m_settings;
@@ -137,7 +125,8 @@ void SamplingStudy::run() {
 
 ErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cells) const {
     ErrorSplits splits;
-    for (const std::string& s : m_samplers) {
+    for (const Criterion* sampler : m_options.samplers) {
+        const std::string s(sampler->name());
         for (const View& v : m_scene.views) {
             std::vector<Image8> images;
             for (const SamplingCell& c : cells) {
@@ -154,7 +143,7 @@ ErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cells) 
 
 SamplingCell SamplingStudy::compute(std::size_t index) {
     const CellTask& t = m_tasks[index];
-    SamplingCell cell{m_scene.name, t.sampler, m_options.trace.spp, t.seed, m_settings, "ok", "",
+    SamplingCell cell{m_scene.name, std::string(t.sampler->name()), m_options.trace.spp, t.seed, m_settings, "ok", "",
                       {}, 0};
     const auto start = Clock::now();
     for (const View& v : m_scene.views) {
@@ -201,9 +190,9 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
 void SamplingStudy::write_figures(const View& view) const {
     const Image8& ref = m_reference8.at(view.name);
     std::vector<Image8> images{ref}, maps;
-    for (const std::string& s : m_samplers) {
+    for (const Criterion* sampler : m_options.samplers) {
         const std::string name =
-            sampling_cell_name(m_scene.name, s, m_options.trace.spp, m_options.trace.seed) + "-" +
+            sampling_cell_name(m_scene.name, std::string(sampler->name()), m_options.trace.spp, m_options.trace.seed) + "-" +
             view.name + ".png";
         const bool ok = fs::exists(file("images", name)) && fs::exists(file("density", name));
         Image8 blank(ref.width, ref.height);
@@ -224,7 +213,7 @@ std::string sampling_cell_name(const std::string& scene, const std::string& samp
 }
 
 void validate_sampling_study(const SamplingStudyOptions& options) {
-    validate(options, expand_samplers(options.samplers));
+    validate(options);
 }
 
 nlohmann::json sampling_study_settings(const Scene& scene, const SamplingStudyOptions& o) {

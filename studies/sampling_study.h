@@ -44,7 +44,7 @@ namespace hmcr {
 
 struct SamplingStudyOptions {
     std::filesystem::path reference;           // a reference folder of either kind
-    std::vector<std::string> samplers{"all"};  // names; "all" expands to every criterion
+    std::vector<const Criterion*> samplers = criterion_registry().all();
     int seeds = 3;                             // trace.seed .. trace.seed + seeds - 1
     TraceOptions trace;                        // every cell's; sampler and seed set per cell
     // Adaptive criteria judge display values (TraceOptions::criterion_exposure), at the

@@ -48,22 +48,6 @@ StudyReference load_reference(const std::filesystem::path& dir, const Scene& sce
     return ref;
 }
 
-std::vector<std::string> expand_oracles(const std::vector<std::string>& names) {
-    std::vector<std::string> out;
-    for (const std::string& n : names) {
-        if (n == "all") {
-            for (const Oracle* o : all_oracles()) out.emplace_back(o->name());
-        } else {
-            if (!oracle_named(n)) {
-                throw InputError(fmt::format("unknown oracle {} (valid: {})", quote(n),
-                                             oracle_names()));
-            }
-            out.push_back(n);
-        }
-    }
-    return out;
-}
-
 // "study: budget 500 is given twice".
 template <class T>
 void refuse_repeats(const std::vector<T>& values, const char* what) {
@@ -74,12 +58,14 @@ void refuse_repeats(const std::vector<T>& values, const char* what) {
     }
 }
 
-void validate(const StudyOptions& o, const std::vector<std::string>& oracles) {
+void validate(const StudyOptions& o) {
     if (o.budgets.empty()) throw InputError("study: no budget given");
-    if (oracles.empty()) throw InputError("study: no oracle given");
+    if (o.oracles.empty()) throw InputError("study: no oracle given");
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
     refuse_repeats(o.budgets, "budget");
-    refuse_repeats(oracles, "oracle");
+    std::vector<std::string_view> names;
+    for (const Oracle* oracle : o.oracles) names.push_back(oracle->name());
+    refuse_repeats(names, "oracle");
     if (o.output.empty()) throw InputError("study: no output folder given");
     validate(o.solver);
     for (std::size_t b : o.budgets) {
@@ -92,7 +78,7 @@ void validate(const StudyOptions& o, const std::vector<std::string>& oracles) {
 
 // One cell to run, and where its result lives.
 struct CellTask {
-    std::string oracle;
+    const Oracle* oracle = nullptr;
     std::size_t budget = 0;
     std::uint64_t seed = 0;
     std::string name;
@@ -103,14 +89,14 @@ public:
     StudyRunner(const Scene& scene, const StudyOptions& o, Progress& progress)
         : m_options(o),
           m_progress(progress),
-          m_scene(scene),
-          m_oracles(expand_oracles(o.oracles)) {
-        validate(o, m_oracles);
+          m_scene(scene) {
+        validate(o);
         for (std::size_t b : o.budgets)
-            for (const std::string& oracle : m_oracles)
+            for (const Oracle* oracle : o.oracles)
                 for (int s = 0; s < o.seeds; ++s) {
                     const std::uint64_t seed = o.solver.seed + std::uint64_t(s);
-                    m_tasks.push_back({oracle, b, seed, cell_name(m_scene.name, oracle, b, seed)});
+                    m_tasks.push_back({oracle, b, seed,
+                                       cell_name(m_scene.name, std::string(oracle->name()), b, seed)});
                 }
         m_error_options = reflected_error_options(m_scene.mesh);
         m_settings = study_settings(m_scene, m_options);
@@ -132,7 +118,6 @@ private:
     const StudyOptions& m_options;
     Progress& m_progress;
     const Scene& m_scene;
-    std::vector<std::string> m_oracles;
     std::vector<CellTask> m_tasks;
     ObjectErrorOptions m_error_options;
     nlohmann::json m_settings;
@@ -148,7 +133,7 @@ std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
     CellFileRule<CellResult> rule;
     rule.parse = [](const nlohmann::json& j) { return cell_from_json(j); };
     rule.is_this_cell = [&](const CellResult& c) {
-        return c.scene == m_scene.name && c.oracle == t.oracle && c.budget == t.budget &&
+        return c.scene == m_scene.name && c.oracle == t.oracle->name() && c.budget == t.budget &&
                c.seed == t.seed;
     };
     rule.settings = m_settings;
@@ -196,7 +181,7 @@ CellResult StudyRunner::compute(std::size_t index) {
     CellResult cell;
     cell.settings = m_settings;
     cell.scene = m_scene.name;
-    cell.oracle = t.oracle;
+    cell.oracle = t.oracle->name();
     cell.budget = t.budget;
     cell.seed = t.seed;
     SolverOptions so = m_options.solver;
@@ -259,7 +244,7 @@ ObjectError StudyRunner::measure(const Solution& solution, const CellTask& t,
 
 }  // namespace
 
-void validate_study(const StudyOptions& options) { validate(options, expand_oracles(options.oracles)); }
+void validate_study(const StudyOptions& options) { validate(options); }
 
 nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
     nlohmann::json solve = settings_json(o.solver);

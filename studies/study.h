@@ -50,7 +50,7 @@ inline constexpr std::uint64_t kMeshRaysPerCellRay = 50;
 struct StudyOptions {
     std::filesystem::path reference;   // folder written by write_reference
     std::vector<std::size_t> budgets;  // target leaf counts
-    std::vector<std::string> oracles;  // names; "all" expands to every registered oracle
+    std::vector<const Oracle*> oracles = oracle_registry().all();  // each budget's cells
     int seeds = 3;                     // seeds solver.seed .. solver.seed + seeds - 1
     SolverOptions solver;              // every cell's solve; oracle, epsilon, seed set per cell
     // > 0: each budget's cells shoot rays_per_leaf x budget rays instead of solver.rays.

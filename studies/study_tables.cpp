@@ -144,7 +144,7 @@ std::string md_table(const std::string& scene, const StudyOptions& o,
         "area-weighted relative L2 error of the reflected radiosity against the reference (– "
         "against a traced reference, which has no mesh); "
         "{}; seconds: the budget search. The best mean of each error column is in bold.\n\n",
-        rays, o.solver.lines, o.solver.link_weight, 100 * o.budget_tolerance, o.seeds,
+        rays, o.solver.lines, name(o.solver.link_weight), 100 * o.budget_tolerance, o.seeds,
         o.solver.seed, views.size(), fmt::join(views, ", "), mesh);
     for (std::size_t b : o.budgets) out += md_budget_table(b, cells) + "\n";
     return out;
@@ -303,7 +303,7 @@ void write_study_tables(const std::string& scene, const StudyOptions& o,
                                     {"rays", o.solver.rays},
                                     {"rays_per_leaf", o.rays_per_leaf},
                                     {"mesh_rays", mesh_rays_json(o)},
-                                    {"link_weight", o.solver.link_weight},
+                                    {"link_weight", name(o.solver.link_weight)},
                                     {"lines", o.solver.lines},
                                     {"budget_tolerance", o.budget_tolerance},
                                     {"samples_per_axis", o.samples_per_axis},

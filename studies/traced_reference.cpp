@@ -15,7 +15,7 @@ namespace hmcr {
 TracedReference compute_traced_reference(const Scene& scene, const std::vector<View>& views,
                                          TraceOptions options, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    options.sampler = "uniform";
+    options.sampler = &uniform_criterion();
     const PathTracer tracer(build_patch_set(scene.mesh), options.path);
     TracedReference ref;
     for (const View& v : views) {

@@ -87,7 +87,7 @@ std::vector<double> PixelRuns::first_values() const {
 
 Image fresh_image(const PixelTracer& tracer, const std::vector<std::uint32_t>& samples,
                   std::uint64_t& rays, Progress& progress) {
-    const Criterion& uniform = find_criterion("uniform");
+    const Criterion& uniform = uniform_criterion();
     PixelRuns runs(uniform, RunLimits{}, tracer);
     for (std::size_t i = 0; i < samples.size(); ++i) {
         const int x = int(i % std::size_t(tracer.width())), y = int(i / std::size_t(tracer.width()));

@@ -122,14 +122,14 @@ std::string TraceOptions::to_string() const {
         "TraceOptions{{sampler={}, spp={}, threshold={}, spp_tolerance={}, "
         "max_spp={}, tree_depth={}, seed={}, threads={}, criterion_exposure={}, fresh={}, "
         "path={}}}",
-        sampler, spp, threshold, spp_tolerance, max_spp, tree_depth, seed, threads,
+        sampler->name(), spp, threshold, spp_tolerance, max_spp, tree_depth, seed, threads,
         criterion_exposure, fresh, path.to_string());
 }
 
-void validate_trace_options(const TraceOptions& o) { validate(o, find_criterion(o.sampler)); }
+void validate_trace_options(const TraceOptions& o) { validate(o, *o.sampler); }
 
 std::uint32_t max_samples_per_pixel(const TraceOptions& o) {
-    if (const Criterion* c = criterion_named(o.sampler); c && c->scheme() == Scheme::quadtree) {
+    if (o.sampler->scheme() == Scheme::quadtree) {
         return std::uint32_t(1) << (2 * (o.tree_depth + 1));
     }
     if (o.max_spp > 0) return o.max_spp;
@@ -149,7 +149,7 @@ SampleCounts TraceResult::counts() const {
 TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceOptions& o,
                         Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    const Criterion& chosen = find_criterion(o.sampler);
+    const Criterion& chosen = *o.sampler;
     validate(o, chosen);
     throw_if_interrupted();
     const bool adaptive = chosen.scheme() != Scheme::uniform;

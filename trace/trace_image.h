@@ -15,12 +15,13 @@
 #include "image/image.h"
 #include "trace/path_tracer.h"
 #include "trace/pixel_run.h"
+#include "trace/criteria/registry.h"
 #include "trace/threshold_search.h"
 
 namespace hmcr {
 
 struct TraceOptions {
-    std::string sampler = "uniform";  // a criterion of viz/sampling/registry.cpp
+    const Criterion* sampler = &uniform_criterion();  // trace/criteria/registry.h
     double spp = 16;                  // mean samples per pixel: exact for uniform (a whole
                                       // number), the search's target otherwise
     double threshold = std::numeric_limits<double>::quiet_NaN();  // > 0: fixed, no search
@@ -60,8 +61,7 @@ struct TraceResult {
 // The most samples one pixel can get with these options (quadtree: 4^(depth + 1)).
 std::uint32_t max_samples_per_pixel(const TraceOptions& options);
 
-// Throws InputError on bad options: an unknown sampler (listing the valid ones), a target
-// outside what the sampler can give. Commands call it before any work; trace_image again.
+// Throws InputError on bad options: a target outside what the sampler can give. Commands call it before any work; trace_image again.
 void validate_trace_options(const TraceOptions& options);
 
 // Throws InputError on bad options, SppNotReached when the search fails, and Interrupted

@@ -14,7 +14,7 @@ VtpMetadata vtp_metadata(const Solution& solution, const SceneIdentity& scene,
                          double time_value) {
     const SolveStats& st = solution.stats;
     const bool uniform = solution.options.uniform_max_area > 0;
-    return {uniform ? "uniform" : solution.options.oracle,
+    return {uniform ? "uniform" : std::string(solution.options.oracle->name()),
             uniform ? 0 : st.epsilon,
             uniform ? 0 : std::uint64_t(solution.options.lines),
             st.rays,
@@ -25,7 +25,7 @@ VtpMetadata vtp_metadata(const Solution& solution, const SceneIdentity& scene,
             scene.name,
             scene.patches,
             scene.geometry_hash,
-            solution.options.link_weight};
+            std::string(name(solution.options.link_weight))};
 }
 
 ShadedMesh shade(const Solution& solution, double crease_degrees) {

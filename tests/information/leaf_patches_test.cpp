@@ -1,5 +1,6 @@
 // A solution's leaves as a discretisation: its cells reduced to their triangles and quads, and
 // the information measures of that discretisation (SPEC section 7).
+#include "oracles/registry.h"
 #include "information/leaf_patches.h"
 
 #include <gtest/gtest.h>
@@ -18,7 +19,7 @@ TEST(LeafPatches, CellsBecomeTheirLeavesWithTheSameArea) {
     const PatchMesh mesh = make_patch_mesh(
         inward_box({0, 0, 0}, {1, 1, 1}, 1, Rgb::Constant(0.5), Rgb::Constant(1)));
     SolverOptions o;
-    o.oracle = "power";
+    o.oracle = oracle_registry().find("power");
     o.epsilon = 1e-3;
     o.rays = 200'000;
     const Solution sol = solve(mesh, o);

@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+#include "common/error.h"
 #include "oracles/registry.h"
 #include "rays/rng.h"
 
@@ -81,10 +82,10 @@ TEST_P(EveryRegisteredOracle, HasANameADescriptionAndAPositiveDefaultEpsilon) {
     EXPECT_FALSE(o.name().empty());
     EXPECT_FALSE(o.description().empty());
     EXPECT_GT(o.default_epsilon(), 0);
-    EXPECT_EQ(&find_oracle(o.name()), &o);
+    EXPECT_EQ(&find_named(oracle_registry(), o.name()), &o);
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, EveryRegisteredOracle, testing::ValuesIn(all_oracles()),
+INSTANTIATE_TEST_SUITE_P(Registry, EveryRegisteredOracle, testing::ValuesIn(oracle_registry().all()),
                          [](const testing::TestParamInfo<const Oracle*>& p) {
                              return std::string(p.param->name());
                          });

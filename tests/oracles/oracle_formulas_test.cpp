@@ -8,6 +8,7 @@
 #include <numbers>
 #include <vector>
 
+#include "common/error.h"
 #include "oracles/registry.h"
 #include "rays/rng.h"
 
@@ -22,7 +23,7 @@ double factor(const std::string& oracle, const std::vector<double>& kernel) {
     g.source_area = kAj;
     g.total_area = kAt;
     g.kernel = kernel;
-    return find_oracle(oracle).geometric_factor(g);
+    return find_named(oracle_registry(), oracle).geometric_factor(g);
 }
 
 void expect_values(const std::vector<double>& kernel, const std::map<std::string, double>& want) {
@@ -44,7 +45,7 @@ TEST(OracleFormulas, PowerFromCentreGeometry) {
         g.centre_distance = std::sqrt(d2);
         g.receiver_cos = cos_i;
         g.source_cos = cos_j;
-        return find_oracle("power").geometric_factor(g);
+        return find_named(oracle_registry(), "power").geometric_factor(g);
     };
     const double pi = std::numbers::pi;
     EXPECT_NEAR(power(3 / pi, 0.1, 0.0), 2 * 0.5 * 1 * 1, 1e-12);

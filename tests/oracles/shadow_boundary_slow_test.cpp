@@ -41,9 +41,11 @@
 #include <string>
 #include <vector>
 
+#include "common/error.h"
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "radiosity/solver.h"
+#include "tests/support/plugins.h"
 
 namespace hmcr::test {
 namespace {
@@ -163,7 +165,7 @@ struct Calibrated {
 Calibrated run_at(const Scene& scene, const Oracle& oracle, double epsilon, const Shadow& shadow,
                   double margin) {
     SolverOptions o;
-    o.oracle = std::string(oracle.name());
+    o.oracle = &oracle;
     o.epsilon = epsilon;
     o.lines = 10;
     o.rays = 1'000'000;
@@ -200,7 +202,7 @@ Calibrated calibrate(const Scene& scene, const Oracle& oracle, const Shadow& sha
 class ShadowBoundary : public testing::TestWithParam<std::string> {};
 
 TEST_P(ShadowBoundary, LineOraclesRefineThePenumbraAndPowerDoesNot) {
-    const Oracle& oracle = find_oracle(GetParam());
+    const Oracle& oracle = find_named(oracle_registry(), GetParam());
     const Scene scene = load_scene("shadow");
     const PatchSet patches = build_patch_set(scene.mesh);
     const Patch *emitter = nullptr, *occluder = nullptr;
@@ -230,7 +232,7 @@ TEST_P(ShadowBoundary, LineOraclesRefineThePenumbraAndPowerDoesNot) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryOracle, ShadowBoundary, testing::ValuesIn(oracle_name_list()),
+INSTANTIATE_TEST_SUITE_P(EveryOracle, ShadowBoundary, testing::ValuesIn(test::oracle_name_list()),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "common/error.h"
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "radiosity/budget_search.h"
@@ -39,7 +40,7 @@ void expect_genuine_jump(const std::string& why, std::size_t target) {
 TEST_P(BudgetForEveryOracle, ReachesAThousandLeavesOnTheCornellBoxWithinOnePercent) {
     const Scene scene = load_scene("cornell");
     SolverOptions o;
-    o.oracle = std::string(GetParam()->name());
+    o.oracle = GetParam();
     o.rays = 300'000;
     for (o.seed = 1; o.seed <= 4; ++o.seed) {
         BudgetResult r;
@@ -59,7 +60,7 @@ TEST_P(BudgetForEveryOracle, ReachesAThousandLeavesOnTheCornellBoxWithinOnePerce
     ADD_FAILURE() << "no seed of 1-4 reached 1,000 +- 1% leaves";
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, BudgetForEveryOracle, testing::ValuesIn(all_oracles()),
+INSTANTIATE_TEST_SUITE_P(Registry, BudgetForEveryOracle, testing::ValuesIn(oracle_registry().all()),
                          [](const testing::TestParamInfo<const Oracle*>& p) {
                              return std::string(p.param->name());
                          });

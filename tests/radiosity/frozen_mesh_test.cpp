@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "oracles/registry.h"
 #include "radiosity/solver.h"
 #include "tests/support/analytic.h"
 #include "tests/support/statistics.h"
@@ -32,7 +33,7 @@ double exact_b(double x, double y) {
 // A refined mesh of the plates (power oracle, small epsilon): its hierarchy is the shape.
 Solution refined_plates() {
     SolverOptions o;
-    o.oracle = "power";
+    o.oracle = oracle_registry().find("power");
     o.epsilon = 2e-3;
     o.rays = 20'000;
     return solve(plates(), o);

@@ -27,7 +27,7 @@ void expect_same(const Leaves& a, const Leaves& b) {
 
 SolverOptions kl_options() {
     SolverOptions o;
-    o.oracle = "kl";
+    o.oracle = oracle_registry().find("kl");
     o.rays = 300'000;
     o.seed = 17;
     o.lines = 10;
@@ -74,7 +74,7 @@ TEST(LinkCache, MiAtTheScaledEpsilonBuildsTheSameHierarchyAsKl) {
     SolverOptions o = kl_options();
     o.epsilon = 1e-5;
     const Solution kl = solve(scene.mesh, o);
-    o.oracle = "mi";
+    o.oracle = oracle_registry().find("mi");
     o.epsilon = 1e-5 / (kl.hierarchy->patch_set().total_area * o.lines);
     const Solution mi = solve(scene.mesh, o);
     EXPECT_GT(kl.stats.leaves, 1000u);

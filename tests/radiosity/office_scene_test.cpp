@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "oracles/registry.h"
 #include "meshes/scene.h"
 #include "radiosity/solver.h"
 #include "tests/support/temp_dir.h"
@@ -24,7 +25,7 @@ TEST(OfficeScene, ASmallInstanceHasItsPlannedFacesAndIsClosed) {
     EXPECT_EQ(scene.mesh.n_faces(), 2u * 16 * 16 + 4u * 16 * 8 + 4u * (22 + 27 + 5));
     EXPECT_TRUE(scene.repairs.empty()) << scene.repairs.summary();
     SolverOptions o;
-    o.oracle = "power";
+    o.oracle = oracle_registry().find("power");
     o.rays = 200'000;
     const Solution sol = solve(scene.mesh, o);
     // Closed: what escapes is float round-off at shared edges (cube-room: 1.3e-5 of the shot

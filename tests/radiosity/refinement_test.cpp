@@ -10,11 +10,13 @@
 #include <memory>
 #include <vector>
 
+#include "common/error.h"
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "rays/embree_scene.h"
 #include "radiosity/refinement.h"
 #include "rays/rng.h"
+#include "tests/support/plugins.h"
 #include "tests/support/test_scenes.h"
 
 namespace hmcr::test {
@@ -74,17 +76,17 @@ constexpr double kEpsilonScale = 0.01;
 class GroupedDescent : public testing::TestWithParam<std::string> {
 protected:
     void expect_same_as_one_ray_descents(const PatchMesh& mesh) {
-        const Oracle& oracle = find_oracle(GetParam());
+        const Oracle& oracle = find_named(oracle_registry(), GetParam());
         const auto grouped = lit_hierarchy(mesh), single = lit_hierarchy(mesh);
         const EmbreeScene scene(grouped->patch_set().patches);
         auto context = [&](Hierarchy& h) {
-            return RefinementContext{h,
-                                     oracle,
-                                     scene,
-                                     kEpsilonScale * oracle.default_epsilon() *
-                                         h.patch_set().max_emitted_power,
-                                     4,
-                                     11};
+            return RefinementContext{.hierarchy = h,
+                                     .oracle = oracle,
+                                     .scene = scene,
+                                     .threshold = kEpsilonScale * oracle.default_epsilon() *
+                                                  h.patch_set().max_emitted_power,
+                                     .lines = 4,
+                                     .seed = 11};
         };
         std::vector<LinkQuery> queries = queries_for(*grouped, 12'000);
         RefinementCounters grouped_counts, single_counts;
@@ -121,7 +123,7 @@ TEST_P(GroupedDescent, TrianglesEndWhereOneRayDescentsEnd) {
     expect_same_as_one_ray_descents(make_patch_mesh(sphere));
 }
 
-INSTANTIATE_TEST_SUITE_P(Oracles, GroupedDescent, testing::ValuesIn(oracle_name_list()),
+INSTANTIATE_TEST_SUITE_P(Oracles, GroupedDescent, testing::ValuesIn(test::oracle_name_list()),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 }  // namespace

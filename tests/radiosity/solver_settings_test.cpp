@@ -39,7 +39,7 @@ TEST(SolverSettings, SceneValuesApply) {
     SolverOptions o;
     apply_scene_settings(json{{"oracle", "power"}, {"rays", 5000}, {"stop", 0.05}, {"lines", 4}},
                          "scene.json", o);
-    EXPECT_EQ(o.oracle, "power");
+    EXPECT_EQ(o.oracle->name(), "power");
     EXPECT_EQ(o.rays, 5000u);
     EXPECT_EQ(o.stop, 0.05);
     EXPECT_EQ(o.lines, 4);
@@ -60,6 +60,10 @@ TEST(SolverSettings, BadSceneValuesAreRefusedWithFileAndKey) {
               std::string::npos);
     EXPECT_NE(solver_error({{"max_depth", 1.5}}).find("solver.max_depth"), std::string::npos);
     EXPECT_NE(solver_error({{"oracle", "nope"}}).find("one of power, ks"), std::string::npos);
+    EXPECT_NE(solver_error({{"link_weight", "most"}}).find("unshot or total, got 'most'"),
+              std::string::npos);
+    EXPECT_NE(solver_error({{"oracle", 3}}).find("solver.oracle: must be a string"),
+              std::string::npos);
 }
 
 // Keys a scene may not set: unknown ones, and properties of a run rather than of a scene.
@@ -80,6 +84,8 @@ TEST(SolverSettings, SummaryNamesEverySetting) {
     });
     EXPECT_EQ(j.size(), n);
     EXPECT_EQ(j["rays"], SolverOptions{}.rays);
+    EXPECT_EQ(j["oracle"], "kl");  // named settings by their names
+    EXPECT_EQ(j["link_weight"], "unshot");
 }
 
 }  // namespace

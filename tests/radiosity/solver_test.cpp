@@ -9,6 +9,7 @@
 #include "oracles/registry.h"
 #include "radiosity/solver.h"
 #include "radiosity/solver_settings.h"
+#include "tests/support/plugins.h"
 #include "tests/support/analytic.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
@@ -20,7 +21,7 @@ class EveryOracle : public testing::TestWithParam<std::string> {
 protected:
     SolverOptions options(std::uint64_t rays, std::uint64_t seed) const {
         SolverOptions o;
-        o.oracle = GetParam();
+        o.oracle = test::oracle(GetParam());
         o.rays = rays;
         o.seed = seed;
         o.lines = 4;
@@ -99,7 +100,7 @@ TEST_P(EveryOracle, FurnaceOnARefinedMesh) {
 TEST_P(EveryOracle, FurnaceWithTheTotalLinkWeight) {
     SolverOptions o = options(30'000, 0);
     o.epsilon = 1e-3;  // B > Delta B: a refined mesh at a larger epsilon (and less cost)
-    o.link_weight = "total";
+    o.link_weight = LinkWeight::total;
     expect_furnace(o, 1, 60);
 }
 
@@ -109,7 +110,7 @@ TEST_P(EveryOracle, TotalLinkWeightRefinesMoreOnTheCornellBox) {
     const Scene scene = load_scene("cornell");
     SolverOptions o = options(300'000, 3);
     const Solution unshot = solve(scene.mesh, o);
-    o.link_weight = "total";
+    o.link_weight = LinkWeight::total;
     const Solution total = solve(scene.mesh, o);
     EXPECT_GT(total.stats.leaves, unshot.stats.leaves);
 }
@@ -202,7 +203,7 @@ TEST_P(EveryOracle, RaysAddUpToTheRequestedTotal) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Oracles, EveryOracle, testing::ValuesIn(oracle_name_list()),
+INSTANTIATE_TEST_SUITE_P(Oracles, EveryOracle, testing::ValuesIn(test::oracle_name_list()),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 // Each bad value is rejected with a message naming it (the one line the CLI prints).
@@ -217,7 +218,7 @@ TEST(SolverOptions, BadValuesAreRejectedWithTheirName) {
         }
         return std::string("accepted");
     };
-    EXPECT_NE(message([](auto& o) { o.oracle = "nope"; }).find("one of power, ks"), std::string::npos);
+    EXPECT_NE(message([](auto& o) { o.oracle = nullptr; }).find("one of power, ks"), std::string::npos);
     EXPECT_NE(message([](auto& o) { o.epsilon = -1; }).find("epsilon"), std::string::npos);
     EXPECT_NE(message([](auto& o) { o.stop = 0; }).find("stop"), std::string::npos);
     EXPECT_NE(message([](auto& o) { o.max_depth = 30; }).find("max-depth"), std::string::npos);

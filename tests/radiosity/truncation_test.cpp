@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "oracles/registry.h"
 #include "radiosity/solver.h"
 #include "radiosity/truncation.h"
 #include "tests/support/test_scenes.h"
@@ -19,7 +20,7 @@ TEST(Truncation, TheFurnaceTailIsTheMissingReflectedPower) {
         inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(rho), Rgb::Constant(e)));
     for (const double stop : {1e-2, 1e-4}) {
         SolverOptions o;
-        o.oracle = "power";
+        o.oracle = oracle_registry().find("power");
         o.rays = 1'000'000;
         o.stop = stop;
         const Solution sol = solve(mesh, o);

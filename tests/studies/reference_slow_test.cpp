@@ -14,6 +14,7 @@
 // seed's identical mesh; they count as B = 0 and are bounded here, not hidden.
 #include <gtest/gtest.h>
 
+#include "oracles/registry.h"
 #include "radiosity/budget_search.h"
 #include "studies/reference.h"
 
@@ -29,7 +30,7 @@ TEST(Reference, SeedsDifferMuchLessThanA2000ElementPowerSolutionErrs) {
     EXPECT_LT(double(ref.object_error.unmatched), 1e-3 * double(ref.object_error.samples));
 
     SolverOptions so;
-    so.oracle = "power";
+    so.oracle = oracle_registry().find("power");
     const BudgetResult power = solve_for_budget(scene.mesh, so, {2000, 0.02});
     const ShadedMesh mesh = build_shaded_mesh(*power.solution.hierarchy);
     const ObjectError power_error =

@@ -10,6 +10,7 @@
 
 #include "studies/reference.h"
 #include "studies/traced_reference.h"
+#include "tests/support/plugins.h"
 #include "tests/support/temp_dir.h"
 #include "image/image.h"
 
@@ -45,7 +46,8 @@ void write_small_reference(const Scene& scene, int size, const fs::path& dir) {
 SamplingStudyOptions study(const fs::path& dir, std::vector<std::string> samplers, int seeds) {
     SamplingStudyOptions o;
     o.reference = dir / "ref";
-    o.samplers = std::move(samplers);
+    o.samplers.clear();
+    for (const std::string& name : samplers) o.samplers.push_back(test::criterion(name));
     o.seeds = seeds;
     o.trace.spp = 12;
     o.output = dir / "study";
@@ -120,7 +122,7 @@ TEST(SamplingStudy, UnreachableTargetIsAFailedCell) {
 TEST(SamplingStudy, BadOptionsAreInputErrors) {
     const TempDir temp;
     const Scene scene = load_scene("plates");
-    EXPECT_THROW(run_sampling_study(scene, study(temp.path(), {"nope"}, 1)), InputError);
+    EXPECT_THROW(run_sampling_study(scene, study(temp.path(), {"kl", "kl"}, 1)), InputError);
     EXPECT_THROW(run_sampling_study(scene, study(temp.path(), {"kl"}, 0)), InputError);
     EXPECT_THROW(run_sampling_study(scene, study(temp.path(), {"kl"}, 1)), InputError);  // no ref
 }

@@ -8,6 +8,7 @@
 #include "studies/plot.h"
 #include "studies/reference.h"
 #include "studies/study.h"
+#include "tests/support/plugins.h"
 #include "tests/support/temp_dir.h"
 #include "image/image.h"
 
@@ -93,7 +94,7 @@ protected:
         StudyOptions o;
         o.reference = s_dir->path() / "ref";
         o.budgets = {200};
-        o.oracles = {"power", "kl"};
+        o.oracles = {test::oracle("power"), test::oracle("kl")};
         o.seeds = 2;
         o.solver.rays = 200'000;
         o.mesh_rays = 2'000'000;
@@ -197,7 +198,7 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
 TEST_F(TinyStudy, RecordsAnUnreachableBudgetAsAFailedCell) {
     StudyOptions o = options();
     o.budgets = {5};  // fewer leaves than the Cornell box has patches
-    o.oracles = {"power"};
+    o.oracles = {test::oracle("power")};
     o.seeds = 1;
     Counts counts;
     Counting counts_notes(counts);
@@ -215,7 +216,7 @@ TEST_F(TinyStudy, RecordsAnUnreachableBudgetAsAFailedCell) {
 TEST_F(TinyStudy, RaysPerLeafScaleWithTheBudget) {
     StudyOptions o = options();
     o.budgets = {100, 200};
-    o.oracles = {"power"};
+    o.oracles = {test::oracle("power")};
     o.seeds = 1;
     o.rays_per_leaf = 500;
     o.mesh_rays = 0;

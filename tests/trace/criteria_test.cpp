@@ -24,7 +24,7 @@ std::vector<PixelSample> grey(const std::vector<double>& values, double geometry
 }
 
 double value(const std::string& name, const std::vector<PixelSample>& s, double area = 1) {
-    return find_criterion(name).value(s, area);
+    return find_named(criterion_registry(), name).value(s, area);
 }
 
 // On display values an outlier that is white on the screen anyway does not refine: 1 x 7 and 9
@@ -33,10 +33,10 @@ double value(const std::string& name, const std::vector<PixelSample>& s, double 
 TEST(Criteria, DisplayValuesClampAtWhite) {
     const auto s = grey({1, 1, 1, 1, 1, 1, 1, 9});
     for (const char* name : {"cc", "var", "kl", "srhe", "entropy"}) {
-        EXPECT_EQ(on_display_values(find_criterion(name), 1.0)->value(s, 1), 0) << name;
-        EXPECT_GT(on_display_values(find_criterion(name), 0.1)->value(s, 1), 0) << name;
+        EXPECT_EQ(on_display_values(find_named(criterion_registry(), name), 1.0)->value(s, 1), 0) << name;
+        EXPECT_GT(on_display_values(find_named(criterion_registry(), name), 0.1)->value(s, 1), 0) << name;
     }
-    EXPECT_NEAR(on_display_values(find_criterion("kl"), 0.1)->value(s, 1), 0.1 * value("kl", s),
+    EXPECT_NEAR(on_display_values(find_named(criterion_registry(), "kl"), 0.1)->value(s, 1), 0.1 * value("kl", s),
                 1e-15);
 }
 
@@ -121,7 +121,7 @@ TEST_P(EveryCriterion, ValuesAreFiniteAndNotNegative) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, EveryCriterion, testing::ValuesIn(all_criteria()),
+INSTANTIATE_TEST_SUITE_P(Registry, EveryCriterion, testing::ValuesIn(criterion_registry().all()),
                          [](const auto& p) {
                              std::string name(p.param->name());
                              for (char& c : name) c = c == '-' ? '_' : c;
@@ -130,7 +130,7 @@ INSTANTIATE_TEST_SUITE_P(Registry, EveryCriterion, testing::ValuesIn(all_criteri
 
 TEST(Criteria, UnknownNameListsTheValidOnes) {
     try {
-        find_criterion("nope");
+        find_named(criterion_registry(), "nope");
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_STREQ(e.what(),

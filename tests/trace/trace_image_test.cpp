@@ -1,6 +1,7 @@
 // Whole traced images: every sampler reaches its spp target within 2%, an image does not
 // depend on the thread count, and the image the search assembles from its probes' samples is
 // the one a fresh render at the accepted threshold gives.
+#include "common/error.h"
 #include "trace/trace_image.h"
 
 #include <gtest/gtest.h>
@@ -39,7 +40,7 @@ const Cornell& cornell() {
 
 TraceOptions options(const Criterion& c, double spp) {
     TraceOptions o;
-    o.sampler = std::string(c.name());
+    o.sampler = &c;
     o.spp = spp;
     o.seed = 3;
     return o;
@@ -81,7 +82,7 @@ TEST_P(EverySampler, SearchedImageEqualsAFreshRenderAtItsThreshold) {
     EXPECT_EQ(fresh.rays, fresh.rays_traced);
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, EverySampler, testing::ValuesIn(all_criteria()),
+INSTANTIATE_TEST_SUITE_P(Registry, EverySampler, testing::ValuesIn(criterion_registry().all()),
                          [](const auto& p) {
                              std::string name(p.param->name());
                              for (char& c : name) c = c == '-' ? '_' : c;
@@ -89,7 +90,7 @@ INSTANTIATE_TEST_SUITE_P(Registry, EverySampler, testing::ValuesIn(all_criteria(
                          });
 
 TEST(TraceImage, UniformGivesEveryPixelExactlyItsSamples) {
-    TraceOptions o = options(find_criterion("uniform"), 13);  // one full batch and a partial one
+    TraceOptions o = options(find_named(criterion_registry(), "uniform"), 13);  // one full batch and a partial one
     const TraceResult r = cornell().trace(o);
     EXPECT_EQ(r.counts().min, 13u);
     EXPECT_EQ(r.counts().max, 13u);
@@ -97,10 +98,10 @@ TEST(TraceImage, UniformGivesEveryPixelExactlyItsSamples) {
 }
 
 TEST(TraceImage, TargetsOutsideTheSamplersRangeAreInputErrors) {
-    EXPECT_THROW(cornell().trace(options(find_criterion("kl"), 4)), InputError);
-    EXPECT_THROW(cornell().trace(options(find_criterion("entropy"), 2000)), InputError);
-    EXPECT_THROW(cornell().trace(options(find_criterion("uniform"), 2.5)), InputError);
-    TraceOptions o = options(find_criterion("kl"), 20);
+    EXPECT_THROW(cornell().trace(options(find_named(criterion_registry(), "kl"), 4)), InputError);
+    EXPECT_THROW(cornell().trace(options(find_named(criterion_registry(), "entropy"), 2000)), InputError);
+    EXPECT_THROW(cornell().trace(options(find_named(criterion_registry(), "uniform"), 2.5)), InputError);
+    TraceOptions o = options(find_named(criterion_registry(), "kl"), 20);
     o.max_spp = 16;
     EXPECT_THROW(cornell().trace(o), InputError);
 }
@@ -108,7 +109,7 @@ TEST(TraceImage, TargetsOutsideTheSamplersRangeAreInputErrors) {
 // The second pass takes fresh samples at the counts the criterion chose: the same counts, a new
 // image, the rays of both passes.
 TEST(TraceImage, FreshSamplesKeepTheCountsAndAddTheirRays) {
-    TraceOptions o = options(find_criterion("srhe"), 16);
+    TraceOptions o = options(find_named(criterion_registry(), "srhe"), 16);
     const TraceResult first = cornell().trace(o);
     o.fresh = true;
     const TraceResult fresh = cornell().trace(o);
@@ -135,7 +136,7 @@ TEST(TraceImage, FreshAdaptiveImagesAreUnbiased) {
     v.fov_degrees = 90;
     v.width = v.height = 48;
     const PathTracer tracer(build_patch_set(scene.mesh), {});
-    TraceOptions o = options(find_criterion("kl"), 16);
+    TraceOptions o = options(find_named(criterion_registry(), "kl"), 16);
     o.fresh = true;
     const Image im = trace_image(tracer, v, o).image;
     const double expected = 0.5 * 1 * parallel_rectangles(1, 1, 1) / std::numbers::pi;
