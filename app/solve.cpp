@@ -2,7 +2,6 @@
 #include <fmt/core.h>
 
 #include <memory>
-#include <optional>
 
 #include "app/scene_input.h"
 #include "app/command.h"
@@ -34,18 +33,6 @@ struct SolveArgs {
     SceneFlags scene_flags;
 };
 
-// One solve at epsilon of the mesh's patches, or without them the probes of a budget search
-// (each a full solve that builds its patches from the mesh).
-BudgetResult solve_scene(const Scene& scene, std::optional<PatchSet> patches,
-                         const SolveArgs& args, Progress& progress) {
-    const Ranks& ranks = Ranks::world();
-    if (!patches) return solve_for_budget(scene.mesh, args.options, args.budget, progress, ranks);
-    progress.stage("shooting rays");
-    BudgetResult out;
-    out.solution = solve(std::move(*patches), args.options, progress, ranks);
-    return out;
-}
-
 fs::path output_path(const SolveArgs& args, const Scene& scene) {
     const fs::path vtp = args.output.empty() ? fs::path("out") / (scene.name + ".vtp")
                                              : fs::path(args.output);
@@ -72,10 +59,7 @@ void check_budget(const SolveArgs& args, const CLI::App& cmd) {
     if (cmd.count("--budget") && args.budget.leaves == 0) {
         throw InputError("budget must be a positive leaf count, got 0");
     }
-    if (!(args.budget.tolerance > 0 && args.budget.tolerance < 1)) {
-        throw InputError(fmt::format("budget-tolerance must be in (0, 1), got {}",
-                                     args.budget.tolerance));
-    }
+    validate(args.budget);
 }
 
 int run_solve(SolveArgs& args, const std::string& command_line) {
@@ -94,19 +78,13 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     pvsm.replace_extension(".pvsm");  // ParaView's view of the .vtp (viz/paraview_state.h)
     refuse_overwriting({vtp, json, pvsm}, scene.inputs);
     prepare_output_file(vtp);
-    const SceneIdentity identity = scene_identity(scene);
-    // A solve at epsilon needs the mesh only for its patches, which hold what the output needs
-    // of it: it is released before the rays are shot (120 MB at 10^6 patches).
-    std::optional<PatchSet> patches;
-    if (args.budget.leaves == 0) {
-        patches = build_patch_set(scene.mesh);
-        release(scene.mesh);
-    }
+    const SceneIdentity identity = scene_identity(scene);  // before solve_mesh releases the mesh
     RunTimings timings;
     timings.load_seconds = seconds_since(start);
 
     TerminalProgress progress(mode, "hmcr " + scene.name);
-    BudgetResult found = solve_scene(scene, std::move(patches), args, progress);
+    BudgetResult found =
+        solve_mesh(scene.mesh, args.options, args.budget, progress, Ranks::world());
     Solution& sol = found.solution;
     if (!Ranks::world().root()) return 0;  // every rank holds the solution; rank 0 writes it
 

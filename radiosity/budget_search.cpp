@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "common/stopwatch.h"
 #include "radiosity/solver_settings.h"
 
 namespace hmcr {
@@ -126,12 +127,30 @@ BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& option
                               const BudgetOptions& budget, Progress& progress,
                               const Ranks& ranks) {
     if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
+    validate(budget);
+    validate(options);
+    return Search(mesh, options, budget, progress, ranks).run();
+}
+
+void validate(const BudgetOptions& budget) {
     if (!(budget.tolerance > 0 && budget.tolerance < 1)) {
         throw InputError(
             fmt::format("budget-tolerance must be in (0, 1), got {}", budget.tolerance));
     }
-    validate(options);
-    return Search(mesh, options, budget, progress, ranks).run();
+}
+
+BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
+                        Progress& progress, const Ranks& ranks) {
+    if (budget.leaves > 0) return solve_for_budget(mesh, options, budget, progress, ranks);
+    const auto start = std::chrono::steady_clock::now();
+    PatchSet patches = build_patch_set(mesh);
+    release(mesh);
+    const double patch_seconds = seconds_since(start);
+    progress.stage("shooting rays");
+    BudgetResult out;
+    out.solution = solve(std::move(patches), options, progress, ranks);
+    out.solution.stats.setup_seconds += patch_seconds;  // the patches are part of the setup
+    return out;
 }
 
 void to_json(nlohmann::json& j, const BudgetProbe& p) {
