@@ -12,7 +12,7 @@ namespace hmcr {
 struct Command {
     CLI::App* cli = nullptr;
     std::function<int()> run;
-    // Shares its work over MPI ranks (README, Clusters); the others run on rank 0 alone.
+    // Shares its work over MPI ranks (docs/cluster.md); the others run on rank 0 alone.
     bool over_ranks = false;
 };
 

@@ -1,4 +1,4 @@
-// `hmcr info SCENE|SOLUTION.vtp`: the information measures of a discretisation (SPEC section 7).
+// `hmcr info SCENE|SOLUTION.vtp`: the information measures of a discretisation (docs/design.md §7).
 #include <fmt/core.h>
 
 #include <cmath>

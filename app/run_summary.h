@@ -1,4 +1,4 @@
-// The JSON run summary written beside every solution (SPEC section 5).
+// The JSON run summary written beside every solution (docs/design.md §5).
 #pragma once
 
 #include <nlohmann/json.hpp>

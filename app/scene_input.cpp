@@ -9,7 +9,7 @@ namespace hmcr {
 void add_scene_flags(CLI::App& command, SceneFlags& flags) {
     command.add_flag("--strict", flags.strict,
                      "refuse polygons and materials that hmcr would otherwise repair "
-                     "(README: Repairs)");
+                     "(docs/usage.md#repairs)");
     command
         .add_option("--mgf-segments", flags.mgf_segments,
                     fmt::format("segments per circle of MGF's curved surfaces (default: the scene "

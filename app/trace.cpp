@@ -1,4 +1,4 @@
-// `hmcr trace SCENE -o IMAGE.png`: a path-traced image of one view (viz/trace_image.h), with
+// `hmcr trace SCENE -o IMAGE.png`: a path-traced image of one view (trace/trace_image.h), with
 // its sampling density map (IMAGE-density.png) and a JSON summary (IMAGE.json) beside it.
 #include <fmt/core.h>
 #include <tbb/info.h>
@@ -129,7 +129,7 @@ int run_trace(TraceArgs& a, const std::string& command_line) {
 Command trace_command(CLI::App& app, const std::string& command_line) {
     auto a = std::make_shared<TraceArgs>();
     auto* cmd = app.add_subcommand("trace", "path-trace a view, with adaptive supersampling");
-    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj file")->required();
+    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj or .mgf file")->required();
     cmd->add_option("--view", a->view, "view name (default: the scene's first)");
     cmd->add_option("-o,--output", a->output,
                     "8-bit sRGB .png; IMAGE-density.png and IMAGE.json go beside it")

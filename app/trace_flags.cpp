@@ -34,6 +34,7 @@ void add_sampling_flags(CLI::App& cmd, TraceOptions& o, const std::set<std::stri
         cmd.add_option("--threshold", o.threshold,
                        "adaptive samplers: this refinement threshold instead of the search");
     }
+    if (!wanted(except, "adaptive")) return;  // the uniform sampler alone: none of the rest
     cmd.add_option("--spp-tolerance", o.spp_tolerance, "accepted relative distance to --spp")
         ->capture_default_str();
     cmd.add_option("--max-spp", o.max_spp, "most samples in one pixel (default 8 x spp)");

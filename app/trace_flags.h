@@ -1,4 +1,4 @@
-// The path tracer's options (viz/trace_image.h) on the command line, shared by `trace`,
+// The path tracer's options (trace/trace_image.h) on the command line, shared by `trace`,
 // `trace-reference` and the sampling study (`study --samplers`).
 #pragma once
 
@@ -19,11 +19,12 @@ struct TraceFlags {
 
 // Adds every trace flag to `command`, bound to `options` and `flags`, except those named in
 // `except` ("sampler", "spp", "seed", "threshold", "width", "threads", "criterion-exposure":
-// what a command sets itself).
+// what a command sets itself; "adaptive": every flag of the adaptive samplers, for a command
+// that traces with the uniform sampler alone).
 void add_trace_flags(CLI::App& command, TraceOptions& options, TraceFlags& flags,
                      const std::set<std::string>& except = {});
 
-// Checks the flags that name things (the sampler, the estimator) and applies them to `options`;
+// Checks the flags that name things (the estimator) and applies them to `options`;
 // throws InputError.
 void apply_trace_flags(const TraceFlags& flags, TraceOptions& options);
 

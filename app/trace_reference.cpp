@@ -53,10 +53,10 @@ Command trace_reference_command(CLI::App& app, const std::string& command_line) 
     auto a = std::make_shared<TraceReferenceArgs>();
     auto* cmd = app.add_subcommand(
         "trace-reference", "path-trace every view uniformly at many samples: a study's reference");
-    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj file")->required();
+    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj or .mgf file")->required();
     cmd->add_option("-o,--output", a->output, "output folder")->required();
     cmd->add_option("--spp", a->options.spp, "samples per pixel")->capture_default_str();
-    add_trace_flags(*cmd, a->options, a->flags, {"sampler", "spp", "threshold"});
+    add_trace_flags(*cmd, a->options, a->flags, {"sampler", "spp", "threshold", "adaptive"});
     add_scene_flags(*cmd, a->scene_flags);
     cmd->add_flag("-q,--quiet", a->quiet, "print only errors");
     return {cmd, [a, command_line] { return run_trace_reference(*a, command_line); }};

@@ -1,4 +1,4 @@
-// Atomic file output (SPEC section 5): write a temp file beside the target, then rename it into
+// Atomic file output (docs/design.md §5): write a temp file beside the target, then rename it into
 // place, so readers see the old file or the complete new one and a failed run leaves nothing.
 #pragma once
 

@@ -10,7 +10,7 @@ using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Rgb = Eigen::Array3d;  // radiometric triple, one value per channel
 
-// |c| of SPEC section 3: the sum of the channels.
+// |c| of docs/design.md §3: the sum of the channels.
 inline double channel_sum(const Rgb& c) { return c.sum(); }
 
 }  // namespace hmcr

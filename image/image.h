@@ -29,7 +29,7 @@ struct Image {
 
 using Srgb8 = std::array<std::uint8_t, 3>;
 
-// 8-bit sRGB-encoded colours, the images the SPEC section 6 metrics compare.
+// 8-bit sRGB-encoded colours, the images the docs/design.md §6 metrics compare.
 struct Image8 {
     int width = 0, height = 0;
     std::vector<Srgb8> pixels;  // width * height, row-major, top row first

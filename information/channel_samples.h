@@ -1,4 +1,4 @@
-// Samples of a scene's visibility channel (SPEC section 7): rays leaving the front of a patch
+// Samples of a scene's visibility channel (docs/design.md §7): rays leaving the front of a patch
 // from an area-uniform point in a cosine-distributed direction, each with the patch whose front
 // face it hits first. F_ij is the share of i's rays that land on j; misses and back-face hits
 // land on no patch. Two ways to draw them (Sbert, "The use of global random directions to

@@ -1,4 +1,4 @@
-// The leaves of a solution as a discretisation of their own (SPEC section 7: "measures of a
+// The leaves of a solution as a discretisation of their own (docs/design.md §7: "measures of a
 // discretisation can be taken ... for the leaves of a solution").
 #pragma once
 

@@ -1,4 +1,4 @@
-// Information measures of a scene's visibility channel (SPEC section 7; Feixas, del Acebo,
+// Information measures of a scene's visibility channel (docs/design.md §7; Feixas, del Acebo,
 // Bekaert, Sbert, "An information theory framework for the analysis of scene complexity",
 // Eurographics 1999). The states are the patches of a discretisation, the transition
 // probabilities their form factors, the stationary distribution the relative areas

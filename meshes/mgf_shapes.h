@@ -1,4 +1,4 @@
-// MGF's surface primitives as polygons (README: MGF). A circle is cut into `segments` equal
+// MGF's surface primitives as polygons (docs/usage.md#mgf). A circle is cut into `segments` equal
 // segments (--mgf-segments, default 24), a sphere into `segments` around and segments / 2 from
 // pole to pole. Corners lie on the true surface, so the polygons' area is below it: by at most
 // (pi / segments)^2 of the true area (a sphere: 5/6 of that, 1.4% at 24 segments).

@@ -1,4 +1,4 @@
-// Wavefront OBJ with its MTL material libraries, read through tinyobjloader (SPEC section 1).
+// Wavefront OBJ with its MTL material libraries, read through tinyobjloader (docs/design.md §1).
 #pragma once
 
 #include <filesystem>

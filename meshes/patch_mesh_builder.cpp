@@ -1,5 +1,5 @@
 // build_patch_mesh: a polygon soup -> the validated OpenMesh patch mesh with its hmcr:* face
-// properties (SPEC section 1).
+// properties (docs/design.md §1).
 #include <fmt/format.h>
 
 #include <OpenMesh/Core/System/omstream.hh>

@@ -52,7 +52,7 @@ struct PolygonSoup {
     std::string where(SourcePlace p) const;  // "path:line", or "path" for line 0
 };
 
-// The validated patch mesh of the soup (SPEC section 1): equal positions welded, every polygon
+// The validated patch mesh of the soup (docs/design.md §1): equal positions welded, every polygon
 // checked (geometry, material), no duplicate faces, an emitter when the scene is to be solved.
 // Throws InputError at the place of the first problem.
 PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options);

@@ -1,4 +1,4 @@
-// Repairs of a polygon soup that have one safe meaning (README: Repairs), made between a reader
+// Repairs of a polygon soup that have one safe meaning (docs/usage.md#repairs), made between a reader
 // and the patch-mesh builder unless the load is strict.
 #pragma once
 

@@ -41,7 +41,7 @@ enum class SceneUse { solve, geometry };
 using WarningFn = std::function<void(const std::string&)>;
 
 // Segments per full circle of MGF's curved surfaces (sph, cyl, cone, ring, torus) when neither
-// the command line nor the scene file sets it (README: MGF).
+// the command line nor the scene file sets it (docs/usage.md#mgf).
 inline constexpr int kDefaultCurveSegments = 24;
 inline constexpr int kMinCurveSegments = 4;
 inline constexpr int kMaxCurveSegments = 256;
@@ -50,7 +50,7 @@ struct LoadOptions {
     std::optional<Material> default_material;  // used by faces without a material
     SceneUse use = SceneUse::solve;
     WarningFn warn;                             // optional
-    bool strict = false;          // refuse what the repairs would fix (README: Repairs)
+    bool strict = false;          // refuse what the repairs would fix (docs/usage.md#repairs)
     std::optional<int> curve_segments;  // MGF tessellation; a scene file's value, else the default
 };
 
@@ -73,7 +73,7 @@ struct Scene {
     std::filesystem::path mesh_path;    // the mesh file actually read
     std::vector<std::filesystem::path> inputs;  // every file read: no output may replace one
     std::vector<std::string> warnings;  // the loaders' warnings ("file:line: what")
-    RepairReport repairs;               // what the load repaired (README: Repairs)
+    RepairReport repairs;               // what the load repaired (docs/usage.md#repairs)
     bool strict = false;                // loaded with --strict or a scene file's "strict": true
     int curve_segments = kDefaultCurveSegments;  // MGF tessellation used
     PatchMesh mesh;                     // validated, with the hmcr:* face properties
@@ -82,7 +82,7 @@ struct Scene {
 };
 
 // Reads a mesh file (by extension: .obj with its MTL files, .mgf with its includes), repairs it
-// unless options.strict, validates it (SPEC section 1) and returns the patch mesh. Throws
+// unless options.strict, validates it (docs/design.md §1) and returns the patch mesh. Throws
 // InputError on any problem.
 MeshFile load_mesh(const std::filesystem::path& path, const LoadOptions& options = {});
 // The same built into `mesh` (empty): OpenMesh's meshes have no move, and a copy of a

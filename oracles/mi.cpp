@@ -5,7 +5,7 @@
 //   value = w_ij * (A_i A_j / A_T) * [ (1/N_s) sum_k F_k ln F_k - F_avg ln F_avg ]
 //
 // The bracket is Jensen's gap of f(x) = x ln x over the sampled kernel: the mutual information
-// the discretisation of the pair loses (SPEC section 4). mi = kl / (A_T N_s) exactly.
+// the discretisation of the pair loses (docs/design.md §4). mi = kl / (A_T N_s) exactly.
 #include <memory>
 
 #include "oracles/kernel_stats.h"

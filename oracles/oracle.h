@@ -1,9 +1,10 @@
-// The refinement oracle interface (SPEC section 4). An oracle sees plain numbers about one
+// The refinement oracle interface (docs/design.md §4). An oracle sees plain numbers about one
 // candidate link, receiver element i and source element j, never a mesh or a ray tracer.
 //
-// The value of a link is w_ij * geometric_factor(pair), with w_ij = max_c rho_i,c * B_j,c.
+// The value of a link is w_ij * geometric_factor(pair), with w_ij = max_c rho_i,c * B_j,c and
+// B_j the source's unshot or total radiosity (the solve's link weight, docs/design.md §4.4).
 // The geometric factor depends only on the element pair and its sampled lines, so the engine
-// may compute it once per (receiver, source) pair and cache it (SPEC section 4.3). The link is
+// may compute it once per (receiver, source) pair and cache it (docs/design.md §4.3). The link is
 // accepted when value / Phi_max < epsilon.
 #pragma once
 

@@ -1,6 +1,6 @@
 // Conforming polygons for the leaves of a hierarchy: every leaf becomes a polygon that also
 // lists the corners of finer neighbouring leaves lying on its edges, so the output has no
-// T-junctions (SPEC section 5), within a patch and across mesh edges shared by two patches.
+// T-junctions (docs/design.md §5), within a patch and across mesh edges shared by two patches.
 //
 // Method: leaf corners are dyadic in parameter space (depth <= 24), so they sit exactly on an
 // integer grid of 2^24 steps per unit. A vertex is identified by its mesh vertex (patch

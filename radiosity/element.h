@@ -1,4 +1,4 @@
-// A node of a patch's quadtree (SPEC section 2). The root element is the patch itself.
+// A node of a patch's quadtree (docs/design.md §2). The root element is the patch itself.
 #pragma once
 
 #include <atomic>

@@ -40,7 +40,7 @@ public:
 
     bool can_subdivide(const Element& e) const;
     // Splits every element larger than max_area (m^2) until none is, within max_depth: the
-    // fixed uniform mesh of a converged reference (SPEC section 6). Parallel over patches.
+    // fixed uniform mesh of a converged reference (docs/design.md §6). Parallel over patches.
     void subdivide_uniformly(double max_area);
     // Splits every element that `shape` (a hierarchy of the same patches) has split: the same
     // leaves, for re-solving a mesh frozen (a study's mesh error). Parallel over patches.

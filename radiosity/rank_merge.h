@@ -1,4 +1,4 @@
-// An iteration shared by MPI ranks (README, Clusters). Each rank shoots a slice of the
+// An iteration shared by MPI ranks (docs/cluster.md). Each rank shoots a slice of the
 // iteration's rays on its own copy of the hierarchy; then every rank takes the union of all
 // ranks' subdivisions and the sum of all deposits, so that every copy is again the same.
 //

@@ -1,4 +1,4 @@
-// How many rays each iteration shoots (SPEC section 3, step 8): proportional to its unshot
+// How many rays each iteration shoots (docs/design.md §3): proportional to its unshot
 // power, so that the whole solve shoots the requested total.
 //
 // The unshot power of stochastic Jacobi falls roughly geometrically with ratio r (an average

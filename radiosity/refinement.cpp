@@ -15,7 +15,7 @@
 namespace hmcr {
 namespace {
 
-// w_ij of SPEC section 4: the largest share of the source's radiosity the receiver reflects.
+// w_ij of docs/design.md §4: the largest share of the source's radiosity the receiver reflects.
 // The papers write it with the total radiosity B_j, as RenderPark's power oracle weighs; hmcr's
 // first choice was the unshot Delta B_j, which refines later iterations much less.
 double link_weight(const RefinementContext& ctx, const Element& receiver, const Element& source) {
@@ -42,7 +42,7 @@ LinkGeometry centre_geometry(const Hierarchy& h, const Element& i, const Element
     return g;
 }
 
-// The oracle's geometric factor from the pair's own N_s lines (SPEC sections 3 and 4).
+// The oracle's geometric factor from the pair's own N_s lines (docs/design.md §3, §4).
 double line_factor(const RefinementContext& ctx, const Element& receiver, const Element& source,
                    RefinementCounters& counters) {
     const auto start = std::chrono::steady_clock::now();

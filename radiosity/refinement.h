@@ -1,4 +1,4 @@
-// Per-ray hierarchical refinement (SPEC section 3, step 5): the descent from the root link to
+// Per-ray hierarchical refinement (docs/design.md §3): the descent from the root link to
 // the receiver element that takes the ray's power.
 #pragma once
 
@@ -55,7 +55,7 @@ struct LinkQuery {
 
 // Descends from (root of receiver_patch, root of source_patch), subdividing the larger element
 // of a refused link towards the hit point y (receiver) or the ray origin x (source). One ray at
-// a time from the roots, as SPEC section 3 states it: the reference refine_links is tested
+// a time from the roots, as docs/design.md §3 states it: the reference refine_links is tested
 // against.
 Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch, const Vec2& y_uv,
                      std::uint32_t source_patch, const Vec2& x_uv, RefinementCounters& counters);

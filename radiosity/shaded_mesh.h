@@ -1,5 +1,5 @@
 // The leaves of a solved hierarchy as a conforming polygon mesh with Gouraud vertex radiosity
-// (SPEC section 5): what the VTK export and the image renderer draw.
+// (docs/design.md §5): what the VTK export and the image renderer draw.
 #pragma once
 
 #include <cstdint>

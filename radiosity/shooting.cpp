@@ -182,7 +182,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
                 if (r.fate == Fate::back_face) add(chunk.back_face, power);
                 b.deposits[k] = {};
                 if (r.fate != Fate::deposited) continue;
-                // SPEC section 3, step 6: received += rho * Phi (over A when pushed).
+                // docs/design.md §3: received += rho * Phi (over A when pushed).
                 const PatchSet& ps = ctx.hierarchy.patch_set();
                 const Rgb& rho = ps.reflectance(ps.patches[b.queries[k].receiver_patch]);
                 b.deposits[k] = {out.quantum.count(rho * r.power, dither), true};

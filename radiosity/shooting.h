@@ -1,4 +1,4 @@
-// One stochastic Jacobi iteration (SPEC section 3, steps 2-6): sources frozen, rays chosen
+// One stochastic Jacobi iteration (docs/design.md §3): sources frozen, rays chosen
 // by unshot power, each ray refined to its receiver element and deposited there.
 #pragma once
 

@@ -1,4 +1,4 @@
-// solve(): a patch mesh in, an element hierarchy with radiosity out (SPEC sections 2 and 3).
+// solve(): a patch mesh in, an element hierarchy with radiosity out (docs/design.md §2, §3).
 #pragma once
 
 #include <cstdint>

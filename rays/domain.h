@@ -1,4 +1,4 @@
-// Parameter-space domain of an element and its regular 4-way subdivision (SPEC section 2).
+// Parameter-space domain of an element and its regular 4-way subdivision (docs/design.md §2).
 //
 // On a quad patch the domain is the square [u0, u0+s] x [v0, v0+s]. On a triangle patch it is
 // a triangle with legs of length |s| along u and v from the corner (u0, v0): upright (corners

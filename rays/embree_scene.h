@@ -54,7 +54,7 @@ public:
     // Whether the open segment between two surface points is unoccluded.
     bool visible(const Vec3& p, const Vec3& q) const;
     // visible() for many segments at once, 16 per coherent packet (the segments of one element
-    // pair are coherent: SPEC section 4 line sampling).
+    // pair are coherent: docs/design.md §4 line sampling).
     void visible_many(std::span<const Vec3> p, std::span<const Vec3> q, std::span<bool> out) const;
 
     double offset() const { return m_offset; }  // self-hit offset, metres

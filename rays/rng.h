@@ -1,4 +1,4 @@
-// Keyed random streams (SPEC section 3): every ray and every oracle pair draws from a stream
+// Keyed random streams (docs/design.md §3): every ray and every oracle pair draws from a stream
 // determined by its keys alone, so results do not depend on thread scheduling.
 // The generator is SplitMix64 (Steele, Lea, Flood, "Fast splittable pseudorandom number
 // generators", OOPSLA 2014): a Weyl sequence passed through a 64-bit finaliser.

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Check a Wavefront OBJ + MTL scene against the hmcr scene conventions (SPEC section 1).
+"""Check a Wavefront OBJ + MTL scene against the hmcr scene conventions (docs/design.md §1).
 
 An author's aid, not the authority: hmcr's own loader decides validity (some tolerances here
 differ from it). What this adds: T-junctions, orientation by rays, --room.

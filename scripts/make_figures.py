@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Builds the README's study figures from a finished study and its reference.
+"""Builds the docs' study figures from a finished study and its reference.
 
     /usr/bin/python3 docs/make_figures.py studies/cornell ref/cornell cornell 19000 camera corner
 

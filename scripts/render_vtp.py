@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Render an hmcr solution (.vtp) to a PNG with VTK, the way ParaView shows it.
 
-    xvfb-run -a /usr/bin/python3 viz/render_vtp.py out/cornell.vtp scenes/cornell/cornell.json camera out/cornell.png [--edges]
+    xvfb-run -a /usr/bin/python3 scripts/render_vtp.py out/cornell.vtp scenes/cornell/cornell.json camera out/cornell.png [--edges]
 
 Colours are the solution's own RadiosityColor (tone-mapped sRGB bytes, not re-mapped through a
 colour table) with Gouraud interpolation and lighting off, as in ParaView with "Map Scalars"

@@ -1,4 +1,4 @@
-// A study's cells over MPI ranks (README, Clusters): rank 0 reads what earlier runs left, then
+// A study's cells over MPI ranks (docs/cluster.md): rank 0 reads what earlier runs left, then
 // hands out the cells still to compute, one at a time, to ranks 1..K-1 as they become free.
 // Each worker writes its cells atomically, as a single process does, so a run killed on any
 // rank loses at most the cells in flight, and a rerun with any K resumes. Rank 0 only hands out

@@ -1,4 +1,4 @@
-// Image metrics of a meshing study (SPEC section 6), on 8-bit sRGB images on the 0-255 scale,
+// Image metrics of a meshing study (docs/design.md §6), on 8-bit sRGB images on the 0-255 scale,
 // both quantised with the one exposure the study fixed from its reference.
 //
 //   RMSEa = sqrt( (1 / 3N) sum_pixels sum_channels (a_c - b_c)^2 )       channels weighted equally

@@ -1,4 +1,4 @@
-// Object-space error of a meshing study (SPEC section 6): the area-weighted relative L2
+// Object-space error of a meshing study (docs/design.md §6): the area-weighted relative L2
 // difference between a solution's and the reference's Gouraud radiosity over all surfaces,
 //
 //   e = sqrt( int |B_sol(x) - B_ref(x)|^2 dA  /  int |B_ref(x)|^2 dA ),

@@ -1,4 +1,4 @@
-// Plots without a display (SPEC section 6): a small rasteriser drawing straight into an Image8
+// Plots without a display (docs/design.md §6): a small rasteriser drawing straight into an Image8
 // (lines, square markers, a built-in 5x7 bitmap font), so that a study can write its PNG plots
 // on a headless machine with no plotting library.
 #pragma once

@@ -1,4 +1,4 @@
-// Converged references (SPEC section 6): a fixed uniform mesh solved with many rays, twice with
+// Converged references (docs/design.md §6): a fixed uniform mesh solved with many rays, twice with
 // different seeds, so that the reference states its own convergence in the study's metrics.
 //
 // On disk (`hmcr reference SCENE -o DIR`):
@@ -70,7 +70,7 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& options,
                             const Ranks& ranks = Ranks::single());
 
 // Object-space error options relative to the reflected radiosity B - E of the scene's patches
-// (viz/object_space_error.h): how references and studies compare solutions.
+// (studies/object_space_error.h): how references and studies compare solutions.
 ObjectErrorOptions reflected_error_options(const PatchMesh& mesh);
 
 // The files write_reference writes for this scene.

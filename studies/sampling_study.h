@@ -1,4 +1,4 @@
-// Sampling studies (issue 13): every pixel sampling criterion at the same mean number of
+// Sampling studies: every pixel sampling criterion at the same mean number of
 // samples per pixel and seeds, measured against a reference (studies/traced_reference.h, or a
 // radiosity reference's images), as Table 1 and Figures 4-6 of Rigau, Feixas, Sbert,
 // "Refinement criteria based on f-divergences", EGSR 2003.
@@ -14,7 +14,7 @@
 //                                  a rerun skips every cell whose file holds this cell made with
 //                                  the same settings (resume); see studies/cell_files.h
 //   OUT/images/CELL-VIEW.png       its image of each view (8-bit sRGB, the reference exposure)
-//   OUT/density/CELL-VIEW.png      its sampling density map (viz/density_map.h)
+//   OUT/density/CELL-VIEW.png      its sampling density map (image/density_map.h)
 //   OUT/figures/VIEW-images.png    the reference, then every sampler's image of the first
 //                                  seed, in the study's sampler order, 4 to a row, half size
 //   OUT/figures/VIEW-density.png   every sampler's density map of the first seed, the same way

@@ -1,4 +1,4 @@
-// Meshing studies (SPEC section 6): every oracle at one or more element budgets and seeds,
+// Meshing studies (docs/design.md §6): every oracle at one or more element budgets and seeds,
 // measured against a converged reference (studies/reference.h) in image and object space.
 //
 // A "cell" is one (budget, oracle, seed): a budget search for epsilon, the shaded mesh of the
@@ -16,6 +16,7 @@
 //   OUT/table.md                   per budget, one row per oracle: mean +- standard error over
 //                                  seeds, best error of each column in bold
 //   OUT/plots/error_vs_elements.png  object-space error against leaves, log-log, per oracle
+//   OUT/meshes.pvd                 a ParaView collection of every cell's mesh, one time step each
 //
 // The mesh error: each cell's final mesh is solved again frozen (the same leaves, no oracle)
 // with many more rays and measured the same way. The cell's own error is what a user of its

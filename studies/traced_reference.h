@@ -1,4 +1,4 @@
-// Traced references (issue 13): every view of a scene path-traced with the uniform sampler at
+// Traced references: every view of a scene path-traced with the uniform sampler at
 // many samples per pixel, an independent solution of the same light transport against which
 // sampling studies (studies/sampling_study.h) measure adaptive images. `hmcr trace-reference`
 // writes one; each view's image is the one `hmcr trace --sampler uniform --spp N` gives.

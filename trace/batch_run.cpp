@@ -1,4 +1,4 @@
-// BatchRun of viz/pixel_run.h: stratified batches of 8 samples until the criterion holds.
+// BatchRun of trace/pixel_run.h: stratified batches of 8 samples until the criterion holds.
 #include <algorithm>
 #include <array>
 #include <limits>

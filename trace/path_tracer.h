@@ -1,4 +1,4 @@
-// A path tracer of the radiosity engine's scenes (issue 13): the same patches through the same
+// A path tracer of the radiosity engine's scenes: the same patches through the same
 // Embree facade, so that a traced image is an independent solution of the same light transport.
 //
 // Surfaces are Lambertian with reflectance rho; an emitter has radiance Le = E / pi (E its
@@ -6,7 +6,7 @@
 // absorb, as in the radiosity engine, where a ray that hits a back face deposits nothing.
 //
 // The estimator of the radiance along a camera ray (Veach 1997, ch. 9; pbrt's path integrator):
-//   - next-event estimation: at every bounce one point y on the emitters (viz/emitter_sampler.h)
+//   - next-event estimation: at every bounce one point y on the emitters (trace/emitter_sampler.h)
 //     and a shadow ray, contributing f cos_x cos_y Le / (r^2 p_A(y));
 //   - BSDF sampling: a cosine-distributed continuation, throughput times rho;
 //   - both kinds of path to an emitter weighed by the power heuristic (beta = 2) of their two

@@ -1,7 +1,7 @@
 // The samples of one pixel as a function of the refinement threshold. A criterion stops
 // refining where its value falls to the threshold, so a lower threshold only ever adds samples
 // to those a higher one took: a run keeps what it traced, and extend() traces only what a new,
-// lower threshold adds. The threshold search (viz/threshold_search.h) probes many thresholds
+// lower threshold adds. The threshold search (trace/threshold_search.h) probes many thresholds
 // for the price of the lowest; the image at the threshold it accepts is assembled from the
 // same samples, and equals a fresh render at that threshold bit for bit.
 //
@@ -10,7 +10,7 @@
 // (a target that is not a multiple of 8) takes a uniformly random subset of the strata and the
 // pixel's mean stays unbiased. The pixel stops after the first batch whose value is at most the
 // threshold, or at max_samples; uniform runs always take max_samples and keep only their sums.
-// TreeRun (Scheme::quadtree): the subpixel quadtree of viz/sampling/criterion.h, to
+// TreeRun (Scheme::quadtree): the subpixel quadtree of trace/criteria/criterion.h, to
 // max_depth (the pixel is depth 0); a node refines when its value exceeds the threshold. The
 // pixel's radiance is the mean over its leaves' regions of each leaf's sample mean (Figure 5:
 // the colours of the children, each weighed by its area).
@@ -48,8 +48,8 @@ public:
     virtual double first_value() const = 0;
 };
 
-// The run of pixel (x, y) for the criterion's scheme: make_batch_run (viz/batch_run.cpp) or
-// make_tree_run (viz/tree_run.cpp).
+// The run of pixel (x, y) for the criterion's scheme: make_batch_run (trace/batch_run.cpp) or
+// make_tree_run (trace/tree_run.cpp).
 std::unique_ptr<PixelRun> make_pixel_run(const Criterion& criterion, const RunLimits& limits, int x,
                                          int y);
 std::unique_ptr<PixelRun> make_batch_run(const Criterion& criterion, std::uint32_t max_samples,

@@ -1,4 +1,4 @@
-// The runs (viz/pixel_run.h) of every pixel of one image: extended together, in parallel, and
+// The runs (trace/pixel_run.h) of every pixel of one image: extended together, in parallel, and
 // read off at a threshold as the image, its sample counts and its ray count. Each pixel owns
 // its samples and streams, so the split into tasks changes nothing.
 #pragma once

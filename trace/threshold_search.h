@@ -3,7 +3,7 @@
 // bisection on log threshold, with log-log interpolation inside a bracket.
 //
 // The mean is a step function of the threshold that falls as the threshold grows. Probes below
-// every earlier one trace new samples (viz/pixel_run.h); probes above the lowest cost nothing,
+// every earlier one trace new samples (trace/pixel_run.h); probes above the lowest cost nothing,
 // so outside a bracket the search steps up boldly (a factor 10) and down carefully (a factor
 // 1.5, or the secant of the last two probes, at most a factor 4).
 #pragma once

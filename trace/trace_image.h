@@ -1,7 +1,7 @@
-// A path-traced image of a view (`hmcr trace`): the path tracer (viz/path_tracer.h) sampled
-// per pixel by a sampling criterion (viz/sampling/), uniformly or adaptively. With an adaptive
+// A path-traced image of a view (`hmcr trace`): the path tracer (trace/path_tracer.h) sampled
+// per pixel by a sampling criterion (trace/criteria/), uniformly or adaptively. With an adaptive
 // criterion the threshold is found for a mean number of samples per pixel
-// (viz/threshold_search.h) unless one is given. The image is the box-filtered mean radiance of
+// (trace/threshold_search.h) unless one is given. The image is the box-filtered mean radiance of
 // each pixel's samples and does not depend on the thread count.
 #pragma once
 
@@ -31,10 +31,10 @@ struct TraceOptions {
     std::uint64_t seed = 1;       // keys every sample's stream
     int threads = 0;              // 0 = all cores; the image does not depend on it
     // > 0: adaptive criteria see display values, radiance x this clamped to [0, 1]
-    // (viz/sampling/display_values.h); 0: physical radiance
+    // (trace/criteria/display_values.h); 0: physical radiance
     double criterion_exposure = 0;
     // Adaptive samplers: the image from fresh samples at the counts the criterion chose
-    // (fresh_image of viz/pixel_runs.h: unbiased, and about twice the rays)
+    // (fresh_image of trace/pixel_runs.h: unbiased, and about twice the rays)
     bool fresh = false;
     PathOptions path;
 

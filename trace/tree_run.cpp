@@ -1,4 +1,4 @@
-// TreeRun of viz/pixel_run.h: the subpixel quadtree of the entropy criteria (Rigau, Feixas,
+// TreeRun of trace/pixel_run.h: the subpixel quadtree of the entropy criteria (Rigau, Feixas,
 // Sbert, "Entropy-based adaptive supersampling", 2003, Figure 5).
 #include <array>
 #include <vector>

@@ -1,4 +1,4 @@
-// A solution as ParaView reads it (SPEC section 5): the hierarchy's leaves as a conforming
+// A solution as ParaView reads it (docs/design.md §5): the hierarchy's leaves as a conforming
 // Gouraud mesh, written to a .vtp with the run's metadata. The one way solve, reference and
 // study write their solutions.
 #pragma once

@@ -1,5 +1,5 @@
-// The solution as VTK XML PolyData (.vtp, appended raw, zlib), with the arrays of SPEC
-// section 5, for ParaView.
+// The solution as VTK XML PolyData (.vtp, appended raw, zlib), with the arrays of
+// docs/design.md §5, for ParaView.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Reading a solution back from its .vtp (SPEC section 5) for rendering and comparison.
+// Reading a solution back from its .vtp (docs/design.md §5) for rendering and comparison.
 #pragma once
 
 #include <filesystem>

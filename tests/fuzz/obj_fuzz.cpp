@@ -21,7 +21,7 @@ void check_mesh(PatchMesh& mesh) {
         const auto valence = mesh.valence(fh);
         if (valence < 3 || valence > 4) crash("face that is neither a triangle nor a quad");
         for (int c = 0; c < 3; ++c) {
-            // 1 is accepted with a warning (README: Repairs), above is refused.
+            // 1 is accepted with a warning (docs/usage.md#repairs), above is refused.
             const double rho = material[fh].reflectance[c], e = material[fh].emission[c];
             if (!(rho >= 0 && rho <= 1)) crash("bad reflectance");
             if (!(e >= 0 && std::isfinite(e))) crash("bad emission");

@@ -1,5 +1,5 @@
 // The hostile-input suite: every case runs the hmcr binary as a careless or hostile user would
-// and checks the README's promise for bad input: exit code 2, one line on stderr naming what and
+// and checks the promise of docs/usage.md#bad-input: exit code 2, one line on stderr naming what and
 // where, no hang, and not one file of the working folder written, removed or changed.
 #pragma once
 

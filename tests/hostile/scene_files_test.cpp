@@ -1,4 +1,4 @@
-// Hostile scenes: every class of bad scene the README lists, and the cases that once hung,
+// Hostile scenes: every class of bad scene docs/usage.md#bad-input lists, and the cases that once hung,
 // crashed or went unnoticed.
 #include <unistd.h>
 
@@ -14,7 +14,7 @@ std::string with(std::string text, const std::string& from, const std::string& t
     return text;
 }
 
-// One bad OBJ per class of error of the README's Format section.
+// One bad OBJ per class of error of docs/usage.md#bad-input.
 TEST_F(Hostile, EveryClassOfBadObjIsRefusedWithItsLine) {
     const std::pair<std::string, std::string> cases[] = {
         {with(kPlatesObj, "v 0 0 0", "v 0 nan 0"), "plates.obj:2: 'nan' is not a finite number"},
@@ -39,7 +39,7 @@ TEST_F(Hostile, EveryClassOfBadObjIsRefusedWithItsLine) {
     }
 }
 
-// What the repairs fix (README: Repairs) is refused as before with --strict, or a scene file's
+// What the repairs fix (docs/usage.md#repairs) is refused as before with --strict, or a scene file's
 // "strict": true.
 TEST_F(Hostile, StrictRefusesWhatTheRepairsFix) {
     const std::pair<std::string, std::string> cases[] = {

@@ -1,4 +1,4 @@
-// The density map's documented colour ramp (viz/density_map.h), at its stops and between.
+// The density map's documented colour ramp (image/density_map.h), at its stops and between.
 #include "image/density_map.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // A solution's leaves as a discretisation: its cells reduced to their triangles and quads, and
-// the information measures of that discretisation (SPEC section 7).
+// the information measures of that discretisation (docs/design.md §7).
 #include "oracles/registry.h"
 #include "information/leaf_patches.h"
 

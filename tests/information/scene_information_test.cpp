@@ -1,4 +1,4 @@
-// Scene information measures (SPEC section 7) against exact values and known properties, with
+// Scene information measures (docs/design.md §7) against exact values and known properties, with
 // local lines (global lines: global_lines_test.cpp).
 //
 // Tolerances: z = 4 batch-means standard errors, plus, where the plug-in entropy's bias

@@ -1,5 +1,5 @@
 // load_obj: a good file gives the right patches, materials and adjacency; every validation
-// error of SPEC section 1 throws a InputError naming the right `file:line`.
+// error of docs/design.md §1 throws a InputError naming the right `file:line`.
 #include <gtest/gtest.h>
 
 #include <numbers>

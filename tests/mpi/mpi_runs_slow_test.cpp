@@ -1,4 +1,4 @@
-// MPI runs give what one process gives (README, Clusters): `mpirun -n 1, 2, 3` of a refined
+// MPI runs give what one process gives (docs/cluster.md): `mpirun -n 1, 2, 3` of a refined
 // solve, a budget solve, a reference and a study against the same command without mpirun, file
 // for file and byte for byte; summaries and tables equal but for timings and the per-process
 // cache counters. And a study killed on one rank resumes with another rank count.

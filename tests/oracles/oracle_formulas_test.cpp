@@ -1,4 +1,4 @@
-// The seven oracles against values computed by hand (SPEC section 4.1): power from centre
+// The seven oracles against values computed by hand (docs/design.md §4.1): power from centre
 // geometry, the six line-based ones for small kernel vectors with N_s = 4, A_i = 2, A_j = 3,
 // A_T = 10; and the identities of section 4.2.
 #include <gtest/gtest.h>
@@ -103,7 +103,7 @@ std::vector<double> random_kernel(Rng& rng, int n) {
     return f;
 }
 
-// SPEC 4.2: mi = kl / (A_T N_s) on the same lines; D <= ln N_s, chi2 <= N_s - 1, h2 <= 1,
+// docs/design.md §4.2: mi = kl / (A_T N_s) on the same lines; D <= ln N_s, chi2 <= N_s - 1, h2 <= 1,
 // V >= 0, and the mi bracket (Jensen's gap) >= 0.
 TEST(OracleIdentities, HoldOnRandomKernels) {
     Rng rng(42, 0);

@@ -1,4 +1,4 @@
-// Budget search (SPEC section 6): epsilon by bisection on log epsilon until the leaf count is
+// Budget search (docs/design.md §6): epsilon by bisection on log epsilon until the leaf count is
 // within the tolerance, for every oracle; clean failures when the budget cannot be reached.
 #include <gtest/gtest.h>
 

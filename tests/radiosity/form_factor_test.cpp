@@ -1,6 +1,6 @@
-// Monte Carlo form factors against the exact values of SPEC section 8.
+// Monte Carlo form factors against the exact values of docs/design.md §8.
 //
-// Line pairs (x uniform on i, y uniform on j, the SPEC section 4 kernel with Embree
+// Line pairs (x uniform on i, y uniform on j, the docs/design.md §4 kernel with Embree
 // visibility) estimate F_ij = A_j E[F(x, y)]; the standard error is the sample one. For
 // elements sharing an edge that estimator has infinite variance (F ~ 1/r^2 near the edge, a
 // tail P(F > t) ~ t^-3/2), so its sample standard error is no valid tolerance; the

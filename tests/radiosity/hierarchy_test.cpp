@@ -1,4 +1,4 @@
-// The element quadtree (SPEC section 2): areas, point location, identities, limits, push-pull.
+// The element quadtree (docs/design.md §2): areas, point location, identities, limits, push-pull.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -114,7 +114,7 @@ TEST(Hierarchy, UniformSubdivisionSplitsExactlyTheElementsAboveTheArea) {
     EXPECT_GT(h.leaf_count(), 100u);
 }
 
-// SPEC section 2: a 1M-element hierarchy must fit well under 1 GiB.
+// docs/design.md §2: a 1M-element hierarchy must fit well under 1 GiB.
 TEST(Hierarchy, AMillionElementsFitInAFifthOfAGibibyte) {
     EXPECT_LE(sizeof(Element) * 1'000'000, std::size_t(200) << 20) << sizeof(Element);
 }

@@ -1,4 +1,4 @@
-// The link cache (SPEC section 4.3) and the mi/kl identity at the level of whole solves.
+// The link cache (docs/design.md §4.3) and the mi/kl identity at the level of whole solves.
 #include <gtest/gtest.h>
 
 #include "meshes/scene.h"
@@ -67,7 +67,7 @@ TEST(LinkCache, EvictionAndSizeDoNotChangeTheSolution) {
     expect_same(leaves_of(big), leaves_of(none));
 }
 
-// SPEC 4.2: mi = kl / (A_T N_s) on the same lines, so mi at eps_kl / (A_T N_s) refines exactly
+// docs/design.md §4.2: mi = kl / (A_T N_s) on the same lines, so mi at eps_kl / (A_T N_s) refines exactly
 // like kl at eps_kl.
 TEST(LinkCache, MiAtTheScaledEpsilonBuildsTheSameHierarchyAsKl) {
     const Scene scene = load_scene("cornell");

@@ -1,5 +1,5 @@
 // The grouped descent (refine_links, what shooting uses) against the one-ray descent from the
-// patch roots that SPEC section 3 states (refine_link): for every oracle, on quads and on
+// patch roots that docs/design.md §3 states (refine_link): for every oracle, on quads and on
 // triangles, every ray must end on the same element, the two hierarchies must be the same and
 // the decisions counted the same; the grouped one must evaluate fewer links.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The solver against exact results (SPEC section 8), for every registered oracle.
+// The solver against exact results (docs/design.md §8), for every registered oracle.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -192,7 +192,7 @@ TEST_P(EveryOracle, SameHierarchyAndValuesForOneAndTwoThreads) {
     }
 }
 
-// SPEC 3 step 8: the iterations together shoot --rays within 2%, also where the light dies out
+// docs/design.md §3: the iterations together shoot --rays within 2%, also where the light dies out
 // after two iterations (plates, shadow: black emitters and occluders).
 TEST_P(EveryOracle, RaysAddUpToTheRequestedTotal) {
     for (const char* name : {"cornell", "plates", "shadow"}) {

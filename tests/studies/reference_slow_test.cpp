@@ -3,7 +3,7 @@
 //
 // Reference: the Cornell box on a uniform mesh of elements <= 1e-3 m^2 (about 3,800 elements),
 // 20 M rays per seed. Solution: power at 2,000 leaves (budget search), 2.684 M rays. Object-
-// space error relative to the reflected radiosity (viz/object_space_error.h). Measured: the
+// space error relative to the reflected radiosity (studies/object_space_error.h). Measured: the
 // seeds differ by 0.0086; the power solution is off by 0.054, 6.3 times more. Required: a
 // factor of 3. The seed difference is sqrt(2) times the reference's own noise, so a factor 3 on
 // the difference is above 4 on the noise the reference adds to a study's numbers. (At 5 M rays

@@ -1,4 +1,4 @@
-// Exact form factors of SPEC section 8 (standard configuration-factor catalogue formulas).
+// Exact form factors of docs/design.md §8 (standard configuration-factor catalogue formulas).
 #pragma once
 
 #include <cmath>

@@ -27,7 +27,7 @@ double plug_in_bias_bound(const PatchSet& set, const ChannelSamples& samples);
 MeasuredChannel measure_channel(const PatchSet& set, const LineOptions& options);
 
 // The empty cube's channel, exactly: every face sees the opposite one with F = 0.19982 and
-// each of the four adjacent ones with F = 0.20004 (SPEC section 8), and a_i = 1/6.
+// each of the four adjacent ones with F = 0.20004 (docs/design.md §8), and a_i = 1/6.
 struct EmptyCube {
     double opposite, adjacent;  // the two form factors
     double h_p, h_s, i_s;       // bits

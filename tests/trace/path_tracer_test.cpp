@@ -1,4 +1,4 @@
-// The path tracer against exact radiance (issue 13): a closed furnace, a directly lit plate,
+// The path tracer against exact radiance: a closed furnace, a directly lit plate,
 // and its estimators against each other. Each is a hypothesis test on the mean over an image's
 // pixels, whose standard error comes from the pixels' own sample variance (pixels draw from
 // independent streams).

@@ -6,7 +6,7 @@
 //
 // which is D((p, 1 - p) || (1/2, 1/2)) / ln 2, the oracles' Kullback-Leibler divergence
 // (oracles/divergences.h) of the two-point distribution. Combined into eq. 19 by
-// viz/sampling/entropy_contrast.h. When to use it: like `entropy`, a little cheaper, and blind
+// trace/criteria/entropy_contrast.h. When to use it: like `entropy`, a little cheaper, and blind
 // to how the samples between the extremes are spread.
 #include <algorithm>
 #include <array>

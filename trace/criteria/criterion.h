@@ -1,9 +1,9 @@
-// Pixel sampling criteria (issue 13): whether a pixel, or a region of one, has enough samples.
+// Pixel sampling criteria: whether a pixel, or a region of one, has enough samples.
 // Like the refinement oracles (oracles/oracle.h) they see plain numbers, the samples' radiance
-// and geometry, never a scene or a ray; each is one file of viz/sampling/ plus one line of
-// viz/sampling/registry.cpp.
+// and geometry, never a scene or a ray; each is one file of trace/criteria/ plus one line of
+// trace/criteria/registry.cpp.
 //
-// A criterion's scheme says how its samples are laid out (viz/pixel_runs.h runs them):
+// A criterion's scheme says how its samples are laid out (trace/pixel_runs.h runs them):
 //   uniform   every pixel gets exactly the target number of samples; value() is not asked.
 //   batches   a first batch of 8 stratified samples (2 x 4 strata), then further batches of 8
 //             while value() of all the pixel's samples exceeds the threshold, up to the pixel's

@@ -5,7 +5,7 @@
 //
 // and 1 - H(p) / ln n = D(p||uniform) / ln n, since D(p||uniform) = ln n - H(p): the
 // Kullback-Leibler divergence the oracles use (oracles/divergences.h). Combined into eq. 19 by
-// viz/sampling/entropy_contrast.h. When to use it: edges and shadow contours, with a depth-
+// trace/criteria/entropy_contrast.h. When to use it: edges and shadow contours, with a depth-
 // limited subpixel tree that spends samples inside the pixel where they vary.
 #include <cmath>
 #include <memory>
