@@ -27,7 +27,7 @@ struct SolveArgs {
     SolverOptions options;
     SolverFlags flags;
     BudgetOptions budget;  // leaves == 0: no budget, solve at epsilon
-    double crease_degrees = 30;
+    double crease_degrees = kCreaseDegrees;
     std::string progress = "auto";
     bool quiet = false;
     SceneFlags scene_flags;
@@ -116,7 +116,7 @@ Command solve_command(CLI::App& app, const std::string& command_line) {
     args->flags = add_solver_flags(*cmd, args->options);
     add_scene_flags(*cmd, args->scene_flags);
     cmd->add_option("--budget", args->budget.leaves,
-                    "target leaf count: epsilon is found by bisection (each probe a full solve)")
+                    "target leaf count: epsilon is searched for on a log scale (each probe a full solve)")
         ->transform(count_notation());
     cmd->add_option("--budget-tolerance", args->budget.tolerance,
                     "accepted relative distance to the budget")

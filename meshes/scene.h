@@ -17,7 +17,7 @@ namespace hmcr {
 
 struct Material {
     std::string name;
-    Eigen::Vector3d kd{0, 0, 0};  // diffuse reflectance rho, each channel in [0, 1)
+    Eigen::Vector3d kd{0, 0, 0};  // diffuse reflectance rho, each channel in [0, 1]
     Eigen::Vector3d ke{0, 0, 0};  // emitted radiance, W sr^-1 m^-2; E = pi * ke
 };
 

@@ -1,4 +1,4 @@
-// Solving to an element budget (docs/design.md §6): epsilon found by bisection on log epsilon
+// Solving to an element budget (docs/design.md §6.1): epsilon searched for on log epsilon
 // until the leaf count is within a tolerance of the target, every probe a full solve with the
 // same seed.
 #pragma once

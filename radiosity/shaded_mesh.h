@@ -11,6 +11,10 @@
 
 namespace hmcr {
 
+// Patches meeting at this angle or more are not blended in the Gouraud values (degrees): the
+// default of `--crease-angle`, references and studies.
+inline constexpr double kCreaseDegrees = 30;
+
 // Plain arrays in VTK's layout: cell c is connectivity[offsets[c] .. offsets[c + 1]).
 struct ShadedMesh {
     std::vector<Vec3> points;
@@ -31,10 +35,11 @@ struct ShadedMesh {
 // output shares points along mesh edges and at mesh vertices. Patches whose normals differ by
 // `crease_degrees` or more are not blended and get separate points. Throws
 // std::invalid_argument when the patches have no mesh vertices or they do not match.
-ShadedMesh build_shaded_mesh(const Hierarchy& h, double crease_degrees = 30);
+ShadedMesh build_shaded_mesh(const Hierarchy& h, double crease_degrees = kCreaseDegrees);
 // The same, for a tree nobody needs afterwards: it is released as soon as the conforming
 // polygons, the cells' data and the crease flags are taken from it, before the largest arrays
 // of the output are built. At 10^6 patches the tree and its patches are 400 MB.
-ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, double crease_degrees = 30);
+ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h,
+                             double crease_degrees = kCreaseDegrees);
 
 }  // namespace hmcr

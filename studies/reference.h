@@ -42,7 +42,7 @@ struct ReferenceOptions {
         return s;
     }();
     int samples_per_axis = 2;  // supersampling of the view images
-    double crease_degrees = 30;
+    double crease_degrees = kCreaseDegrees;
 };
 
 struct ViewImage {

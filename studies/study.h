@@ -62,7 +62,7 @@ struct StudyOptions {
     double budget_tolerance = 0.01;    // relative distance to the budget accepted
     int samples_per_axis = 2;          // supersampling of the images
     std::filesystem::path output;      // the study folder
-    double crease_degrees = 30;        // Gouraud blending limit of the shaded meshes
+    double crease_degrees = kCreaseDegrees;  // Gouraud blending limit of the shaded meshes
     // A folder's cells must all be made with the same settings (study_settings): a rerun with
     // other settings is refused, unless this is set, when such cells are computed again.
     bool redo_other_settings = false;

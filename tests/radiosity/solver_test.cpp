@@ -171,8 +171,8 @@ TEST(Solver, RunningOutOfRaysKeepsTheUnshotPower) {
     for (const auto& it : sol.stats.iterations) EXPECT_GT(it.rays, 0u);
 }
 
-// Same seed: the same hierarchy and, because deposits are summed in ray order, the same
-// radiosity for any thread count.
+// Same seed: the same hierarchy and, because deposits are summed as whole quanta (exact in any
+// order), the same radiosity for any thread count.
 TEST_P(EveryOracle, SameHierarchyAndValuesForOneAndTwoThreads) {
     const Scene scene = load_scene("cornell");
     auto run = [&](int threads) {

@@ -1,6 +1,8 @@
-// uniform: no adaptivity; every pixel gets exactly the target number of samples, in stratified
-// batches of 8 (2 x 4). The baseline the adaptive criteria have to beat, and the sampler of
-// traced references.
+// uniform: every pixel gets exactly the target number of samples, in stratified batches of 8.
+// No paper: no adaptivity, the baseline the adaptive criteria have to beat.
+//
+// The batches are 2 x 4 strata, as the adaptive criteria's first batch; the sampler of traced
+// references.
 #include <memory>
 
 #include "trace/criteria/criterion.h"

@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""The docs stay true to the tree: every relative link of README.md and docs/*.md names a file
+that exists and, with #anchor, one of its headings; every docs/... citation in the sources
+resolves (docs/design.md §N to a heading numbered N, docs/X.md#anchor to a heading); and every
+registered oracle and pixel criterion has its entry in docs/oracles.md or docs/criteria.md,
+holding line 2 of its source file's opening comment (its paper, or why it has none).
+Usage: check_docs.py REPO_ROOT. Prints one line per problem; exit code 1 if there is any."""
+import pathlib
+import re
+import sys
+
+root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
+problems = []
+
+
+def slug(heading):
+    """GitHub's anchor of a heading: lower case, spaces to '-', punctuation dropped."""
+    text = re.sub(r"`|\*", "", heading.strip().lower())
+    text = re.sub(r"[^\w\- ]", "", text)
+    return text.replace(" ", "-")
+
+
+def headings(path):
+    """Every heading of a Markdown file (outside code blocks): its text."""
+    out, fenced = [], False
+    for line in path.read_text().splitlines():
+        if line.startswith("```"):
+            fenced = not fenced
+        elif not fenced and (m := re.match(r"#{1,6} (.*)", line)):
+            out.append(m.group(1).strip())
+    return out
+
+
+def anchors(path):
+    seen, out = {}, set()
+    for h in headings(path):
+        s = slug(h)
+        n = seen.get(s, 0)
+        out.add(s if n == 0 else f"{s}-{n}")
+        seen[s] = n + 1
+    return out
+
+
+def check_link(source, where, target):
+    path, _, anchor = target.partition("#")
+    file = (source.parent / path).resolve() if path else source
+    if not file.exists():
+        problems.append(f"{where}: link to {target}: no such file")
+    elif anchor and file.suffix == ".md" and anchor not in anchors(file):
+        problems.append(f"{where}: link to {target}: no such heading in {file.name}")
+
+
+# 1. Relative links between the docs.
+for md in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
+    fenced = False
+    for n, line in enumerate(md.read_text().splitlines(), 1):
+        if line.startswith("```"):
+            fenced = not fenced
+            continue
+        if fenced:
+            continue
+        for target in re.findall(r"\]\(([^)\s]+)\)", line):
+            if re.match(r"[a-z]+:", target):  # http:, mailto:
+                continue
+            check_link(md, f"{md.relative_to(root)}:{n}", target)
+
+# 2. Citations of the docs in the sources: docs/design.md §N, docs/X.md#anchor.
+design = root / "docs" / "design.md"
+numbers = {m.group(1) for h in headings(design) if (m := re.match(r"(\d+(?:\.\d+)*)\.? ", h))}
+sources = [p for p in root.rglob("*") if p.suffix in (".cpp", ".h", ".py", ".sh", ".txt")
+           or p.name in ("CMakeLists.txt", "Makefile")]
+for src in sorted(sources):
+    rel = src.relative_to(root)
+    if rel.parts[0].startswith(("build", ".git")) or rel == pathlib.Path(__file__).relative_to(root):
+        continue
+    for n, line in enumerate(src.read_text(errors="replace").splitlines(), 1):
+        for doc, rest in re.findall(r"docs/([\w-]+\.md)((?:#[\w-]+)?(?: §[\d.]+(?:, §[\d.]+)*)?)",
+                                    line):
+            where = f"{rel}:{n}"
+            if rest.startswith("#"):
+                check_link(root / "docs" / "x.md", where, doc + rest)
+            else:
+                check_link(root / "docs" / "x.md", where, doc)
+            for number in re.findall(r"§([\d.]+[\d])", rest):
+                if doc != "design.md" or number not in numbers:
+                    problems.append(f"{where}: docs/{doc} §{number}: no such section")
+
+# 3. Every registered plug-in has its entry, holding its paper paragraph.
+def plugin_entries(registry, folder, doc):
+    text = (root / registry).read_text()
+    sections = {}
+    current = None
+    for line in (root / doc).read_text().splitlines():
+        if m := re.match(r"## `([^`]+)`\s*$", line):
+            current = m.group(1)
+            sections[current] = []
+        elif line.startswith("## "):
+            current = None
+        elif current:
+            sections[current].append(line)
+    for file_name in re.findall(r"^\s*X\((\w+)\)", text, re.M):
+        src = root / folder / f"{file_name}.cpp"
+        code = src.read_text()
+        name = re.search(r'Named(?:Oracle|Criterion)\(\s*"([^"]+)"', code).group(1)
+        second = code.splitlines()[1]
+        paper = second[2:].strip() if second.startswith("//") else ""
+        entry = sections.get(name)
+        if entry is None:
+            problems.append(f"{doc}: no entry '## `{name}`' for the registered {src.relative_to(root)}")
+        elif paper and paper not in " ".join(" ".join(entry).split()):
+            problems.append(f"{doc}: the entry of `{name}` does not hold line 2 of "
+                            f"{src.relative_to(root)}: {paper!r}")
+
+
+plugin_entries("oracles/registry.cpp", "oracles", "docs/oracles.md")
+plugin_entries("trace/criteria/registry.cpp", "trace/criteria", "docs/criteria.md")
+
+for p in problems:
+    print(p)
+sys.exit(1 if problems else 0)
