@@ -58,6 +58,17 @@ std::vector<std::size_t> pair_transforms(const std::vector<MgfStatement>& statem
 
 }  // namespace
 
+void check_mgf_include(const std::vector<std::filesystem::path>& open,
+                       const std::filesystem::path& next, const std::string& where) {
+    if (open.size() >= kMaxMgfIncludeDepth) {
+        throw InputError(where,
+                         fmt::format("includes nested more than {} deep", kMaxMgfIncludeDepth));
+    }
+    for (const std::filesystem::path& file : open) {
+        if (file == next) throw InputError(where, "the file includes itself");
+    }
+}
+
 MgfFile read_mgf_file(const std::filesystem::path& path, std::uint32_t index) {
     MgfFile file{path, index, split_statements(read_text_file(path), path.string()), {}};
     file.xf_close = pair_transforms(file.statements, path.string());

@@ -26,4 +26,12 @@ struct MgfFile {
 // never closed, or one that closes nothing.
 MgfFile read_mgf_file(const std::filesystem::path& path, std::uint32_t index);
 
+// Files include each other at most this deep.
+inline constexpr std::size_t kMaxMgfIncludeDepth = 64;
+
+// Throws InputError at `where` when `next`, included from the innermost of the files `open`,
+// would nest includes more than kMaxMgfIncludeDepth deep or is one of them (a cycle).
+void check_mgf_include(const std::vector<std::filesystem::path>& open,
+                       const std::filesystem::path& next, const std::string& where);
+
 }  // namespace hmcr

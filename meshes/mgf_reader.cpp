@@ -15,6 +15,7 @@
 #include "meshes/mgf_color.h"
 #include "meshes/mgf_contexts.h"
 #include "meshes/mgf_file.h"
+#include "meshes/mgf_polygon_count.h"
 #include "meshes/mgf_shapes.h"
 #include "meshes/mgf_transform.h"
 
@@ -36,6 +37,18 @@ struct Ignored {
 // the highest of real diffusers (a channel of 1 would absorb nothing).
 constexpr double kMaxColouredReflectance = 0.99;
 
+// Throws InputError at `where` unless the statement has min to max arguments.
+void need_arguments(const std::vector<std::string>& w, std::size_t min, std::size_t max,
+                    const std::string& where) {
+    const std::size_t n = w.size() - 1;
+    if (n < min || n > max) {
+        throw InputError(
+            where, max == SIZE_MAX
+                       ? fmt::format("'{}' needs at least {} arguments, found {}", w[0], min, n)
+                       : fmt::format("'{}' needs {} to {} arguments, found {}", w[0], min, max, n));
+    }
+}
+
 double parse_number(const std::string& token, const std::string& where) {
     double v = 0;
     const std::string_view t = token.front() == '+' ? std::string_view(token).substr(1) : token;
@@ -48,7 +61,13 @@ double parse_number(const std::string& token, const std::string& where) {
 
 class MgfReader {
 public:
-    explicit MgfReader(const MgfOptions& options) : m_options(options) {}
+    explicit MgfReader(const MgfOptions& options)
+        : m_options(options),
+          m_count(options.curve_segments,
+                  [this](const MgfFile& from, const MgfStatement& i,
+                         const std::string& where) -> const MgfFile& {
+                      return load(include_path(from, i.words, where), where);
+                  }) {}
 
     PolygonSoup read(const fs::path& top) {
         run_file(load(top, top.string()));
@@ -75,10 +94,7 @@ private:
     }
 
     void run_file(const MgfFile& file) {
-        if (m_stack.size() >= 64) throw InputError(m_where, "includes nested more than 64 deep");
-        for (const fs::path& open : m_stack) {
-            if (open == file.path) throw InputError(m_where, "the file includes itself");
-        }
+        check_mgf_include(m_stack, file.path, m_where);
         m_stack.push_back(file.path);
         run_block(file, 0, file.statements.size());
         m_stack.pop_back();
@@ -91,10 +107,11 @@ private:
             m_where = at(file.path, s.line);
             count_step();
             if (s.words[0] == "xf") {
-                run_transformed(parse_mgf_xf(arguments(s.words, 1), m_where),
-                                file.xf_close[i] == i + 1,
-                                [&] { run_block(file, i + 1, file.xf_close[i]); });
-                i = file.xf_close[i];
+                const MgfXf xf = parse_mgf_xf(arguments(s.words, 1), m_where);
+                const std::size_t close = file.xf_close[i];
+                if (xf.instances() > 1) expect_polygons(m_count.block(file, i + 1, close), xf);
+                run_transformed(xf, close == i + 1, [&] { run_block(file, i + 1, close); });
+                i = close;
             } else {
                 execute(s.words, file);
             }
@@ -111,17 +128,39 @@ private:
         }
     }
 
+    // Refuses an array whose instances, each making `per_instance` polygons, would make more
+    // than the limit, before it makes any.
+    void expect_polygons(std::uint64_t per_instance, const MgfXf& xf) const {
+        const auto n = std::uint64_t(xf.instances());
+        const std::uint64_t room = m_options.max_polygons - m_soup.polygon_count();
+        if (per_instance == 0 || per_instance <= room / n) return;
+        // The count saturates at 2^64 - 1 (mgf_polygon_count.h).
+        std::string makes = "more than 2^64";
+        if (per_instance <= UINT64_MAX / n) makes = fmt::format("{}", per_instance * n);
+        if (per_instance < UINT64_MAX)
+            makes += fmt::format(" ({} instances of {})", n, per_instance);
+        throw InputError(m_where, fmt::format("more than {} polygons: the array makes {}",
+                                              m_options.max_polygons, makes));
+    }
+
     static std::vector<std::string_view> arguments(const std::vector<std::string>& w,
                                                    std::size_t from) {
         return {w.begin() + std::ptrdiff_t(from), w.end()};
     }
 
-    // Runs `body` once per instance of the transformation, each inside the enclosing one. The
-    // instances of an empty body are only counted, all at once: each would cost a power of the
+    // Runs `body` once per instance of the transformation, each inside the enclosing one and one
+    // level deeper (the levels are limited: each is a few frames of the stack). The instances
+    // of an empty body are only counted, all at once: each would cost a power of the
     // transformation and do nothing.
     template <typename Body>
     void run_transformed(const MgfXf& xf, bool empty_body, Body&& body) {
         if (empty_body) return count_step(std::uint64_t(xf.instances()));
+        if (m_depth == m_options.max_nesting) {
+            throw InputError(m_where,
+                             fmt::format("transformations and includes nested more than {} deep",
+                                         m_options.max_nesting));
+        }
+        ++m_depth;
         const MgfTransform enclosing = m_transform;
         for (long long k = 0; k < xf.instances(); ++k) {
             count_step();
@@ -129,15 +168,24 @@ private:
             body();
         }
         m_transform = enclosing;
+        --m_depth;
+    }
+
+    // The path of the file an include statement `w` of `from` names.
+    static fs::path include_path(const MgfFile& from, const std::vector<std::string>& w,
+                                 const std::string& where) {
+        need_arguments(w, 1, SIZE_MAX, where);
+        if (fs::path(w[1]).is_absolute()) {
+            throw InputError(where, "include paths are relative to the including file");
+        }
+        return from.path.parent_path() / w[1];
     }
 
     void include(const std::vector<std::string>& w, const MgfFile& from) {
-        need(w, 1, SIZE_MAX);
-        if (fs::path(w[1]).is_absolute()) {
-            throw InputError(m_where, "include paths are relative to the including file");
-        }
+        const fs::path path = include_path(from, w, m_where);
         const MgfXf xf = parse_mgf_xf(arguments(w, 2), m_where);
-        const MgfFile& file = load(from.path.parent_path() / w[1], m_where);
+        const MgfFile& file = load(path, m_where);
+        if (xf.instances() > 1) expect_polygons(m_count.whole(file), xf);
         const std::string where = m_where;
         run_transformed(xf, file.statements.empty(), [&] {
             m_where = where;
@@ -165,14 +213,7 @@ private:
     }
 
     void need(const std::vector<std::string>& w, std::size_t min, std::size_t max) const {
-        const std::size_t n = w.size() - 1;
-        if (n < min || n > max) {
-            throw InputError(
-                m_where,
-                max == SIZE_MAX
-                    ? fmt::format("'{}' needs at least {} arguments, found {}", w[0], min, n)
-                    : fmt::format("'{}' needs {} to {} arguments, found {}", w[0], min, max, n));
-        }
+        need_arguments(w, min, max, m_where);
     }
 
     double number(const std::vector<std::string>& w, std::size_t i) const {
@@ -303,9 +344,11 @@ private:
     void finish_warnings();
 
     MgfOptions m_options;
+    MgfPolygonCount m_count;
     PolygonSoup m_soup;
     std::map<fs::path, std::unique_ptr<MgfFile>> m_files;
     std::vector<fs::path> m_stack;  // files being run, for cycles
+    int m_depth = 0;                // transformations and includes around the statement run
     Contexts<Chromaticity> m_colors;
     Contexts<MgfMaterial> m_materials;
     Contexts<MgfVertex> m_vertices;

@@ -24,7 +24,13 @@ struct MgfOptions {
     // few lines can ask for 10^18 instances. 10^7 is a few seconds of refusing, and over a
     // thousand times what RenderPark's largest scene (soda, 7,134) runs.
     std::uint64_t max_statements = 10'000'000;
+    // Arrays are counted before they run (meshes/mgf_polygon_count.h): one whose polygons would
+    // pass this is refused before it makes any.
     std::size_t max_polygons = 50'000'000;
+    // Transformations (xf blocks) and includes nested around a statement, counted together:
+    // each level is a few hundred bytes of the stack, and a file of 20,000 levels overflowed it.
+    // RenderPark's scenes nest a handful.
+    int max_nesting = 1000;
 };
 
 // The polygons and materials of an MGF file and the files it includes. Throws InputError
