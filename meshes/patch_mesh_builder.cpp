@@ -198,6 +198,16 @@ std::string PolygonSoup::where(SourcePlace p) const {
     return p.line == 0 ? file : at(file, int(p.line));
 }
 
+void check_positions(const PolygonSoup& soup) {
+    for (std::size_t k = 0; k < soup.polygon_count(); ++k) {
+        for (std::uint32_t c : soup.corners(k)) {
+            if (auto error = check_position(soup.positions[c])) {
+                throw InputError(soup.where(soup.place[k]), *error);
+            }
+        }
+    }
+}
+
 PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options) {
     PatchMesh mesh;
     build_patch_mesh(soup, weld(soup.positions), options, mesh);

@@ -52,6 +52,11 @@ struct PolygonSoup {
     std::string where(SourcePlace p) const;  // "path:line", or "path" for line 0
 };
 
+// Throws InputError at the place of the first polygon with a corner that check_position
+// (meshes/validation.h) refuses. The loader checks before the repairs, whose arithmetic on such
+// corners overflows (a sphere of radius 1e300 was "self-intersecting").
+void check_positions(const PolygonSoup& soup);
+
 // The validated patch mesh of the soup (docs/design.md §1): equal positions welded, every polygon
 // checked (geometry, material), no duplicate faces, an emitter when the scene is to be solved.
 // Throws InputError at the place of the first problem.

@@ -282,6 +282,7 @@ MeshReport load_soup(PolygonSoup soup, const LoadOptions& options, PatchMesh& me
         if (!options.warn) return;
         for (std::size_t w = from; w < soup.warnings.size(); ++w) options.warn(soup.warnings[w]);
     };
+    check_positions(soup);  // before the warnings: a refusal is one line
     tell(0);
     RepairReport repairs;
     const Welding welding = weld(soup.positions);  // once: the repairs keep the positions

@@ -112,6 +112,18 @@ double largest_edge(const std::vector<Eigen::Vector3d>& p) {
     return longest;
 }
 
+std::optional<std::string> check_position(const Eigen::Vector3d& p) {
+    for (int c = 0; c < 3; ++c) {
+        if (!(std::abs(p[c]) <= kMaxCoordinate)) {
+            return fmt::format(
+                "coordinate {:g} is out of range: hmcr reads positions within +-{:g} m (its ray "
+                "tracer computes in single precision)",
+                p[c], kMaxCoordinate);
+        }
+    }
+    return std::nullopt;
+}
+
 bool quad_is_planar(const std::vector<Eigen::Vector3d>& corners) {
     const auto [distance, tolerance] = off_plane(corners);
     return distance <= tolerance;

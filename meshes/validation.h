@@ -22,6 +22,11 @@ inline constexpr double kPlanarityRatio = 1e-4;        // off-plane distance / d
 // Emitted radiance above this is refused: the sun's is about 2e7 W/(sr m^2), and far larger
 // values overflow the sums of power into infinities (a solve that never ends).
 inline constexpr double kMaxRadiance = 1e20;
+// A corner with a coordinate beyond this (metres, either sign) is refused: the ray tracer
+// (Embree) computes in single precision, where a product of three lengths overflows (3.4e38)
+// from about 7e12 m. A scene scaled by 1e13 already solves differently from the same scene at
+// 1e12; by 1e15 no ray finds the light.
+inline constexpr double kMaxCoordinate = 1e12;
 
 // The longest edge of a closed polygon: the length the degeneracy tolerances are relative to.
 double largest_edge(const std::vector<Eigen::Vector3d>& corners);
@@ -29,6 +34,9 @@ double largest_edge(const std::vector<Eigen::Vector3d>& corners);
 // Whether the 4th corner of a quad lies within kPlanarityRatio x its longer diagonal of the plane
 // of the other three.
 bool quad_is_planar(const std::vector<Eigen::Vector3d>& corners);
+
+// The message for a position with a coordinate beyond kMaxCoordinate, or nothing.
+std::optional<std::string> check_position(const Eigen::Vector3d& p);
 
 // Checks one polygon given by its corners (counter-clockwise, welded: equal positions are the
 // same index in `ids`): 3 or 4 distinct corners, no zero-area corner, and for a quad planarity

@@ -65,5 +65,16 @@ TEST_F(Hostile, ArraysOfArraysAndOfIncludesAreCountedWhole) {
     refused("info twice.mgf", "twice.mgf:1: more than 50000000 polygons");
 }
 
+// A sphere of radius 1e300 was "self-intersecting": its coordinates are beyond what the ray
+// tracer's single-precision arithmetic holds, and that is what is said.
+TEST_F(Hostile, CoordinatesBeyondTheTracersRangeAreRefused) {
+    m_temp.write("huge.mgf", std::string(kLamp) + "sph c 1e300\n");
+    refused("info huge.mgf", "huge.mgf:5: coordinate -2.58819e+299 is out of range");
+    m_temp.write("far.mgf", std::string(kLamp) + "xf -t 2e12 0 0\nsph c 1\nxf\n");
+    refused("solve far.mgf -o out.vtp", "far.mgf:6: coordinate 2e+12 is out of range");
+    m_temp.write("large.mgf", std::string(kLamp) + "sph c 1e11\n");
+    accepted("info large.mgf --lines 1000");
+}
+
 }  // namespace
 }  // namespace hmcr::test
