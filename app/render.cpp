@@ -62,7 +62,7 @@ Command render_command(CLI::App& app) {
     auto* cmd = app.add_subcommand("render", "render a solution (.vtp) from a view of its scene");
     cmd->add_option("solution", a->solution, "the solution's .vtp")->required();
     cmd->add_option("--scene", a->scene, "the scene it solves (for its views)")->required();
-    cmd->add_option("--view", a->view, "view name (default: the scene's first)");
+    add_view_flag(*cmd, a->view);
     add_scene_flags(*cmd, a->scene_flags);
     cmd->add_option("-o,--output", a->output, "8-bit sRGB .png")->required();
     cmd->add_option("--pfm", a->pfm, "also write the linear radiance as .pfm");

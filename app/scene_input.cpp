@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "common/error.h"
 #include "common/memory.h"
 
 namespace hmcr {
@@ -16,6 +17,17 @@ void add_scene_flags(CLI::App& command, SceneFlags& flags) {
                                 "file's, else {})",
                                 kDefaultCurveSegments))
         ->check(CLI::Range(kMinCurveSegments, kMaxCurveSegments));
+}
+
+void add_view_flag(CLI::App& command, std::string& view) {
+    command.add_option_function<std::string>(
+        "--view",
+        [&view](const std::string& name) {
+            if (name.empty()) throw InputError("view: the name is empty (without --view: the "
+                                               "scene's first view)");
+            view = name;
+        },
+        "view name (default: the scene's first)");
 }
 
 Scene load_scene_reporting(const std::string& name_or_path, bool quiet, SceneUse use,

@@ -17,6 +17,10 @@ struct SceneFlags {
 
 void add_scene_flags(CLI::App& command, SceneFlags& flags);
 
+// --view NAME, bound to `view`; an empty name is refused (without the flag, `view` stays empty:
+// the scene's first view).
+void add_view_flag(CLI::App& command, std::string& view);
+
 Scene load_scene_reporting(const std::string& name_or_path, bool quiet,
                            SceneUse use = SceneUse::solve, const SceneFlags& flags = {});
 

@@ -106,6 +106,7 @@ int run_trace(TraceArgs& a, const std::string& command_line) {
     check_outputs(a, scene);
     const fs::path png(a.output);
     const View view = sized_view(find_view(scene, a.view), a.flags);
+    check_trace_memory(a.options, view);
     const double fixed = fixed_exposure(a.exposure, view.name);
     const PathTracer tracer(build_patch_set(scene.mesh), a.options.path);
     TerminalProgress progress(mode, "hmcr trace " + scene.name);
@@ -130,7 +131,7 @@ Command trace_command(CLI::App& app, const std::string& command_line) {
     auto a = std::make_shared<TraceArgs>();
     auto* cmd = app.add_subcommand("trace", "path-trace a view, with adaptive supersampling");
     cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj or .mgf file")->required();
-    cmd->add_option("--view", a->view, "view name (default: the scene's first)");
+    add_view_flag(*cmd, a->view);
     cmd->add_option("-o,--output", a->output,
                     "8-bit sRGB .png; IMAGE-density.png and IMAGE.json go beside it")
         ->required();

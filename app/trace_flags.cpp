@@ -1,5 +1,7 @@
 #include "app/trace_flags.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -37,7 +39,9 @@ void add_sampling_flags(CLI::App& cmd, TraceOptions& o, const std::set<std::stri
     if (!wanted(except, "adaptive")) return;  // the uniform sampler alone: none of the rest
     cmd.add_option("--spp-tolerance", o.spp_tolerance, "accepted relative distance to --spp")
         ->capture_default_str();
-    cmd.add_option("--max-spp", o.max_spp, "most samples in one pixel (default 8 x spp)");
+    cmd.add_option_function<std::uint32_t>(
+        "--max-spp", [&o](const std::uint32_t& n) { o.max_spp = n; },
+        "most samples in one pixel (default 8 x spp)");
     cmd.add_option("--tree-depth", o.tree_depth, "subpixel quadtree depth limit (entropy samplers)")
         ->capture_default_str();
     if (wanted(except, "criterion-exposure")) {
@@ -72,7 +76,9 @@ void add_trace_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
                    "mis (next-event + BSDF sampling), nee or bsdf alone")
         ->capture_default_str();
     if (wanted(except, "width")) {
-        cmd.add_option("--width", flags.width, "render at this width (the view's aspect kept)");
+        cmd.add_option_function<int>(
+            "--width", [&flags](const int& w) { flags.width = w; },
+            "render at this width (the view's aspect kept)");
     }
 }
 
@@ -86,14 +92,16 @@ void apply_trace_flags(const TraceFlags& flags, TraceOptions& o) {
         throw InputError("bounces must be in 0..100000");
     }
     if (o.threads < 0 || o.threads > 4096) throw InputError("threads must be in 0..4096");
-    if (flags.width < 0 || flags.width > 16384) throw InputError("width must be in 1..16384");
+    if (flags.width && (*flags.width < 1 || *flags.width > 16384)) {
+        throw InputError(fmt::format("width must be in 1..16384, got {}", *flags.width));
+    }
 }
 
 View sized_view(const View& view, const TraceFlags& flags) {
-    if (flags.width <= 0) return view;
+    if (!flags.width) return view;
     View v = view;
-    v.width = flags.width;
-    v.height = std::max(1, int(std::lround(double(flags.width) * view.height / view.width)));
+    v.width = *flags.width;
+    v.height = std::max(1, int(std::lround(double(v.width) * view.height / view.width)));
     return v;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -14,7 +15,7 @@ namespace hmcr {
 // What the flags hold until run time checks and applies them.
 struct TraceFlags {
     std::string estimator = "mis";
-    int width = 0;  // > 0: render at this width, the view's aspect kept
+    std::optional<int> width;  // render at this width, the view's aspect kept
 };
 
 // Adds every trace flag to `command`, bound to `options` and `flags`, except those named in

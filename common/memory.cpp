@@ -42,12 +42,13 @@ std::string human_bytes(double bytes) {
     return fmt::format("{:.0f} kB", bytes / 1e3);
 }
 
-void require_memory(double bytes, const std::string& what) {
+void require_memory(double bytes, const std::string& what, const std::string& remedy) {
     const double available = 0.75 * double(physical_memory_bytes());
     if (available > 0 && bytes > available) {
-        throw InputError(fmt::format("{} would need about {} of memory; this machine has {}",
+        throw InputError(fmt::format("{} would need about {} of memory; this machine has {}{}{}",
                                      what, human_bytes(bytes),
-                                     human_bytes(double(physical_memory_bytes()))));
+                                     human_bytes(double(physical_memory_bytes())),
+                                     remedy.empty() ? "" : ": ", remedy));
     }
 }
 

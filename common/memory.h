@@ -19,8 +19,8 @@ void return_freed_memory();
 // "1.5 GB": a byte count for messages.
 std::string human_bytes(double bytes);
 
-// Throws InputError "WHAT would need about X of memory; this machine has Y" when `bytes` is more
-// than the machine can hold (three quarters of its RAM).
-void require_memory(double bytes, const std::string& what);
+// Throws InputError "WHAT would need about X of memory; this machine has Y[: REMEDY]" when
+// `bytes` is more than the machine can hold (three quarters of its RAM).
+void require_memory(double bytes, const std::string& what, const std::string& remedy = "");
 
 }  // namespace hmcr

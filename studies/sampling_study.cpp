@@ -103,6 +103,16 @@ std::optional<SamplingCell> SamplingStudy::previous_cell(std::size_t index) {
 void SamplingStudy::run() {
     m_reference = read_reference_views(m_options.reference, m_scene);
     for (const auto& [name, v] : m_reference) m_reference8[name] = quantise(v.image, v.exposure);
+    for (const Criterion* s : m_options.samplers) {  // every cell's memory, before the first
+        TraceOptions o = m_options.trace;
+        o.sampler = s;
+        for (const auto& [name, v] : m_reference) {
+            View sized;
+            sized.width = v.image.width;
+            sized.height = v.image.height;
+            check_trace_memory(o, sized);
+        }
+    }
     m_tracer = std::make_unique<PathTracer>(build_patch_set(m_scene.mesh), m_options.trace.path);
     CellLoop<SamplingCell> loop;
     loop.count = m_tasks.size();
@@ -224,7 +234,7 @@ nlohmann::json sampling_study_settings(const Scene& scene, const SamplingStudyOp
             {"reference", fs::absolute(o.reference).lexically_normal().string()},
             {"reference_json_hash", text_hash(reference_json)},
             {"spp_tolerance", t.spp_tolerance},
-            {"max_spp", t.max_spp},
+            {"max_spp", t.max_spp.value_or(0)},  // 0: the default
             {"tree_depth", t.tree_depth},
             {"display_criteria", o.display_criteria},
             {"fresh", t.fresh},

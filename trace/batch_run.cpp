@@ -4,6 +4,7 @@
 #include <limits>
 #include <vector>
 
+#include "common/interrupt.h"
 #include "trace/pixel_run.h"
 
 namespace hmcr {
@@ -42,7 +43,10 @@ public:
         : m_criterion(criterion), m_max(max_samples), m_x(x), m_y(y) {}
 
     void extend(double threshold, const PixelTracer& tracer) override {
-        while (stop_batch(threshold) == m_value.size()) add_batch(tracer);
+        while (stop_batch(threshold) == m_value.size()) {
+            throw_if_interrupted();
+            add_batch(tracer);
+        }
     }
     std::uint32_t samples(double threshold) const override { return count(stop_batch(threshold)); }
     Rgb radiance(double threshold) const override {
@@ -103,6 +107,7 @@ public:
 
     void extend(double, const PixelTracer& tracer) override {
         for (; m_done < m_max; m_done = std::min(m_done + kBatchSize, m_max)) {
+            throw_if_interrupted();
             trace_batch(tracer, m_x, m_y, m_done, std::min(m_done + kBatchSize, m_max),
                         [&](const TracedSample& t) {
                             m_sum += t.sample.radiance;
@@ -124,6 +129,14 @@ private:
 };
 
 }  // namespace
+
+std::uint64_t batch_run_bytes(const Criterion& criterion, std::uint32_t max_samples) {
+    if (criterion.scheme() == Scheme::uniform) return sizeof(UniformRun);
+    const std::uint64_t batches = (std::uint64_t(max_samples) + kBatchSize - 1) / kBatchSize;
+    const std::uint64_t kept = std::uint64_t(max_samples) * sizeof(StoredSample) +
+                               batches * (sizeof(double) + sizeof(Rgb) + sizeof(std::uint64_t));
+    return sizeof(BatchRun) + 2 * kept;  // a vector's capacity grows to up to twice its size
+}
 
 std::unique_ptr<PixelRun> make_batch_run(const Criterion& criterion, std::uint32_t max_samples,
                                          int x, int y) {

@@ -35,7 +35,8 @@ inline constexpr std::uint32_t kNodeSamples = 4;  // 2 x 2 strata
 class PixelRun {
 public:
     virtual ~PixelRun() = default;
-    // Traces whatever the pixel lacks at this threshold.
+    // Traces whatever the pixel lacks at this threshold. Throws Interrupted (common/interrupt.h)
+    // between its batches or nodes after a signal: one pixel may take up to a million samples.
     virtual void extend(double threshold, const PixelTracer& tracer) = 0;
     // After extend(threshold): the pixel's samples, their mean radiance (box filter) and the
     // rays their paths cast.
@@ -55,5 +56,12 @@ std::unique_ptr<PixelRun> make_pixel_run(const Criterion& criterion, const RunLi
 std::unique_ptr<PixelRun> make_batch_run(const Criterion& criterion, std::uint32_t max_samples,
                                          int x, int y);
 std::unique_ptr<PixelRun> make_tree_run(const Criterion& criterion, int max_depth, int x, int y);
+
+// The most memory one pixel's run holds: every sample it can take kept (a uniform run keeps its
+// sums alone), with the spare capacity of growing vectors. An adaptive trace is refused before it
+// starts when its pixels would need more than the machine has (trace/trace_image.h).
+std::uint64_t pixel_run_bytes(const Criterion& criterion, const RunLimits& limits);
+std::uint64_t batch_run_bytes(const Criterion& criterion, std::uint32_t max_samples);
+std::uint64_t tree_run_bytes(int max_depth);
 
 }  // namespace hmcr

@@ -11,6 +11,11 @@
 
 namespace hmcr {
 
+std::uint64_t pixel_run_bytes(const Criterion& criterion, const RunLimits& limits) {
+    if (criterion.scheme() == Scheme::quadtree) return tree_run_bytes(limits.max_depth);
+    return batch_run_bytes(criterion, limits.max_samples);
+}
+
 std::unique_ptr<PixelRun> make_pixel_run(const Criterion& criterion, const RunLimits& limits, int x,
                                          int y) {
     if (criterion.scheme() == Scheme::quadtree) {
@@ -35,9 +40,9 @@ double PixelRuns::extend(double threshold, Progress& progress) {
     const std::size_t rows = std::max<std::size_t>(1, height / 64);
     for (std::size_t y0 = 0; y0 < height; y0 += rows) {
         const std::size_t end = std::min(height, y0 + rows) * width;
-        // Checked per pixel, since a block at thousands of samples per pixel takes minutes. An
-        // interruption leaves some pixels of the block unextended, but nothing reads the runs
-        // after an Interrupted: the run ends.
+        // Checked per pixel, and within a pixel per batch or node (pixel_run.h), since a block at
+        // thousands of samples per pixel takes minutes. An interruption leaves some pixels of the
+        // block unextended, but nothing reads the runs after an Interrupted: the run ends.
         tbb::parallel_for(tbb::blocked_range<std::size_t>(y0 * width, end, 16),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               set_tracing_float_mode();

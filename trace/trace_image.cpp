@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "common/interrupt.h"
+#include "common/memory.h"
 #include "common/stopwatch.h"
 #include "image/camera.h"
 #include "trace/pixel_runs.h"
@@ -36,14 +37,15 @@ void validate(const TraceOptions& o, const Criterion& c) {
         throw InputError(fmt::format("criterion-exposure must be a positive number or 0, got {}",
                                      o.criterion_exposure));
     }
-    if (o.max_spp > 0 && o.max_spp < kBatchSize) {
-        throw InputError(fmt::format("max-spp must be at least {}, got {}", kBatchSize, o.max_spp));
+    if (o.max_spp && !(*o.max_spp >= kBatchSize && *o.max_spp <= kMostSamplesPerPixel)) {
+        throw InputError(fmt::format("max-spp must be in {}..{}, got {}", kBatchSize,
+                                     kMostSamplesPerPixel, *o.max_spp));
     }
     if (!std::isnan(o.threshold) && !(o.threshold > 0)) {
         throw InputError("threshold must be positive");
     }
     if (c.scheme() == Scheme::uniform) {
-        if (!(o.spp >= 1 && o.spp <= 1e6 && o.spp == std::floor(o.spp))) {
+        if (!(o.spp >= 1 && o.spp <= kMostSamplesPerPixel && o.spp == std::floor(o.spp))) {
             throw InputError(
                 fmt::format("spp must be a whole number in 1..1e6 for the uniform "
                             "sampler, got {}",
@@ -122,8 +124,8 @@ std::string TraceOptions::to_string() const {
         "TraceOptions{{sampler={}, spp={}, threshold={}, spp_tolerance={}, "
         "max_spp={}, tree_depth={}, seed={}, threads={}, criterion_exposure={}, fresh={}, "
         "path={}}}",
-        sampler->name(), spp, threshold, spp_tolerance, max_spp, tree_depth, seed, threads,
-        criterion_exposure, fresh, path.to_string());
+        sampler->name(), spp, threshold, spp_tolerance, max_spp.value_or(0), tree_depth, seed,
+        threads, criterion_exposure, fresh, path.to_string());
 }
 
 void validate_trace_options(const TraceOptions& o) { validate(o, *o.sampler); }
@@ -132,9 +134,29 @@ std::uint32_t max_samples_per_pixel(const TraceOptions& o) {
     if (o.sampler->scheme() == Scheme::quadtree) {
         return std::uint32_t(1) << (2 * (o.tree_depth + 1));
     }
-    if (o.max_spp > 0) return o.max_spp;
+    if (o.max_spp) return *o.max_spp;
     const double eight_times = std::ceil(8 * o.spp / kBatchSize) * kBatchSize;
-    return std::uint32_t(std::clamp(eight_times, double(kBatchSize), 1e6));
+    return std::uint32_t(std::clamp(eight_times, double(kBatchSize), double(kMostSamplesPerPixel)));
+}
+
+void check_trace_memory(const TraceOptions& o, const View& view) {
+    const Criterion& c = *o.sampler;
+    const RunLimits l = limits(o, c);
+    const double pixels = double(view.width) * double(view.height);
+    // Each pixel: its run, the pointer to it, its radiance and its sample count.
+    const double bytes = pixels * double(pixel_run_bytes(c, l) + sizeof(std::unique_ptr<PixelRun>) +
+                                         sizeof(Rgb) + sizeof(std::uint32_t));
+    const char* lower = c.scheme() == Scheme::quadtree ? "lower --tree-depth or --width"
+                        : c.scheme() == Scheme::batches
+                            ? "lower --max-spp (default 8 x --spp) or --width"
+                            : "lower --width";
+    const std::uint32_t most =
+        c.scheme() == Scheme::quadtree ? max_samples_per_pixel(o) : l.max_samples;
+    require_memory(
+        bytes,
+        fmt::format("tracing {} x {} pixels at up to {} samples each{}", view.width, view.height,
+                    most, c.scheme() == Scheme::uniform ? "" : ", every sample kept,"),
+        lower);
 }
 
 SampleCounts TraceResult::counts() const {
@@ -151,6 +173,7 @@ TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceO
     const auto start = std::chrono::steady_clock::now();
     const Criterion& chosen = *o.sampler;
     validate(o, chosen);
+    check_trace_memory(o, view);
     throw_if_interrupted();
     const bool adaptive = chosen.scheme() != Scheme::uniform;
     std::unique_ptr<Criterion> on_display;

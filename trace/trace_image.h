@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,13 +21,17 @@
 
 namespace hmcr {
 
+// The most samples one pixel takes: the uniform sampler's spp, and an adaptive one's max_spp.
+inline constexpr std::uint32_t kMostSamplesPerPixel = 1'000'000;
+
 struct TraceOptions {
     const Criterion* sampler = &uniform_criterion();  // trace/criteria/registry.h
     double spp = 16;                  // mean samples per pixel: exact for uniform (a whole
                                       // number), the search's target otherwise
     double threshold = std::numeric_limits<double>::quiet_NaN();  // > 0: fixed, no search
     double spp_tolerance = 0.02;  // accepted relative distance of the mean to spp
-    std::uint32_t max_spp = 0;    // most samples of one pixel, batch samplers; 0: 8 x spp
+    // most samples of one pixel, batch samplers: 8..kMostSamplesPerPixel; none: 8 x spp
+    std::optional<std::uint32_t> max_spp;
     int tree_depth = 4;           // entropy samplers' quadtree depth limit, 1..12
     std::uint64_t seed = 1;       // keys every sample's stream
     int threads = 0;              // 0 = all cores; the image does not depend on it
@@ -61,11 +66,18 @@ struct TraceResult {
 // The most samples one pixel can get with these options (quadtree: 4^(depth + 1)).
 std::uint32_t max_samples_per_pixel(const TraceOptions& options);
 
-// Throws InputError on bad options: a target outside what the sampler can give. Commands call it before any work; trace_image again.
+// Throws InputError on bad options: a target outside what the sampler can give. Commands call it
+// before any work; trace_image again.
 void validate_trace_options(const TraceOptions& options);
 
-// Throws InputError on bad options, SppNotReached when the search fails, and Interrupted
-// (common/interrupt.h) between pixels after a SIGINT or SIGTERM.
+// Throws InputError naming the option to lower when tracing the view could need more memory
+// than the machine holds (require_memory of common/memory.h): an adaptive sampler keeps every
+// sample of every pixel, up to the most a pixel can take (pixel_run_bytes of trace/pixel_run.h).
+// Commands call it before any work; trace_image again.
+void check_trace_memory(const TraceOptions& options, const View& view);
+
+// Throws InputError on bad options or memory, SppNotReached when the search fails, and
+// Interrupted (common/interrupt.h) within a pixel after a SIGINT or SIGTERM.
 TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceOptions& options,
                         Progress& progress = no_progress());
 

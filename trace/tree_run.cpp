@@ -3,6 +3,7 @@
 #include <array>
 #include <vector>
 
+#include "common/interrupt.h"
 #include "trace/pixel_run.h"
 
 namespace hmcr {
@@ -113,6 +114,7 @@ Node TreeRun::make_node(const Region& r, const Node* parent, const PixelTracer& 
 void TreeRun::extend(std::size_t i, const Region& r, double threshold, const PixelTracer& tracer) {
     if (!refines(m_nodes[i], r, threshold)) return;
     if (m_nodes[i].first_child < 0) {
+        throw_if_interrupted();
         const Node parent = m_nodes[i];  // push_back may move the nodes
         m_nodes[i].first_child = std::int32_t(m_nodes.size());
         for (int q = 0; q < 4; ++q) m_nodes.push_back(make_node(r.child(q), &parent, tracer));
@@ -142,6 +144,11 @@ Tally TreeRun::tally(std::size_t i, const Region& r, double threshold) const {
 }
 
 }  // namespace
+
+std::uint64_t tree_run_bytes(int max_depth) {
+    const std::uint64_t nodes = ((std::uint64_t(1) << (2 * (max_depth + 1))) - 1) / 3;
+    return sizeof(TreeRun) + 2 * nodes * sizeof(Node);  // capacity up to twice the size
+}
 
 std::unique_ptr<PixelRun> make_tree_run(const Criterion& criterion, int max_depth, int x, int y) {
     return std::make_unique<TreeRun>(criterion, max_depth, x, y);
