@@ -103,6 +103,10 @@ int run_sampling_study_command(StudyArgs& a) {
 }
 
 int run_meshing_study(StudyArgs& a) {
+    if (a.options.rays_per_leaf > 0 && a.flags.command->count("--rays") > 0) {
+        throw InputError("give --rays-per-leaf or --rays, not both: --rays-per-leaf sets every "
+                         "cell's rays (R x its budget)");
+    }
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
     a.options.oracles = named_list(oracle_registry(), split_commas(a.oracles));
     if (!a.mesh_rays.empty()) {
