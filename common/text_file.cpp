@@ -1,8 +1,13 @@
 #include "common/text_file.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <string_view>
+#include <vector>
 
 namespace hmcr {
 namespace {
@@ -29,6 +34,61 @@ std::string plain_message(const std::exception& e) {
     const std::size_t token = out.find(kLastRead);
     if (token == std::string::npos) return out;
     return out.substr(0, token) + "last read: " + quote(std::string_view(out).substr(token + kLastRead.size()));
+}
+
+// The text as nlohmann's parser reads it, one character at a time, telling how far it has read:
+// the position of a key, for its line.
+class ReadHead {
+public:
+    using iterator_category = std::input_iterator_tag;
+    using value_type = char;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const char*;
+    using reference = const char&;
+
+    ReadHead(const char* at, const char** head) : m_at(at), m_head(head) {}
+    reference operator*() const { return *m_at; }
+    ReadHead& operator++() {
+        *m_head = ++m_at;
+        return *this;
+    }
+    bool operator==(const ReadHead& other) const { return m_at == other.m_at; }
+    bool operator!=(const ReadHead& other) const { return m_at != other.m_at; }
+
+private:
+    const char* m_at;
+    const char** m_head;
+};
+
+// Parses the text, refusing a key given twice in one object (nlohmann would keep the last, and a
+// typo'd copy of a setting would silently win): "PATH:LINE: key 'k' is given twice in one
+// object (first at line L)".
+nlohmann::json parse_without_duplicate_keys(const std::string& text, const fs::path& path) {
+    const char* head = text.data();
+    const char* counted = text.data();
+    int line = 1;                                     // of `counted`
+    std::vector<std::map<std::string, int>> objects;  // the keys of each open object, and lines
+    const auto callback = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using Event = nlohmann::json::parse_event_t;
+        if (event == Event::object_start) {
+            objects.emplace_back();
+        } else if (event == Event::object_end) {
+            objects.pop_back();
+        } else if (event == Event::key) {
+            line += int(std::count(counted, head, '\n'));  // the key ends just before the head
+            counted = head;
+            const auto [it, fresh] = objects.back().emplace(parsed.get<std::string>(), line);
+            if (!fresh) {
+                throw InputError(
+                    at(path, line),
+                    fmt::format("key {} is given twice in one object (first at line {})",
+                                quote(it->first), it->second));
+            }
+        }
+        return true;
+    };
+    return nlohmann::json::parse(ReadHead(text.data(), &head),
+                                 ReadHead(text.data() + text.size(), &head), callback);
 }
 
 // Returns the size the file system gives (0 when it gives none).
@@ -75,7 +135,7 @@ nlohmann::json read_json_file(const fs::path& path) {
     constexpr std::uint64_t kMaxJsonBytes = std::uint64_t(256) << 20;
     const std::string text = read_text_file(path, kMaxJsonBytes);
     try {
-        return nlohmann::json::parse(text);
+        return parse_without_duplicate_keys(text, path);
     } catch (const nlohmann::json::parse_error& e) {
         throw InputError(at(path, line_of_byte(text, e.byte)), plain_message(e));
     } catch (const nlohmann::json::exception& e) {

@@ -25,7 +25,7 @@ std::string read_text_file(const std::filesystem::path& path,
 // The text after a UTF-8 byte-order mark, if it starts with one (editors on Windows write it).
 std::string_view without_bom(std::string_view text);
 
-// The parsed JSON file; a syntax error is "PATH:LINE: why".
+// The parsed JSON file; a syntax error, or a key given twice in one object, is "PATH:LINE: why".
 nlohmann::json read_json_file(const std::filesystem::path& path);
 
 // Runs `read` on the parsed file; a missing key, a wrong type, or an InputError of `read`

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "common/json_fields.h"
 #include "common/rgb_json.h"
 #include "common/text_file.h"
 #include "common/atomic_file.h"
@@ -122,8 +123,11 @@ void write_reference(const std::filesystem::path& dir, const Scene& scene,
 std::map<std::string, double> read_reference_exposures(const std::filesystem::path& dir) {
     return read_json_file(dir / "reference.json", [](const nlohmann::json& j) {
         std::map<std::string, double> exposure;
-        for (const auto& [view, v] : j.at("reference").at("views").items()) {
-            const double e = v.at("exposure").get<double>();
+        const std::string views = "reference.views";
+        const nlohmann::json& all = json_object(json_member(j, {"reference", "views"}), views);
+        for (const auto& [view, v] : all.items()) {
+            const std::string path = json_path(views, view);
+            const double e = json_number(json_member(v, {"exposure"}, path), path + ".exposure");
             if (!(e > 0 && std::isfinite(e))) {
                 throw InputError(fmt::format("view {}: exposure {} is not a positive number",
                                              quote(view), e));

@@ -4,6 +4,7 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/json_fields.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
 #include "rays/patch.h"
@@ -70,7 +71,9 @@ void write_traced_reference(const std::filesystem::path& dir, const Scene& scene
 
 bool is_traced_reference(const std::filesystem::path& dir) {
     return read_json_file(dir / "reference.json", [](const nlohmann::json& j) {
-        return j.at("reference").value("kind", "") == "traced";
+        const nlohmann::json& reference = json_member(j, {"reference"});
+        const auto kind = json_object(reference, "reference").find("kind");
+        return kind != reference.end() && json_string(*kind, "reference.kind") == "traced";
     });
 }
 
