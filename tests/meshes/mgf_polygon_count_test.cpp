@@ -34,10 +34,11 @@ public:
         return *slot;
     }
     std::uint64_t count(const std::string& name, int segments = 24) {
-        MgfPolygonCount counter(segments, [this](const MgfFile&, const MgfStatement& i,
-                                                 const std::string&) -> const MgfFile& {
-            return file(i.words[1]);
-        });
+        MgfPolygonCount counter(
+            segments,
+            [this](const MgfFile&, const MgfStatement& i, const std::string&) -> const MgfFile& {
+                return file(i.words[1]);
+            });
         return counter.whole(file(name));
     }
 
@@ -53,10 +54,10 @@ std::size_t made(const SceneFiles& files, const std::string& name, int segments 
 }
 
 TEST(MgfPolygonCount, EachEntityCountsWhatTheReaderMakes) {
-    const char* entities[] = {"f q0 q1 q2 q3",    "sph q0 1",        "sph q0 -2",
-                              "cyl q0 1 q4",      "cone q0 1 q4 0",  "cone q0 0.5 q4 1",
-                              "ring q0 0.5 1",    "ring q0 0 1",     "torus q0 0.5 1",
-                              "prism q0 q1 q2 1", "prism q0 q1 q2 q3 -1"};
+    const char* entities[] = {
+        "f q0 q1 q2 q3",  "sph q0 1",         "sph q0 -2",           "cyl q0 1 q4",
+        "cone q0 1 q4 0", "cone q0 0.5 q4 1", "ring q0 0.5 1",       "ring q0 0 1",
+        "torus q0 0.5 1", "prism q0 q1 q2 1", "prism q0 q1 q2 q3 -1"};
     for (int segments : {4, 7, 24, 64}) {
         for (const char* e : entities) {
             SceneFiles files;

@@ -20,8 +20,8 @@
 namespace hmcr::test {
 
 struct ChildExit {
-    int code = -1;        // the exit code, or 128 + the signal that ended it
-    double seconds = 0;   // from the start, or from the last signal() if one was sent
+    int code = -1;       // the exit code, or 128 + the signal that ended it
+    double seconds = 0;  // from the start, or from the last signal() if one was sent
     // wait4's ru_maxrss: hmcr's own peak, or the resident size of this test process when it
     // forked if that was larger (tens of MB: the test process is small)
     std::uint64_t peak_bytes = 0;
@@ -72,7 +72,8 @@ public:
         wait4(m_pid, &status, 0, &usage);
         m_pid = -1;
         ChildExit e;
-        e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+        e.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
         e.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
         e.peak_bytes = std::uint64_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
         e.err = read_file(m_dir / ".stderr");
