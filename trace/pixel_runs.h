@@ -18,8 +18,8 @@ public:
     PixelRuns(const Criterion& criterion, const RunLimits& limits, const PixelTracer& tracer);
 
     // Traces what every pixel lacks at the threshold (rows in blocks, `progress` advanced
-    // between them); returns the mean samples per pixel at it. Throws Interrupted between
-    // pixels after a signal; the runs are then unusable.
+    // between them); returns the mean samples per pixel at it. Throws Interrupted within a
+    // pixel after a signal (PixelRun::extend); the runs are then unusable.
     double extend(double threshold, Progress& progress = no_progress());
 
     // After extend(threshold):

@@ -69,6 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         expect_only_input_errors([&] {
             hmcr::PolygonSoup soup = hmcr::read_mgf(work_dir() / "fuzz.mgf", small_budget());
             check_soup(soup);
+            hmcr::check_positions(soup);
             if (!strict) hmcr::repair_soup(soup);
             hmcr::LoadOptions options;
             options.strict = strict;
