@@ -43,5 +43,28 @@ TEST(ReadJsonFile, ASyntaxErrorIsOneShortLineWithFileAndLine) {
     }
 }
 
+// A key given twice in one object is refused at its line, naming the first; the same key in
+// different objects, nested or side by side, is not a repeat.
+TEST(ReadJsonFile, AKeyGivenTwiceInOneObjectIsRefusedWithItsLine) {
+    TempDir dir;
+    EXPECT_EQ(error_of(dir.write("ok.json",
+                                 R"({"a": {"a": 1, "b": {"a": 2}}, "b": [{"a": 1}, {"a": 2}]})")),
+              "(no error)");
+    EXPECT_NE(error_of(dir.write("top.json", "{\"a\": 1,\n\n \"b\": 2, \"a\": 3}"))
+                  .find("top.json:3: key 'a' is given twice in one object (first at line 1)"),
+              std::string::npos);
+    // Inside an array's object, after strings holding braces, quotes and line breaks.
+    const std::string text =
+        "[{\"x\": \"{\\\"x\\\": }\\n\"},\n {\"y\": 1,\n  \"z\": {\"y\": 2},\n  \"y\": 3}]";
+    EXPECT_NE(error_of(dir.write("deep.json", text))
+                  .find("deep.json:4: key 'y' is given twice in one object (first at line 2)"),
+              std::string::npos)
+        << error_of(dir.path() / "deep.json");
+    // The parsed value is what nlohmann gives without the check.
+    const auto plain =
+        dir.write("plain.json", R"({"b": [1, 2.5, "x", null, {"c": true}], "a": {}})");
+    EXPECT_EQ(read_json_file(plain), nlohmann::json::parse(read_file(plain)));
+}
+
 }  // namespace
 }  // namespace hmcr::test
