@@ -195,6 +195,11 @@ bool covers_area(const Polygon2& g, const std::vector<CornerTriangle>& triangles
 
 }  // namespace
 
+std::string too_many_corners(std::size_t corners) {
+    return fmt::format("polygon with {} corners: at most {} are triangulated", corners,
+                       kMaxPolygonCorners);
+}
+
 std::optional<PolygonPlane> best_fit_plane(const std::vector<Eigen::Vector3d>& corners) {
     const Eigen::Vector3d newell = newell_normal(corners);
     const double edge = largest_edge(corners);
@@ -214,11 +219,7 @@ std::optional<PolygonPlane> best_fit_plane(const std::vector<Eigen::Vector3d>& c
 
 Triangulation triangulate(const std::vector<Eigen::Vector3d>& corners,
                           const std::vector<int>& ids) {
-    if (corners.size() > kMaxPolygonCorners) {
-        return {{},
-                fmt::format("polygon with {} corners: at most {} are triangulated", corners.size(),
-                            kMaxPolygonCorners)};
-    }
+    if (corners.size() > kMaxPolygonCorners) return {{}, too_many_corners(corners.size())};
     const std::optional<PolygonPlane> plane = best_fit_plane(corners);
     if (!plane) return {{}, "self-intersecting polygon: it has no area or winds both ways"};
     const Polygon2 g = project(corners, ids, *plane);

@@ -15,6 +15,10 @@ namespace hmcr {
 // quadratic in the corner count (10,000 corners: about 0.1 s).
 inline constexpr std::size_t kMaxPolygonCorners = 10'000;
 
+// Why a polygon of more corners is refused: "polygon with N corners: at most 10000 are
+// triangulated" (for every reader alike).
+std::string too_many_corners(std::size_t corners);
+
 // A plane through `origin` with orthonormal axes u, v and normal = u x v.
 struct PolygonPlane {
     Eigen::Vector3d origin, u, v, normal;
