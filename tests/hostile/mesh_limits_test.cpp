@@ -1,6 +1,6 @@
 // Hostile meshes at the OBJ reader's limits (docs/usage.md#bad-input): faces of hundreds and
 // thousands of corners read whole and alike in OBJ and MGF, material names with spaces, a line
-// too long.
+// too long, and warnings by the hundred thousand.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -118,6 +118,38 @@ TEST_F(Hostile, ALineTooLongIsRefusedWithItsLine) {
             "plates.obj:14: a line of 5000001 bytes: hmcr reads lines of at most 4194304");
     plates(kPlatesObj, std::string(kPlatesMtl) + "newmtl " + std::string(5'000'000, 'x') + "\n");
     refused("info plates.obj", "plates.mtl:7: a line of 5000007 bytes");
+}
+
+// The stderr lines of a run that start with `prefix`.
+std::size_t lines_starting(const std::string& text, const std::string& prefix) {
+    std::size_t n = 0;
+    for (std::size_t at = 0; at < text.size(); at = text.find('\n', at) + 1) {
+        n += text.compare(at, prefix.size(), prefix) == 0;
+        if (text.find('\n', at) == std::string::npos) break;
+    }
+    return n;
+}
+
+// 100,000 unknown MTL statements: grouped by statement with their count, and a few lines in
+// all, whether the load then succeeds or fails (one line of error, the last).
+TEST_F(Hostile, WarningsAreGroupedAndBounded) {
+    std::string many;
+    for (int k = 0; k < 50'000; ++k) many += fmt::format("KE 1 1 1\nunknown{} 2\n", k);
+    plates(kPlatesObj, kPlatesMtl + many);
+    CliRun r = accepted("solve plates.obj --rays 1000 -o out.vtp");
+    EXPECT_LE(lines_starting(r.err, "hmcr: warning:"), 21u) << r.err.substr(0, 2000);
+    EXPECT_LT(r.err.size(), 8000u);
+    EXPECT_NE(r.err.find("plates.mtl:7: unknown MTL statement 'KE' ignored (50000 times"),
+              std::string::npos)
+        << r.err.substr(0, 2000);
+    plates(kPlatesObj, with(kPlatesMtl, "Ke 0.3 0.3 0.3", "Ke 0 0 0") + many);
+    r = run_hmcr("solve plates.obj -o out.vtp", dir());
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_LE(lines_starting(r.err, "hmcr: warning:"), 21u) << r.err.substr(0, 2000);
+    EXPECT_EQ(lines_starting(r.err, "hmcr: error:"), 1u);
+    EXPECT_NE(r.err.rfind("\nhmcr: error: plates.obj: no face emits light"), std::string::npos)
+        << r.err.substr(0, 2000);
+    EXPECT_LT(r.err.size(), 8000u);
 }
 
 }  // namespace
