@@ -9,6 +9,7 @@
 #include <cctype>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "common/error.h"
 
@@ -57,6 +58,11 @@ bool is_vtk_type(std::string_view type) {
 }
 
 bool is_array(std::string_view element) { return element == "DataArray" || element == "Array"; }
+
+// The elements whose arrays VTK reads by name.
+bool is_data_section(std::string_view element) {
+    return element == "FieldData" || element == "PointData" || element == "CellData";
+}
 
 bool is_space(char c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
@@ -113,47 +119,63 @@ private:
     static void XMLCALL on_start(void* self, const XML_Char* name, const XML_Char** attributes) {
         static_cast<HeaderReader*>(self)->start(name, attributes);
     }
-    static void XMLCALL on_end(void* self, const XML_Char*) {
-        static_cast<HeaderReader*>(self)->m_in_points = false;
+    static void XMLCALL on_end(void* self, const XML_Char* name) {
+        HeaderReader& reader = *static_cast<HeaderReader*>(self);
+        reader.m_in_points = false;
+        if (is_data_section(name)) reader.m_section.clear();
     }
     static void XMLCALL on_doctype(void* self, const XML_Char*, const XML_Char*, const XML_Char*,
                                    int) {
         static_cast<HeaderReader*>(self)->refuse("a document type declaration");
     }
 
-    void refuse(std::string why) {
+    // Stops the parser at the first problem; false, for the checks to return.
+    bool refuse(std::string why) {
         if (m_error.empty()) m_error = std::move(why);
         XML_StopParser(m_parser.get(), XML_FALSE);
+        return false;
     }
 
     void start(std::string_view element, const XML_Char** attributes) {
         if (!m_error.empty()) return;
         if (!is_vtp_element(element)) {
-            return refuse("an element " + quote(element) + " that no .vtp of hmcr holds");
+            refuse("an element " + quote(element) + " that no .vtp of hmcr holds");
+            return;
         }
-        const char* type = nullptr;
-        const char* components = nullptr;
         for (const XML_Char** a = attributes; *a; a += 2) {
             if (!attribute(a[0], a[1])) return;
-            if (std::string_view(a[0]) == "type") type = a[1];
-            if (std::string_view(a[0]) == "NumberOfComponents") components = a[1];
         }
         if (element == "AppendedData") {
             appended_tag = true;
             const char* encoding = attribute_value(attributes, "encoding");
             header.base64 = encoding && std::string_view(encoding) == "base64";
         }
-        if (is_array(element)) {
-            if (!type) return refuse("an array without a type");
-            if (!is_vtk_type(type)) return refuse("an array of unknown type " + quote(type));
-        }
-        // VTK 9.1 refuses points of other than 3 components but leaks the array it read
-        // (found by the fuzzer with LeakSanitizer): refused here first.
-        if (m_in_points && is_array(element) &&
-            !(components && plain_digits(components) == std::string_view("3"))) {
-            return refuse("its points do not have 3 components");
+        if (is_array(element) && !array_is_readable(attributes)) return;
+        if (is_data_section(element)) {
+            m_section = element;
+            m_section_names.clear();
         }
         m_in_points = element == "Points";
+    }
+
+    // An array's type, the points' components, and the array's name in its data section.
+    bool array_is_readable(const XML_Char** attributes) {
+        const char* type = attribute_value(attributes, "type");
+        if (!type) return refuse("an array without a type");
+        if (!is_vtk_type(type)) return refuse("an array of unknown type " + quote(type));
+        // VTK 9.1 refuses points of other than 3 components but leaks the array it read
+        // (found by the fuzzer with LeakSanitizer): refused here first.
+        const char* components = attribute_value(attributes, "NumberOfComponents");
+        if (m_in_points && !(components && plain_digits(components) == std::string_view("3"))) {
+            return refuse("its points do not have 3 components");
+        }
+        // VTK 9.1 dereferences null for two arrays of one name in CellData (found by the
+        // fuzzer): a name is refused the second time in a data section.
+        const char* name = attribute_value(attributes, "Name");
+        if (!m_section.empty() && name && !m_section_names.insert(name).second) {
+            return refuse(fmt::format("two arrays named {} in its {}", quote(name), m_section));
+        }
+        return true;
     }
 
     static const char* attribute_value(const XML_Char** attributes, std::string_view name) {
@@ -169,9 +191,8 @@ private:
             const auto count = plain_number(name, value, 15);  // more digits: beyond any file
             if (!count) return false;
             if (double(*count) > m_limit) {
-                refuse(fmt::format("{} is {} in a file of {} bytes", name, quote(value),
-                                   m_file_bytes));
-                return false;
+                return refuse(fmt::format("{} is {} in a file of {} bytes", name, quote(value),
+                                          m_file_bytes));
             }
         } else if (name == "offset") {
             // Every offset, however written: VTK reads offset="19i" as 19, into another array's
@@ -215,6 +236,8 @@ private:
     std::size_t m_file_bytes;
     double m_limit;                   // the largest count the file could hold
     bool m_in_points = false;         // the last element started is a Points
+    std::string m_section;            // the data section being read, if any
+    std::set<std::string> m_section_names;  // the names of its arrays so far
     bool m_header_type_seen = false;  // the first header_type counts
     std::string m_error;
 };

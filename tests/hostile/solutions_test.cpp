@@ -184,6 +184,17 @@ TEST_F(HostileSolution, AnAttributeOf200000CharactersIsReadNotACrash) {
     accepted("info note.vtp --scene plates.json --lines 1000");
 }
 
+// Two arrays of one name in CellData: VTK 9.1 dereferences null (found by the fuzzer).
+TEST_F(HostileSolution, TwoArraysOfOneNameAreRefused) {
+    std::string bytes = read_file(dir() / "good.vtp");
+    const std::size_t start = bytes.rfind('\n', bytes.find("Name=\"ElementArea\"")) + 1;
+    const std::size_t end = bytes.find('\n', start) + 1;
+    bytes.insert(end, bytes.substr(start, end - start));
+    m_temp.write("twice.vtp", bytes);
+    expect_refused("twice.vtp",
+                   "twice.vtp: damaged VTK file: two arrays named 'ElementArea' in its CellData");
+}
+
 // The XML part is read by an XML parser: what is not XML, or holds a document type (where
 // entities could be declared and expanded), is refused before VTK reads it.
 TEST_F(HostileSolution, XmlThatIsNotWellFormedOrDeclaresATypeIsRefused) {
