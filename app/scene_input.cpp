@@ -30,16 +30,54 @@ void add_view_flag(CLI::App& command, std::string& view) {
         "view name (default: the scene's first)");
 }
 
+namespace {
+
+// Prints a load's warnings, up to kMaxWarningLines; finish() counts the others in one line.
+class WarningPrinter {
+public:
+    explicit WarningPrinter(bool quiet) : m_quiet(quiet) {}
+
+    void tell(const std::string& warning) {
+        if (m_quiet || ++m_told > kMaxWarningLines) return;
+        std::string line = one_line(warning);
+        if (line.size() > kMaxWarningChars) {
+            line = fmt::format("{} ... ({} characters)", line.substr(0, kMaxWarningChars),
+                               line.size());
+        }
+        fmt::print(stderr, "hmcr: warning: {}\n", line);
+    }
+
+    void finish() const {
+        if (m_told > kMaxWarningLines) {
+            fmt::print(stderr, "hmcr: warning: {} more warnings not shown\n",
+                       m_told - kMaxWarningLines);
+        }
+    }
+
+private:
+    bool m_quiet;
+    std::size_t m_told = 0;
+};
+
+}  // namespace
+
 Scene load_scene_reporting(const std::string& name_or_path, bool quiet, SceneUse use,
                            const SceneFlags& flags) {
     LoadOptions options;
     options.use = use;
     options.strict = flags.strict;
     if (flags.mgf_segments > 0) options.curve_segments = flags.mgf_segments;
-    options.warn = [quiet](const std::string& w) {
-        if (!quiet) fmt::print(stderr, "hmcr: warning: {}\n", w);
-    };
-    Scene scene = load_scene(name_or_path, options);
+    WarningPrinter printer(quiet);
+    options.warn = [&printer](const std::string& w) { printer.tell(w); };
+    Scene scene = [&] {  // returned in place: a patch mesh is not moved but copied
+        try {
+            return load_scene(name_or_path, options);
+        } catch (...) {
+            printer.finish();  // before the error's line, which stays the last
+            throw;
+        }
+    }();
+    printer.finish();
     return_freed_memory();
     if (!quiet && !scene.repairs.empty()) {
         fmt::print(stderr, "hmcr: repaired {}: {} (--strict refuses them)\n",

@@ -1,5 +1,5 @@
-// Loading a scene on the command line: the loader's warnings go to stderr, one line each, and
-// what it repaired in one summary line.
+// Loading a scene on the command line: the loader's warnings go to stderr, one line each and
+// at most kMaxWarningLines of them, and what it repaired in one summary line.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -14,6 +14,11 @@ struct SceneFlags {
     bool strict = false;   // refuse what the repairs would fix
     int mgf_segments = 0;  // 0: the scene file's, else kDefaultCurveSegments
 };
+
+// Warnings printed by one load at most (docs/usage.md#bad-input); the rest are counted in one
+// more line. Each is cut to kMaxWarningChars characters.
+inline constexpr std::size_t kMaxWarningLines = 20;
+inline constexpr std::size_t kMaxWarningChars = 1000;
 
 void add_scene_flags(CLI::App& command, SceneFlags& flags);
 

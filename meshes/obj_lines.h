@@ -1,68 +1,61 @@
-// A lexical pre-scan of OBJ and MTL text. tinyobjloader is tolerant (it reads "nan" or "1x" as
-// 0, skips unknown keywords) and reports no line numbers for most problems, so before handing
-// the text to it we check every statement ourselves and remember the line of every `f`
-// statement and of every material's Kd and Ke: the loader maps tinyobjloader's k-th face back
-// to them to report `file:line` errors.
-//
-// The scan also cleans the text for tinyobjloader, line for line (so both count the same
-// lines): a UTF-8 byte-order mark at the start is dropped, and so is a comment after data
-// (`Kd 0.5 0.5 0.5 # grey`), which tinyobjloader would read as more data.
+// The lexical layer of hmcr's OBJ and MTL readers (docs/design.md §11.2): lines, the tokens of
+// a statement, comments and numbers, every problem reported as "file:line: why". A statement's
+// tokens are read one at a time, in place, so that a line costs no memory beyond the file's
+// text however long it is; lines are nevertheless limited (kMaxObjLineBytes).
 #pragma once
 
+#include <cstddef>
 #include <functional>
-#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace hmcr {
 
-// One `f` statement, in file order.
-struct FaceStatement {
-    int line = 0;        // 1-based line of the `f` statement
-    std::string usemtl;  // name of the `usemtl` in effect ("" before the first one)
-};
-
-// One `mtllib` statement: the material library files it names, as written.
-struct MtllibStatement {
-    int line = 0;
-    std::vector<std::string> files;
-};
-
-struct ObjLines {
-    std::string clean_text;            // the text for tinyobjloader
-    std::vector<FaceStatement> faces;  // the `f` statements, in file order
-    std::vector<MtllibStatement> mtllibs;
-};
-
-// Where a material of an MTL file was defined; 0 = statement absent.
-struct MtlMaterialLines {
-    std::string file;  // the MTL path used in messages
-    int newmtl_line = 0;
-    int kd_line = 0;
-    int ke_line = 0;
-};
-using MtlLines = std::map<std::string, MtlMaterialLines>;  // by material name
+// Longer OBJ and MTL lines are refused at their line. The longest statement hmcr reads is a face
+// of kMaxPolygonCorners (meshes/triangulate.h) corners written "v/t/n" with 10-digit indices,
+// about 0.36 MB; 4 MiB leaves room for any name.
+inline constexpr std::size_t kMaxObjLineBytes = std::size_t(4) << 20;
 
 // Calls visit(line_number, line) for every line of text, splitting at "\n", "\r\n" and a lone
-// "\r" exactly as tinyobjloader does, so that both count the same lines.
+// "\r" (1-based numbers, as editors count them).
 void for_each_line(std::string_view text, const std::function<void(int, std::string_view)>& visit);
 
-// Splits a line at spaces and tabs (the only separators tinyobjloader knows).
+// Splits a line at spaces and tabs.
 std::vector<std::string_view> split_tokens(std::string_view line);
-// The same into `tokens` (cleared first), to reuse its storage line after line.
-void split_tokens(std::string_view line, std::vector<std::string_view>& tokens);
 
-// Scans OBJ text; throws InputError "path:line: message" on the first bad statement: unknown
-// keyword, unparsable or non-finite number, a v, vt or vn index out of range, polygon with
-// fewer than 3 vertices (more than 4 are triangulated by the repairs, or refused by --strict).
-ObjLines scan_obj(std::string_view text, const std::string& path);
+// One line of OBJ or MTL: its keyword, then its tokens one at a time. Spaces and tabs separate
+// tokens; a token that starts with '#' starts a comment, which runs to the end of the line.
+class Statement {
+public:
+    explicit Statement(std::string_view line);
 
-// Scans MTL text, adds its materials to `lines` and returns the text for tinyobjloader. Throws
-// InputError on a Kd/Ke statement that is not three finite numbers and on a material defined
-// twice (in this file or an earlier one); adds a "path:line: ..." warning for every statement
-// hmcr does not know (a typo such as `KE` would otherwise silently turn a light off).
-std::string scan_mtl(std::string_view text, const std::string& path, MtlLines& lines,
-                     std::vector<std::string>& warnings);
+    // The first token; "" for a line of nothing but separators and a comment.
+    std::string_view keyword() const { return m_keyword; }
+    // The next token, "" after the last.
+    std::string_view next();
+    // How many tokens are left (it reads them).
+    std::size_t count_rest();
+    // The rest of the line up to a comment, without the separators around it: a name, which
+    // may hold spaces (`newmtl dark grey`).
+    std::string_view rest_trimmed();
+
+private:
+    std::string_view m_rest;  // the line after the last token read
+    std::string_view m_keyword;
+};
+
+// Calls visit(line_number, statement) for every line of OBJ or MTL text that holds a statement,
+// after a UTF-8 byte-order mark, lines split as for_each_line does. Throws InputError
+// "path:line: why" for a NUL byte or a line longer than kMaxObjLineBytes.
+void for_each_statement(std::string_view text, const std::string& path,
+                        const std::function<void(int, Statement&)>& visit);
+
+// A finite decimal number ("1", "-2.5", "+1e-3"), read as the double nearest to it. Throws
+// InputError "path:line: why" for anything else, NaN and infinities included.
+double parse_obj_number(std::string_view token, const std::string& path, int line);
+
+// Throws InputError "path:line: message".
+[[noreturn]] void fail_at_line(const std::string& path, int line, const std::string& message);
 
 }  // namespace hmcr

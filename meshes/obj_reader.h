@@ -1,4 +1,4 @@
-// Wavefront OBJ with its MTL material libraries, read through tinyobjloader (docs/design.md §1).
+// Wavefront OBJ with its MTL material libraries, read by hmcr itself (docs/design.md §11.2).
 #pragma once
 
 #include <filesystem>

@@ -8,9 +8,10 @@
 
 namespace hmcr {
 
-// Throws InputError naming the file when a declared size cannot fit: a count attribute
-// (NumberOfPoints, NumberOfTuples, ...) beyond what zlib's largest ratio (1032:1) could
-// expand the file to, or an appended array whose header or blocks run past the file's end.
+// Throws InputError naming the file when its XML part is refused (viz/vtp_header.h: among
+// others a count attribute, NumberOfPoints, NumberOfTuples, ..., beyond what zlib's largest
+// ratio, 1032:1, could expand the file to) or an appended array's header or blocks run past
+// the file's end.
 void check_vtp_envelope(const std::filesystem::path& path);
 
 }  // namespace hmcr

@@ -139,7 +139,7 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
                    "the array at offset 0 has a block header");
     // An unknown type name crashed VTK's reader (a null array dereferenced; the fuzzer again).
     const std::size_t type = bytes.find("type=\"Float64\"");
-    expect_damaged("type.vtp", replace(type, 15, "type=\"Float65\""),
+    expect_damaged("type.vtp", replace(type, 14, "type=\"Float65\""),
                    "an array of unknown type 'Float65'");
     // An array without a type: another null dereference in VTK (fuzzer).
     expect_damaged("untyped.vtp", replace(type, 14, "Numi=\"Float64\""), "an array without a type");
@@ -167,6 +167,46 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
     }
     expect_damaged("quoted.vtp", replace(at - 16, count + 17, "NumberOfPoints='900000000000'"),
                    "NumberOfPoints is '900000000000'");
+}
+
+// A count of 200,000 digits: the envelope check itself once crashed on it (a regular
+// expression's recursion overflowed the stack); an XML parser reads it like any other value.
+TEST_F(HostileSolution, AnAttributeOf200000CharactersIsReadNotACrash) {
+    std::string bytes = read_file(dir() / "good.vtp");
+    const std::size_t at = bytes.find("NumberOfPoints=\"") + 16;
+    bytes.replace(at, bytes.find('"', at) - at, std::string(200'000, '9'));
+    m_temp.write("digits.vtp", bytes);
+    expect_refused("digits.vtp", "digits.vtp: damaged VTK file: NumberOfPoints is '999");
+    bytes = read_file(dir() / "good.vtp");
+    // As long, but harmless: an attribute VTK does not read.
+    bytes.insert(bytes.find("<DataArray") + 10, " Note=\"" + std::string(200'000, 'n') + "\"");
+    m_temp.write("note.vtp", bytes);
+    accepted("info note.vtp --scene plates.json --lines 1000");
+}
+
+// Two arrays of one name in CellData: VTK 9.1 dereferences null (found by the fuzzer).
+TEST_F(HostileSolution, TwoArraysOfOneNameAreRefused) {
+    std::string bytes = read_file(dir() / "good.vtp");
+    const std::size_t start = bytes.rfind('\n', bytes.find("Name=\"ElementArea\"")) + 1;
+    const std::size_t end = bytes.find('\n', start) + 1;
+    bytes.insert(end, bytes.substr(start, end - start));
+    m_temp.write("twice.vtp", bytes);
+    expect_refused("twice.vtp",
+                   "twice.vtp: damaged VTK file: two arrays named 'ElementArea' in its CellData");
+}
+
+// The XML part is read by an XML parser: what is not XML, or holds a document type (where
+// entities could be declared and expanded), is refused before VTK reads it.
+TEST_F(HostileSolution, XmlThatIsNotWellFormedOrDeclaresATypeIsRefused) {
+    const std::string bytes = read_file(dir() / "good.vtp");
+    const auto edit = [](std::size_t at, std::size_t n, std::string with) {
+        return [=](std::string& b) { b.replace(at, n, with); };
+    };
+    const std::size_t type = bytes.find("type=\"Float64\"");
+    expect_damaged("joined.vtp", edit(type, 15, "type=\"Float64\""),
+                   "XML error at line 5: not well-formed");
+    expect_damaged("doctype.vtp", edit(bytes.find("<VTKFile"), 0, "<!DOCTYPE VTKFile>"),
+                   "a document type declaration");
 }
 
 }  // namespace

@@ -1,9 +1,12 @@
 // load_obj: a good file gives the right patches, materials and adjacency; every validation
 // error of docs/design.md §1 throws a InputError naming the right `file:line`.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <numbers>
 
+#include "meshes/obj_lines.h"
+#include "meshes/obj_reader.h"
 #include "meshes/scene.h"
 #include "tests/meshes/scene_files.h"
 
@@ -282,6 +285,78 @@ TEST(ObjLoader, GeometryNeedsNoEmitterAndNoMaterial) {
 }
 
 TEST(ObjLoader, NoFaces) { EXPECT_TRUE(contains(obj_error("v 0 0 0\n"), "scene.obj: no faces")); }
+
+// The soup of kHeader + body (with kMtl or the given MTL).
+PolygonSoup soup_of(const std::string& body, const std::string& mtl = kMtl) {
+    SceneFiles files;
+    files.write("scene.mtl", mtl);
+    return read_obj(files.write("scene.obj", kHeader + body));
+}
+
+// A face's corners are read whatever their count: 300 of them, and the faces after it keep
+// theirs (a count kept in a byte once wrapped at 256 and shifted every later face).
+TEST(ObjLoader, AFaceOfMoreThan255CornersIsReadWhole) {
+    std::string body, face = "f";
+    for (int k = 0; k < 300; ++k) {
+        body += fmt::format("v {} {} 0\n", k, k * k);
+        face += fmt::format(" {}", k + 1);
+    }
+    const PolygonSoup soup = soup_of(body + face + "\nf 3 2 1\n");
+    ASSERT_EQ(soup.polygon_count(), 2u);
+    ASSERT_EQ(soup.corners(0).size(), 300u);
+    for (std::uint32_t k = 0; k < 300; ++k) EXPECT_EQ(soup.corners(0)[k], k);
+    EXPECT_EQ(std::vector<std::uint32_t>(soup.corners(1).begin(), soup.corners(1).end()),
+              (std::vector<std::uint32_t>{2, 1, 0}));
+    EXPECT_EQ(soup.where(soup.place[1]), soup.files[0].string() + ":304");
+}
+
+// Numbers are read as the nearest double: "0.75" is 0.75 and "0.3" is 0.3 (a reader that
+// summed digit times 0.1 made them 0.7500000000000001 and 0.30000000000000004).
+TEST(ObjLoader, NumbersAreReadExactly) {
+    const PolygonSoup soup = soup_of("v 0.75 0.3 -1.75e-1\nv 0.5528 1e3 0\nv 0 1 0\nf 1 2 3\n",
+                                     "newmtl white\nKd 0.3 0.725 0.7\nKe 0.3183098861837907 0 0\n");
+    EXPECT_EQ(soup.positions[0], Eigen::Vector3d(0.75, 0.3, -0.175));
+    EXPECT_EQ(soup.positions[1], Eigen::Vector3d(0.5528, 1000, 0));
+    ASSERT_EQ(soup.materials.size(), 1u);
+    EXPECT_EQ(soup.materials[0].material.kd, Eigen::Vector3d(0.3, 0.725, 0.7));
+    EXPECT_EQ(soup.materials[0].material.ke, Eigen::Vector3d(0.3183098861837907, 0, 0));
+}
+
+// `newmtl` and `usemtl` take the rest of the line, trimmed, as the name (Blender's rule).
+TEST(ObjLoader, MaterialNamesMayHoldSpaces) {
+    const PolygonSoup soup =
+        soup_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \tdark  grey \nf 1 2 3\n",
+                "newmtl dark  grey\t\nKd 0.2 0.2 0.2 # comment\nnewmtl dark\nKd 0.1 0.1 0.1\n");
+    ASSERT_EQ(soup.materials.size(), 2u);
+    EXPECT_EQ(soup.materials[0].material.name, "dark  grey");
+    EXPECT_EQ(soup.materials[1].material.name, "dark");
+    EXPECT_EQ(soup.material[0], 0);
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\n", "newmtl # no name\n"),
+                         "scene.mtl:1: newmtl needs a material name"));
+}
+
+// A line longer than kMaxObjLineBytes is refused at its line, in an OBJ and in an MTL.
+TEST(ObjLoader, ALineTooLongIsRefused) {
+    const std::string face = "f" + std::string(kMaxObjLineBytes, ' ') + "1 2 3\n";
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\n" + face), "scene.obj:4: a line of " +
+                                                            std::to_string(face.size() - 1) +
+                                                            " bytes: hmcr reads lines of at most " +
+                                                            std::to_string(kMaxObjLineBytes)));
+    EXPECT_TRUE(contains(obj_error("v 0 0 0\n", "Ka" + std::string(kMaxObjLineBytes, ' ')),
+                         "scene.mtl:1: a line of"));
+}
+
+// 10,000 unknown statements of two kinds: two warnings, each with its count.
+TEST(ObjLoader, UnknownMtlStatementsAreGroupedByName) {
+    std::string mtl = "newmtl white\nKd 0.5 0.5 0.5\n";
+    for (int k = 0; k < 5000; ++k) mtl += "KE 1 1 1\nillumination 2\n";
+    const PolygonSoup soup = soup_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mtl);
+    ASSERT_EQ(soup.warnings.size(), 2u);
+    EXPECT_TRUE(
+        contains(soup.warnings[0], "scene.mtl:3: unknown MTL statement 'KE' ignored (5000 times"));
+    EXPECT_TRUE(contains(soup.warnings[1],
+                         "scene.mtl:4: unknown MTL statement 'illumination' ignored (5000 times"));
+}
 
 }  // namespace
 }  // namespace hmcr

@@ -1,0 +1,32 @@
+// The XML part of a .vtp (everything before its appended data), read by expat (the parser VTK
+// itself uses) before VTK reads the file: what it declares about the appended arrays, and the
+// declarations VTK 9.1 would trust or crash on, refused. docs/design.md §11.4.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hmcr {
+
+struct VtpHeader {
+    bool compressed = false;       // a `compressor` attribute: arrays are in blocks
+    std::size_t header_width = 4;  // bytes of each number of an array's header (UInt32, UInt64)
+    bool base64 = false;           // the appended data is base64 text, not raw bytes
+    std::size_t data = std::string_view::npos;  // the '_' marker of the appended data, if any
+    std::vector<std::uint64_t> offsets;         // every `offset` attribute, in file order
+};
+
+// Reads the header of the .vtp whose bytes are `bytes`. Throws InputError "path: damaged VTK
+// file: why" on XML that is not well-formed, a document type declaration, an element that no
+// .vtp of hmcr holds, an array without one of VTK's types, points of other than 3 components, a
+// count (`NumberOf...`) or offset that is not a plain number, a count beyond what zlib's
+// largest ratio could expand the file to, and appended data without its '_' marker.
+VtpHeader read_vtp_header(const std::string& path, std::string_view bytes);
+
+// zlib's largest expansion is about 1032:1; a file declaring more than this many times its size
+// cannot hold it.
+inline constexpr double kMaxVtpExpansion = 1100;
+
+}  // namespace hmcr
