@@ -11,8 +11,11 @@ DEPS := g++ cmake make pkg-config zlib1g-dev libpng-dev libembree-dev libopenmes
         libopenmpi-dev openmpi-bin
 
 SANITIZE_BUILD ?= build-sanitize
+PREFIX ?= /usr/local
+# Debian's Python, which python3-matplotlib serves (another python3 may come first on the PATH).
+PLOT_PYTHON ?= /usr/bin/python3
 
-.PHONY: deps build run test test-quick test-sanitize bench scenes format clean
+.PHONY: deps build run install test test-quick test-sanitize bench scenes format clean
 
 # Installs only what is missing, so it is quick when everything is present.
 deps:
@@ -35,6 +38,12 @@ run: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target hmcr
 	$(BUILD)/hmcr solve cornell -o out/cornell.vtp
 
+# hmcr alone, installed: PREFIX/bin/hmcr and PREFIX/share/hmcr (the scenes, their generators and
+# the plotting script), which the installed program finds beside itself.
+install: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target hmcr
+	cmake --install $(BUILD) --prefix $(PREFIX)
+
 # The whole suite, statistical tests included (label `slow`).
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -55,10 +64,11 @@ test-sanitize: deps
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -L fuzz
 
 # The oracle table, then the scaling study on office instances of 10^2 ... 10^6 patches:
-# bench/results.json (every row) and bench/scaling.png (the curves).
+# bench/results.json (every row) and bench/scaling.pdf and .png (the curves).
 BENCH_SCENES := $(BUILD)/bench-scenes
 bench: build scenes $(BENCH_SCENES)/office-100k.obj
 	$(BUILD)/hmcr_bench --results bench/results.json --scaling $(BENCH_SCENES)
+	$(PLOT_PYTHON) scripts/plot_study.py bench/scaling_plot_data.json
 
 $(BENCH_SCENES)/office-100k.obj: scenes/office/generate.py
 	python3 scenes/office/generate.py --bays 1 --tile 1.6 --name office-100 --out $(BENCH_SCENES)

@@ -21,6 +21,7 @@ Command solve_command(CLI::App& app, const std::string& command_line);
 Command render_command(CLI::App& app);
 Command reference_command(CLI::App& app, const std::string& command_line);
 Command study_command(CLI::App& app);
+Command plot_command(CLI::App& app);
 Command info_command(CLI::App& app);
 Command oracles_command(CLI::App& app);
 Command scenes_command(CLI::App& app);

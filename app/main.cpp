@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
                                            render_command(app),
                                            reference_command(app, command_line),
                                            study_command(app),
+                                           plot_command(app),
                                            info_command(app),
                                            oracles_command(app),
                                            scenes_command(app),

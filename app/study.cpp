@@ -12,11 +12,13 @@
 #include "app/command.h"
 #include "app/count.h"
 #include "app/named_list.h"
+#include "app/plot_script.h"
 #include "app/scene_input.h"
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
 #include "app/trace_flags.h"
 #include "common/output_paths.h"
+#include "common/ranks.h"
 #include "studies/sampling_study.h"
 #include "studies/study.h"
 #include "trace/criteria/registry.h"
@@ -78,9 +80,17 @@ void refuse_mixed_flags(const StudyArgs& a, bool sampling) {
 void prepare_study_output(const std::filesystem::path& out, const std::filesystem::path& reference,
                           const Scene& scene) {
     refuse_nested_dirs(out, reference);
-    refuse_overwriting({out / "table.json", out / "table.csv", out / "table.md", out / "meshes.pvd"},
+    refuse_overwriting({out / "table.json", out / "table.csv", out / "table.md", out / "table.tex",
+                        out / "meshes.pvd", out / "plots" / "plot_data.json"},
                        scene.inputs);
     prepare_output_dir(out);
+}
+
+// Rank 0 has written the tables and the plot data: it draws the plots.
+void finish_study(const std::filesystem::path& out, bool quiet) {
+    if (!Ranks::world().root()) return;
+    draw_study_plots(out, quiet);
+    if (!quiet) fmt::print("study written to {}\n", out.string());
 }
 
 int run_sampling_study_command(StudyArgs& a) {
@@ -98,7 +108,7 @@ int run_sampling_study_command(StudyArgs& a) {
     prepare_study_output(o.output, o.reference, scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_sampling_study(scene, o, progress);
-    if (!a.quiet) fmt::print("study written to {}\n", o.output.string());
+    finish_study(o.output, a.quiet);
     return 0;
 }
 
@@ -122,7 +132,7 @@ int run_meshing_study(StudyArgs& a) {
     prepare_study_output(a.options.output, a.options.reference, scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_study(scene, a.options, progress);
-    if (!a.quiet) fmt::print("study written to {}\n", a.options.output.string());
+    finish_study(a.options.output, a.quiet);
     return 0;
 }
 

@@ -6,10 +6,10 @@
 // 1 would mean refinement, sampling and deposits cost nothing.
 //
 // Then the scaling study (bench/scaling.h), each point in a process of its own so that its peak
-// memory is its own. Every row, both kinds, goes to --results (bench/results.json).
-#include <benchmark/benchmark.h>
-#include <tbb/global_control.h>
-
+// memory is its own. Every row, both kinds, goes to --results (bench/results.json), and the
+// scaling study's curves to scaling_plot_data.json beside it, which scripts/plot_study.py draws.
+// A plain program: each row is a whole solve of seconds, timed by the row itself (bench_row.h);
+// a microbenchmark library's repetitions and statistics have nothing to add (docs/decisions.md).
 #include <fmt/format.h>
 
 #include <cstring>
@@ -38,37 +38,38 @@ const std::map<std::pair<std::string, std::string>, double> kEpsilon = {
     {{"cube-room", "hl"}, 1.14e-05},    {{"cube-room", "vt"}, 1.19e-04},
 };
 
-std::vector<nlohmann::json> g_rows;
-
-void bench_solve(benchmark::State& state, const std::string& scene, const std::string& oracle) {
-    RowSpec spec{scene, oracle, kEpsilon.at({scene, oracle}), kBenchRays, int(state.range(0))};
-    for (auto _ : state) {
-        const RowResult r = run_row(spec);
-        state.SetIterationTime(r.shooting_seconds);
-        state.counters["leaves"] = double(r.leaves);
-        state.counters["rays/s"] = double(r.rays) / r.shooting_seconds;
-        state.counters["evals"] = double(r.oracle_evaluations);
-        state.counters["lines"] = double(r.lines_cast);
-        state.counters["hit_rate"] = r.cache_hit_rate;
-        state.counters["oracle_cpu_s"] = r.oracle_seconds;
-        state.counters["floor_s"] = r.floor_seconds;
-        state.counters["floor_x"] = r.floor_x();
-        state.counters["tree+cache_MiB"] = double(r.solver_bytes) / (1 << 20);
-        nlohmann::json row = to_json(r);
-        row["study"] = "oracles";
-        g_rows.push_back(row);
+// Every oracle on both scenes, 1 and 2 threads: a line of the table each, and its JSON row.
+std::vector<nlohmann::json> run_oracle_rows() {
+    fmt::print("{:>9} {:>6} {:>7} {:>7} {:>9} {:>9} {:>9} {:>7} {:>10} {:>9} {:>9} {:>8}\n",
+               "scene", "oracle", "threads", "leaves", "shoot s", "rays/s", "floor s", "x floor",
+               "evals", "lines", "hit rate", "MiB");
+    std::vector<nlohmann::json> rows;
+    for (const char* scene : {"cornell", "cube-room"}) {
+        for (const Oracle* o : oracle_registry().all()) {
+            const std::string oracle(o->name());
+            if (!kEpsilon.count({scene, oracle})) continue;
+            for (int threads : {1, 2}) {
+                const RowResult r =
+                    run_row({scene, oracle, kEpsilon.at({scene, oracle}), kBenchRays, threads});
+                fmt::print("{:>9} {:>6} {:>7} {:>7} {:>9.2f} {:>9.3g} {:>9.3f} {:>7.2f} {:>10} "
+                           "{:>9} {:>9.3f} {:>8.0f}\n",
+                           scene, oracle, threads, r.leaves, r.shooting_seconds,
+                           double(r.rays) / r.shooting_seconds, r.floor_seconds, r.floor_x(),
+                           r.oracle_evaluations, r.lines_cast, r.cache_hit_rate,
+                           double(r.solver_bytes) / (1 << 20));
+                nlohmann::json row = to_json(r);
+                row["study"] = "oracles";
+                rows.push_back(row);
+            }
+        }
     }
+    return rows;
 }
 
-// Removes "--NAME VALUE" from argv (before Google Benchmark sees it); "" when absent.
-std::string take_flag(int& argc, char** argv, const char* name) {
-    for (int k = 1; k + 1 < argc; ++k) {
-        if (std::strcmp(argv[k], name) != 0) continue;
-        std::string value = argv[k + 1];
-        for (int j = k; j + 2 < argc + 1; ++j) argv[j] = argv[j + 2];
-        argc -= 2;
-        return value;
-    }
+// The value after "--NAME" in argv, or "" when absent.
+std::string flag(int argc, char** argv, const char* name) {
+    for (int k = 1; k + 1 < argc; ++k)
+        if (std::strcmp(argv[k], name) == 0) return argv[k + 1];
     return "";
 }
 
@@ -79,32 +80,17 @@ int main(int argc, char** argv) {
     using namespace hmcr::bench;
     // A scaling point, run by the scaling study in a process of its own.
     if (argc == 7 && std::strcmp(argv[1], "--row") == 0) return run_row_process(argv + 2);
-    const std::string results = take_flag(argc, argv, "--results");
-    const std::string scaling = take_flag(argc, argv, "--scaling");
-    for (const char* scene : {"cornell", "cube-room"}) {
-        for (const hmcr::Oracle* o : hmcr::oracle_registry().all()) {
-            const std::string oracle(o->name());
-            if (!kEpsilon.count({scene, oracle})) continue;
-            benchmark::RegisterBenchmark((std::string(scene) + "/" + oracle).c_str(), bench_solve,
-                                         std::string(scene), oracle)
-                ->Arg(1)
-                ->Arg(2)
-                ->ArgName("threads")
-                ->Iterations(1)
-                ->UseManualTime()
-                ->Unit(benchmark::kSecond);
-        }
-    }
-    benchmark::Initialize(&argc, argv);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
+    const std::string results = flag(argc, argv, "--results");
+    const std::string scaling = flag(argc, argv, "--scaling");
+    std::vector<nlohmann::json> rows = run_oracle_rows();
     if (!scaling.empty()) {
-        const std::filesystem::path plot =
-            std::filesystem::path(results.empty() ? "." : results).parent_path() / "scaling.png";
-        for (nlohmann::json& row : run_scaling_study(argv[0], scaling, plot)) g_rows.push_back(row);
+        const std::filesystem::path plot_data =
+            std::filesystem::path(results.empty() ? "." : results).parent_path() /
+            "scaling_plot_data.json";
+        for (nlohmann::json& row : run_scaling_study(argv[0], scaling, plot_data)) rows.push_back(row);
     }
     if (!results.empty()) {
-        hmcr::write_text_atomically(results, nlohmann::json{{"rows", g_rows}}.dump(2) + "\n");
-        fmt::print("bench: {} rows in {}\n", g_rows.size(), results);
+        hmcr::write_text_atomically(results, nlohmann::json{{"rows", rows}}.dump(2) + "\n");
+        fmt::print("bench: {} rows in {}\n", rows.size(), results);
     }
 }

@@ -7,12 +7,11 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "bench/bench_row.h"
-#include "studies/montage.h"
-#include "studies/plot.h"
-#include "image/image.h"
+#include "common/atomic_file.h"
 
 extern char** environ;
 
@@ -67,18 +66,28 @@ double growth(const std::vector<nlohmann::json>& rows, const char* x, const char
     return std::log(double(b[y]) / double(a[y])) / std::log(double(b[x]) / double(a[x]));
 }
 
-PlotSeries series(const std::vector<nlohmann::json>& rows, const std::string& name, const char* x,
-                  const std::function<double(const nlohmann::json&)>& y) {
-    PlotSeries s{name, {}};
-    for (const auto& r : rows) s.points.push_back({double(r[x]), y(r)});
-    return s;
+// A series of scripts/plot_study.py's plot data: (x, y) of each row, no error bars.
+nlohmann::json series(const std::vector<nlohmann::json>& rows, const std::string& name,
+                      const char* x, const std::function<double(const nlohmann::json&)>& y) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const auto& r : rows) {
+        points.push_back({{"x", double(r[x])}, {"x_se", nullptr}, {"y", y(r)}, {"y_se", nullptr},
+                          {"n", 1}});
+    }
+    return {{"name", name}, {"points", points}};
+}
+
+nlohmann::json panel(const std::string& title, const std::string& x_label,
+                     const std::string& y_label, nlohmann::json series) {
+    return {{"type", "lines"}, {"title", title},   {"x_label", x_label},
+            {"y_label", y_label}, {"series", series}};
 }
 
 }  // namespace
 
 std::vector<nlohmann::json> run_scaling_study(const std::string& self,
                                               const std::filesystem::path& scenes,
-                                              const std::filesystem::path& plot) {
+                                              const std::filesystem::path& plot_data) {
     std::vector<Point> points;
     for (const char* size : {"100", "1k", "10k", "100k"}) {
         const std::string scene = (scenes / fmt::format("office-{}.obj", size)).string();
@@ -124,23 +133,25 @@ std::vector<nlohmann::json> run_scaling_study(const std::string& self,
         return double(r["rays"]) / double(r["floor_seconds"]);
     };
     auto rate = [](const nlohmann::json& r) { return double(r["rays_per_second"]); };
-    LogLogPlot a{"patches", "rays per second", {}};
-    a.series = {series(by_patches, "hmcr kl", "patches", rate),
-                series(by_patches, "floor", "patches", floor_rate)};
-    LogLogPlot b{"patches", "x floor", {series(by_patches, "hmcr kl", "patches", [](const auto& r) {
-                     return double(r["x_floor"]);
-                 })}};
-    LogLogPlot c{"rays", "seconds", {}};
-    c.series = {series(by_rays, "hmcr kl", "rays", [](const auto& r) { return double(r["seconds"]); }),
-                series(by_rays, "floor", "rays",
-                       [](const auto& r) { return double(r["floor_seconds"]); })};
-    LogLogPlot d{"elements", "peak memory (MB)", {}};
-    d.series = {series(by_patches, "patches", "elements",
-                       [](const auto& r) { return double(r["peak_bytes"]) / 1e6; }),
-                series(by_rays, "rays", "elements",
-                       [](const auto& r) { return double(r["peak_bytes"]) / 1e6; })};
-    write_png(plot, montage({draw_log_log(a), draw_log_log(b), draw_log_log(c), draw_log_log(d)}, 2, 1));
-    fmt::print("scaling plots: {}\n", plot.string());
+    const auto peak_mb = [](const nlohmann::json& r) { return double(r["peak_bytes"]) / 1e6; };
+    const nlohmann::json panels = {
+        panel("speed", "patches", "rays per second",
+              {series(by_patches, "hmcr kl", "patches", rate),
+               series(by_patches, "floor", "patches", floor_rate)}),
+        panel("against the floor", "patches", "x floor",
+              {series(by_patches, "hmcr kl", "patches",
+                      [](const auto& r) { return double(r["x_floor"]); })}),
+        panel("rays", "rays", "seconds",
+              {series(by_rays, "hmcr kl", "rays", [](const auto& r) { return double(r["seconds"]); }),
+               series(by_rays, "floor", "rays",
+                      [](const auto& r) { return double(r["floor_seconds"]); })}),
+        panel("memory", "elements", "peak memory (MB)",
+              {series(by_patches, "patches study", "elements", peak_mb),
+               series(by_rays, "rays study", "elements", peak_mb)})};
+    const nlohmann::json data = {
+        {"figures", {{{"name", "scaling"}, {"columns", 2}, {"panels", panels}}}}};
+    write_text_atomically(plot_data, data.dump(2) + "\n");
+    fmt::print("scaling plot data: {} (make bench draws it)\n", plot_data.string());
     return rows;
 }
 

@@ -104,7 +104,8 @@ const View& find_view(const Scene& scene, const std::string& name);
 // Names of the bundled scenes (folders of the scene directory holding NAME/NAME.json).
 std::vector<std::string> bundled_scene_names();
 
-// Where bundled scenes live: $HMCR_SCENES if set, else the source tree's scenes/.
+// Where bundled scenes live: $HMCR_SCENES if set, else the data directory's scenes/
+// (common/data_directory.h).
 std::filesystem::path scene_directory();
 
 }  // namespace hmcr

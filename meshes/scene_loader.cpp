@@ -33,16 +33,13 @@
 #include <numbers>
 #include <set>
 
+#include "common/data_directory.h"
 #include "common/text_file.h"
 #include "meshes/mgf_reader.h"
 #include "meshes/obj_reader.h"
 #include "meshes/repairs.h"
 #include "meshes/scene.h"
 #include "meshes/validation.h"
-
-#ifndef HMCR_SCENE_DIR
-#define HMCR_SCENE_DIR "scenes"  // the build defines the source tree's scenes/ folder
-#endif
 
 namespace hmcr {
 namespace {
@@ -341,7 +338,7 @@ PatchMesh load_obj(const fs::path& obj, const LoadOptions& options) {
 fs::path scene_directory() {
     const char* env = std::getenv("HMCR_SCENES");
     if (env != nullptr && *env != '\0') return env;
-    return HMCR_SCENE_DIR;
+    return data_directory() / "scenes";
 }
 
 std::vector<std::string> bundled_scene_names() {

@@ -103,6 +103,9 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j);
 // successful seeds, by sampler and view: from the cells' images.
 using ErrorSplits = std::map<std::string, std::map<std::string, ErrorSplit>>;
 
+// One sampler's split over all its views: the RMS of the views' biases and of their noises.
+ErrorSplit rms_over_views(const std::map<std::string, ErrorSplit>& by_view);
+
 // table.json, table.csv and table.md, from every cell of the study in order.
 void write_sampling_tables(const std::string& scene, const SamplingStudyOptions& options,
                            const std::vector<std::string>& views,

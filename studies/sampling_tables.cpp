@@ -9,7 +9,9 @@
 
 #include "common/atomic_file.h"
 #include "studies/mean_se.h"
+#include "studies/plot_data.h"
 #include "studies/sampling_study.h"
+#include "studies/summary_table.h"
 #include "studies/table_fields.h"
 
 namespace hmcr {
@@ -53,89 +55,101 @@ double cell_value(const SamplingCell& c, const Column& col, const std::string& v
     return sum / double(c.views.size());
 }
 
-std::string md_table(const std::vector<SamplingCell>& cells, const std::string& view) {
+// A row per sampler: mean ± se over its successful seeds of every column, of one view or of the
+// mean over the views (view empty).
+SummaryTable summary(const std::vector<SamplingCell>& cells, const std::string& view) {
     const std::vector<Column> cols = columns();
-    const std::vector<std::string> samplers = sampler_order(cells);
-    std::vector<std::vector<MeanSe>> stats;  // [sampler][column]
-    std::vector<std::size_t> runs;
-    for (const std::string& s : samplers) {
-        stats.emplace_back();
-        runs.push_back(0);
+    SummaryTable table;
+    table.row_title = "sampler";
+    for (const Column& col : cols) table.columns.push_back({col.title, col.format, col.better});
+    for (const std::string& s : sampler_order(cells)) {
+        SummaryRow row{s, "", {}};
+        std::size_t runs = 0;
         for (const Column& col : cols) {
             std::vector<double> v;
             for (const SamplingCell& c : cells) {
                 if (c.sampler == s && c.ok()) v.push_back(cell_value(c, col, view));
-                if (c.sampler == s && &col == &cols[0]) ++runs.back();
+                if (c.sampler == s && &col == &cols[0]) ++runs;
             }
-            stats.back().push_back(mean_se(v));
+            row.values.push_back(mean_se(v));
         }
+        row.seeds = fmt::format("{}/{}", row.values[0].n, runs);
+        table.rows.push_back(std::move(row));
     }
-    std::string out = "| sampler | seeds |", rule = "|:--|--:|";
-    for (const Column& col : cols) {
-        out += fmt::format(" {} |", col.title);
-        rule += "--:|";
-    }
-    out += "\n" + rule + "\n";
-    for (std::size_t s = 0; s < samplers.size(); ++s) {
-        out += fmt::format("| {} | {}/{} |", samplers[s], stats[s][0].n, runs[s]);
-        for (std::size_t k = 0; k < cols.size(); ++k) {
-            const std::string text = format_mean_se(stats[s][k], cols[k].format);
-            bool best = cols[k].better != 0 && stats[s][k].n > 0;
-            for (std::size_t q = 0; q < samplers.size() && best; ++q) {
-                if (stats[q][k].n > 0 && cols[k].better * (stats[q][k].mean - stats[s][k].mean) > 0)
-                    best = false;
-            }
-            out += best ? fmt::format(" **{}** |", text) : fmt::format(" {} |", text);
-        }
-        out += "\n";
-    }
-    return out;
+    return table;
 }
 
 // sampler | bias | noise, each the RMS over the views of the per-view parts.
-std::string md_splits(const ErrorSplits& splits, const std::vector<std::string>& samplers) {
-    std::string out =
-        "| sampler | bias RMSEp | noise RMSEp |\n|:--|--:|--:|\n";
+SummaryTable split_summary(const ErrorSplits& splits, const std::vector<std::string>& samplers) {
+    SummaryTable table;
+    table.row_title = "sampler";
+    table.seeds_column = false;
+    table.columns = {{"bias RMSEp", "{:.2f}", 0}, {"noise RMSEp", "{:.2f}", 0}};
     for (const std::string& s : samplers) {
         const auto it = splits.find(s);
         if (it == splits.end() || it->second.empty()) continue;
-        double bias2 = 0, noise2 = 0;
-        for (const auto& [view, e] : it->second) {
-            bias2 += e.bias * e.bias / double(it->second.size());
-            noise2 += e.noise * e.noise / double(it->second.size());
-        }
-        out += fmt::format("| {} | {:.2f} | {:.2f} |\n", s, std::sqrt(bias2), std::sqrt(noise2));
+        const ErrorSplit e = rms_over_views(it->second);
+        table.rows.push_back({s, "", {mean_se({e.bias}), mean_se({e.noise})}});
     }
-    return out;
+    return table;
 }
 
-std::string md_document(const std::string& scene, const SamplingStudyOptions& o,
-                        const std::vector<std::string>& views,
-                        const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
-    std::string out = fmt::format("# Sampling study: {}\n\n", scene);
-    out += fmt::format(
+// The paragraph above table.md's tables.
+std::string description(const SamplingStudyOptions& o) {
+    return fmt::format(
         "{} samples per pixel (±{}%), {} seeds from {}, path estimator {}, at most {} bounces, "
         "criteria on {}{}, reference {}. Mean ± "
         "standard error over the seeds whose searches succeeded (seeds column). RMSE on the "
         "0–255 scale and PSNR in dB against the reference at its exposure; spp: the mean "
         "reached; rays: traced, the threshold search's included. The best mean of each error "
-        "column is in bold.\n\n## Mean over the views ({})\n\n{}\n",
+        "column is in bold.",
         o.trace.spp, 100 * o.trace.spp_tolerance, o.seeds, o.trace.seed,
         estimator_name(o.trace.path.estimator), o.trace.path.max_depth,
         o.display_criteria ? "display values" : "radiance",
-        o.trace.fresh ? ", adaptive images from fresh samples" : "", o.reference.string(),
-        fmt::join(views, ", "),
-        md_table(cells, ""));
+        o.trace.fresh ? ", adaptive images from fresh samples" : "", o.reference.string());
+}
+
+constexpr const char* kSplitText =
+    "RMSEp split as E[MSE of one image] = bias² + noise² and E[MSE of the mean of the k seeds' "
+    "images] = bias² + noise²/k (RMS over the views). The bias includes the reference's own "
+    "noise and the 8-bit rounding, which every sampler shares; an unbiased sampler shows only "
+    "that.";
+
+std::string md_document(const std::string& scene, const SamplingStudyOptions& o,
+                        const std::vector<std::string>& views,
+                        const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+    std::string out = fmt::format("# Sampling study: {}\n\n{}\n\n## Mean over the views ({})\n\n{}\n",
+                                  scene, description(o), fmt::join(views, ", "),
+                                  markdown(summary(cells, "")));
     if (!splits.empty()) {
-        out += fmt::format(
-            "## Bias and noise\n\nRMSEp split as E[MSE of one image] = bias² + noise² and "
-            "E[MSE of the mean of the k seeds' images] = bias² + noise²/k (RMS over the views). "
-            "The bias includes the reference's own noise and the 8-bit rounding, which every "
-            "sampler shares; an unbiased sampler shows only that.\n\n{}\n",
-            md_splits(splits, sampler_order(cells)));
+        out += fmt::format("## Bias and noise\n\n{}\n\n{}\n", kSplitText,
+                           markdown(split_summary(splits, sampler_order(cells))));
     }
     for (const std::string& v : views)
-        out += fmt::format("## View {}\n\n{}\n", v, md_table(cells, v));
+        out += fmt::format("## View {}\n\n{}\n", v, markdown(summary(cells, v)));
+    return out;
+}
+
+// table.tex: table.md's tables as floats, to \input into a paper with booktabs.
+std::string tex_document(const std::string& scene, const SamplingStudyOptions& o,
+                         const std::vector<std::string>& views,
+                         const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+    const std::string name = latex_text(scene), label = "tab:" + latex_label(scene) + "-sampling";
+    const std::string what = "mean $\\pm$ standard error over the seeds; the best mean of each "
+                             "error column in bold.";
+    std::string out = fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}}.\n% {}\n",
+                                  name, latex_text(description(o)));
+    out += latex_float(fmt::format("Sampling study of {}, the mean over the views: {}", name, what),
+                     label, summary(cells, ""));
+    if (!splits.empty()) {
+        out += latex_float(fmt::format("Sampling study of {}: RMSEp split into bias and noise. {}",
+                                     name, latex_text(kSplitText)),
+                         label + "-split", split_summary(splits, sampler_order(cells)));
+    }
+    for (const std::string& v : views) {
+        out += latex_float(fmt::format("Sampling study of {}, view {}: {}", name, latex_text(v), what),
+                         label + "-" + latex_label(v), summary(cells, v));
+    }
     return out;
 }
 
@@ -180,6 +194,15 @@ SamplingView view_from_json(const nlohmann::json& j) {
 }
 
 }  // namespace
+
+ErrorSplit rms_over_views(const std::map<std::string, ErrorSplit>& by_view) {
+    double bias2 = 0, noise2 = 0;
+    for (const auto& [view, e] : by_view) {
+        bias2 += e.bias * e.bias / double(by_view.size());
+        noise2 += e.noise * e.noise / double(by_view.size());
+    }
+    return {std::sqrt(bias2), std::sqrt(noise2)};
+}
 
 nlohmann::json sampling_cell_to_json(const SamplingCell& c) {
     nlohmann::json views = nlohmann::json::object();
@@ -231,6 +254,8 @@ void write_sampling_tables(const std::string& scene, const SamplingStudyOptions&
     write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
     write_text_atomically(o.output / "table.csv", csv_table(views, cells));
     write_text_atomically(o.output / "table.md", md_document(scene, o, views, cells, splits));
+    write_text_atomically(o.output / "table.tex", tex_document(scene, o, views, cells, splits));
+    write_plot_data(o.output, sampling_plot_data(scene, cells, splits));
 }
 
 }  // namespace hmcr

@@ -17,6 +17,7 @@
 #include "common/text_file.h"
 #include "common/hash.h"
 #include "studies/cell_handout.h"
+#include "studies/plot_data.h"
 #include "studies/reference.h"
 #include "studies/traced_reference.h"
 #include "image/image.h"
@@ -63,6 +64,10 @@ void validate(const StudyOptions& o) {
     if (o.oracles.empty()) throw InputError("study: no oracle given");
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
     refuse_repeats(o.budgets, "budget");
+    if (o.budgets.size() > kMaxPlotPoints) {
+        throw InputError(fmt::format("study: {} budgets; at most {}, the points a plot shows",
+                                     o.budgets.size(), kMaxPlotPoints));
+    }
     std::vector<std::string_view> names;
     for (const Oracle* oracle : o.oracles) names.push_back(oracle->name());
     refuse_repeats(names, "oracle");

@@ -1,5 +1,5 @@
 // The study's cell files and tables (studies/study.h): JSON per cell, the long-form table.json
-// and table.csv, the paper's table.md and the error-versus-elements plot.
+// and table.csv, and the paper's tables table.md and table.tex.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -7,40 +7,19 @@
 #include <functional>
 #include <limits>
 
-#include "studies/montage.h"
-#include "studies/mean_se.h"
-#include "studies/plot.h"
-#include "studies/study.h"
-#include "studies/table_fields.h"
 #include "common/atomic_file.h"
-#include "image/image.h"
+#include "studies/cell_errors.h"
+#include "studies/mean_se.h"
+#include "studies/plot_data.h"
+#include "studies/study.h"
+#include "studies/summary_table.h"
+#include "studies/table_fields.h"
 
 namespace hmcr {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-double view_mean(const std::map<std::string, ImageErrors>& views, double ImageErrors::*field) {
-    double sum = 0;
-    for (const auto& [name, e] : views) sum += e.*field;
-    return views.empty() ? kNaN : sum / double(views.size());
-}
-
-double view_mean(const CellResult& c, double ImageErrors::*field) {
-    return view_mean(c.views, field);
-}
-
-// The frozen re-solve's errors (NaN, left out of the means, where none was measured).
-double mesh_view_mean(const CellResult& c, double ImageErrors::*field) {
-    return c.mesh_rays > 0 ? view_mean(c.mesh_views, field) : kNaN;
-}
-
-double mesh_object_error(const CellResult& c) {
-    return c.mesh_rays > 0 ? c.mesh_object_error.relative_l2 : kNaN;
-}
-
-double mesh_rmse_p(const CellResult& c) { return mesh_view_mean(c, &ImageErrors::rmse_p); }
 
 // One column of table.md: how a cell gives its value, how it prints, which way is better.
 struct Column {
@@ -86,47 +65,28 @@ std::vector<std::string> oracle_order(const std::vector<CellResult>& cells) {
     return out;
 }
 
-std::string md_budget_table(std::size_t budget, const std::vector<CellResult>& cells) {
+// One budget's table: a row per oracle, mean ± se of every column over its successful seeds.
+SummaryTable budget_table(std::size_t budget, const std::vector<CellResult>& cells) {
     const std::vector<Column> columns = md_columns();
-    const std::vector<std::string> oracles = oracle_order(cells);
-    std::vector<std::vector<MeanSe>> stats;  // [oracle][column]
-    for (const std::string& oracle : oracles) {
-        stats.emplace_back();
+    SummaryTable table;
+    table.row_title = "oracle";
+    for (const Column& col : columns) table.columns.push_back({col.title, col.format, col.better});
+    for (const std::string& oracle : oracle_order(cells)) {
+        SummaryRow row{oracle, "", {}};
         for (const Column& col : columns) {
             std::vector<double> v;
             for (const CellResult* c : select(cells, budget, oracle, true))
                 if (const double x = col.value(*c); !std::isnan(x)) v.push_back(x);
-            stats.back().push_back(mean_se(v));
+            row.values.push_back(mean_se(v));
         }
+        row.seeds = fmt::format("{}/{}", row.values[0].n, select(cells, budget, oracle, false).size());
+        table.rows.push_back(std::move(row));
     }
-    std::string out = fmt::format("## {} leaves\n\n| oracle | seeds |", budget);
-    std::string rule = "|:--|--:|";
-    for (const Column& col : columns) {
-        out += fmt::format(" {} |", col.title);
-        rule += "--:|";
-    }
-    out += "\n" + rule + "\n";
-    for (std::size_t o = 0; o < oracles.size(); ++o) {
-        out += fmt::format("| {} | {}/{} |", oracles[o], stats[o][0].n,
-                           select(cells, budget, oracles[o], false).size());
-        for (std::size_t k = 0; k < columns.size(); ++k) {
-            std::string text = format_mean_se(stats[o][k], columns[k].format);
-            bool best = columns[k].better != 0 && stats[o][k].n > 0;
-            for (std::size_t q = 0; q < oracles.size() && best; ++q) {
-                if (stats[q][k].n > 0 &&
-                    columns[k].better * (stats[q][k].mean - stats[o][k].mean) > 0)
-                    best = false;
-            }
-            out += best ? fmt::format(" **{}** |", text) : fmt::format(" {} |", text);
-        }
-        out += "\n";
-    }
-    return out;
+    return table;
 }
 
-std::string md_table(const std::string& scene, const StudyOptions& o,
-                     const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
-    std::string out = fmt::format("# Meshing study: {}\n\n", scene);
+// What every table of the study shows: the paragraph above table.md's tables.
+std::string description(const StudyOptions& o, const std::vector<std::string>& views) {
     const std::string rays = o.rays_per_leaf > 0
                                  ? fmt::format("{} rays per leaf of the budget", o.rays_per_leaf)
                                  : fmt::format("{} rays", o.solver.rays);
@@ -137,16 +97,39 @@ std::string md_table(const std::string& scene, const StudyOptions& o,
         : *o.mesh_rays > 0
             ? fmt::format("{} with {} rays, the error of the mesh itself", frozen, *o.mesh_rays)
             : std::string("mesh: not measured (--mesh-rays 0)");
-    out += fmt::format(
+    return fmt::format(
         "{}, N_s = {}, link weight {}, budget tolerance {}%, {} seeds from {}. Mean ± standard "
         "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
         "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
         "area-weighted relative L2 error of the reflected radiosity against the reference (– "
         "against a traced reference, which has no mesh); "
-        "{}; seconds: the budget search. The best mean of each error column is in bold.\n\n",
+        "{}; seconds: the budget search. The best mean of each error column is in bold.",
         rays, o.solver.lines, name(o.solver.link_weight), 100 * o.budget_tolerance, o.seeds,
         o.solver.seed, views.size(), fmt::join(views, ", "), mesh);
-    for (std::size_t b : o.budgets) out += md_budget_table(b, cells) + "\n";
+}
+
+std::string md_table(const std::string& scene, const StudyOptions& o,
+                     const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
+    std::string out = fmt::format("# Meshing study: {}\n\n{}\n\n", scene, description(o, views));
+    for (std::size_t b : o.budgets) {
+        out += fmt::format("## {} leaves\n\n{}\n", b, markdown(budget_table(b, cells)));
+    }
+    return out;
+}
+
+// table.tex: one table float per budget, to \input into a paper with booktabs.
+std::string tex_table(const std::string& scene, const StudyOptions& o,
+                      const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
+    std::string out = fmt::format(
+        "% Meshing study: {} (hmcr). Needs \\usepackage{{booktabs}}.\n% {}\n", latex_text(scene),
+        latex_text(description(o, views)));
+    for (std::size_t b : o.budgets) {
+        out += latex_float(fmt::format("Meshing study of {} at {} leaves: mean $\\pm$ standard "
+                                       "error over the seeds; the best mean of each error column "
+                                       "in bold.",
+                                       latex_text(scene), b),
+                           fmt::format("tab:{}-{}", latex_label(scene), b), budget_table(b, cells));
+    }
     return out;
 }
 
@@ -178,47 +161,6 @@ std::string csv_table(const std::vector<std::string>& views, const std::vector<C
         }
     }
     return out;
-}
-
-// Mean error against mean leaves per oracle, one point per budget.
-Image8 error_panel(const std::vector<CellResult>& cells, const std::vector<std::size_t>& budgets,
-                   const std::string& y_label, double (*error_of)(const CellResult&)) {
-    LogLogPlot plot;
-    plot.x_label = "leaves";
-    plot.y_label = y_label;
-    for (const std::string& oracle : oracle_order(cells)) {
-        PlotSeries s{oracle, {}};
-        for (std::size_t b : budgets) {
-            std::vector<double> leaves, error;
-            for (const CellResult* c : select(cells, b, oracle, true)) {
-                if (std::isnan(error_of(*c))) continue;
-                leaves.push_back(double(c->leaves));
-                error.push_back(error_of(*c));
-            }
-            if (!leaves.empty()) s.points.push_back({mean_se(leaves).mean, mean_se(error).mean});
-        }
-        plot.series.push_back(std::move(s));
-    }
-    return draw_log_log(plot);
-}
-
-// The solution's object error, and beside it the mesh's (the frozen re-solve's).
-// Against a traced reference (no object errors) the images' RMSEp instead.
-Image8 error_plot(const std::vector<CellResult>& cells, const std::vector<std::size_t>& budgets) {
-    const bool object = std::any_of(cells.begin(), cells.end(), [](const CellResult& c) {
-        return c.ok() && !std::isnan(c.object_error.relative_l2);
-    });
-    if (!object) {
-        const Image8 left = error_panel(cells, budgets, "RMSEp (solution)", [](const CellResult& c) {
-            return view_mean(c, &ImageErrors::rmse_p);
-        });
-        const Image8 right = error_panel(cells, budgets, "RMSEp (mesh frozen)", mesh_rmse_p);
-        return montage({left, right}, 2, 1);
-    }
-    const Image8 left = error_panel(cells, budgets, "object error (solution)",
-                                    [](const CellResult& c) { return c.object_error.relative_l2; });
-    const Image8 right = error_panel(cells, budgets, "object error (mesh frozen)", mesh_object_error);
-    return montage({left, right}, 2, 1);
 }
 
 nlohmann::json object_error_json(const ObjectError& e) {
@@ -313,7 +255,8 @@ void write_study_tables(const std::string& scene, const StudyOptions& o,
     write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
     write_text_atomically(o.output / "table.csv", csv_table(views, cells));
     write_text_atomically(o.output / "table.md", md_table(scene, o, views, cells));
-    write_png(o.output / "plots" / "error_vs_elements.png", error_plot(cells, o.budgets));
+    write_text_atomically(o.output / "table.tex", tex_table(scene, o, views, cells));
+    write_plot_data(o.output, meshing_plot_data(scene, cells));
 }
 
 }  // namespace hmcr

@@ -84,7 +84,8 @@ TEST_F(TraceCli, TraceReferenceAndSamplingStudyWriteTheirFiles) {
 
 // `hmcr study --budgets` against a traced reference: radiosity solutions measured against an
 // independent solution of the same light transport. There is no reference mesh, so no
-// object-space error ("–" in the table, null in the cells), and the plot shows RMSEp.
+// object-space error ("–" in the table, null in the cells), and the plot shows RMSEp. The plots,
+// drawn at the end (PDF and PNG), are drawn again by `hmcr plot`.
 TEST_F(TraceCli, AMeshingStudyTakesATracedReference) {
     const std::string ref = (m_dir / "ref").string(), study = (m_dir / "study").string();
     ASSERT_EQ(hmcr("trace-reference plates --width 12 --spp 64 -q -o " + ref).exit_code, 0);
@@ -101,7 +102,20 @@ TEST_F(TraceCli, AMeshingStudyTakesATracedReference) {
         EXPECT_GT(e["psnr_p"].get<double>(), 15) << view;  // the same scene, solved both ways
     }
     EXPECT_EQ(read_png(m_dir / "study" / "images" / "plates-kl-B20-s1-side.png").width, 12);
-    EXPECT_TRUE(fs::exists(m_dir / "study" / "plots" / "error_vs_elements.png"));
+    const fs::path plots = m_dir / "study" / "plots";
+    const auto data = nlohmann::json::parse(read_file(plots / "plot_data.json"));
+    EXPECT_EQ(data["figures"][0]["panels"][0]["y_label"], "RMSEp (0–255)");
+    const auto drawn = [&] {
+        return read_file(plots / "error_vs_elements.pdf").rfind("%PDF-", 0) == 0 &&
+               read_file(plots / "error_vs_elements.png").rfind("\x89PNG\r\n\x1a\n", 0) == 0;
+    };
+    EXPECT_TRUE(drawn()) << "no matplotlib? make deps installs python3-matplotlib";
+    fs::remove(plots / "error_vs_elements.pdf");
+    fs::remove(plots / "error_vs_elements.png");
+    const CliRun again = hmcr("plot " + study);
+    EXPECT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(again.out, "plots written to " + (m_dir / "study" / "plots").string() + "\n");
+    EXPECT_TRUE(drawn());
 }
 
 TEST_F(TraceCli, SamplersAreListed) {

@@ -1,5 +1,6 @@
 // Hostile study folders: a cell file cut short or emptied is computed again, not fatal; a
-// folder made with other settings is refused, not mixed into one table.
+// folder made with other settings is refused, not mixed into one table; `hmcr plot` refuses a
+// folder that holds no study's table, and a machine without matplotlib.
 #include <nlohmann/json.hpp>
 
 #include "tests/hostile/hostile.h"
@@ -49,6 +50,47 @@ TEST_F(HostileStudy, OtherSettingsAreRefusedUnlessRedone) {
     EXPECT_EQ(nlohmann::json::parse(read_file(cell(2)))["settings"]["solve"]["lines"], 4);
     // Threads and cache size change no result, so they are not settings of a study.
     accepted(std::string(kStudy) + " --lines 4 --threads 1 --cache-mb 1");
+}
+
+TEST_F(HostileStudy, PlotRefusesWhatIsNoStudysTable) {
+    accepted(kStudy);
+    m_temp.write("empty/readme.txt", "no table here");
+    refused("plot nowhere", "nowhere/table.json: no such file");
+    refused("plot empty", "empty/table.json: no such file");
+    const std::string table = read_file(dir() / "st" / "table.json");
+    m_temp.write("st/table.json", table.substr(0, table.size() / 2));
+    refused("plot st", "st/table.json:");
+    nlohmann::json j = nlohmann::json::parse(table);
+    j["cells"][0]["oracle"] = "nope";
+    m_temp.write("st/table.json", j.dump());
+    refused("plot st", "st/table.json: unknown oracle 'nope'");
+    j["cells"][0]["leaves"] = "many";
+    m_temp.write("st/table.json", j.dump());
+    refused("plot st", "st/table.json: ");
+    m_temp.write("st/table.json", R"({"scene": "x", "options": {}, "cells": []})");
+    refused("plot st", "neither a meshing study's table");
+}
+
+// Without matplotlib a study completes, its tables written and one line saying how to draw its
+// plots; `hmcr plot` then refuses, writing nothing.
+TEST_F(HostileStudy, NoMatplotlibLeavesTheStudyWhole) {
+    const std::string no_python = "env HMCR_PYTHON=/nonexistent/python3 ";
+    const CliRun study = run_launched(no_python, kStudy, dir(), 60);
+    EXPECT_EQ(study.exit_code, 0) << study.err;
+    EXPECT_TRUE(std::filesystem::exists(dir() / "st" / "table.tex"));
+    EXPECT_TRUE(std::filesystem::exists(dir() / "st" / "plots" / "plot_data.json"));
+    EXPECT_FALSE(std::filesystem::exists(dir() / "st" / "plots" / "error_vs_elements.pdf"));
+    EXPECT_NE(study.err.find("hmcr: warning: plots not drawn: no Python with matplotlib "
+                             "($HMCR_PYTHON (/nonexistent/python3)): install it (Debian: "
+                             "python3-matplotlib), then `hmcr plot st`\n"),
+              std::string::npos)
+        << study.err;
+    const auto before = snapshot(dir());
+    const CliRun plot = run_launched(no_python, "plot st", dir(), 60);
+    EXPECT_EQ(plot.exit_code, 2);
+    EXPECT_EQ(std::count(plot.err.begin(), plot.err.end(), '\n'), 1) << plot.err;
+    EXPECT_NE(plot.err.find("hmcr: error: plot: no Python with matplotlib"), std::string::npos);
+    EXPECT_TRUE(snapshot(dir()) == before);
 }
 
 }  // namespace

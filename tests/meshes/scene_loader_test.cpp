@@ -189,6 +189,23 @@ TEST(SceneLoader, BundledSceneByName) {
     EXPECT_EQ(scene.mesh.n_faces(), 1u);
 }
 
+// Without $HMCR_SCENES, the scenes are the data directory's (common/data_directory.h):
+// $HMCR_DATA_DIR's, else, for a program in its build folder as this test is, the source tree's.
+TEST(SceneLoader, BundledScenesAreTheDataDirectorys) {
+    SceneFiles files;
+    files.write("scenes/box/tri.obj", kLitTriangle);
+    files.write("scenes/box/tri.mtl", kLightMtl);
+    files.write("scenes/box/box.json", R"({"mesh": "tri.obj"})");
+    ScopedEnv no_scenes("HMCR_SCENES", "");
+    {
+        ScopedEnv data("HMCR_DATA_DIR", files.path().string());
+        EXPECT_EQ(scene_directory(), files.path() / "scenes");
+        EXPECT_EQ(load_scene("box").source, files.path() / "scenes" / "box" / "box.json");
+    }
+    ScopedEnv no_data("HMCR_DATA_DIR", "");
+    EXPECT_TRUE(std::filesystem::equivalent(scene_directory(), HMCR_SCENE_DIR));
+}
+
 TEST(SceneLoader, UnknownNameListsBundledScenes) {
     SceneFiles files;
     files.write("box/box.json", "{}");

@@ -5,7 +5,6 @@
 
 #include <sstream>
 
-#include "studies/plot.h"
 #include "studies/reference.h"
 #include "studies/study.h"
 #include "tests/support/plugins.h"
@@ -177,9 +176,10 @@ TEST_F(TinyStudy, WritesEveryFileWithTheDocumentedSchemaAndResumes) {
     }
     EXPECT_NE(pvd.find("timestep=\"3\""), std::string::npos) << pvd;
 
-    const Image8 plot = read_png(out / "plots" / "error_vs_elements.png");
-    EXPECT_EQ(plot.width, 2 * LogLogPlot{}.width + 2);  // the solution's and the mesh's panels
-    EXPECT_EQ(plot.height, LogLogPlot{}.height);
+    // The plots' numbers: the solution's and the mesh's panels; the LaTeX table beside table.md.
+    const nlohmann::json plots = nlohmann::json::parse(read_file(out / "plots" / "plot_data.json"));
+    EXPECT_EQ(plots["figures"][0]["panels"].size(), 2u);
+    EXPECT_NE(read_file(out / "table.tex").find("\\label{tab:cornell-200}"), std::string::npos);
 
     // Resume: only the deleted cell is computed again.
     const std::string deleted = cell_name("cornell", "kl", 200, 2);

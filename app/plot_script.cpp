@@ -1,0 +1,103 @@
+#include "app/plot_script.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <stdexcept>
+#include <vector>
+
+#include "common/data_directory.h"
+#include "common/interrupt.h"
+
+extern char** environ;
+
+namespace hmcr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs argv[0] (searched on the PATH) and waits for it: its exit status, or -1 when it could
+// not be started or did not exit. `silent`: its output goes to /dev/null.
+int run(std::vector<std::string> args, bool silent) {
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    if (silent) {
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+        posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    }
+    pid_t pid = 0;
+    const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (spawned != 0) return -1;
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0) {
+        if (errno != EINTR) return -1;
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::vector<std::string> candidates() {
+    const char* chosen = std::getenv(kPythonVariable);
+    if (chosen != nullptr && *chosen != '\0') return {chosen};
+    return {"python3", "/usr/bin/python3"};
+}
+
+}  // namespace
+
+std::optional<std::string> plotting_python() {
+    for (const std::string& python : candidates()) {
+        if (run({python, "-c", "import matplotlib"}, true) == 0) return python;
+    }
+    return std::nullopt;
+}
+
+fs::path plot_script() { return data_directory() / "scripts" / "plot_study.py"; }
+
+std::string why_no_plots(const std::optional<std::string>& python, const fs::path& study) {
+    const std::string then = fmt::format("then `hmcr plot {}`", study.string());
+    if (!python) {
+        const char* chosen = std::getenv(kPythonVariable);
+        const std::string tried = chosen != nullptr && *chosen != '\0'
+                                      ? fmt::format("${} ({})", kPythonVariable, chosen)
+                                      : std::string("python3, /usr/bin/python3");
+        return fmt::format("no Python with matplotlib ({}): install it (Debian: "
+                           "python3-matplotlib), {}",
+                           tried, then);
+    }
+    std::error_code ec;
+    if (!fs::is_regular_file(plot_script(), ec)) {
+        return fmt::format("no plotting script {}: set {} to the folder holding scripts/ and "
+                           "scenes/ (an install's share/hmcr), {}",
+                           plot_script().string(), kDataDirVariable, then);
+    }
+    return "";
+}
+
+void draw_plots(const std::string& python, const fs::path& data) {
+    const int status = run({python, plot_script().string(), data.string()}, false);
+    throw_if_interrupted();
+    if (status != 0) {
+        throw std::runtime_error(fmt::format("the plotting script {} failed on {} (exit {})",
+                                             plot_script().string(), data.string(), status));
+    }
+}
+
+void draw_study_plots(const fs::path& study, bool quiet) {
+    const std::optional<std::string> python = plotting_python();
+    if (const std::string why = why_no_plots(python, study); !why.empty()) {
+        if (!quiet) fmt::print(stderr, "hmcr: warning: plots not drawn: {}\n", why);
+        return;
+    }
+    draw_plots(*python, study / "plots" / "plot_data.json");
+}
+
+}  // namespace hmcr

@@ -1,0 +1,225 @@
+#!/usr/bin/python3
+"""Draws a study's plots from the numbers hmcr wrote for them (docs/studies.md, "Plots").
+
+    /usr/bin/python3 plot_study.py STUDY/plots/plot_data.json
+
+`hmcr study` runs it at the end and `hmcr plot STUDY` runs it again; run by hand, it is a
+starting point for restyling a figure. For each figure of the data it writes NAME.pdf (vector,
+fonts embedded as TrueType) and NAME.png beside the data file, each atomically. A `lines`
+panel is log-log with error bars both ways (± one standard error over the seeds), a marker,
+line style and colour per series, hollow markers of decreasing size and the series set a
+little apart along x (DODGE) so that coinciding series stay visible, and axes fitted to the data; a `bars` panel has one bar per category and group
+with its error bar. Needs matplotlib (Debian: python3-matplotlib).
+
+Exit status: 0 drawn; 2 the data file is not plot data (one line on stderr); 3 no matplotlib.
+"""
+import json
+import math
+import os
+import sys
+import tempfile
+
+MISSING_MATPLOTLIB = 3
+BAD_INPUT = 2
+
+# Okabe and Ito's colour-blind-safe palette (yellow left out: too faint on white).
+COLOURS = ["#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000"]
+MARKERS = ["o", "s", "^", "D", "v", "P", "X", "<", ">", "h"]
+LINE_STYLES = ["-", "--", "-.", ":", (0, (5, 1.5)), (0, (3, 1, 1, 1, 1, 1)), (0, (1, 2))]
+PANEL_SIZE = (3.6, 2.9)  # inches: two panels fill a two-column paper's text width
+DODGE = 0.012  # series k apart are drawn k x DODGE of the x axis's span apart (log scale)
+
+
+def style(i):
+    """Colour, marker, line style and marker size of series i: no two of the first 7 share any."""
+    return {
+        "color": COLOURS[i % len(COLOURS)],
+        "marker": MARKERS[i % len(MARKERS)],
+        "linestyle": LINE_STYLES[i % len(LINE_STYLES)],
+        "markersize": max(3.0, 8.0 - 0.7 * i),
+    }
+
+
+def finite(v):
+    return isinstance(v, (int, float)) and math.isfinite(v)
+
+
+def se_or_zero(v):
+    return v if finite(v) else 0.0
+
+
+def log_limits(lows, highs):
+    """Limits of a log axis holding [min(lows), max(highs)] with a margin of 6% of its span."""
+    lo, hi = math.log10(min(lows)), math.log10(max(highs))
+    pad = max(0.06 * (hi - lo), 0.02)
+    return 10 ** (lo - pad), 10 ** (hi + pad)
+
+
+def plain_number(v, _pos=None):
+    """19000 -> '19,000', 0.025 -> '0.025': tick labels a reader takes in at a glance."""
+    if v >= 1000:
+        return f"{v:,.0f}"
+    return f"{v:.3g}"
+
+
+def dodge_factors(panel):
+    """Per series, a factor on x that sets series apart by DODGE of the x axis's decades: the
+    error bars of series at the same x would otherwise hide one another."""
+    xs = [p["x"] for s in panel["series"] for p in s["points"] if finite(p["x"]) and p["x"] > 0]
+    if not xs:
+        return [1.0] * len(panel["series"])
+    span = max(math.log10(max(xs) / min(xs)), 0.3)
+    k = len(panel["series"])
+    return [10 ** (DODGE * span * (i - (k - 1) / 2)) for i in range(k)]
+
+
+def draw_lines(ax, panel, ticker):
+    xs_lo, xs_hi, ys_lo, ys_hi = [], [], [], []
+    drawn = 0
+    for i, (series, dodge) in enumerate(zip(panel["series"], dodge_factors(panel))):
+        pts = [p for p in series["points"] if finite(p["x"]) and finite(p["y"])
+               and p["x"] > 0 and p["y"] > 0]
+        if not pts:
+            continue
+        x = [p["x"] * dodge for p in pts]
+        y = [p["y"] for p in pts]
+        xerr = [se_or_zero(p["x_se"]) for p in pts]
+        yerr = [se_or_zero(p["y_se"]) for p in pts]
+        s = style(i)
+        ax.errorbar(x, y, xerr=xerr, yerr=yerr, label=series["name"], color=s["color"],
+                    marker=s["marker"], linestyle=s["linestyle"], markersize=s["markersize"],
+                    markerfacecolor="none", markeredgewidth=1.1, linewidth=1.1,
+                    elinewidth=0.8, capsize=2.5, capthick=0.8, zorder=3 + i)
+        xs_lo += [max(a - e, a * 0.5) for a, e in zip(x, xerr)]
+        xs_hi += [a + e for a, e in zip(x, xerr)]
+        ys_lo += [max(a - e, a * 0.5) for a, e in zip(y, yerr)]
+        ys_hi += [a + e for a, e in zip(y, yerr)]
+        drawn += 1
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    if drawn == 0:
+        ax.text(0.5, 0.5, "no successful cell", transform=ax.transAxes, ha="center")
+        return
+    ax.set_xlim(*log_limits(xs_lo, xs_hi))
+    ax.set_ylim(*log_limits(ys_lo, ys_hi))
+    lo, hi = ax.get_xlim()
+    ticks = [t for t in panel.get("x_ticks", []) if finite(t) and lo <= t <= hi]
+    if ticks:  # the budgets (or target spp) that have data, as the x ticks, in plain numbers
+        ax.xaxis.set_major_locator(ticker.FixedLocator(ticks))
+        ax.xaxis.set_minor_locator(ticker.NullLocator())
+        ax.xaxis.set_major_formatter(ticker.FuncFormatter(plain_number))
+    for axis, (lo, hi) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+        if hi / lo < 100 and not (axis is ax.xaxis and ticks):
+            # Under two decades: the minor ticks labelled too, in plain numbers.
+            axis.set_minor_formatter(ticker.FuncFormatter(plain_number))
+            axis.set_major_formatter(ticker.FuncFormatter(plain_number))
+    ax.grid(True, which="major", color="0.88", linewidth=0.6)
+    ax.grid(True, which="minor", color="0.94", linewidth=0.4)
+
+
+def draw_bars(ax, panel):
+    categories = panel["categories"]
+    groups = panel["groups"]
+    width = 0.8 / max(len(groups), 1)
+    for g, group in enumerate(groups):
+        xs = [c + (g - (len(groups) - 1) / 2) * width for c in range(len(categories))]
+        ys = [v["y"] if finite(v["y"]) else 0.0 for v in group["values"]]
+        errs = [se_or_zero(v["y_se"]) for v in group["values"]]
+        ax.bar(xs, ys, width, yerr=errs, label=group["name"], color=COLOURS[g % len(COLOURS)],
+               hatch=["", "//", ".."][g % 3], edgecolor="white", linewidth=0.5,
+               error_kw={"elinewidth": 0.8, "capsize": 2.5, "capthick": 0.8}, zorder=3)
+    ax.set_xticks(range(len(categories)))
+    ax.set_xticklabels(categories, rotation=30 if len(categories) > 5 else 0)
+    ax.set_xlim(-0.6, len(categories) - 0.4)
+    ax.grid(True, axis="y", color="0.88", linewidth=0.6)
+
+
+def figure_of(spec, plt, ticker):
+    """The figure of one spec: its panels in a row, or in rows of spec["columns"]."""
+    panels = spec["panels"]
+    columns = min(spec.get("columns", len(panels)), len(panels))
+    rows = -(-len(panels) // columns)
+    fig, axes = plt.subplots(rows, columns, squeeze=False,
+                             figsize=(PANEL_SIZE[0] * columns, PANEL_SIZE[1] * rows + 0.5))
+    axes = axes.ravel()
+    for ax in axes[len(panels):]:
+        ax.set_visible(False)
+    for ax, panel in zip(axes, panels):
+        if panel["type"] == "lines":
+            draw_lines(ax, panel, ticker)
+            ax.set_xlabel(panel["x_label"])
+        elif panel["type"] == "bars":
+            draw_bars(ax, panel)
+        else:
+            raise ValueError(f"unknown panel type {panel['type']!r}")
+        ax.set_ylabel(panel["y_label"])
+        ax.set_title(panel["title"])
+    # Panels of the same series share one legend, below them; otherwise each has its own.
+    per_panel = [ax.get_legend_handles_labels() for ax in axes[:len(panels)]]
+    shared = all(labels == per_panel[0][1] for _, labels in per_panel)
+    handles, labels = per_panel[0] if shared else ([], [])
+    if shared and handles:
+        fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 7), frameon=False,
+                   bbox_to_anchor=(0.5, 0.0))
+    elif not shared:
+        for ax, (h, l) in zip(axes, per_panel):
+            if h:
+                ax.legend(h, l, frameon=False)
+    fig.tight_layout(rect=(0, (0.35 / fig.get_figheight()) if handles else 0, 1, 1))
+    return fig
+
+
+def save_atomically(fig, path, **options):
+    folder, name = os.path.split(path)
+    fd, tmp = tempfile.mkstemp(prefix="." + name + ".", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "wb") as out:
+            fig.savefig(out, format=os.path.splitext(name)[1][1:], **options)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except BaseException:
+        os.unlink(tmp)
+        raise
+
+
+def main(argv):
+    if len(argv) != 2:
+        sys.stderr.write(__doc__)
+        return BAD_INPUT
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from matplotlib import ticker
+    except ImportError:
+        sys.stderr.write("plot_study.py: no matplotlib (Debian: apt-get install "
+                         "python3-matplotlib)\n")
+        return MISSING_MATPLOTLIB
+    path = argv[1]
+    try:
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+        figures = [(spec["name"], spec) for spec in data["figures"]]
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        sys.stderr.write(f"{path}: not a study's plot data ({e})\n")
+        return BAD_INPUT
+    matplotlib.rcParams.update({
+        "font.size": 8, "axes.titlesize": 9, "axes.labelsize": 8, "legend.fontsize": 8,
+        "pdf.fonttype": 42,  # TrueType: text stays text, editable in a paper's figure
+        "axes.spines.top": False, "axes.spines.right": False,
+    })
+    # Every figure is made before any is written: a failure writes nothing.
+    made = [(name, figure_of(spec, plt, ticker)) for name, spec in figures]
+    folder = os.path.dirname(os.path.abspath(path))
+    for name, fig in made:
+        # No dates in the files: the same data gives the same bytes.
+        save_atomically(fig, os.path.join(folder, name + ".pdf"),
+                        metadata={"CreationDate": None, "ModDate": None})
+        save_atomically(fig, os.path.join(folder, name + ".png"), dpi=200,
+                        metadata={"Software": None})
+        plt.close(fig)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
