@@ -4,11 +4,11 @@ TYPE     ?= Release
 JOBS     ?= $(shell nproc)
 SANITIZE ?= OFF
 
-# Debian 12 packages hmcr builds against (README.md: "Dependencies" says why each is there).
-DEPS := g++ cmake make pkg-config zlib1g-dev libpng-dev libembree-dev libopenmesh-dev libvtk9-dev \
-        libeigen3-dev libtbb-dev libexpat1-dev libcli11-dev nlohmann-json3-dev \
-        libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev python3 \
-        libopenmpi-dev openmpi-bin
+# Debian 12 packages hmcr builds, tests and plots with, each used by a target, a test or a script
+# (README.md: "Dependencies" says why each is there; docs/decisions.md what was left out).
+DEPS := g++ cmake make libpng-dev libembree-dev libopenmesh-dev libvtk9-dev libeigen3-dev \
+        libtbb-dev libexpat1-dev libcli11-dev nlohmann-json3-dev libfmt-dev libopenmpi-dev \
+        openmpi-bin libgtest-dev zlib1g-dev clang libclang-rt-14-dev python3 python3-matplotlib
 
 SANITIZE_BUILD ?= build-sanitize
 PREFIX ?= /usr/local

@@ -2,10 +2,13 @@
 // machine), the kernel takes a fault, zeroes and maps every 4 KiB page on its first touch; at a
 // million patches that was half of loading and setup (perf: clear_page and the fault path 39%
 // of the samples). This replaces the global operator new of the hmcr executable only: every
-// block of 4 MiB or more (OpenMesh's arrays, the OBJ text, the element roots, VTK's buffers)
-// is advised into 2 MiB pages before it is touched, so it takes 512 times fewer faults. The
-// block comes from malloc as before and goes back through free (the default operator delete);
-// the advice changes speed, never contents. Off under the sanitizers, which own operator new.
+// block of 4 MiB or more that C++ allocates (OpenMesh's arrays, the OBJ text, the element roots,
+// the shaded mesh's arrays that the .vtp writer reads in place, the geometry buffers Embree
+// shares) is advised into 2 MiB pages before it is touched, so it takes 512 times fewer faults.
+// What VTK and Embree allocate themselves (VTK's own arrays with malloc, Embree's BVH) is not.
+// The block comes from malloc as before and goes back through free (the default operator
+// delete); the advice changes speed, never contents. Off under the sanitizers, which own
+// operator new.
 #if !defined(__SANITIZE_ADDRESS__) && !defined(HMCR_NO_HUGE_PAGES)
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer)

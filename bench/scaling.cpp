@@ -145,9 +145,9 @@ std::vector<nlohmann::json> run_scaling_study(const std::string& self,
               {series(by_rays, "hmcr kl", "rays", [](const auto& r) { return double(r["seconds"]); }),
                series(by_rays, "floor", "rays",
                       [](const auto& r) { return double(r["floor_seconds"]); })}),
-        panel("memory", "elements", "peak memory (MB)",
-              {series(by_patches, "patches study", "elements", peak_mb),
-               series(by_rays, "rays study", "elements", peak_mb)})};
+        panel("memory", "leaves", "peak memory (MB)",
+              {series(by_patches, "patches study", "leaves", peak_mb),
+               series(by_rays, "rays study", "leaves", peak_mb)})};
     const nlohmann::json data = {
         {"figures", {{{"name", "scaling"}, {"columns", 2}, {"panels", panels}}}}};
     write_text_atomically(plot_data, data.dump(2) + "\n");

@@ -56,10 +56,32 @@ def log_limits(lows, highs):
 
 
 def plain_number(v, _pos=None):
-    """19000 -> '19,000', 0.025 -> '0.025': tick labels a reader takes in at a glance."""
+    """19000 -> '19,000', 0.025 -> '0.025', 2e6 -> '2×10⁶' (mathtext): labels read at a glance."""
+    if v >= 1e5:
+        e = math.floor(math.log10(v) + 1e-9)
+        m = v / 10 ** e
+        return f"$10^{{{e}}}$" if abs(m - 1) < 1e-6 else f"${m:g}\\times10^{{{e}}}$"
     if v >= 1000:
         return f"{v:,.0f}"
     return f"{v:.3g}"
+
+
+def label_log_axis(axis, lo, hi, ticker):
+    """Under two decades a log axis has few decade ticks: the ticks at 1, 2 and 5 of each decade
+    are labelled too (and 3 under a decade, all of them under half a decade), in plain numbers."""
+    span = math.log10(hi / lo)
+    if span >= 2:
+        return
+    keep = None if span < 0.5 else (1, 2, 3, 5) if span < 1 else (1, 2, 5)
+
+    def label(v, pos=None):
+        m = v / 10 ** math.floor(math.log10(v) + 1e-9)
+        if keep is not None and not any(abs(m - k) < 1e-6 for k in keep):
+            return ""
+        return plain_number(v)
+
+    axis.set_major_formatter(ticker.FuncFormatter(label))
+    axis.set_minor_formatter(ticker.FuncFormatter(label))
 
 
 def dodge_factors(panel):
@@ -86,7 +108,8 @@ def draw_lines(ax, panel, ticker):
         xerr = [se_or_zero(p["x_se"]) for p in pts]
         yerr = [se_or_zero(p["y_se"]) for p in pts]
         s = style(i)
-        ax.errorbar(x, y, xerr=xerr, yerr=yerr, label=series["name"], color=s["color"],
+        ax.errorbar(x, y, xerr=xerr if any(xerr) else None, yerr=yerr if any(yerr) else None,
+                    label=series["name"], color=s["color"],
                     marker=s["marker"], linestyle=s["linestyle"], markersize=s["markersize"],
                     markerfacecolor="none", markeredgewidth=1.1, linewidth=1.1,
                     elinewidth=0.8, capsize=2.5, capthick=0.8, zorder=3 + i)
@@ -108,11 +131,9 @@ def draw_lines(ax, panel, ticker):
         ax.xaxis.set_major_locator(ticker.FixedLocator(ticks))
         ax.xaxis.set_minor_locator(ticker.NullLocator())
         ax.xaxis.set_major_formatter(ticker.FuncFormatter(plain_number))
-    for axis, (lo, hi) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
-        if hi / lo < 100 and not (axis is ax.xaxis and ticks):
-            # Under two decades: the minor ticks labelled too, in plain numbers.
-            axis.set_minor_formatter(ticker.FuncFormatter(plain_number))
-            axis.set_major_formatter(ticker.FuncFormatter(plain_number))
+    if not ticks:
+        label_log_axis(ax.xaxis, *ax.get_xlim(), ticker)
+    label_log_axis(ax.yaxis, *ax.get_ylim(), ticker)
     ax.grid(True, which="major", color="0.88", linewidth=0.6)
     ax.grid(True, which="minor", color="0.94", linewidth=0.4)
 

@@ -121,7 +121,9 @@ std::string md_table(const std::string& scene, const StudyOptions& o,
 std::string tex_table(const std::string& scene, const StudyOptions& o,
                       const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     std::string out = fmt::format(
-        "% Meshing study: {} (hmcr). Needs \\usepackage{{booktabs}}.\n% {}\n", latex_text(scene),
+        "% Meshing study: {} (hmcr). Needs \\usepackage{{booktabs}} and "
+        "\\usepackage{{graphicx}}.\n% {}\n",
+        latex_text(scene),
         latex_text(description(o, views)));
     for (std::size_t b : o.budgets) {
         out += latex_float(fmt::format("Meshing study of {} at {} leaves: mean $\\pm$ standard "

@@ -1,5 +1,6 @@
 // The readers' tables of a study (studies/summary_table.h): table.md and table.tex from one
 // model, the best mean of each error column marked in both, LaTeX's special characters escaped,
+// a table wider than a page scaled to the line,
 // and a meshing study's table.tex compiled by pdflatex where it is installed (Debian:
 // texlive-latex-recommended, for booktabs), else checked line by line.
 #include "studies/summary_table.h"
@@ -92,6 +93,7 @@ TEST(StudyTables, TexHoldsOneTableFloatPerBudgetThatPdflatexCompiles) {
     // One float per budget, each a booktabs tabular; every row as many cells as the header.
     for (const char* part : {"\\begin{table}", "\\toprule", "\\midrule", "\\bottomrule",
                              "\\end{table}", "\\label{tab:my-box-100}", "\\label{tab:my-box-200}",
+                             "\\resizebox{\\linewidth}{!}{%",  // 12 columns: wider than a page
                              "Meshing study of my\\_box at 200 leaves"}) {
         EXPECT_NE(tex.find(part), std::string::npos) << part;
     }
@@ -113,7 +115,8 @@ TEST(StudyTables, TexHoldsOneTableFloatPerBudgetThatPdflatexCompiles) {
     EXPECT_NE(tex.find("\\textbf{0.0600 $\\pm$ 0.0200}"), std::string::npos);
     if (!has_pdflatex()) GTEST_SKIP() << "no pdflatex: table.tex checked by structure only";
     dir.write("paper.tex",
-              "\\documentclass{article}\n\\usepackage{booktabs}\n\\begin{document}\n"
+              "\\documentclass{article}\n\\usepackage{booktabs}\n\\usepackage{graphicx}\n"
+              "\\begin{document}\n"
               "\\input{table.tex}\n\\end{document}\n");
     const std::string cmd = "cd '" + dir.path().string() +
                             "' && pdflatex -interaction=nonstopmode -halt-on-error paper.tex "
