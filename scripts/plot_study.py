@@ -36,7 +36,7 @@ def style(i):
         "color": COLOURS[i % len(COLOURS)],
         "marker": MARKERS[i % len(MARKERS)],
         "linestyle": LINE_STYLES[i % len(LINE_STYLES)],
-        "markersize": max(3.0, 8.0 - 0.7 * i),
+        "markersize": max(5.0, 8.0 - 0.5 * i),
     }
 
 
