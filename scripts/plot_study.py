@@ -145,10 +145,14 @@ def draw_bars(ax, panel):
     for g, group in enumerate(groups):
         xs = [c + (g - (len(groups) - 1) / 2) * width for c in range(len(categories))]
         ys = [v["y"] if finite(v["y"]) else 0.0 for v in group["values"]]
-        errs = [se_or_zero(v["y_se"]) for v in group["values"]]
-        ax.bar(xs, ys, width, yerr=errs, label=group["name"], color=COLOURS[g % len(COLOURS)],
-               hatch=["", "//", ".."][g % 3], edgecolor="white", linewidth=0.5,
-               error_kw={"elinewidth": 0.8, "capsize": 2.5, "capthick": 0.8}, zorder=3)
+        ax.bar(xs, ys, width, label=group["name"], color=COLOURS[g % len(COLOURS)],
+               hatch=["", "//", ".."][g % 3], edgecolor="white", linewidth=0.5, zorder=3)
+        # Error bars where there is a standard error (two seeds or more) only.
+        bars = [(x, y, v["y_se"]) for x, y, v in zip(xs, ys, group["values"]) if finite(v["y_se"])]
+        if bars:
+            ax.errorbar([b[0] for b in bars], [b[1] for b in bars], yerr=[b[2] for b in bars],
+                        fmt="none", ecolor="black", elinewidth=0.8, capsize=2.5, capthick=0.8,
+                        zorder=4)
     ax.set_xticks(range(len(categories)))
     ax.set_xticklabels(categories, rotation=30 if len(categories) > 5 else 0)
     ax.set_xlim(-0.6, len(categories) - 0.4)
