@@ -5,9 +5,10 @@
 #include <chrono>
 #include <cmath>
 
+#include "common/atomic_file.h"
+#include "common/file_names.h"
 #include "common/rgb_json.h"
 #include "common/text_file.h"
-#include "common/atomic_file.h"
 #include "meshes/patch_mesh.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
@@ -75,8 +76,8 @@ std::vector<std::filesystem::path> reference_files(const std::filesystem::path& 
                                                    const Scene& scene) {
     std::vector<std::filesystem::path> files{dir / "reference.vtp", dir / "reference.json"};
     for (const View& v : scene.views) {
-        files.push_back(dir / "views" / (v.name + ".pfm"));
-        files.push_back(dir / "views" / (v.name + ".png"));
+        files.push_back(named_file(dir / "views", v.name, ".pfm"));
+        files.push_back(named_file(dir / "views", v.name, ".png"));
     }
     return files;
 }
@@ -123,6 +124,7 @@ std::map<std::string, double> read_reference_exposures(const std::filesystem::pa
     return read_json_file(dir / "reference.json", [](const nlohmann::json& j) {
         std::map<std::string, double> exposure;
         for (const auto& [view, v] : j.at("reference").at("views").items()) {
+            check_name(view, "view");  // as a scene file's views are
             const double e = v.at("exposure").get<double>();
             if (!(e > 0 && std::isfinite(e))) {
                 throw InputError(fmt::format("view {}: exposure {} is not a positive number",

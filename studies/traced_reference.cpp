@@ -4,6 +4,7 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/file_names.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
 #include "rays/patch.h"
@@ -32,8 +33,8 @@ std::vector<std::filesystem::path> traced_reference_files(const std::filesystem:
                                                           const Scene& scene) {
     std::vector<std::filesystem::path> files{dir / "reference.json"};
     for (const View& v : scene.views) {
-        files.push_back(dir / "views" / (v.name + ".pfm"));
-        files.push_back(dir / "views" / (v.name + ".png"));
+        files.push_back(named_file(dir / "views", v.name, ".pfm"));
+        files.push_back(named_file(dir / "views", v.name, ".png"));
     }
     return files;
 }
@@ -83,7 +84,7 @@ std::map<std::string, TracedView> read_reference_views(const std::filesystem::pa
             throw InputError((dir / "reference.json").string(),
                              "no view " + quote(v.name) + " of scene " + quote(scene.name));
         }
-        const std::filesystem::path pfm = dir / "views" / (v.name + ".pfm");
+        const std::filesystem::path pfm = named_file(dir / "views", v.name, ".pfm");
         if (!std::filesystem::is_regular_file(pfm)) throw InputError(pfm.string(), "missing");
         try {
             out[v.name] = {read_pfm(pfm), exposure.at(v.name), 0, 0};

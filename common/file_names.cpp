@@ -1,0 +1,49 @@
+#include "common/file_names.h"
+
+#include <fmt/format.h>
+
+#include "common/error.h"
+
+namespace hmcr {
+namespace {
+
+bool portable(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+           c == '.' || c == '_' || c == '-' || c == '+';
+}
+
+}  // namespace
+
+std::optional<std::string> name_problem(std::string_view name, std::size_t max_bytes) {
+    if (name.empty()) return "it is empty";
+    if (name.size() > max_bytes) {
+        return fmt::format("it is {} bytes long, more than {}", name.size(), max_bytes);
+    }
+    for (const char c : name) {
+        if (!portable(c)) {
+            return fmt::format("{} is not a letter, digit, '.', '_', '-' or '+'",
+                               quote(std::string_view(&c, 1)));
+        }
+    }
+    if (name.front() == '.' || name.front() == '-') {
+        return fmt::format("it starts with '{}'", name.front());
+    }
+    return std::nullopt;
+}
+
+void check_name(std::string_view name, std::string_view what) {
+    if (const auto why = name_problem(name)) {
+        throw InputError(fmt::format("{} {} cannot name a file: {}", what, quote(name), *why));
+    }
+}
+
+std::filesystem::path named_file(const std::filesystem::path& dir, std::string_view stem,
+                                 std::string_view suffix) {
+    const std::string name = std::string(stem) + std::string(suffix);
+    if (const auto why = name_problem(name, kMaxFileNameBytes)) {
+        throw InputError((dir / name).string(), "cannot name a file: " + *why);
+    }
+    return dir / name;
+}
+
+}  // namespace hmcr
