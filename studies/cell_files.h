@@ -15,6 +15,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/interrupt.h"
+#include "common/output_paths.h"
 #include "common/progress.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
@@ -53,7 +54,8 @@ struct CellFileRule {
 template <class Cell>
 std::optional<Cell> read_previous_cell(const std::filesystem::path& file, const CellFileRule<Cell>& rule,
                                   Progress& notes) {
-    if (!std::filesystem::exists(file)) return std::nullopt;
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) return std::nullopt;
     Cell cell;
     try {
         cell = read_json_file(file, rule.parse);
@@ -85,20 +87,31 @@ struct CellLoop {
     std::function<nlohmann::json(const Cell&)> to_json;
     std::function<Cell(const nlohmann::json&)> from_json;
     std::function<std::filesystem::path(std::size_t)> file;
+    std::function<std::vector<std::filesystem::path>(std::size_t)> outputs;  // file() and more
     std::function<std::string(std::size_t)> where;      // "[3/21] CELL"
     std::function<std::string(const Cell&)> outcome;    // "done", "failed", ...
 };
 
-// Every earlier cell file is read before anything is computed, so that a refusal loses no work;
-// a usable one is skipped, the others are computed, written atomically and taken back as a
-// resumed run would read them. A note after each cell: its outcome, the time elapsed and the
-// time left from the cells computed so far. Throws Interrupted between cells after a signal.
+// One cell, before any is computed: its outputs checked (common/output_paths.h: none a folder, a
+// device or a name too long) and its earlier file read (CellLoop::previous), so that a refusal
+// loses no work. Throws InputError for the first output that cannot be written.
+template <class Cell>
+std::optional<Cell> check_cell(const CellLoop<Cell>& loop, std::size_t i) {
+    for (const std::filesystem::path& file : loop.outputs(i)) check_output_file(file);
+    return loop.previous(i);
+}
+
+// Every cell is checked first (check_cell); a usable earlier one is skipped, the others are
+// computed, written atomically and taken back as a resumed run would read them. A note after
+// each cell: its outcome, the time elapsed and the time left from the cells computed so far.
+// Throws Interrupted between cells after a signal.
 template <class Cell>
 std::vector<Cell> run_cells(const CellLoop<Cell>& loop, Progress& progress) {
     std::vector<std::optional<Cell>> previous;
     std::size_t to_compute = 0, computed = 0;
     for (std::size_t i = 0; i < loop.count; ++i) {
-        previous.push_back(loop.previous(i));
+        throw_if_interrupted();
+        previous.push_back(check_cell(loop, i));
         to_compute += previous.back() ? 0 : 1;
     }
     const auto start = std::chrono::steady_clock::now();

@@ -82,15 +82,15 @@ std::vector<std::filesystem::path> reference_files(const std::filesystem::path& 
     return files;
 }
 
-void write_reference(const std::filesystem::path& dir, const Scene& scene,
+void write_reference(const OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
                      const Reference& ref, const ReferenceOptions& o, nlohmann::json summary) {
     const SolveStats& st = ref.solution.stats;
-    write_solution(dir / "reference.vtp", ref.mesh, ref.solution, scene_identity(scene),
+    write_solution(out.temp(dir / "reference.vtp"), ref.mesh, ref.solution, scene_identity(scene),
                    double(st.iterations.size()));
     nlohmann::json views = nlohmann::json::object(), errors = nlohmann::json::object();
     for (const auto& [name, view] : ref.views) {
-        write_pfm(dir / "views" / (name + ".pfm"), view.image);
-        write_png(dir / "views" / (name + ".png"), view.image, view.exposure);
+        write_pfm(out.temp(named_file(dir / "views", name, ".pfm")), view.image);
+        write_png(out.temp(named_file(dir / "views", name, ".png")), view.image, view.exposure);
         views[name] = {{"exposure", view.exposure}};
         errors[name] = ref.view_errors.at(name);
     }
@@ -117,7 +117,7 @@ void write_reference(const std::filesystem::path& dir, const Scene& scene,
           {"seed_difference", rgb_json(ref.seed_difference)}}},
         {"seconds", ref.seconds},
         {"scene", scene.name}};
-    write_text_atomically(dir / "reference.json", summary.dump(2) + "\n");
+    write_text_atomically(out.temp(dir / "reference.json"), summary.dump(2) + "\n");
 }
 
 std::map<std::string, double> read_reference_exposures(const std::filesystem::path& dir) {

@@ -203,7 +203,8 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
     return c;
 }
 
-void write_sampling_tables(const std::string& scene, const SamplingStudyOptions& o,
+void write_sampling_tables(const OutputSet& out, const std::string& scene,
+                           const SamplingStudyOptions& o,
                            const std::vector<std::string>& views,
                            const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
     nlohmann::json split_json = nlohmann::json::object();
@@ -228,9 +229,10 @@ void write_sampling_tables(const std::string& scene, const SamplingStudyOptions&
                                   {"views", views},
                                   {"error_split", split_json},
                                   {"cells", all}};
-    write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
-    write_text_atomically(o.output / "table.csv", csv_table(views, cells));
-    write_text_atomically(o.output / "table.md", md_document(scene, o, views, cells, splits));
+    write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
+    write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));
+    write_text_atomically(out.temp(o.output / "table.md"),
+                          md_document(scene, o, views, cells, splits));
 }
 
 }  // namespace hmcr

@@ -290,7 +290,7 @@ CellResult cell_from_json(const nlohmann::json& j) {
     return c;
 }
 
-void write_study_tables(const std::string& scene, const StudyOptions& o,
+void write_study_tables(const OutputSet& out, const std::string& scene, const StudyOptions& o,
                         const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     nlohmann::json all = nlohmann::json::array();
     for (const CellResult& c : cells) all.push_back(cell_to_json(c));
@@ -310,10 +310,10 @@ void write_study_tables(const std::string& scene, const StudyOptions& o,
                                     {"reference", o.reference.string()}}},
                                   {"views", views},
                                   {"cells", all}};
-    write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
-    write_text_atomically(o.output / "table.csv", csv_table(views, cells));
-    write_text_atomically(o.output / "table.md", md_table(scene, o, views, cells));
-    write_png(o.output / "plots" / "error_vs_elements.png", error_plot(cells, o.budgets));
+    write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
+    write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));
+    write_text_atomically(out.temp(o.output / "table.md"), md_table(scene, o, views, cells));
+    write_png(out.temp(o.output / "plots" / "error_vs_elements.png"), error_plot(cells, o.budgets));
 }
 
 }  // namespace hmcr

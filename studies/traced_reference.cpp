@@ -39,13 +39,13 @@ std::vector<std::filesystem::path> traced_reference_files(const std::filesystem:
     return files;
 }
 
-void write_traced_reference(const std::filesystem::path& dir, const Scene& scene,
-                            const TracedReference& ref, const TraceOptions& o,
+void write_traced_reference(const OutputSet& out, const std::filesystem::path& dir,
+                            const Scene& scene, const TracedReference& ref, const TraceOptions& o,
                             const std::string& command) {
     nlohmann::json views = nlohmann::json::object();
     for (const auto& [name, v] : ref.views) {
-        write_pfm(dir / "views" / (name + ".pfm"), v.image);
-        write_png(dir / "views" / (name + ".png"), v.image, v.exposure);
+        write_pfm(out.temp(named_file(dir / "views", name, ".pfm")), v.image);
+        write_png(out.temp(named_file(dir / "views", name, ".png")), v.image, v.exposure);
         views[name] = {{"exposure", v.exposure},
                        {"width", v.image.width},
                        {"height", v.image.height},
@@ -66,7 +66,7 @@ void write_traced_reference(const std::filesystem::path& dir, const Scene& scene
                                   {"roulette_depth", o.path.roulette_depth}}},
                                 {"seconds", ref.seconds},
                                 {"views", views}}}};
-    write_text_atomically(dir / "reference.json", j.dump(2) + "\n");
+    write_text_atomically(out.temp(dir / "reference.json"), j.dump(2) + "\n");
 }
 
 bool is_traced_reference(const std::filesystem::path& dir) {
