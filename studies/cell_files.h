@@ -1,11 +1,12 @@
 // What the two kinds of study (studies/study.h: oracles at element budgets; studies/
 // sampling_study.h: pixel samplers at one spp) share about their cells: a cell's notes within
-// the study's progress, the rule for a cell file left by an earlier run, and the loop over the
-// cells.
+// the study's progress, the limits on their number and seeds, the rule for a cell file left by
+// an earlier run, and the loop over the cells.
 #pragma once
 
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -35,6 +36,15 @@ private:
     Progress& m_study;
     std::string m_prefix;
 };
+
+// The most cells a study may have (oracles x budgets x seeds, or samplers x seeds): each is
+// at least one solve or image, and the study holds every cell's result for its tables
+// (docs/usage.md#bad-input).
+inline constexpr std::uint64_t kMaxStudyCells = 10000;
+
+// Throws InputError when a study of `cells` cells = `per_seed` x `seeds` would pass
+// kMaxStudyCells, or its seeds first_seed .. first_seed + seeds - 1 would pass 2^64 - 1.
+void check_study_size(std::uint64_t per_seed, int seeds, std::uint64_t first_seed);
 
 // "rays is 200000 now": the settings that differ between a cell file and this run.
 std::string settings_difference(const nlohmann::json& old_settings, const nlohmann::json& now);

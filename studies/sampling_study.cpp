@@ -34,6 +34,7 @@ void validate(const SamplingStudyOptions& o) {
         }
     }
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    check_study_size(o.samplers.size(), o.seeds, o.trace.seed);
     if (o.output.empty()) throw InputError("study: no output folder given");
     for (const Criterion* s : o.samplers) {
         TraceOptions t = o.trace;

@@ -64,6 +64,7 @@ void validate(const StudyOptions& o) {
     if (o.budgets.empty()) throw InputError("study: no budget given");
     if (o.oracles.empty()) throw InputError("study: no oracle given");
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    check_study_size(std::uint64_t(o.budgets.size()) * o.oracles.size(), o.seeds, o.solver.seed);
     refuse_repeats(o.budgets, "budget");
     std::vector<std::string_view> names;
     for (const Oracle* oracle : o.oracles) names.push_back(oracle->name());
