@@ -21,6 +21,7 @@ struct RenderArgs {
     ExposureChoice exposure;  // fixed, from a reference folder, or from the image
     RenderOptions options;
     SceneFlags scene_flags;
+    bool quiet = false;
 };
 
 // Every file the render reads, and the outputs checked (and locked) before any work.
@@ -45,7 +46,7 @@ int run_render(const RenderArgs& a) {
         throw InputError("samples must be in 1..16");
     }
     check_exposure(a.exposure);
-    const Scene scene = load_scene_reporting(a.scene, false, SceneUse::solve, a.scene_flags);
+    const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     OutputSet out(check_outputs(a, scene));
     const View& view = find_view(scene, a.view);
     const double exposure = fixed_exposure(a.exposure, view.name);
@@ -71,6 +72,7 @@ Command render_command(CLI::App& app) {
     cmd->add_option("--samples", a->options.samples_per_axis, "n x n rays per pixel")
         ->capture_default_str();
     add_exposure_flags(*cmd, a->exposure);
+    cmd->add_flag("-q,--quiet", a->quiet, "print only errors");
     return {cmd, [a, cmd] {
                 note_exposure_given(*cmd, a->exposure);
                 return run_render(*a);

@@ -89,5 +89,14 @@ TEST_F(Hostile, AnInterruptedReferenceLeavesNoFolder) {
     EXPECT_TRUE(std::filesystem::is_empty(dir()));
 }
 
+TEST_F(Hostile, RenderIsQuietWhenAsked) {
+    plates(kPlatesObj, std::string(kPlatesMtl) + "frobnicate 1\n");  // ignored, with a warning
+    accepted("solve plates.json --rays 2000 -q -o p.vtp");
+    const CliRun loud = accepted("render p.vtp --scene plates.json -o p.png");
+    EXPECT_NE(loud.err.find("warning"), std::string::npos) << loud.err;
+    const CliRun quiet = accepted("render p.vtp --scene plates.json -q -o q.png");
+    EXPECT_EQ(quiet.err + quiet.out, "");
+}
+
 }  // namespace
 }  // namespace hmcr::test
