@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "common/error.h"
+#include "common/file_names.h"
 
 namespace hmcr {
 namespace {
@@ -37,9 +38,10 @@ std::string random_suffix() {
     return out;
 }
 
-// ".NAME.tmp.": the target's name cut so that the whole name stays within 255 bytes.
+// ".NAME.tmp.": the target's name cut so that the whole name, with the 13 random characters,
+// stays within kMaxFileNameBytes.
 std::string temp_prefix(const fs::path& target) {
-    constexpr std::size_t kRoom = 255 - std::strlen("..tmp.") - 13;
+    constexpr std::size_t kRoom = kMaxFileNameBytes - (sizeof "..tmp." - 1) - 13;
     std::string name = ".";
     name += target.filename().string().substr(0, kRoom);
     return name + ".tmp.";

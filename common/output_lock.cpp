@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "common/error.h"
+#include "common/file_names.h"
 
 namespace hmcr {
 namespace {
@@ -31,7 +32,7 @@ bool still_there(int fd, const fs::path& path) {
 
 fs::path lock_file_of(const fs::path& output, bool is_folder) {
     if (is_folder) return output / ".hmcr.lock";
-    constexpr std::size_t kRoom = 255 - std::strlen("..lock");  // a name of at most 255 bytes
+    constexpr std::size_t kRoom = kMaxFileNameBytes - (sizeof "..lock" - 1);
     std::string name = ".";
     name += output.filename().string().substr(0, kRoom);
     return output.parent_path() / (name + ".lock");

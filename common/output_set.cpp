@@ -23,8 +23,10 @@ OutputSet::OutputSet(std::vector<fs::path> files, const fs::path& folder)
         for (const fs::path& file : m_files) {
             make_folders(file.parent_path(), file);
             if (folder.empty()) lock(file, false);
-            m_temps.push_back(create_temp_beside(file));
+            std::error_code ignored;
+            fs::remove(create_temp_beside(file), ignored);  // the folder takes files
         }
+        m_temps.resize(m_files.size());
     } catch (...) {
         abandon();
         throw;
@@ -35,15 +37,20 @@ OutputSet::~OutputSet() {
     if (!m_committed) abandon();
 }
 
-const fs::path& OutputSet::temp(const fs::path& file) const {
+const fs::path& OutputSet::temp(const fs::path& file) {
     for (std::size_t i = 0; i < m_files.size(); ++i) {
-        if (m_files[i] == file) return m_temps[i];
+        if (m_files[i] != file) continue;
+        if (m_temps[i].empty()) m_temps[i] = create_temp_beside(file);
+        return m_temps[i];
     }
     throw std::logic_error(file.string() + " is not an output of this command");
 }
 
 void OutputSet::commit() {
-    for (std::size_t i = 0; i < m_files.size(); ++i) sync_file(m_temps[i], m_files[i]);
+    for (std::size_t i = 0; i < m_files.size(); ++i) {
+        if (m_temps[i].empty()) throw std::logic_error(m_files[i].string() + " was not written");
+        sync_file(m_temps[i], m_files[i]);
+    }
     std::set<fs::path> folders;
     for (std::size_t i = 0; i < m_files.size(); ++i) {
         std::error_code ec;

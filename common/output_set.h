@@ -1,10 +1,10 @@
 // A command's output files, written as one set (docs/design.md §5.7). Made before any work, it
 // checks every file (output_paths.h), creates the folders they go into, locks the outputs
-// (output_lock.h) and makes a temporary file beside each (durable_file.h), which also proves
-// the folder writable. The command writes each file's temporary file (temp(): any writer of
-// atomic_file.h replaces it) and commit() flushes them, renames them all into place and flushes
-// their folders. A failure or a signal before commit() leaves none of the set: the destructor
-// removes the temporary files, the locks and the folders it created.
+// (output_lock.h) and proves each folder writable by making and removing a temporary file
+// there (durable_file.h). At the end the command writes each file's temporary file (temp(): any
+// writer of atomic_file.h replaces it) and commit() flushes them, renames them all into place
+// and flushes their folders. A failure or a signal before commit() leaves none of the set: the
+// destructor removes the temporary files, the locks and the folders it created.
 #pragma once
 
 #include <filesystem>
@@ -26,8 +26,9 @@ public:
     OutputSet(const OutputSet&) = delete;
     OutputSet& operator=(const OutputSet&) = delete;
 
-    // Where `file` (one of the set, spelled as given) is to be written before commit().
-    const std::filesystem::path& temp(const std::filesystem::path& file) const;
+    // Where `file` (one of the set, spelled as given) is to be written before commit(): a
+    // temporary file beside it, made at the first call.
+    const std::filesystem::path& temp(const std::filesystem::path& file);
     // Every file into place, durably; then the locks are released. Throws InputError "cannot
     // write FILE: why" when a flush or a rename fails.
     void commit();
@@ -37,7 +38,7 @@ private:
     void lock(const std::filesystem::path& output, bool is_folder);
     void abandon() noexcept;
 
-    std::vector<std::filesystem::path> m_files, m_temps;
+    std::vector<std::filesystem::path> m_files, m_temps;  // a temp is empty until temp()
     std::vector<std::filesystem::path> m_made_folders;  // outermost first
     std::vector<std::unique_ptr<OutputLock>> m_locks;
     bool m_committed = false;

@@ -82,7 +82,7 @@ std::vector<std::filesystem::path> reference_files(const std::filesystem::path& 
     return files;
 }
 
-void write_reference(const OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
+void write_reference(OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
                      const Reference& ref, const ReferenceOptions& o, nlohmann::json summary) {
     const SolveStats& st = ref.solution.stats;
     write_solution(out.temp(dir / "reference.vtp"), ref.mesh, ref.solution, scene_identity(scene),

@@ -80,7 +80,7 @@ std::vector<std::filesystem::path> reference_files(const std::filesystem::path& 
 
 // Writes the folder described above into `out`, an OutputSet of reference_files(dir, scene)
 // (common/output_set.h), which the caller commits.
-void write_reference(const OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
+void write_reference(OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
                      const Reference& reference, const ReferenceOptions& options,
                      nlohmann::json summary);
 

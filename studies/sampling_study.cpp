@@ -68,7 +68,7 @@ private:
     std::optional<SamplingCell> previous_cell(std::size_t index);
     SamplingCell compute(std::size_t index);
     SamplingView trace_view(const CellTask& t, const View& view, Progress& notes);
-    void write_figures(const OutputSet& out, const View& view) const;
+    void write_figures(OutputSet& out, const View& view) const;
     ErrorSplits error_splits(const std::vector<SamplingCell>& cells) const;
     std::string where(std::size_t i) const {
         return fmt::format("[{}/{}] {}", i + 1, m_tasks.size(), m_tasks[i].name);
@@ -219,7 +219,7 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
 }
 
 // The first seed's images and density maps of every sampler (a white tile where a cell failed).
-void SamplingStudy::write_figures(const OutputSet& out, const View& view) const {
+void SamplingStudy::write_figures(OutputSet& out, const View& view) const {
     const Image8& ref = m_reference8.at(view.name);
     std::vector<Image8> images{ref}, maps;
     for (const Criterion* sampler : m_options.samplers) {

@@ -111,7 +111,7 @@ std::vector<std::filesystem::path> sampling_study_output_files(const Scene& scen
 
 // table.json, table.csv and table.md, from every cell of the study in order, into `out`, the set
 // of sampling_study_output_files().
-void write_sampling_tables(const OutputSet& out, const std::string& scene,
+void write_sampling_tables(OutputSet& out, const std::string& scene,
                            const SamplingStudyOptions& options,
                            const std::vector<std::string>& views,
                            const std::vector<SamplingCell>& cells, const ErrorSplits& splits = {});

@@ -207,7 +207,7 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
     return c;
 }
 
-void write_sampling_tables(const OutputSet& out, const std::string& scene,
+void write_sampling_tables(OutputSet& out, const std::string& scene,
                            const SamplingStudyOptions& o,
                            const std::vector<std::string>& views,
                            const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {

@@ -130,7 +130,7 @@ private:
     CellResult compute(std::size_t index);
     ObjectError measure(const Solution& solution, const CellTask& t, const std::string& name,
                         std::map<std::string, ImageErrors>& views);
-    void write_mesh_collection(const OutputSet& out) const;
+    void write_mesh_collection(OutputSet& out) const;
     std::string where(std::size_t index) const;
 
     const StudyOptions& m_options;
@@ -198,7 +198,7 @@ void StudyRunner::run() {
 }
 
 // meshes.pvd: every cell's mesh as one time step, to step through them in one ParaView session.
-void StudyRunner::write_mesh_collection(const OutputSet& out) const {
+void StudyRunner::write_mesh_collection(OutputSet& out) const {
     std::vector<CollectionEntry> entries;
     for (const CellTask& t : m_tasks) {
         const std::filesystem::path mesh = mesh_file(t.name);

@@ -123,7 +123,7 @@ std::vector<std::filesystem::path> study_output_files(const StudyOptions& option
 
 // table.json, table.csv, table.md and the plot, from every cell of the study in order, into
 // `out`, the set of study_output_files().
-void write_study_tables(const OutputSet& out, const std::string& scene, const StudyOptions& options,
+void write_study_tables(OutputSet& out, const std::string& scene, const StudyOptions& options,
                         const std::vector<std::string>& views, const std::vector<CellResult>& cells);
 
 }  // namespace hmcr

@@ -290,7 +290,7 @@ CellResult cell_from_json(const nlohmann::json& j) {
     return c;
 }
 
-void write_study_tables(const OutputSet& out, const std::string& scene, const StudyOptions& o,
+void write_study_tables(OutputSet& out, const std::string& scene, const StudyOptions& o,
                         const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     nlohmann::json all = nlohmann::json::array();
     for (const CellResult& c : cells) all.push_back(cell_to_json(c));

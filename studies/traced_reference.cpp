@@ -39,7 +39,7 @@ std::vector<std::filesystem::path> traced_reference_files(const std::filesystem:
     return files;
 }
 
-void write_traced_reference(const OutputSet& out, const std::filesystem::path& dir,
+void write_traced_reference(OutputSet& out, const std::filesystem::path& dir,
                             const Scene& scene, const TracedReference& ref, const TraceOptions& o,
                             const std::string& command) {
     nlohmann::json views = nlohmann::json::object();

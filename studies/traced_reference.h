@@ -51,7 +51,7 @@ std::vector<std::filesystem::path> traced_reference_files(const std::filesystem:
 
 // Writes the folder described above into `out`, an OutputSet of traced_reference_files(dir,
 // scene) (common/output_set.h), which the caller commits; `command` is the invocation.
-void write_traced_reference(const OutputSet& out, const std::filesystem::path& dir,
+void write_traced_reference(OutputSet& out, const std::filesystem::path& dir,
                             const Scene& scene, const TracedReference& reference,
                             const TraceOptions& options, const std::string& command);
 

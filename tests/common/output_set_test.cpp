@@ -34,6 +34,16 @@ TEST(OutputSet, WithoutCommitNothingIsLeft) {
     EXPECT_TRUE(fs::is_empty(dir.path()));  // not even the folders it made
 }
 
+// A run killed outright (SIGKILL) during its work leaves at most its lock files: the temporary
+// files are made at the end, when the command writes them.
+TEST(OutputSet, TemporaryFilesAreMadeOnlyWhenWritten) {
+    TempDir dir;
+    const fs::path a = dir.path() / "x.vtp";
+    OutputSet out({a});
+    EXPECT_EQ(dir.files(), std::vector<std::string>{".x.vtp.lock"});
+    EXPECT_THROW(out.commit(), std::logic_error);  // x.vtp was never written
+}
+
 TEST(OutputSet, OldFilesStayUntilTheCommit) {
     TempDir dir;
     const fs::path a = dir.write("x.vtp", "old");
