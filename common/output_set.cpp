@@ -71,11 +71,12 @@ void OutputSet::make_folders(const fs::path& folder, const fs::path& output) {
     std::error_code ec;
     if (fs::is_directory(folder, ec)) return;
     make_folders(folder.parent_path(), output);
-    if (!fs::create_directory(folder, ec) && !fs::is_directory(folder)) {
-        const std::string why = fs::exists(folder) ? "not a folder" : ec.message();
+    if (fs::create_directory(folder, ec)) {
+        m_made_folders.push_back(folder);
+    } else if (std::error_code again; !fs::is_directory(folder, again)) {  // not another run's
+        const std::string why = fs::exists(folder, again) ? "not a folder" : ec.message();
         throw InputError("cannot write " + output.string(), why + ": " + folder.string());
     }
-    m_made_folders.push_back(folder);
 }
 
 void OutputSet::lock(const fs::path& output, bool is_folder) {

@@ -38,7 +38,8 @@ inline std::uint64_t json_count(const nlohmann::json& j, const char* key,
         throw InputError(fmt::format("{}: {} is not a count", key, quote(value.dump())));
     }
     if (value.get<std::uint64_t>() > max) {
-        throw InputError(fmt::format("{}: {} is more than {}", key, value.get<std::uint64_t>(), max));
+        throw InputError(
+            fmt::format("{}: {} is more than {}", key, value.get<std::uint64_t>(), max));
     }
     return value.get<std::uint64_t>();
 }

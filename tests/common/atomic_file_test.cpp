@@ -64,7 +64,8 @@ TEST(AtomicFile, AnotherWritersTemporaryFileIsNoObstacle) {
     TempDir dir;
     const auto target = dir.path() / "cell.json";
     for (int n = 0; n < 256; ++n) {
-        dir.write("cell.json.tmp." + std::to_string(::getpid()) + "." + std::to_string(n), "theirs");
+        const std::string pid = std::to_string(::getpid());
+        dir.write("cell.json.tmp." + pid + "." + std::to_string(n), "theirs");
     }
     write_text_atomically(target, "mine");
     EXPECT_EQ(read_file(target), "mine");
@@ -77,7 +78,8 @@ TEST(AtomicFile, ConcurrentWritersOfOneTargetEachWriteWhole) {
     std::vector<std::thread> writers;
     for (int w = 0; w < 4; ++w) {
         writers.emplace_back([&, w] {
-            for (int k = 0; k < 50; ++k) write_text_atomically(target, std::string(1000, char('a' + w)));
+            const std::string text(1000, char('a' + w));
+            for (int k = 0; k < 50; ++k) write_text_atomically(target, text);
         });
     }
     for (std::thread& t : writers) t.join();
