@@ -11,6 +11,7 @@
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
 #include "common/atomic_file.h"
+#include "common/file_names.h"
 #include "common/output_paths.h"
 #include "common/output_set.h"
 #include "common/stopwatch.h"
@@ -36,8 +37,8 @@ struct SolveArgs {
 };
 
 fs::path output_path(const SolveArgs& args, const Scene& scene) {
-    const fs::path vtp = args.output.empty() ? fs::path("out") / (scene.name + ".vtp")
-                                             : fs::path(args.output);
+    const fs::path vtp =
+        args.output.empty() ? named_file("out", scene.name, ".vtp") : fs::path(args.output);
     if (vtp.extension() != ".vtp") {
         throw InputError("output must be a .vtp file, got " + quote(vtp.string()));
     }

@@ -14,10 +14,10 @@ bool portable(char c) {
 
 }  // namespace
 
-std::optional<std::string> name_problem(std::string_view name, std::size_t max_bytes) {
+std::optional<std::string> name_problem(std::string_view name) {
     if (name.empty()) return "it is empty";
-    if (name.size() > max_bytes) {
-        return fmt::format("it is {} bytes long, more than {}", name.size(), max_bytes);
+    if (name.size() > kMaxNameBytes) {
+        return fmt::format("it is {} bytes long, more than {}", name.size(), kMaxNameBytes);
     }
     for (const char c : name) {
         if (!portable(c)) {
@@ -40,8 +40,17 @@ void check_name(std::string_view name, std::string_view what) {
 std::filesystem::path named_file(const std::filesystem::path& dir, std::string_view stem,
                                  std::string_view suffix) {
     const std::string name = std::string(stem) + std::string(suffix);
-    if (const auto why = name_problem(name, kMaxFileNameBytes)) {
-        throw InputError((dir / name).string(), "cannot name a file: " + *why);
+    const auto fail = [&](const std::string& why) {
+        throw InputError((dir / name).string(), "cannot name a file: " + why);
+    };
+    if (name.empty() || name == "." || name == "..") fail("it names a folder");
+    if (name.size() > kMaxFileNameBytes) {
+        fail(fmt::format("it is {} bytes long, more than {}", name.size(), kMaxFileNameBytes));
+    }
+    for (const char c : name) {
+        if (c == '/' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+            fail(fmt::format("it holds {}", quote(std::string_view(&c, 1))));
+        }
     }
     return dir / name;
 }

@@ -88,7 +88,6 @@ private:
 SamplingStudy::SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, Progress& progress)
     : m_scene(scene), m_options(o), m_progress(progress) {
     validate(o);
-    check_name(scene.name, "scene name");  // it begins every cell's file names
     for (const Criterion* s : o.samplers)
         for (int k = 0; k < o.seeds; ++k) {
             const std::uint64_t seed = o.trace.seed + std::uint64_t(k);

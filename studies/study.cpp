@@ -94,7 +94,6 @@ public:
           m_progress(progress),
           m_scene(scene) {
         validate(o);
-        check_name(scene.name, "scene name");  // it begins every cell's file names
         for (std::size_t b : o.budgets)
             for (const Oracle* oracle : o.oracles)
                 for (int s = 0; s < o.seeds; ++s) {

@@ -31,6 +31,10 @@ TEST(FileNames, NamedFileStaysInItsFolder) {
     EXPECT_THROW(named_file("out", "", ""), InputError);
     EXPECT_THROW(named_file("out", std::string(252, 'c'), ".json"), InputError);  // > 255 bytes
     EXPECT_NO_THROW(named_file("out", std::string(250, 'c'), ".json"));
+    EXPECT_THROW(named_file("out", ".", "."), InputError);
+    EXPECT_THROW(named_file("out", "a\nb", ".png"), InputError);
+    // A scene file's own name may hold what a view's may not: it is a file name already.
+    EXPECT_EQ(named_file("out", "my scene", ".vtp"), std::filesystem::path("out/my scene.vtp"));
 }
 
 TEST(FileNames, TheReasonNamesTheCharacter) {
