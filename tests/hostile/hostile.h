@@ -83,4 +83,10 @@ protected:
     TempDir m_temp;
 };
 
+// `text` with the first `from` replaced by `to`: a valid input spoiled in one place.
+inline std::string with(std::string text, const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+    return text;
+}
+
 }  // namespace hmcr::test
