@@ -6,7 +6,9 @@
 
 #include "app/command.h"
 #include "app/plot_script.h"
+#include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/output_set.h"
 #include "studies/plot_data.h"
 
 namespace hmcr {
@@ -24,7 +26,13 @@ int run_plot(const PlotArgs& a) {
     if (const std::string why = why_no_plots(python, a.study); !why.empty()) {
         throw InputError("plot: " + why);
     }
-    draw_plots(*python, write_plot_data(a.study, data));
+    // The plot data is written as a set of one, with the study folder locked against a study
+    // still writing it (common/output_set.h); the plots are drawn from it.
+    const std::filesystem::path file = plot_data_file(a.study);
+    OutputSet out({file}, a.study);
+    write_text_atomically(out.temp(file), plot_data_text(data));
+    out.commit();
+    draw_plots(*python, file);
     if (!a.quiet) fmt::print("plots written to {}\n", (a.study / "plots").string());
     return 0;
 }

@@ -76,14 +76,12 @@ void refuse_mixed_flags(const StudyArgs& a, bool sampling) {
 }
 
 // The checks of either kind before any work: the output folder is neither in nor around the
-// reference, and no table replaces an input.
-void prepare_study_output(const std::filesystem::path& out, const std::filesystem::path& reference,
-                          const Scene& scene) {
+// reference, and no table replaces an input. The study itself then checks, makes and locks its
+// folder, and checks every cell's files, before its first cell.
+void refuse_study_output(const std::filesystem::path& out, const std::filesystem::path& reference,
+                         const std::vector<std::filesystem::path>& files, const Scene& scene) {
     refuse_nested_dirs(out, reference);
-    refuse_overwriting({out / "table.json", out / "table.csv", out / "table.md", out / "table.tex",
-                        out / "meshes.pvd", out / "plots" / "plot_data.json"},
-                       scene.inputs);
-    prepare_output_dir(out);
+    refuse_overwriting(files, scene.inputs);
 }
 
 // Rank 0 has written the tables and the plot data: it draws the plots.
@@ -105,7 +103,7 @@ int run_sampling_study_command(StudyArgs& a) {
     apply_trace_flags(a.trace_flags, o.trace);
     validate_sampling_study(o);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
-    prepare_study_output(o.output, o.reference, scene);
+    refuse_study_output(o.output, o.reference, sampling_study_output_files(scene, o), scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_sampling_study(scene, o, progress);
     finish_study(o.output, a.quiet);
@@ -129,7 +127,8 @@ int run_meshing_study(StudyArgs& a) {
     validate_study(a.options);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     apply_scene_settings(a.flags, scene, a.options.solver);
-    prepare_study_output(a.options.output, a.options.reference, scene);
+    refuse_study_output(a.options.output, a.options.reference, study_output_files(a.options),
+                        scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_study(scene, a.options, progress);
     finish_study(a.options.output, a.quiet);

@@ -7,7 +7,6 @@
 #include <functional>
 #include <set>
 
-#include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/text_file.h"
 #include "oracles/registry.h"
@@ -234,10 +233,10 @@ json plot_data_of_table(const std::filesystem::path& table) {
     });
 }
 
-std::filesystem::path write_plot_data(const std::filesystem::path& study, const json& data) {
-    const std::filesystem::path file = study / "plots" / "plot_data.json";
-    write_text_atomically(file, data.dump(2) + "\n");
-    return file;
+std::filesystem::path plot_data_file(const std::filesystem::path& study) {
+    return study / "plots" / "plot_data.json";
 }
+
+std::string plot_data_text(const json& data) { return data.dump(2) + "\n"; }
 
 }  // namespace hmcr

@@ -37,8 +37,9 @@ nlohmann::json sampling_plot_data(const std::string& scene, const std::vector<Sa
 // more than kMaxPlotPoints budgets or target spp.
 nlohmann::json plot_data_of_table(const std::filesystem::path& table);
 
-// STUDY/plots/plot_data.json, written atomically; its path.
-std::filesystem::path write_plot_data(const std::filesystem::path& study,
-                                      const nlohmann::json& data);
+// STUDY/plots/plot_data.json, where a study writes its plot data (one of its output set).
+std::filesystem::path plot_data_file(const std::filesystem::path& study);
+// The text of that file.
+std::string plot_data_text(const nlohmann::json& data);
 
 }  // namespace hmcr

@@ -7,13 +7,16 @@
 #include <optional>
 #include <memory>
 
+#include "common/file_names.h"
 #include "common/hash.h"
+#include "common/output_set.h"
 #include "common/error.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
 #include "rays/patch.h"
 #include "studies/cell_handout.h"
 #include "studies/montage.h"
+#include "studies/plot_data.h"
 #include "studies/traced_reference.h"
 #include "image/density_map.h"
 #include "trace/criteria/registry.h"
@@ -32,12 +35,18 @@ void validate(const SamplingStudyOptions& o) {
         }
     }
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    check_study_size(o.samplers.size(), o.seeds, o.trace.seed);
     if (o.output.empty()) throw InputError("study: no output folder given");
     for (const Criterion* s : o.samplers) {
         TraceOptions t = o.trace;
         t.sampler = s;
         validate_trace_options(t);  // the spp target each sampler can reach
     }
+}
+
+// OUT/figures/VIEW-KIND.png.
+fs::path figure_file(const SamplingStudyOptions& o, const View& view, const char* kind) {
+    return named_file(o.output / "figures", view.name + "-" + kind, ".png");
 }
 
 struct CellTask {
@@ -52,13 +61,15 @@ public:
     void run();
 
 private:
-    fs::path file(const std::string& folder, const std::string& name) const {
-        return m_options.output / folder / name;
+    // OUT/FOLDER/STEM.EXTENSION, the stem a cell's name, CELL-VIEW or a view's.
+    fs::path file(const char* folder, const std::string& stem, const char* extension) const {
+        return named_file(m_options.output / folder, stem, extension);
     }
+    std::vector<fs::path> outputs(std::size_t index) const;
     std::optional<SamplingCell> previous_cell(std::size_t index);
     SamplingCell compute(std::size_t index);
     SamplingView trace_view(const CellTask& t, const View& view, Progress& notes);
-    void write_figures(const View& view) const;
+    void write_figures(OutputSet& out, const View& view) const;
     ErrorSplits error_splits(const std::vector<SamplingCell>& cells) const;
     std::string where(std::size_t i) const {
         return fmt::format("[{}/{}] {}", i + 1, m_tasks.size(), m_tasks[i].name);
@@ -72,6 +83,7 @@ private:
     std::map<std::string, TracedView> m_reference;
     std::map<std::string, Image8> m_reference8;  // quantised at the view's exposure
     std::unique_ptr<PathTracer> m_tracer;
+    std::optional<OutputSet> m_tables;  // rank 0's
 };
 
 SamplingStudy::SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, Progress& progress)
@@ -83,6 +95,13 @@ SamplingStudy::SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, 
             m_tasks.push_back(
                 {s, seed, sampling_cell_name(scene.name, std::string(s->name()), o.trace.spp, seed)});
         }
+    // Rank 0 writes the tables and figures: it alone checks, locks and holds them, before any
+    // work; every rank learns of a refusal.
+    together(Ranks::world(), [&] {
+        if (Ranks::world().root()) {
+            m_tables.emplace(sampling_study_output_files(scene, o), o.output);
+        }
+    });
     m_settings = sampling_study_settings(scene, o);
 }
 
@@ -97,7 +116,18 @@ std::optional<SamplingCell> SamplingStudy::previous_cell(std::size_t index) {
     rule.settings = m_settings;
     rule.redo_other_settings = m_options.redo_other_settings;
     CellNotes notes(m_progress, where(index) + ": ");
-    return read_previous_cell(file("cells", t.name + ".json"), rule, notes);
+    return read_previous_cell(file("cells", t.name, ".json"), rule, notes);
+}
+
+// Every file a cell writes, for the checks before any cell is computed.
+std::vector<fs::path> SamplingStudy::outputs(std::size_t index) const {
+    const CellTask& t = m_tasks[index];
+    std::vector<fs::path> files{file("cells", t.name, ".json")};
+    for (const View& v : m_scene.views) {
+        files.push_back(file("images", t.name + "-" + v.name, ".png"));
+        files.push_back(file("density", t.name + "-" + v.name, ".png"));
+    }
+    return files;
 }
 
 void SamplingStudy::run() {
@@ -120,7 +150,8 @@ void SamplingStudy::run() {
     loop.compute = [this](std::size_t i) { return compute(i); };
     loop.to_json = sampling_cell_to_json;
     loop.from_json = sampling_cell_from_json;
-    loop.file = [this](std::size_t i) { return file("cells", m_tasks[i].name + ".json"); };
+    loop.file = [this](std::size_t i) { return file("cells", m_tasks[i].name, ".json"); };
+    loop.outputs = [this](std::size_t i) { return outputs(i); };
     loop.where = [this](std::size_t i) { return where(i); };
     loop.outcome = [](const SamplingCell& c) { return c.status; };
     const std::vector<SamplingCell> cells = run_cells_on(Ranks::world(), loop, m_progress);
@@ -128,9 +159,10 @@ void SamplingStudy::run() {
     std::vector<std::string> views;
     for (const View& v : m_scene.views) {
         views.push_back(v.name);
-        write_figures(v);
+        write_figures(*m_tables, v);
     }
-    write_sampling_tables(m_scene.name, m_options, views, cells, error_splits(cells));
+    write_sampling_tables(*m_tables, m_scene.name, m_options, views, cells, error_splits(cells));
+    m_tables->commit();
 }
 
 ErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cells) const {
@@ -142,7 +174,7 @@ ErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cells) 
             for (const SamplingCell& c : cells) {
                 const fs::path png =
                     file("images", sampling_cell_name(c.scene, c.sampler, c.spp, c.seed) + "-" +
-                                       v.name + ".png");
+                                       v.name, ".png");
                 if (c.sampler == s && c.ok() && fs::exists(png)) images.push_back(read_png(png));
             }
             if (images.size() >= 2) splits[s][v.name] = split_error(images, m_reference8.at(v.name));
@@ -183,9 +215,9 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
     if (m_options.display_criteria) o.criterion_exposure = ref.exposure;
     const TraceResult r = trace_image(*m_tracer, v, o, notes);
     const Image8 image = quantise(r.image, ref.exposure);
-    const std::string name = t.name + "-" + v.name + ".png";
-    write_png(file("images", name), image);
-    write_png(file("density", name), density_map(r.samples, v.width, v.height));
+    const std::string name = t.name + "-" + v.name;
+    write_png(file("images", name, ".png"), image);
+    write_png(file("density", name, ".png"), density_map(r.samples, v.width, v.height));
     const SampleCounts c = r.counts();
     return {image_errors(image, m_reference8.at(v.name)),
             c.mean,
@@ -197,25 +229,38 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
 }
 
 // The first seed's images and density maps of every sampler (a white tile where a cell failed).
-void SamplingStudy::write_figures(const View& view) const {
+void SamplingStudy::write_figures(OutputSet& out, const View& view) const {
     const Image8& ref = m_reference8.at(view.name);
     std::vector<Image8> images{ref}, maps;
     for (const Criterion* sampler : m_options.samplers) {
         const std::string name =
             sampling_cell_name(m_scene.name, std::string(sampler->name()), m_options.trace.spp, m_options.trace.seed) + "-" +
-            view.name + ".png";
-        const bool ok = fs::exists(file("images", name)) && fs::exists(file("density", name));
+            view.name;
+        const fs::path image = file("images", name, ".png"), map = file("density", name, ".png");
+        const bool ok = fs::exists(image) && fs::exists(map);
         Image8 blank(ref.width, ref.height);
         for (Srgb8& p : blank.pixels) p = {255, 255, 255};
-        images.push_back(ok ? read_png(file("images", name)) : blank);
-        maps.push_back(ok ? read_png(file("density", name)) : blank);
+        images.push_back(ok ? read_png(image) : blank);
+        maps.push_back(ok ? read_png(map) : blank);
     }
     const int shrink = ref.width >= 128 ? 2 : 1;
-    write_png(file("figures", view.name + "-images.png"), montage(images, 4, shrink));
-    write_png(file("figures", view.name + "-density.png"), montage(maps, 4, shrink));
+    write_png(out.temp(figure_file(m_options, view, "images")), montage(images, 4, shrink));
+    write_png(out.temp(figure_file(m_options, view, "density")), montage(maps, 4, shrink));
 }
 
 }  // namespace
+
+std::vector<fs::path> sampling_study_output_files(const Scene& scene,
+                                                  const SamplingStudyOptions& o) {
+    std::vector<fs::path> files{o.output / "table.json", o.output / "table.csv",
+                                o.output / "table.md", o.output / "table.tex",
+                                plot_data_file(o.output)};
+    for (const View& v : scene.views) {
+        files.push_back(figure_file(o, v, "images"));
+        files.push_back(figure_file(o, v, "density"));
+    }
+    return files;
+}
 
 std::string sampling_cell_name(const std::string& scene, const std::string& sampler, double spp,
                                std::uint64_t seed) {

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "common/output_set.h"
 #include "common/progress.h"
 #include "meshes/scene.h"
 #include "studies/metrics.h"
@@ -106,8 +107,15 @@ using ErrorSplits = std::map<std::string, std::map<std::string, ErrorSplit>>;
 // One sampler's split over all its views: the RMS of the views' biases and of their noises.
 ErrorSplit rms_over_views(const std::map<std::string, ErrorSplit>& by_view);
 
-// table.json, table.csv and table.md, from every cell of the study in order.
-void write_sampling_tables(const std::string& scene, const SamplingStudyOptions& options,
+// The files a sampling study writes at its end, once (its tables, figures and plot data):
+// checked and locked before any cell, written as one set (common/output_set.h).
+std::vector<std::filesystem::path> sampling_study_output_files(const Scene& scene,
+                                                               const SamplingStudyOptions& options);
+
+// table.json, table.csv, table.md, table.tex and plots/plot_data.json, from every cell of the
+// study in order, into `out`, the set of sampling_study_output_files().
+void write_sampling_tables(OutputSet& out, const std::string& scene,
+                           const SamplingStudyOptions& options,
                            const std::vector<std::string>& views,
                            const std::vector<SamplingCell>& cells, const ErrorSplits& splits = {});
 
