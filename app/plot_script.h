@@ -27,7 +27,8 @@ std::string why_no_plots(const std::optional<std::string>& python,
 void draw_plots(const std::string& python, const std::filesystem::path& data);
 
 // What `hmcr study` does at the end: draws the plots of the study's plot data, or, when they
-// cannot be drawn here, says why and how in one warning (unless quiet).
+// cannot be drawn here, says why and how in one warning (unless quiet). A script that fails is
+// a warning too, always: the study's tables are written by then.
 void draw_study_plots(const std::filesystem::path& study, bool quiet);
 
 }  // namespace hmcr

@@ -1,8 +1,12 @@
 // Hostile study folders: a cell file cut short, emptied or holding values no study makes is
 // computed again, not fatal and not tabled; a folder made with other settings is refused, not
 // mixed into one table; a study's size and seeds are bounded before anything is written;
-// `hmcr plot` refuses a folder that holds no study's table, and a machine without matplotlib.
+// `hmcr plot` refuses a folder that holds no study's table, and a machine without matplotlib;
+// a study whose plotting script fails is still whole.
 #include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <optional>
 
 #include "tests/hostile/hostile.h"
 
@@ -11,13 +15,27 @@ namespace {
 
 class HostileStudy : public Hostile {
 protected:
+    // These studies are about their cells: their plots, which take a second each to draw, are
+    // left out (a Python without matplotlib, so a warning) unless a test names its own Python.
+    // Plots drawn are tested in tests/app/trace_cli_test.cpp and write_confinement_test.cpp.
     void SetUp() override {
+        const char* python = std::getenv("HMCR_PYTHON");
+        if (python != nullptr) m_python = python;
+        setenv("HMCR_PYTHON", "/bin/false", 1);
         plates(kPlatesObj, kPlatesMtl,
                R"({"mesh": "plates.obj", "solver": {"rays": 20000}, "views": [{"name": "side",
                    "position": [2.8, 0.5, 0.5], "look_at": [0.5, 0.5, 0.5], "width": 32,
                    "height": 32}]})");
         accepted("reference plates.json --max-area 0.1 --rays 20000 -q -o ref");  // rays its own
     }
+    void TearDown() override {
+        if (m_python) {
+            setenv("HMCR_PYTHON", m_python->c_str(), 1);
+        } else {
+            unsetenv("HMCR_PYTHON");
+        }
+    }
+    std::optional<std::string> m_python;
     static constexpr const char* kStudy =
         "study plates.json --reference ref --budgets 20 --oracles power --seeds 2 -o st";
     std::filesystem::path cell(int seed) const {
@@ -138,6 +156,23 @@ TEST_F(HostileStudy, NoMatplotlibLeavesTheStudyWhole) {
     EXPECT_EQ(std::count(plot.err.begin(), plot.err.end(), '\n'), 1) << plot.err;
     EXPECT_NE(plot.err.find("hmcr: error: plot: no Python with matplotlib"), std::string::npos);
     EXPECT_TRUE(snapshot(dir()) == before);
+}
+
+// A plotting script that fails (a broken matplotlib) costs the plots, not the finished study:
+// exit code 0, its tables written, and one warning on how to draw the plots.
+TEST_F(HostileStudy, AFailingPlotScriptLeavesTheStudyWhole) {
+    const std::filesystem::path python = m_temp.write(
+        "broken-python", "#!/bin/sh\n[ \"$1\" = -c ] && exit 0\necho broken >&2\nexit 1\n");
+    std::filesystem::permissions(python, std::filesystem::perms::owner_exec,
+                                 std::filesystem::perm_options::add);
+    const CliRun study = run_launched("env HMCR_PYTHON=" + python.string() + " ", kStudy, dir(), 60);
+    EXPECT_EQ(study.exit_code, 0) << study.err;
+    EXPECT_TRUE(std::filesystem::exists(dir() / "st" / "table.tex"));
+    EXPECT_NE(study.err.find("broken\nhmcr: warning: plots not drawn: the plotting script "),
+              std::string::npos)
+        << study.err;
+    EXPECT_NE(study.err.find("(exit 1); draw them with `hmcr plot st`\n"), std::string::npos)
+        << study.err;
 }
 
 }  // namespace
