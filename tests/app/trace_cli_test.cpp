@@ -80,6 +80,18 @@ TEST_F(TraceCli, TraceReferenceAndSamplingStudyWriteTheirFiles) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(fs::exists(m_dir / "study" / "cells" / "plates-srhe-spp8-s1.json"));
     EXPECT_NE(read_file(m_dir / "study" / "table.md").find("| srhe | 1/1 |"), std::string::npos);
+    EXPECT_NE(read_file(m_dir / "study" / "table.tex").find("\\label{tab:plates-sampling}"),
+              std::string::npos);
+    // Its plots, drawn again from its table.json: the same numbers.
+    const fs::path data = m_dir / "study" / "plots" / "plot_data.json";
+    const std::string drawn = read_file(data);
+    EXPECT_NE(drawn.find("\"error_by_sampler\""), std::string::npos) << drawn;
+    EXPECT_TRUE(fs::exists(m_dir / "study" / "plots" / "error_by_sampler.pdf"))
+        << "no matplotlib? make deps installs python3-matplotlib";
+    EXPECT_TRUE(fs::exists(m_dir / "study" / "plots" / "error_by_sampler.png"));
+    fs::remove(data);
+    EXPECT_EQ(hmcr("plot -q " + study).exit_code, 0);
+    EXPECT_EQ(read_file(data), drawn);
 }
 
 // `hmcr study --budgets` against a traced reference: radiosity solutions measured against an
