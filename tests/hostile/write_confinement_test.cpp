@@ -69,6 +69,7 @@ const std::vector<Given> kCommands = {
      {"o/6/"}},
     {"study plates.json --reference in/tref --samplers uniform --spp 2 --seeds 1 -q -o o/7",
      {"o/7/"}},
+    {"plot o/6", {"o/6/"}},
     {"info plates.json --lines 1000", {}},
     {"oracles", {}},
     {"samplers", {}},
