@@ -137,7 +137,8 @@ std::string tex_document(const std::string& scene, const SamplingStudyOptions& o
     const std::string name = latex_text(scene), label = "tab:" + latex_label(scene) + "-sampling";
     const std::string what = "mean $\\pm$ standard error over the seeds; the best mean of each "
                              "error column in bold.";
-    std::string out = fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}}.\n% {}\n",
+    std::string out = fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}} and "
+                                  "\\usepackage{{graphicx}}.\n% {}\n",
                                   name, latex_text(description(o)));
     out += latex_float(fmt::format("Sampling study of {}, the mean over the views: {}", name, what),
                      label, summary(cells, ""));

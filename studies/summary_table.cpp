@@ -74,16 +74,14 @@ std::string latex_tabular(const SummaryTable& t) {
 
 std::string latex_float(const std::string& caption, const std::string& label,
                         const SummaryTable& table) {
-    std::string tabular = latex_tabular(table);
-    if (latex_is_wide(table)) tabular = "\\resizebox{\\linewidth}{!}{%\n" + tabular + "}\n";
+    // Shrunk to the line where it is wider (\width is the tabular's natural width), as it is
+    // otherwise: which tables fit depends on the paper's class and columns, not on hmcr.
+    const std::string tabular = "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}"
+                                "{!}{%\n" + latex_tabular(table) + "}\n";
     return fmt::format(
         "\n\\begin{{table}}[htbp]\n\\centering\n\\small\n\\caption{{{}}}\n\\label{{{}}}\n{}"
         "\\end{{table}}\n",
         caption, label, tabular);
-}
-
-bool latex_is_wide(const SummaryTable& table) {
-    return 1 + (table.seeds_column ? 1 : 0) + table.columns.size() > kLatexMaxColumns;
 }
 
 std::string latex_text(std::string_view text) {

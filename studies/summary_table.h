@@ -41,13 +41,9 @@ std::string markdown(const SummaryTable& table);
 // A booktabs tabular of the same cells; the best in bold. Needs \usepackage{booktabs}.
 std::string latex_tabular(const SummaryTable& table);
 
-// A table of more columns than this, in \small, is wider than a page's text (a meshing study's
-// 12 of "mean ± se"): latex_float scales it to the line's width.
-inline constexpr std::size_t kLatexMaxColumns = 10;
-bool latex_is_wide(const SummaryTable& table);
-
-// A table float holding latex_tabular(table): "\n\begin{table}...\end{table}\n", a wide one in
-// \resizebox{\linewidth}{!}{...} (graphicx). The caption is LaTeX already.
+// A table float holding latex_tabular(table): "\n\begin{table}...\end{table}\n", the tabular
+// in a \resizebox (graphicx) that scales it to \linewidth where it is wider, and leaves it as it
+// is otherwise. The caption is LaTeX already.
 std::string latex_float(const std::string& caption, const std::string& label,
                         const SummaryTable& table);
 

@@ -60,6 +60,42 @@ TEST(SummaryTable, LatexTextEscapesWhatLatexWouldReadAsCode) {
     EXPECT_EQ(latex_label("my scene_2.obj"), "my-scene-2-obj");
 }
 
+bool has_pdflatex() { return std::system("command -v pdflatex >/dev/null 2>&1") == 0; }
+
+// `body` \input into an article with booktabs and graphicx, by pdflatex in `dir`: whether it
+// compiled, and its log.
+std::pair<bool, std::string> pdflatex(const TempDir& dir, const std::string& body) {
+    dir.write("paper.tex",
+              "\\documentclass{article}\n\\usepackage{booktabs}\n\\usepackage{graphicx}\n"
+              "\\begin{document}\n" + body + "\n\\end{document}\n");
+    const std::string cmd = "cd '" + dir.path().string() +
+                            "' && pdflatex -interaction=nonstopmode -halt-on-error paper.tex "
+                            ">/dev/null 2>&1";
+    const bool compiled = std::system(cmd.c_str()) == 0;
+    return {compiled, read_file(dir.path() / "paper.log")};
+}
+
+// A sampling study's summary: 10 columns, 8 of them "mean ± se", wider than a page's text in
+// \small; a table of a few columns is not.
+TEST(SummaryTable, AFloatWiderThanTheLineIsScaledToIt) {
+    SummaryTable wide;
+    wide.row_title = "sampler";
+    for (const char* title : {"RMSEa", "RMSEp", "PSNRa (dB)", "PSNRp (dB)", "spp", "max spp",
+                              "rays (M)", "seconds"}) {
+        wide.columns.push_back({title, "{:.2f}", 0});
+    }
+    wide.rows = {{"uniform", "3/3", std::vector<MeanSe>(8, mean_se({32.37, 33.5, 31.2}))}};
+    const std::string shrunk = "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%";
+    const std::string floats = latex_float("Wide.", "tab:wide", wide) +
+                               latex_float("Narrow.", "tab:narrow", two_oracles());
+    EXPECT_NE(floats.find(shrunk), std::string::npos) << floats;
+    if (!has_pdflatex()) GTEST_SKIP() << "no pdflatex: the floats checked by structure only";
+    TempDir dir;
+    const auto [compiled, log] = pdflatex(dir, floats);
+    EXPECT_TRUE(compiled) << log;
+    EXPECT_EQ(log.find("Overfull \\hbox"), std::string::npos) << log;
+}
+
 CellResult cell(const std::string& oracle, std::size_t budget, std::uint64_t seed, double error) {
     CellResult c;
     c.scene = "my_box";
@@ -72,8 +108,6 @@ CellResult cell(const std::string& oracle, std::size_t budget, std::uint64_t see
     c.object_error = {error, 100, 0};
     return c;
 }
-
-bool has_pdflatex() { return std::system("command -v pdflatex >/dev/null 2>&1") == 0; }
 
 TEST(StudyTables, TexHoldsOneTableFloatPerBudgetThatPdflatexCompiles) {
     TempDir dir;
@@ -98,7 +132,6 @@ TEST(StudyTables, TexHoldsOneTableFloatPerBudgetThatPdflatexCompiles) {
     // One float per budget, each a booktabs tabular; every row as many cells as the header.
     for (const char* part : {"\\begin{table}", "\\toprule", "\\midrule", "\\bottomrule",
                              "\\end{table}", "\\label{tab:my-box-100}", "\\label{tab:my-box-200}",
-                             "\\resizebox{\\linewidth}{!}{%",  // 12 columns: wider than a page
                              "Meshing study of my\\_box at 200 leaves"}) {
         EXPECT_NE(tex.find(part), std::string::npos) << part;
     }
@@ -119,14 +152,9 @@ TEST(StudyTables, TexHoldsOneTableFloatPerBudgetThatPdflatexCompiles) {
     EXPECT_NE(tex.find("kl & 2/2 & "), std::string::npos);
     EXPECT_NE(tex.find("\\textbf{0.0600 $\\pm$ 0.0200}"), std::string::npos);
     if (!has_pdflatex()) GTEST_SKIP() << "no pdflatex: table.tex checked by structure only";
-    dir.write("paper.tex",
-              "\\documentclass{article}\n\\usepackage{booktabs}\n\\usepackage{graphicx}\n"
-              "\\begin{document}\n"
-              "\\input{table.tex}\n\\end{document}\n");
-    const std::string cmd = "cd '" + dir.path().string() +
-                            "' && pdflatex -interaction=nonstopmode -halt-on-error paper.tex "
-                            ">/dev/null 2>&1";
-    EXPECT_EQ(std::system(cmd.c_str()), 0) << read_file(dir.path() / "paper.log");
+    const auto [compiled, log] = pdflatex(dir, "\\input{table.tex}");
+    EXPECT_TRUE(compiled) << log;
+    EXPECT_EQ(log.find("Overfull \\hbox"), std::string::npos) << log;
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "paper.pdf"));
 }
 
