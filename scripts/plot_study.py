@@ -16,6 +16,7 @@ Exit status: 0 drawn; 2 the data file is not plot data (one line on stderr); 3 n
 import json
 import math
 import os
+import re
 import sys
 import tempfile
 
@@ -225,6 +226,9 @@ def main(argv):
         with open(path, encoding="utf-8") as f:
             data = json.load(f)
         figures = [(spec["name"], spec) for spec in data["figures"]]
+        for name, _ in figures:  # a file name beside the data, never a path
+            if not (isinstance(name, str) and re.fullmatch(r"[a-z0-9_]{1,64}", name)):
+                raise ValueError(f"figure name {name!r} is not [a-z0-9_]{{1,64}}")
     except (OSError, ValueError, KeyError, TypeError) as e:
         sys.stderr.write(f"{path}: not a study's plot data ({e})\n")
         return BAD_INPUT

@@ -175,5 +175,26 @@ TEST_F(HostileStudy, AFailingPlotScriptLeavesTheStudyWhole) {
         << study.err;
 }
 
+// The plotting script, run by hand on plot data that names a figure by a path: it writes
+// nothing, and says so in one line (exit code 2).
+TEST_F(Hostile, ThePlotScriptNamesNoFileOutsideItsFolder) {
+    m_temp.write("st/plots/plot_data.json", R"({"figures": [{"name": "../../escaped", "panels": [
+        {"type": "bars", "title": "t", "y_label": "y", "categories": ["a"],
+         "groups": [{"name": "g", "values": [{"y": 1, "y_se": null}]}]}]}]})");
+    const auto before = snapshot(dir());
+    const std::string script =
+        (std::filesystem::path(HMCR_SCENE_DIR).parent_path() / "scripts" / "plot_study.py").string();
+    const std::string cmd = "cd '" + dir().string() + "' && /usr/bin/python3 '" + script +
+                            "' st/plots/plot_data.json 2>.err";
+    const int status = std::system(cmd.c_str());
+    if (WEXITSTATUS(status) == 3) GTEST_SKIP() << "no matplotlib in /usr/bin/python3";
+    const std::string err = read_file(dir() / ".err");
+    std::filesystem::remove(dir() / ".err");
+    EXPECT_EQ(WEXITSTATUS(status), 2) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_NE(err.find("figure name '../../escaped'"), std::string::npos) << err;
+    EXPECT_TRUE(snapshot(dir()) == before);
+}
+
 }  // namespace
 }  // namespace hmcr::test
