@@ -44,9 +44,10 @@ protected:
         const CliRun r = run_hmcr(g.args, dir());
         EXPECT_EQ(r.exit_code, 0) << g.args << "\n" << r.err;
         const auto after = snapshot(dir());
-        for (const auto& [file, bytes] : after) {
+        for (const auto& entry : after) {
+            const std::string& file = entry.first;
             const auto old = before.find(file);
-            if (old != before.end() && old->second == bytes) continue;
+            if (old != before.end() && old->second == entry.second) continue;
             EXPECT_TRUE(std::any_of(g.outputs.begin(), g.outputs.end(),
                                     [&](const std::string& o) { return within(file, o); }))
                 << g.args << " wrote " << file;
