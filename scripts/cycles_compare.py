@@ -22,7 +22,8 @@ It runs, keeping every output in --work so that a second call reuses what is the
    (b) per face, the mean over the pixels that lie wholly inside one OBJ face (found by casting
        4 x 4 rays per pixel through hmcr's camera), Cycles against the radiosity reference;
    (c) the same per face at the trace's size, Cycles against the trace and the radiosity
-       reference against the trace: it tells which of (b)'s two sides a difference belongs to.
+       reference against the trace: it tells which of (b)'s two sides a difference belongs to;
+   (d) (b) on the floor in bands of the distance to the blocks' bases.
    Each difference has a standard error from the seeds' scatter; for the radiosity reference it
    has one degree of freedom (two seeds), so its z is a rough scale, not a test.
    docs/results.md#agreement-with-blender-cycles shows a run and how to read it.
@@ -36,8 +37,9 @@ hmcr's `Ke` is the radiance, so the light's shader is colour Ke / max(Ke) at str
 What a run shows (the numbers in docs/results.md): Cycles and hmcr's trace agree to the noise per
 pixel and per face, so (b)'s differences are the radiosity reference's.  Its stop criterion's bias
 is below 0.01% (the reference's truncation estimate), far below them.  On the floor, (b)'s largest
-z, the difference lies next to the blocks: the floor is one patch that runs under them, and its
-elements that straddle a block's base average the lit floor with the unlit floor beneath it.
+z, (d) puts the difference within 20 mm of the blocks' bases, about two of the floor's 8.7 mm
+elements: the floor is one patch that runs under the blocks, so its elements across a base
+average the lit floor with the unlit floor beneath the block.
 """
 
 import argparse
@@ -379,6 +381,42 @@ def patch_rows(ids, faces, test, base):
     return rows
 
 
+def floor_by_block_distance(view, ids, faces, cycles, radiosity, bands_mm=(0, 5, 10, 20, 50)):
+    """(d): the floor's interior pixels in bands of their distance (on the floor, from each
+    pixel's centre ray) to the blocks' bases: per band the pixels, Cycles / radiosity reference
+    - 1 with Cycles' standard error, and the band's share of the floor's whole difference."""
+    import numpy as np
+    vertices, _, _ = read_obj()
+    v = np.array(vertices)
+    floor = [i for i, (group, _, _) in enumerate(faces) if group == "floor"]
+    mask = np.isin(ids, floor)
+    bases = [(v[a][[0, 2]], v[b][[0, 2]]) for group, _, c in faces if "block" in group
+             for a, b in zip(c, c[1:] + c[:1]) if v[a][1] == 0 and v[b][1] == 0]
+    right, up, forward = (np.array(a) for a in camera_frame(view))
+    rows, cols = np.nonzero(mask)
+    t = math.tan(math.radians(view["fov"]) / 2)
+    px = (2 * (cols + 0.5) / view["width"] - 1) * t * view["width"] / view["height"]
+    py = (1 - 2 * (rows + 0.5) / view["height"]) * t
+    d = forward + px[:, None] * right + py[:, None] * up
+    o = np.array(view["position"])
+    hit = (o + (-o[1] / d[:, 1])[:, None] * d)[:, [0, 2]]  # the floor is y = 0
+    dist = np.full(len(hit), np.inf)
+    for a, b in bases:
+        s = np.clip((hit - a) @ (b - a) / ((b - a) @ (b - a)), 0, 1)
+        dist = np.minimum(dist, np.linalg.norm(hit - a - s[:, None] * (b - a), axis=1))
+    c, c_var = seed_mean(cycles)
+    c, c_var, r = c[mask], c_var[mask], luminance(radiosity[0])[mask]
+    total = c.sum() - r.sum()
+    out = []
+    for lo, hi in zip(bands_mm, list(bands_mm[1:]) + [math.inf]):
+        m = (dist >= lo / 1000) & (dist < hi / 1000)
+        out.append({"from_mm": lo, "to_mm": hi, "pixels": int(m.sum()),
+                    "difference": c[m].sum() / r[m].sum() - 1,
+                    "se": math.sqrt(c_var[m].sum()) / r[m].sum(),
+                    "share": (c[m].sum() - r[m].sum()) / total})
+    return out
+
+
 # ---------------------------------------------------------------- the driver
 
 
@@ -456,6 +494,7 @@ def main():
                                           solution_noise([box_reduce(x, factor)
                                                           for x in radiosity]),
                                           pixel_noise(traces))}
+    c["floor_by_block_distance"] = floor_by_block_distance(view, ids, faces, cycles, radiosity)
     lum = luminance(radiosity[0])
     exposure = 0.18 / lum[lum > 0].mean()
     for name, img in (("cycles", sum(cycles) / len(cycles)), ("radiosity", radiosity[0]),
@@ -492,6 +531,12 @@ def report(a, b, c, args, work):
     print_rows(c["cycles_vs_trace"], "Cycles", "trace")
     print("    radiosity reference / trace - 1")
     print_rows(c["radiosity_vs_trace"], "radiosity", "trace")
+    print("\n(d) the floor's interior pixels by their distance to the blocks' bases: "
+          "Cycles / radiosity reference - 1")
+    for r in c["floor_by_block_distance"]:
+        print(f"  {r['from_mm']:>3} to {r['to_mm']:>3} mm {r['pixels']:>6} pixels "
+              f"{100 * r['difference']:>+8.3f}% ± {100 * r['se']:.3f}%, "
+              f"{100 * r['share']:>4.0f}% of the floor's difference")
     with open(os.path.join(work, "comparison.json"), "w") as f:
         json.dump({"per_pixel": a, "per_patch": b, **c}, f, indent=1)
 
