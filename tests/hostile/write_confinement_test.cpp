@@ -44,7 +44,7 @@ protected:
         const CliRun r = run_hmcr(g.args, dir());
         EXPECT_EQ(r.exit_code, 0) << g.args << "\n" << r.err;
         const auto after = snapshot(dir());
-        for (const auto& entry : after) {  // no structured binding: a lambda uses the name
+        for (const auto& entry : after) {
             const std::string& file = entry.first;
             const auto old = before.find(file);
             if (old != before.end() && old->second == entry.second) continue;

@@ -1,0 +1,362 @@
+#!/usr/bin/python3
+"""hmcr against RenderPark's port (rpkCpp), whole process, one thread, the Cornell box.
+
+What it does, in order (docs/performance.md#against-renderpark shows a run):
+
+1. Converts hmcr's Cornell box (an OBJ with Kd reflectances and Ke radiances, metres) to MGF so
+   that rpkCpp solves the same scene (see `write_mgf` for the colour and emission semantics).
+2. Builds rpkCpp in a temporary folder from its public repository: the tarball of a pinned commit
+   from GitHub, or, with `--rpk-source DIR`, a git directory already on the machine (a clone or a
+   bare mirror: its tree is exported with `git archive`), or a source folder.  Nothing of rpkCpp
+   is kept in hmcr's repository.
+3. Runs each program once to read its element and ray counts, then N pairs of whole-process runs,
+   alternated (hmcr first in odd pairs, rpkCpp first in even ones) under /usr/bin/time, and prints
+   both medians, the ratio of the medians and the median of the paired ratios.
+
+Standard library only.  Usage:
+    scripts/renderpark_compare.py --hmcr build/hmcr [--rpk-source DIR] [--pairs 7]
+"""
+
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import statistics
+import struct
+import subprocess
+import sys
+import tarfile
+import tempfile
+import urllib.request
+import zlib
+
+RPK_REPOSITORY = "https://github.com/OscarChavarro/rpkCpp"
+RPK_COMMIT = "37e5ff4e"  # the commit this comparison was measured with
+RPK_TARBALL = "https://codeload.github.com/OscarChavarro/rpkCpp/tar.gz/{commit}"
+
+# rpkCpp's default monitor primaries and white (src/tonemap/ToneMappingContext.cpp): its
+# internal RGB.  Its MGF reader turns (x, y, Y) into XYZ, then into RGB by these primaries.
+RPK_PRIMARIES = ((0.640, 0.330), (0.290, 0.600), (0.150, 0.060))
+RPK_WHITE = (1.0 / 3.0, 1.0 / 3.0)
+# rpkCpp divides `ed` (lm/m^2) by this to get W/m^2 (src/common/cie.cpp, WHITE_EFFICACY).
+RPK_WHITE_EFFICACY = 183.07
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CORNELL_OBJ = os.path.join(HERE, "..", "scenes", "cornell", "cornell.obj")
+
+
+# ---------------------------------------------------------------- colour conversion
+
+
+def _solve3(m, v):
+    """Solves m x = v for a 3 x 3 matrix by Cramer's rule."""
+    def det(a):
+        return (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
+                - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+                + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]))
+    d = det(m)
+    out = []
+    for c in range(3):
+        mc = [row[:] for row in m]
+        for r in range(3):
+            mc[r][c] = v[r]
+        out.append(det(mc) / d)
+    return out
+
+
+def rgb_to_xyz_matrix(primaries, white):
+    """The RGB -> XYZ matrix of the given (x, y) primaries, RGB (1, 1, 1) mapping to the white
+    with Y = 1 (the construction of rpkCpp's computeColorConversionTransforms)."""
+    cols = [(x / y, 1.0, (1.0 - x - y) / y) for x, y in primaries]
+    m = [[cols[c][r] for c in range(3)] for r in range(3)]
+    wx, wy = white
+    scale = _solve3(m, [wx / wy, 1.0, (1.0 - wx - wy) / wy])
+    return [[m[r][c] * scale[c] for c in range(3)] for r in range(3)]
+
+
+def rgb_to_mgf_colour(rgb):
+    """(x, y, Y) of a linear rgb in rpkCpp's RGB: the MGF `cxy x y` and the luminance that
+    `rd` or `ed` carries.  rpkCpp reads them back to this rgb (up to float rounding)."""
+    m = rgb_to_xyz_matrix(RPK_PRIMARIES, RPK_WHITE)
+    xyz = [sum(m[r][c] * rgb[c] for c in range(3)) for r in range(3)]
+    s = sum(xyz)
+    return xyz[0] / s, xyz[1] / s, xyz[1]
+
+
+# ---------------------------------------------------------------- OBJ + MTL -> MGF
+
+
+def read_obj(obj_path):
+    """Vertices, faces (material, group, vertex indices from 0) and the MTL's Kd and Ke."""
+    vertices, faces, materials = [], [], {}
+    material, group, mtllib = None, "default", None
+    with open(obj_path) as f:
+        for line in f:
+            words = line.split("#", 1)[0].split()
+            if not words:
+                continue
+            if words[0] == "v":
+                vertices.append(tuple(float(w) for w in words[1:4]))
+            elif words[0] == "f":
+                faces.append((material, group, [int(w.split("/")[0]) - 1 for w in words[1:]]))
+            elif words[0] == "usemtl":
+                material = words[1]
+            elif words[0] == "g":
+                group = words[1]
+            elif words[0] == "mtllib":
+                mtllib = os.path.join(os.path.dirname(obj_path), words[1])
+    name = None
+    with open(mtllib) as f:
+        for line in f:
+            words = line.split("#", 1)[0].split()
+            if words and words[0] == "newmtl":
+                name = words[1]
+                materials[name] = {"Kd": (0.0, 0.0, 0.0), "Ke": (0.0, 0.0, 0.0)}
+            elif words and words[0] in ("Kd", "Ke"):
+                materials[name][words[0]] = tuple(float(w) for w in words[1:4])
+    return vertices, faces, materials
+
+
+def write_mgf(obj_path, mgf_path):
+    """Writes the OBJ scene as MGF for rpkCpp, the same scene in rpkCpp's units.
+
+    - Geometry: the same vertices in metres (MGF has no unit; rpkCpp's thresholds are relative)
+      and the same faces with the same corner order: MGF and OBJ both face a polygon toward the
+      side from which its corners turn counter-clockwise.  Materials are `sides 1`, as hmcr's
+      faces are one-sided.
+    - Reflectance: hmcr's Kd is linear RGB.  MGF states a colour as CIE (x, y) and `rd` as its
+      luminance Y; rpkCpp turns (x, y, Y) into its RGB by its default primaries (not Rec. 709:
+      green is at (0.29, 0.60)) with an equal-energy white.  So Kd is taken to XYZ through the
+      inverse of that same transform: rpkCpp reads back Kd exactly.
+    - Emission: hmcr's Ke is radiance (W sr^-1 m^-2), the emitted radiosity E = pi Ke (W/m^2).
+      MGF's `ed` is a luminous exitance (lm/m^2), which rpkCpp divides by its white efficacy,
+      183.07 lm/W, to get the exitance in W/m^2 (its radiance is that over pi).  So the light's
+      `ed` is 183.07 x Y(pi Ke) with the chromaticity of Ke: rpkCpp emits the same watts.
+    """
+    vertices, faces, materials = read_obj(obj_path)
+    out = ["# hmcr's Cornell box for rpkCpp, written by scripts/renderpark_compare.py.",
+           "# Colours are in rpkCpp's RGB (its default primaries); ed = 183.07 Y(pi Ke).", ""]
+    for name, mat in materials.items():
+        out += [f"m {name} =", "\tsides 1"]
+        x, y, lum = rgb_to_mgf_colour(mat["Kd"])
+        out += ["\tc", f"\t\tcxy {x:.9f} {y:.9f}", f"\trd {lum:.9f}"]
+        if any(mat["Ke"]):
+            x, y, lum = rgb_to_mgf_colour([math.pi * k for k in mat["Ke"]])
+            out += ["\tc", f"\t\tcxy {x:.9f} {y:.9f}", f"\ted {RPK_WHITE_EFFICACY * lum:.9f}"]
+    out.append("")
+    for i, (px, py, pz) in enumerate(vertices):
+        out += [f"v v{i} =", f"\tp {px!r} {py!r} {pz!r}"]
+    out.append("")
+    group = None
+    for material, g, corners in faces:
+        if g != group:
+            if group is not None:
+                out.append("o")
+            out.append(f"o {g}")
+            group = g
+        out += [f"m {material}", "f " + " ".join(f"v{c}" for c in corners)]
+    if group is not None:
+        out.append("o")
+    with open(mgf_path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+# ---------------------------------------------------------------- rpkCpp's build
+
+
+def fetch_rpk_source(source, commit, dest):
+    """Puts rpkCpp's CMakeLists.txt and src/ (and etc/) into dest."""
+    os.makedirs(dest)
+    if source and os.path.isdir(os.path.join(source, "src")):
+        for part in ("CMakeLists.txt", "src", "etc"):
+            src = os.path.join(source, part)
+            (shutil.copytree if os.path.isdir(src) else shutil.copy)(src, os.path.join(dest, part))
+        return f"the source folder {source}"
+    if source:  # a git directory: a clone's .git, a bare repository or a mirror
+        archive = subprocess.run(["git", "--git-dir", source, "archive", commit,
+                                  "CMakeLists.txt", "src", "etc"],
+                                 check=True, capture_output=True).stdout
+        subprocess.run(["tar", "-x", "-C", dest], input=archive, check=True)
+        return f"git archive {commit} of {source}"
+    url = RPK_TARBALL.format(commit=commit)
+    tarball = os.path.join(dest, "rpk.tar.gz")
+    urllib.request.urlretrieve(url, tarball)
+    with tarfile.open(tarball) as t:
+        top = t.getnames()[0].split("/")[0]
+        wanted = (["CMakeLists.txt"], ["src"], ["etc"])  # below the tarball's top folder
+        t.extractall(dest, members=[m for m in t.getmembers() if m.name.split("/")[1:2] in wanted])
+    for part in os.listdir(os.path.join(dest, top)):
+        shutil.move(os.path.join(dest, top, part), dest)
+    return url
+
+
+def build_rpk(source_dir, jobs):
+    build = os.path.join(source_dir, "build")
+    subprocess.run(["cmake", "-S", source_dir, "-B", build, "-DCMAKE_BUILD_TYPE=Release"],
+                   check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(["cmake", "--build", build, "-j", str(jobs)], check=True,
+                   stdout=subprocess.DEVNULL)
+    return os.path.join(build, "rpk")
+
+
+# ---------------------------------------------------------------- the runs
+
+
+def rpk_command(rpk, mgf, args, clustering):
+    return [rpk, mgf, "-raytracing-method", "none", "-radiance-method", "StochJacobi",
+            "-iterations", str(args.iterations), "-srr-ray-units", str(args.ray_units),
+            "-srr-hierarchical", "yes", "-srr-epsilon", str(args.rpk_epsilon),
+            "-srr-clustering", clustering]
+
+
+def hmcr_command(args, out_dir):
+    return [args.hmcr, "solve", "cornell", "--oracle", "power", "--threads", "1",
+            "--epsilon", str(args.hmcr_epsilon), "--rays", str(args.rays), "-q",
+            "-o", os.path.join(out_dir, "cornell.vtp")]
+
+
+def timed(command, cwd):
+    """Whole-process wall seconds, CPU seconds and peak resident MB of one run, and its stderr."""
+    r = subprocess.run(["/usr/bin/time", "-f", "TIME %e %U %S %M"] + command, cwd=cwd,
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"{command[0]} failed ({r.returncode}):\n{r.stderr[-2000:]}")
+    wall, user, system, kb = re.findall(r"TIME (\S+) (\S+) (\S+) (\S+)", r.stderr)[-1]
+    return float(wall), float(user) + float(system), int(kb) / 1024, r.stderr
+
+
+def rpk_counts(stderr, patches):
+    """Elements, clusters, surface elements, rays and the final total flux of an rpkCpp run."""
+    e, c, s = (int(v) for v in re.findall(r"(\d+) elements \((\d+) clusters, (\d+) surfaces\)",
+                                          stderr)[-1])
+    rays = int(re.findall(r"Radiance rays: (\d+)", stderr)[-1])
+    flux = re.findall(r"total flux = ([-\d.e+ ]+)", stderr)
+    # The S surface elements are the patches and their descendants; every subdivision makes 4
+    # children, so the leaves are S - (S - patches) / 4.
+    leaves = s - (s - patches) // 4
+    return {"elements": e, "clusters": c, "surface_elements": s, "leaves": leaves, "rays": rays,
+            "total_flux": [float(v) for v in flux[-1].split()] if flux else None,
+            "emitted_flux": [float(v) for v in flux[0].split()] if flux else None}
+
+
+def vtp_array(path, name):
+    """One appended, zlib-compressed array of hmcr's .vtp (docs/design.md §11.4) as a flat list."""
+    with open(path, "rb") as f:
+        data = f.read()
+    head = data[:data.index(b"<AppendedData")].decode()
+    tag = re.search(r'<DataArray type="(\w+)" Name="%s"[^>]*offset="(\d+)"' % name, head)
+    kind, offset = {"Float32": "f", "Float64": "d"}[tag.group(1)], int(tag.group(2))
+    start = data.index(b"_", data.index(b"<AppendedData")) + 1 + offset
+    blocks = struct.unpack_from("<I", data, start)[0]
+    sizes = struct.unpack_from(f"<{3 + blocks}I", data, start)[3:]
+    pos, raw = start + 4 * (3 + blocks), b""
+    for size in sizes:
+        raw += zlib.decompress(data[pos:pos + size])
+        pos += size
+    return struct.unpack(f"<{len(raw) // struct.calcsize(kind)}{kind}", raw)
+
+
+def hmcr_counts(out_dir):
+    """Element and ray counts of hmcr's summary, and its solution's total flux sum(B A), W."""
+    with open(os.path.join(out_dir, "cornell.json")) as f:
+        summary = json.load(f)
+    vtp = os.path.join(out_dir, "cornell.vtp")
+    b, area = vtp_array(vtp, "ElementRadiosity"), vtp_array(vtp, "ElementArea")
+    flux = [sum(b[3 * i + c] * a for i, a in enumerate(area)) for c in range(3)]
+    return {**{k: summary["counts"][k] for k in ("elements", "leaves", "rays")},
+            "emitted_flux": summary["power"]["emitted_w"], "total_flux": flux}
+
+
+def compare(name, commands, cwd, pairs):
+    """Paired, alternated runs of two commands: their medians and ratios."""
+    times = {k: [] for k in commands}
+    ratios, cpu_ratios = [], []
+    order = list(commands)
+    for p in range(pairs):
+        pair = {}
+        for k in (order if p % 2 == 0 else order[::-1]):
+            pair[k] = timed(commands[k], cwd)
+            times[k].append(pair[k])
+        ratios.append(pair[order[0]][0] / pair[order[1]][0])
+        cpu_ratios.append(pair[order[0]][1] / pair[order[1]][1])
+        print(f"  pair {p + 1}: " + ", ".join(f"{k} {pair[k][0]:.2f} s" for k in order),
+              flush=True)
+    med = {k: statistics.median(t[0] for t in v) for k, v in times.items()}
+    cpu = {k: statistics.median(t[1] for t in v) for k, v in times.items()}
+    mem = {k: statistics.median(t[2] for t in v) for k, v in times.items()}
+    a, b = order
+    print(f"{name}: {pairs} pairs; median wall {a} {med[a]:.2f} s (CPU {cpu[a]:.2f} s, "
+          f"{mem[a]:.0f} MB), {b} {med[b]:.2f} s (CPU {cpu[b]:.2f} s, {mem[b]:.0f} MB); "
+          f"ratio of medians {med[a] / med[b]:.3f}, median paired ratio "
+          f"{statistics.median(ratios):.3f} (range {min(ratios):.3f}-{max(ratios):.3f}); "
+          f"CPU: ratio of medians {cpu[a] / cpu[b]:.3f}, median paired ratio "
+          f"{statistics.median(cpu_ratios):.3f} (range {min(cpu_ratios):.3f}-"
+          f"{max(cpu_ratios):.3f})")
+    return {"pairs": [{k: times[k][i][:3] for k in order} for i in range(pairs)],
+            "median_s": med, "median_cpu_s": cpu, "median_peak_mb": mem,
+            "ratio_of_medians": med[a] / med[b], "median_paired_ratio": statistics.median(ratios),
+            "cpu_ratio_of_medians": cpu[a] / cpu[b],
+            "cpu_median_paired_ratio": statistics.median(cpu_ratios)}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--hmcr", default=os.path.join(HERE, "..", "build", "hmcr"))
+    ap.add_argument("--rpk-source", help="rpkCpp's git directory or source folder on this "
+                    "machine (default: download the pinned commit's tarball from GitHub)")
+    ap.add_argument("--rpk-commit", default=RPK_COMMIT)
+    ap.add_argument("--rpk", help="an rpkCpp binary already built (skips the build)")
+    ap.add_argument("--work", help="working folder (default: a temporary one, removed)")
+    ap.add_argument("--pairs", type=int, default=7)
+    ap.add_argument("--clustering", default="oriented,isotropic",
+                    help="rpkCpp's -srr-clustering modes to measure, comma-separated")
+    ap.add_argument("--iterations", type=int, default=6)
+    ap.add_argument("--ray-units", type=int, default=3464,
+                    help="rpkCpp's -srr-ray-units: 3464 shoots hmcr's 2.684 M rays")
+    ap.add_argument("--rpk-epsilon", type=float, default=1.82e-6,
+                    help="rpkCpp's -srr-epsilon: 1.82e-6 gives hmcr's element count")
+    ap.add_argument("--hmcr-epsilon", type=float, default=1.18e-6,
+                    help="hmcr's power epsilon (the bench's: about 19,000 leaves)")
+    ap.add_argument("--rays", type=int, default=2684000)
+    ap.add_argument("--jobs", type=int, default=2, help="build jobs")
+    ap.add_argument("--json", help="write every time and count here")
+    args = ap.parse_args()
+    args.hmcr = os.path.abspath(args.hmcr)
+
+    work = os.path.abspath(args.work) if args.work else tempfile.mkdtemp(prefix="rpk-compare-")
+    os.makedirs(work, exist_ok=True)
+    try:
+        mgf = os.path.join(work, "cornell.mgf")
+        write_mgf(CORNELL_OBJ, mgf)
+        rpk = os.path.abspath(args.rpk) if args.rpk else None
+        if rpk is None:
+            how = fetch_rpk_source(args.rpk_source, args.rpk_commit, os.path.join(work, "rpkCpp"))
+            print(f"building rpkCpp from {how} ...", flush=True)
+            rpk = build_rpk(os.path.join(work, "rpkCpp"), args.jobs)
+        hmcr_out = os.path.join(work, "hmcr")
+        os.makedirs(hmcr_out, exist_ok=True)
+        results = {"machine": os.uname().nodename, "hmcr_command": hmcr_command(args, hmcr_out)}
+
+        timed(hmcr_command(args, hmcr_out), work)
+        results["hmcr_counts"] = hmcr_counts(hmcr_out)
+        print("hmcr:", " ".join(hmcr_command(args, "OUT")), "\n ", results["hmcr_counts"])
+        for clustering in args.clustering.split(","):
+            command = rpk_command(rpk, mgf, args, clustering)
+            counts = rpk_counts(timed(command, work)[3], len(read_obj(CORNELL_OBJ)[1]))
+            print("rpkCpp:", " ".join(["rpk", "cornell.mgf"] + command[2:]), "\n ", counts)
+            results[clustering] = {"rpk_command": command[2:], "rpk_counts": counts,
+                                   **compare(f"hmcr / rpkCpp ({clustering})",
+                                             {"hmcr": hmcr_command(args, hmcr_out),
+                                              "rpkCpp": command}, work, args.pairs)}
+        if args.json:
+            with open(args.json, "w") as f:
+                json.dump(results, f, indent=1)
+    finally:
+        if not args.work:
+            shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
