@@ -7,8 +7,8 @@ SANITIZE ?= OFF
 # Debian 12 packages hmcr builds against (README.md: "Dependencies" says why each is there).
 DEPS := g++ cmake make pkg-config zlib1g-dev libpng-dev libembree-dev libopenmesh-dev libvtk9-dev \
         libeigen3-dev libtbb-dev libexpat1-dev libcli11-dev nlohmann-json3-dev \
-        libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev python3 \
-        libopenmpi-dev openmpi-bin
+        libfmt-dev libgtest-dev libgmock-dev libboost-dev libbenchmark-dev clang libclang-rt-14-dev \
+        python3 libopenmpi-dev openmpi-bin
 
 SANITIZE_BUILD ?= build-sanitize
 
