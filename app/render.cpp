@@ -45,6 +45,7 @@ int run_render(const RenderArgs& a) {
     }
     check_exposure(a.exposure);
     const Scene scene = load_scene_reporting(a.scene, false, SceneUse::solve, a.scene_flags);
+    warn_specular(scene, false, SpecularUse::render);
     check_outputs(a, scene);
     const View& view = find_view(scene, a.view);
     const double exposure = fixed_exposure(a.exposure, view.name);

@@ -118,6 +118,7 @@ int run_meshing_study(StudyArgs& a) {
     }
     validate_study(a.options);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
+    warn_specular(scene, a.quiet, SpecularUse::solve);
     apply_scene_settings(a.flags, scene, a.options.solver);
     prepare_study_output(a.options.output, a.options.reference, scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
