@@ -109,20 +109,24 @@ std::string md_splits(const ErrorSplits& splits, const std::vector<std::string>&
     return out;
 }
 
-std::string md_document(const std::string& scene, const SamplingStudyOptions& o,
+// The document of the cells at one spp.
+std::string md_document(const std::string& scene, const SamplingStudyOptions& o, double spp,
                         const std::vector<std::string>& views,
                         const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
     std::string out = fmt::format("# Sampling study: {}\n\n", scene);
     out += fmt::format(
         "{} samples per pixel (±{}%), {} seeds from {}, path estimator {}, at most {} bounces, "
-        "criteria on {}{}, reference {}. Mean ± "
+        "criteria on {}{}{}, reference {}. Mean ± "
         "standard error over the seeds whose searches succeeded (seeds column). RMSE on the "
         "0–255 scale and PSNR in dB against the reference at its exposure; spp: the mean "
         "reached; rays: traced, the threshold search's included. The best mean of each error "
         "column is in bold.\n\n## Mean over the views ({})\n\n{}\n",
-        o.trace.spp, 100 * o.trace.spp_tolerance, o.seeds, o.trace.seed,
+        spp, 100 * o.trace.spp_tolerance, o.seeds, o.trace.seed,
         estimator_name(o.trace.path.estimator), o.trace.path.max_depth,
         o.display_criteria ? "display values" : "radiance",
+        o.trace.allocation == Allocation::map
+            ? ", adaptive samples allocated from a map of 8 uniform samples per pixel"
+            : "",
         o.trace.fresh ? ", adaptive images from fresh samples" : "", o.reference.string(),
         fmt::join(views, ", "),
         md_table(cells, ""));
@@ -205,16 +209,25 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
 
 void write_sampling_tables(const std::string& scene, const SamplingStudyOptions& o,
                            const std::vector<std::string>& views,
-                           const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+                           const std::vector<SamplingCell>& cells, const SppErrorSplits& splits) {
+    // error_split: by sampler and view, and with several spp values by spp first
     nlohmann::json split_json = nlohmann::json::object();
-    for (const auto& [sampler, by_view] : splits)
-        for (const auto& [view, e] : by_view)
-            split_json[sampler][view] = {{"bias_rmse_p", e.bias}, {"noise_rmse_p", e.noise}};
+    for (const auto& [spp, by_sampler] : splits)
+        for (const auto& [sampler, by_view] : by_sampler)
+            for (const auto& [view, e] : by_view) {
+                const nlohmann::json part = {{"bias_rmse_p", e.bias}, {"noise_rmse_p", e.noise}};
+                if (o.spps.size() == 1) {
+                    split_json[sampler][view] = part;
+                } else {
+                    split_json[fmt::format("{:g}", spp)][sampler][view] = part;
+                }
+            }
     nlohmann::json all = nlohmann::json::array();
     for (const SamplingCell& c : cells) all.push_back(sampling_cell_to_json(c));
     const nlohmann::json table = {{"scene", scene},
                                   {"options",
-                                   {{"spp", o.trace.spp},
+                                   {{"spp", o.spps},
+                                    {"allocation", allocation_name(o.trace.allocation)},
                                     {"spp_tolerance", o.trace.spp_tolerance},
                                     {"samplers", sampler_order(cells)},
                                     {"seeds", o.seeds},
@@ -230,7 +243,16 @@ void write_sampling_tables(const std::string& scene, const SamplingStudyOptions&
                                   {"cells", all}};
     write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
     write_text_atomically(o.output / "table.csv", csv_table(views, cells));
-    write_text_atomically(o.output / "table.md", md_document(scene, o, views, cells, splits));
+    std::string md;
+    for (double spp : o.spps) {
+        std::vector<SamplingCell> at_spp;
+        for (const SamplingCell& c : cells)
+            if (c.spp == spp) at_spp.push_back(c);
+        const auto it = splits.find(spp);
+        md += (md.empty() ? "" : "\n") +
+              md_document(scene, o, spp, views, at_spp, it == splits.end() ? ErrorSplits{} : it->second);
+    }
+    write_text_atomically(o.output / "table.md", md);
 }
 
 }  // namespace hmcr

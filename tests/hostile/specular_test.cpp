@@ -1,4 +1,4 @@
-// Hostile specular materials: each refused in one line
+// Hostile specular materials and the flags of the papers' protocol: each refused in one line
 // `file:line: why` with exit code 2 and nothing written (docs/usage.md#bad-input); and the
 // radiosity commands say once that they absorb specular light.
 #include "tests/hostile/hostile.h"
@@ -54,6 +54,22 @@ TEST_F(Hostile, BadSpecularMgfIsRefusedWithItsLine) {
         refused("solve plates.mgf -o out.vtp", needle);
         refused("trace plates.mgf -o out.png", needle);
     }
+}
+
+TEST_F(Hostile, BadAllocationAndSppListsAreRefused) {
+    plates();
+    refused("trace plates.json -o out.png --sampler kl --allocation maps",
+            "allocation must be refine or map, got 'maps'");
+    accepted("trace-reference plates.json --spp 8 --width 8 -o ref -q");
+    const std::pair<std::string, std::string> cases[] = {
+        {"--spp 16,16", "study: spp 16 is given twice"},
+        {"--spp 16,,32", "empty item in the list"},
+        {"--spp 16,abc", "spp: 'abc' is not a positive number"},
+        {"--spp 0", "spp: '0' is not a positive number"},
+        {"--spp 4", "spp must be in 8..32 for sampler kl"},
+    };
+    for (const auto& [flags, needle] : cases)
+        refused("study plates.json --reference ref --samplers kl -o study " + flags, needle);
 }
 
 // A radiosity command on a scene with mirrors says once that the engine absorbs their light.
