@@ -2,6 +2,7 @@
 #include <fmt/core.h>
 
 #include <memory>
+#include <optional>
 
 #include "app/scene_input.h"
 #include "app/command.h"
@@ -9,6 +10,7 @@
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
 #include "common/output_paths.h"
+#include "common/output_set.h"
 #include "studies/reference.h"
 
 namespace hmcr {
@@ -30,15 +32,20 @@ int run_reference(ReferenceArgs& a, const std::string& command_line) {
     apply_scene_settings(a.flags, scene, a.options.solver);
     const std::filesystem::path dir(a.output);
     refuse_overwriting(reference_files(dir, scene), scene.inputs);
-    prepare_output_dir(dir);
+    // Rank 0 writes: it alone checks, locks and holds the set; every rank learns of a refusal.
+    std::optional<OutputSet> out;
+    together(Ranks::world(), [&] {
+        if (Ranks::world().root()) out.emplace(reference_files(dir, scene), dir);
+    });
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr reference " + scene.name);
     const Reference ref = compute_reference(scene, a.options, progress, Ranks::world());
     if (!Ranks::world().root()) return 0;  // every rank holds the reference; rank 0 writes it
     RunTimings timings;
     timings.total_seconds = ref.seconds;
-    write_reference(dir, scene, ref, a.options,
+    write_reference(*out, dir, scene, ref, a.options,
                     run_summary(scene, ref.solution, timings, command_line,
                                 (dir / "reference.vtp").string()));
+    out->commit();
     if (!a.quiet) {
         const Rgb& bias = ref.truncation.relative;
         fmt::print("{}: reference of {} elements, 2 x {} rays, {:.1f} s; seeds differ by {:.4f} "

@@ -5,6 +5,7 @@
 #include "app/exposure.h"
 #include "app/scene_input.h"
 #include "common/output_paths.h"
+#include "common/output_set.h"
 #include "viz/renderer.h"
 #include "viz/solution_file.h"
 
@@ -20,10 +21,11 @@ struct RenderArgs {
     ExposureChoice exposure;  // fixed, from a reference folder, or from the image
     RenderOptions options;
     SceneFlags scene_flags;
+    bool quiet = false;
 };
 
-// Every file the render reads, and the outputs checked before any work.
-void check_outputs(const RenderArgs& a, const Scene& scene) {
+// Every file the render reads, and the outputs checked (and locked) before any work.
+std::vector<std::filesystem::path> check_outputs(const RenderArgs& a, const Scene& scene) {
     if (std::filesystem::path(a.output).extension() != ".png") {
         throw InputError("output must be a .png file, got " + quote(a.output));
     }
@@ -36,7 +38,7 @@ void check_outputs(const RenderArgs& a, const Scene& scene) {
     std::vector<std::filesystem::path> outputs{a.output};
     if (!a.pfm.empty()) outputs.push_back(a.pfm);
     refuse_overwriting(outputs, inputs);
-    for (const auto& out : outputs) prepare_output_file(out);
+    return outputs;
 }
 
 int run_render(const RenderArgs& a) {
@@ -44,15 +46,16 @@ int run_render(const RenderArgs& a) {
         throw InputError("samples must be in 1..16");
     }
     check_exposure(a.exposure);
-    const Scene scene = load_scene_reporting(a.scene, false, SceneUse::solve, a.scene_flags);
-    warn_specular(scene, false, SpecularUse::render);
-    check_outputs(a, scene);
+    const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
+    warn_specular(scene, a.quiet, SpecularUse::render);
+    OutputSet out(check_outputs(a, scene));
     const View& view = find_view(scene, a.view);
     const double exposure = fixed_exposure(a.exposure, view.name);
     const ShadedMesh mesh = read_solution(a.solution, scene).mesh;
     const Image image = render(mesh, view, a.options);
-    write_png(a.output, image, image_exposure(exposure, image));
-    if (!a.pfm.empty()) write_pfm(a.pfm, image);
+    write_png(out.temp(a.output), image, image_exposure(exposure, image));
+    if (!a.pfm.empty()) write_pfm(out.temp(a.pfm), image);
+    out.commit();
     return 0;
 }
 
@@ -70,6 +73,7 @@ Command render_command(CLI::App& app) {
     cmd->add_option("--samples", a->options.samples_per_axis, "n x n rays per pixel")
         ->capture_default_str();
     add_exposure_flags(*cmd, a->exposure);
+    cmd->add_flag("-q,--quiet", a->quiet, "print only errors");
     return {cmd, [a, cmd] {
                 note_exposure_given(*cmd, a->exposure);
                 return run_render(*a);

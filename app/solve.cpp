@@ -2,6 +2,7 @@
 #include <fmt/core.h>
 
 #include <memory>
+#include <optional>
 
 #include "app/scene_input.h"
 #include "app/command.h"
@@ -10,7 +11,9 @@
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
 #include "common/atomic_file.h"
+#include "common/file_names.h"
 #include "common/output_paths.h"
+#include "common/output_set.h"
 #include "common/stopwatch.h"
 #include "radiosity/budget_search.h"
 #include "viz/paraview_state.h"
@@ -34,8 +37,8 @@ struct SolveArgs {
 };
 
 fs::path output_path(const SolveArgs& args, const Scene& scene) {
-    const fs::path vtp = args.output.empty() ? fs::path("out") / (scene.name + ".vtp")
-                                             : fs::path(args.output);
+    const fs::path vtp =
+        args.output.empty() ? named_file("out", scene.name, ".vtp") : fs::path(args.output);
     if (vtp.extension() != ".vtp") {
         throw InputError("output must be a .vtp file, got " + quote(vtp.string()));
     }
@@ -78,7 +81,11 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     json.replace_extension(".json");
     pvsm.replace_extension(".pvsm");  // ParaView's view of the .vtp (viz/paraview_state.h)
     refuse_overwriting({vtp, json, pvsm}, scene.inputs);
-    prepare_output_file(vtp);
+    // Rank 0 writes: it alone checks, locks and holds the set; every rank learns of a refusal.
+    std::optional<OutputSet> out;
+    together(Ranks::world(), [&] {
+        if (Ranks::world().root()) out.emplace(std::vector<fs::path>{vtp, json, pvsm});
+    });
     const SceneIdentity identity = scene_identity(scene);  // before solve_mesh releases the mesh
     RunTimings timings;
     timings.load_seconds = seconds_since(start);
@@ -93,13 +100,14 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     // Nothing needs the tree after the output: the shading releases it as early as it can.
     const ShadedMesh shaded =
         build_shaded_mesh(std::move(sol.hierarchy), args.crease_degrees);
-    write_solution(vtp, shaded, sol, identity, double(sol.stats.iterations.size()));
-    write_paraview_state(pvsm, vtp, find_view(scene, ""));
+    write_solution(out->temp(vtp), shaded, sol, identity, double(sol.stats.iterations.size()));
+    write_paraview_state(out->temp(pvsm), vtp, find_view(scene, ""));
     timings.output_seconds = seconds_since(t_out);
     timings.total_seconds = seconds_since(start);
     auto summary = run_summary(scene, sol, timings, command_line, vtp.string());
     if (args.budget.leaves > 0) summary["budget"] = budget_json(args.budget, found.probes);
-    write_text_atomically(json, summary.dump(2) + "\n");
+    write_text_atomically(out->temp(json), summary.dump(2) + "\n");
+    out->commit();
     if (!args.quiet) report(scene, sol, timings, vtp, json, pvsm);
     return 0;
 }

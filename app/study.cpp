@@ -83,13 +83,12 @@ void refuse_mixed_flags(const StudyArgs& a, bool sampling) {
 }
 
 // The checks of either kind before any work: the output folder is neither in nor around the
-// reference, and no table replaces an input.
-void prepare_study_output(const std::filesystem::path& out, const std::filesystem::path& reference,
-                          const Scene& scene) {
+// reference, and no table replaces an input. The study itself then checks, makes and locks its
+// folder, and checks every cell's files, before its first cell.
+void refuse_study_output(const std::filesystem::path& out, const std::filesystem::path& reference,
+                         const std::vector<std::filesystem::path>& files, const Scene& scene) {
     refuse_nested_dirs(out, reference);
-    refuse_overwriting({out / "table.json", out / "table.csv", out / "table.md", out / "meshes.pvd"},
-                       scene.inputs);
-    prepare_output_dir(out);
+    refuse_overwriting(files, scene.inputs);
 }
 
 int run_sampling_study_command(StudyArgs& a) {
@@ -106,7 +105,7 @@ int run_sampling_study_command(StudyArgs& a) {
     apply_trace_flags(a.trace_flags, o.trace);
     validate_sampling_study(o);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
-    prepare_study_output(o.output, o.reference, scene);
+    refuse_study_output(o.output, o.reference, sampling_study_output_files(scene, o), scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_sampling_study(scene, o, progress);
     if (!a.quiet) fmt::print("study written to {}\n", o.output.string());
@@ -131,7 +130,8 @@ int run_meshing_study(StudyArgs& a) {
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     warn_specular(scene, a.quiet, SpecularUse::solve);
     apply_scene_settings(a.flags, scene, a.options.solver);
-    prepare_study_output(a.options.output, a.options.reference, scene);
+    refuse_study_output(a.options.output, a.options.reference, study_output_files(a.options),
+                        scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_study(scene, a.options, progress);
     if (!a.quiet) fmt::print("study written to {}\n", a.options.output.string());

@@ -15,6 +15,7 @@
 #include "common/atomic_file.h"
 #include "common/memory.h"
 #include "common/output_paths.h"
+#include "common/output_set.h"
 #include "common/stopwatch.h"
 #include "image/density_map.h"
 
@@ -85,7 +86,7 @@ std::vector<fs::path> outputs(const TraceArgs& a) {
 }
 
 // Every option and output checked before any work: a bad run is refused with nothing written.
-void check_outputs(const TraceArgs& a, const Scene& scene) {
+std::vector<fs::path> check_outputs(const TraceArgs& a, const Scene& scene) {
     if (fs::path(a.output).extension() != ".png") {
         throw InputError("output must be a .png file, got " + quote(a.output));
     }
@@ -96,7 +97,7 @@ void check_outputs(const TraceArgs& a, const Scene& scene) {
     for (const auto& in : exposure_inputs(a.exposure)) inputs.push_back(in);
     const std::vector<fs::path> out = outputs(a);
     refuse_overwriting(out, inputs);
-    for (const auto& file : out) prepare_output_file(file);
+    return out;
 }
 
 int run_trace(TraceArgs& a, const std::string& command_line) {
@@ -105,8 +106,8 @@ int run_trace(TraceArgs& a, const std::string& command_line) {
     check_exposure(a.exposure);
     const ProgressMode mode = progress_mode_for(a.progress, a.quiet);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
-    check_outputs(a, scene);
-    const fs::path png(a.output);
+    OutputSet out(check_outputs(a, scene));
+    const fs::path png(a.output), density = beside(png, "-density", ".png");
     const View view = sized_view(find_view(scene, a.view), a.flags);
     check_trace_memory(a.options, view);
     const double fixed = fixed_exposure(a.exposure, view.name);
@@ -114,11 +115,12 @@ int run_trace(TraceArgs& a, const std::string& command_line) {
     TerminalProgress progress(mode, "hmcr trace " + scene.name);
     const TraceResult r = trace_image(tracer, view, a.options, progress);
     const double exposure = image_exposure(fixed, r.image);
-    write_png(png, r.image, exposure);
-    write_png(beside(png, "-density", ".png"), density_map(r.samples, view.width, view.height));
-    if (!a.pfm.empty()) write_pfm(a.pfm, r.image);
-    write_text_atomically(beside(png, "", ".json"),
+    write_png(out.temp(png), r.image, exposure);
+    write_png(out.temp(density), density_map(r.samples, view.width, view.height));
+    if (!a.pfm.empty()) write_pfm(out.temp(a.pfm), r.image);
+    write_text_atomically(out.temp(beside(png, "", ".json")),
                           summary(a, scene, view, r, exposure, command_line).dump(2) + "\n");
+    out.commit();
     if (!a.quiet) {
         fmt::print("{} {}: {} at {:.2f} samples per pixel, {} rays, {:.1f} s -> {}\n", scene.name,
                    view.name, a.options.sampler->name(), r.counts().mean, r.rays_traced, r.seconds,

@@ -9,6 +9,7 @@
 #include "app/terminal_progress.h"
 #include "app/trace_flags.h"
 #include "common/output_paths.h"
+#include "common/output_set.h"
 #include "studies/traced_reference.h"
 
 namespace hmcr {
@@ -33,13 +34,14 @@ int run_trace_reference(TraceReferenceArgs& a, const std::string& command_line) 
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     const std::filesystem::path dir(a.output);
     refuse_overwriting(traced_reference_files(dir, scene), scene.inputs);
-    prepare_output_dir(dir);
+    OutputSet out(traced_reference_files(dir, scene), dir);
     std::vector<View> views;
     for (const View& v : scene.views) views.push_back(sized_view(v, a.flags));
     TerminalProgress progress(progress_mode_for("auto", a.quiet),
                               "hmcr trace-reference " + scene.name);
     const TracedReference ref = compute_traced_reference(scene, views, a.options, progress);
-    write_traced_reference(a.output, scene, ref, a.options, command_line);
+    write_traced_reference(out, dir, scene, ref, a.options, command_line);
+    out.commit();
     if (!a.quiet) {
         fmt::print("{}: {} views at {} samples per pixel, {:.1f} s -> {}\n", scene.name,
                    views.size(), a.options.spp, ref.seconds, a.output);

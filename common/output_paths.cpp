@@ -1,14 +1,13 @@
 #include "common/output_paths.h"
 
-#include <fcntl.h>
-#include <unistd.h>
+#include <fmt/format.h>
 
-#include <cerrno>
-#include <cstring>
+#include <climits>
 
 #include <algorithm>
 
 #include "common/error.h"
+#include "common/file_names.h"
 
 namespace hmcr {
 namespace {
@@ -17,21 +16,6 @@ namespace fs = std::filesystem;
 
 [[noreturn]] void cannot_write(const fs::path& path, const std::string& why) {
     throw InputError("cannot write " + path.string(), why);
-}
-
-void require_writable_dir(const fs::path& dir, const fs::path& target) {
-    std::error_code ec;
-    const fs::path d = dir.empty() ? fs::path(".") : dir;
-    fs::create_directories(d, ec);
-    if (!fs::is_directory(d, ec)) {
-        cannot_write(target, (ec ? ec.message() : "not a folder") + ": " + d.string());
-    }
-    // A file made and removed: the one test that also holds for root, /proc and full quotas.
-    const fs::path probe = d / (".hmcr-probe-" + std::to_string(::getpid()));
-    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
-    if (fd < 0) cannot_write(target, std::strerror(errno));
-    ::close(fd);
-    fs::remove(probe, ec);
 }
 
 // One spelling for one file: absolute, links resolved as far as the path exists.
@@ -55,19 +39,33 @@ bool within(const fs::path& inner, const fs::path& outer) {
 
 }  // namespace
 
-void prepare_output_file(const fs::path& file) {
+void check_output_file(const fs::path& file) {
+    const std::size_t name = file.filename().native().size();
+    if (name == 0 || file.filename() == "." || file.filename() == "..") {
+        cannot_write(file, "it names a folder, not a file");
+    }
+    if (name > kMaxFileNameBytes) {
+        cannot_write(file, fmt::format("its name is {} bytes long, more than {}", name,
+                                       kMaxFileNameBytes));
+    }
+    if (file.native().size() >= PATH_MAX) {
+        cannot_write(file, fmt::format("its path is longer than {} bytes", PATH_MAX - 1));
+    }
     std::error_code ec;
     if (fs::is_directory(file, ec)) cannot_write(file, "it is a folder");
     if (fs::exists(file, ec) && !fs::is_regular_file(file, ec)) {
         cannot_write(file, "it is not a regular file");
     }
-    require_writable_dir(file.parent_path(), file);
 }
 
-void prepare_output_dir(const fs::path& dir) {
+void check_output_folder(const fs::path& folder) {
+    if (folder.native().size() >= PATH_MAX) {
+        cannot_write(folder, fmt::format("its path is longer than {} bytes", PATH_MAX - 1));
+    }
     std::error_code ec;
-    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) cannot_write(dir, "it is not a folder");
-    require_writable_dir(dir, dir);
+    if (fs::exists(folder, ec) && !fs::is_directory(folder, ec)) {
+        cannot_write(folder, "it is not a folder");
+    }
 }
 
 void refuse_overwriting(const std::vector<fs::path>& outputs, const std::vector<fs::path>& inputs) {

@@ -7,11 +7,13 @@
 
 namespace hmcr {
 
-// Creates the folder the file goes into and checks that the file can be written there (it is
-// not a folder, the folder is writable). Throws InputError "cannot write PATH: why".
-void prepare_output_file(const std::filesystem::path& file);
-// The same for an output folder (an existing file of that name is an error).
-void prepare_output_dir(const std::filesystem::path& dir);
+// Checks, without touching the disk, that a file can be put at `file`: it names a file, of at
+// most 255 bytes (a path of at most 4095), and is neither a folder nor a device, FIFO or
+// socket. Throws InputError "cannot write PATH: why". (output_set.h then makes its folder and
+// proves it writable.)
+void check_output_file(const std::filesystem::path& file);
+// The same for an output folder: an existing file of that name is an error.
+void check_output_folder(const std::filesystem::path& folder);
 
 // Throws InputError when an output is one of the inputs or another output (the same file by any
 // path, link or hard link).

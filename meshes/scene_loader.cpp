@@ -5,7 +5,8 @@
 //     "mesh": "cornell.obj",              required; relative to the JSON file; .obj or .mgf
 //     "description": "...",               optional string
 //     "views": [                          optional; each view:
-//       {"name": "camera",                  required, unique
+//       {"name": "camera",                  required, unique; it names files (views/camera.pfm),
+//                                           so common/file_names.h's characters, 1-64 bytes
 //        "position": [x, y, z],             required, metres
 //        "look_at": [x, y, z],              required, != position
 //        "up": [x, y, z],                   optional, default [0, 1, 0]; not along the view
@@ -33,6 +34,7 @@
 #include <numbers>
 #include <set>
 
+#include "common/file_names.h"
 #include "common/text_file.h"
 #include "meshes/mgf_reader.h"
 #include "meshes/obj_reader.h"
@@ -116,6 +118,9 @@ View parse_view(const json& j, const std::string& file, std::size_t index) {
     if (!j.contains("name") || !j["name"].is_string()) fail(where, "needs a \"name\" string");
     View v;
     v.name = j["name"].get<std::string>();
+    if (const auto why = name_problem(v.name)) {
+        fail(where, fmt::format("name {} cannot name a file: {}", quote(v.name), *why));
+    }
     where += fmt::format(" ('{}')", v.name);
     for (const char* key : {"position", "look_at"}) {
         if (!j.contains(key)) fail(where, fmt::format("needs \"{}\"", key));

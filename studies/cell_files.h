@@ -1,11 +1,12 @@
 // What the two kinds of study (studies/study.h: oracles at element budgets; studies/
 // sampling_study.h: pixel samplers at one spp) share about their cells: a cell's notes within
-// the study's progress, the rule for a cell file left by an earlier run, and the loop over the
-// cells.
+// the study's progress, the limits on their number and seeds, the rule for a cell file left by
+// an earlier run, and the loop over the cells.
 #pragma once
 
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -15,6 +16,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/interrupt.h"
+#include "common/output_paths.h"
 #include "common/progress.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
@@ -35,6 +37,15 @@ private:
     std::string m_prefix;
 };
 
+// The most cells a study may have (oracles x budgets x seeds, or samplers x seeds): each is
+// at least one solve or image, and the study holds every cell's result for its tables
+// (docs/usage.md#bad-input).
+inline constexpr std::uint64_t kMaxStudyCells = 10000;
+
+// Throws InputError when a study of `cells` cells = `per_seed` x `seeds` would pass
+// kMaxStudyCells, or its seeds first_seed .. first_seed + seeds - 1 would pass 2^64 - 1.
+void check_study_size(std::uint64_t per_seed, int seeds, std::uint64_t first_seed);
+
 // "rays is 200000 now": the settings that differ between a cell file and this run.
 std::string settings_difference(const nlohmann::json& old_settings, const nlohmann::json& now);
 
@@ -53,7 +64,8 @@ struct CellFileRule {
 template <class Cell>
 std::optional<Cell> read_previous_cell(const std::filesystem::path& file, const CellFileRule<Cell>& rule,
                                   Progress& notes) {
-    if (!std::filesystem::exists(file)) return std::nullopt;
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) return std::nullopt;
     Cell cell;
     try {
         cell = read_json_file(file, rule.parse);
@@ -85,20 +97,31 @@ struct CellLoop {
     std::function<nlohmann::json(const Cell&)> to_json;
     std::function<Cell(const nlohmann::json&)> from_json;
     std::function<std::filesystem::path(std::size_t)> file;
+    std::function<std::vector<std::filesystem::path>(std::size_t)> outputs;  // file() and more
     std::function<std::string(std::size_t)> where;      // "[3/21] CELL"
     std::function<std::string(const Cell&)> outcome;    // "done", "failed", ...
 };
 
-// Every earlier cell file is read before anything is computed, so that a refusal loses no work;
-// a usable one is skipped, the others are computed, written atomically and taken back as a
-// resumed run would read them. A note after each cell: its outcome, the time elapsed and the
-// time left from the cells computed so far. Throws Interrupted between cells after a signal.
+// One cell, before any is computed: its outputs checked (common/output_paths.h: none a folder, a
+// device or a name too long) and its earlier file read (CellLoop::previous), so that a refusal
+// loses no work. Throws InputError for the first output that cannot be written.
+template <class Cell>
+std::optional<Cell> check_cell(const CellLoop<Cell>& loop, std::size_t i) {
+    for (const std::filesystem::path& file : loop.outputs(i)) check_output_file(file);
+    return loop.previous(i);
+}
+
+// Every cell is checked first (check_cell); a usable earlier one is skipped, the others are
+// computed, written atomically and taken back as a resumed run would read them. A note after
+// each cell: its outcome, the time elapsed and the time left from the cells computed so far.
+// Throws Interrupted between cells after a signal.
 template <class Cell>
 std::vector<Cell> run_cells(const CellLoop<Cell>& loop, Progress& progress) {
     std::vector<std::optional<Cell>> previous;
     std::size_t to_compute = 0, computed = 0;
     for (std::size_t i = 0; i < loop.count; ++i) {
-        previous.push_back(loop.previous(i));
+        throw_if_interrupted();
+        previous.push_back(check_cell(loop, i));
         to_compute += previous.back() ? 0 : 1;
     }
     const auto start = std::chrono::steady_clock::now();

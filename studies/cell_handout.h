@@ -33,7 +33,8 @@ std::vector<Cell> hand_out_cells(const CellLoop<Cell>& loop, Progress& progress,
     std::vector<std::size_t> todo;
     try {
         for (std::size_t i = 0; i < loop.count; ++i) {
-            cells[i] = loop.previous(i);
+            throw_if_interrupted();
+            cells[i] = check_cell(loop, i);
             if (!cells[i]) todo.push_back(i);
         }
     } catch (...) {

@@ -5,10 +5,11 @@
 #include <chrono>
 #include <cmath>
 
+#include "common/atomic_file.h"
+#include "common/file_names.h"
 #include "common/json_fields.h"
 #include "common/rgb_json.h"
 #include "common/text_file.h"
-#include "common/atomic_file.h"
 #include "meshes/patch_mesh.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
@@ -76,21 +77,21 @@ std::vector<std::filesystem::path> reference_files(const std::filesystem::path& 
                                                    const Scene& scene) {
     std::vector<std::filesystem::path> files{dir / "reference.vtp", dir / "reference.json"};
     for (const View& v : scene.views) {
-        files.push_back(dir / "views" / (v.name + ".pfm"));
-        files.push_back(dir / "views" / (v.name + ".png"));
+        files.push_back(named_file(dir / "views", v.name, ".pfm"));
+        files.push_back(named_file(dir / "views", v.name, ".png"));
     }
     return files;
 }
 
-void write_reference(const std::filesystem::path& dir, const Scene& scene,
+void write_reference(OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
                      const Reference& ref, const ReferenceOptions& o, nlohmann::json summary) {
     const SolveStats& st = ref.solution.stats;
-    write_solution(dir / "reference.vtp", ref.mesh, ref.solution, scene_identity(scene),
+    write_solution(out.temp(dir / "reference.vtp"), ref.mesh, ref.solution, scene_identity(scene),
                    double(st.iterations.size()));
     nlohmann::json views = nlohmann::json::object(), errors = nlohmann::json::object();
     for (const auto& [name, view] : ref.views) {
-        write_pfm(dir / "views" / (name + ".pfm"), view.image);
-        write_png(dir / "views" / (name + ".png"), view.image, view.exposure);
+        write_pfm(out.temp(named_file(dir / "views", name, ".pfm")), view.image);
+        write_png(out.temp(named_file(dir / "views", name, ".png")), view.image, view.exposure);
         views[name] = {{"exposure", view.exposure}};
         errors[name] = ref.view_errors.at(name);
     }
@@ -117,7 +118,7 @@ void write_reference(const std::filesystem::path& dir, const Scene& scene,
           {"seed_difference", rgb_json(ref.seed_difference)}}},
         {"seconds", ref.seconds},
         {"scene", scene.name}};
-    write_text_atomically(dir / "reference.json", summary.dump(2) + "\n");
+    write_text_atomically(out.temp(dir / "reference.json"), summary.dump(2) + "\n");
 }
 
 std::map<std::string, double> read_reference_exposures(const std::filesystem::path& dir) {
@@ -126,6 +127,7 @@ std::map<std::string, double> read_reference_exposures(const std::filesystem::pa
         const std::string views = "reference.views";
         const nlohmann::json& all = json_object(json_member(j, {"reference", "views"}), views);
         for (const auto& [view, v] : all.items()) {
+            check_name(view, "view");  // as a scene file's views are
             const std::string path = json_path(views, view);
             const double e = json_number(json_member(v, {"exposure"}, path), path + ".exposure");
             if (!(e > 0 && std::isfinite(e))) {

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/output_set.h"
 #include "common/progress.h"
 #include "meshes/scene.h"
 #include "radiosity/solver.h"
@@ -77,8 +78,9 @@ ObjectErrorOptions reflected_error_options(const PatchMesh& mesh);
 std::vector<std::filesystem::path> reference_files(const std::filesystem::path& dir,
                                                    const Scene& scene);
 
-// Writes the folder described above (every file atomically).
-void write_reference(const std::filesystem::path& dir, const Scene& scene,
+// Writes the folder described above into `out`, an OutputSet of reference_files(dir, scene)
+// (common/output_set.h), which the caller commits.
+void write_reference(OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
                      const Reference& reference, const ReferenceOptions& options,
                      nlohmann::json summary);
 

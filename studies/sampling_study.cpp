@@ -7,7 +7,9 @@
 #include <optional>
 #include <memory>
 
+#include "common/file_names.h"
 #include "common/hash.h"
+#include "common/output_set.h"
 #include "common/error.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
@@ -32,13 +34,14 @@ void validate(const SamplingStudyOptions& o) {
         }
     }
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
-    if (o.output.empty()) throw InputError("study: no output folder given");
     if (o.spps.empty()) throw InputError("study: no spp given");
     for (auto it = o.spps.begin(); it != o.spps.end(); ++it) {
         if (std::find(o.spps.begin(), it, *it) != it) {
             throw InputError(fmt::format("study: spp {} is given twice", *it));
         }
     }
+    check_study_size(std::uint64_t(o.samplers.size()) * o.spps.size(), o.seeds, o.trace.seed);
+    if (o.output.empty()) throw InputError("study: no output folder given");
     for (double spp : o.spps)
         for (const Criterion* s : o.samplers) {
             TraceOptions t = o.trace;
@@ -46,6 +49,13 @@ void validate(const SamplingStudyOptions& o) {
             t.spp = spp;
             validate_trace_options(t);  // the spp target each sampler can reach
         }
+}
+
+// OUT/figures/VIEW-KIND.png, or VIEW-sppN-KIND.png in a study of several spp values.
+fs::path figure_file(const SamplingStudyOptions& o, const View& view, double spp,
+                     const char* kind) {
+    const std::string stem = o.spps.size() == 1 ? view.name : fmt::format("{}-spp{:g}", view.name, spp);
+    return named_file(o.output / "figures", stem + "-" + kind, ".png");
 }
 
 struct CellTask {
@@ -61,13 +71,15 @@ public:
     void run();
 
 private:
-    fs::path file(const std::string& folder, const std::string& name) const {
-        return m_options.output / folder / name;
+    // OUT/FOLDER/STEM.EXTENSION, the stem a cell's name, CELL-VIEW or a view's.
+    fs::path file(const char* folder, const std::string& stem, const char* extension) const {
+        return named_file(m_options.output / folder, stem, extension);
     }
+    std::vector<fs::path> outputs(std::size_t index) const;
     std::optional<SamplingCell> previous_cell(std::size_t index);
     SamplingCell compute(std::size_t index);
     SamplingView trace_view(const CellTask& t, const View& view, Progress& notes);
-    void write_figures(const View& view, double spp) const;
+    void write_figures(OutputSet& out, const View& view, double spp) const;
     SppErrorSplits error_splits(const std::vector<SamplingCell>& cells) const;
     std::string where(std::size_t i) const {
         return fmt::format("[{}/{}] {}", i + 1, m_tasks.size(), m_tasks[i].name);
@@ -81,6 +93,7 @@ private:
     std::map<std::string, TracedView> m_reference;
     std::map<std::string, Image8> m_reference8;  // quantised at the view's exposure
     std::unique_ptr<PathTracer> m_tracer;
+    std::optional<OutputSet> m_tables;  // rank 0's
 };
 
 SamplingStudy::SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, Progress& progress)
@@ -93,6 +106,13 @@ SamplingStudy::SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, 
                 m_tasks.push_back({s, spp, seed,
                                    sampling_cell_name(scene.name, std::string(s->name()), spp, seed)});
             }
+    // Rank 0 writes the tables and figures: it alone checks, locks and holds them, before any
+    // work; every rank learns of a refusal.
+    together(Ranks::world(), [&] {
+        if (Ranks::world().root()) {
+            m_tables.emplace(sampling_study_output_files(scene, o), o.output);
+        }
+    });
     m_settings = sampling_study_settings(scene, o);
 }
 
@@ -107,7 +127,18 @@ std::optional<SamplingCell> SamplingStudy::previous_cell(std::size_t index) {
     rule.settings = m_settings;
     rule.redo_other_settings = m_options.redo_other_settings;
     CellNotes notes(m_progress, where(index) + ": ");
-    return read_previous_cell(file("cells", t.name + ".json"), rule, notes);
+    return read_previous_cell(file("cells", t.name, ".json"), rule, notes);
+}
+
+// Every file a cell writes, for the checks before any cell is computed.
+std::vector<fs::path> SamplingStudy::outputs(std::size_t index) const {
+    const CellTask& t = m_tasks[index];
+    std::vector<fs::path> files{file("cells", t.name, ".json")};
+    for (const View& v : m_scene.views) {
+        files.push_back(file("images", t.name + "-" + v.name, ".png"));
+        files.push_back(file("density", t.name + "-" + v.name, ".png"));
+    }
+    return files;
 }
 
 void SamplingStudy::run() {
@@ -131,7 +162,8 @@ void SamplingStudy::run() {
     loop.compute = [this](std::size_t i) { return compute(i); };
     loop.to_json = sampling_cell_to_json;
     loop.from_json = sampling_cell_from_json;
-    loop.file = [this](std::size_t i) { return file("cells", m_tasks[i].name + ".json"); };
+    loop.file = [this](std::size_t i) { return file("cells", m_tasks[i].name, ".json"); };
+    loop.outputs = [this](std::size_t i) { return outputs(i); };
     loop.where = [this](std::size_t i) { return where(i); };
     loop.outcome = [](const SamplingCell& c) { return c.status; };
     const std::vector<SamplingCell> cells = run_cells_on(Ranks::world(), loop, m_progress);
@@ -139,9 +171,10 @@ void SamplingStudy::run() {
     std::vector<std::string> views;
     for (const View& v : m_scene.views) {
         views.push_back(v.name);
-        for (double spp : m_options.spps) write_figures(v, spp);
+        for (double spp : m_options.spps) write_figures(*m_tables, v, spp);
     }
-    write_sampling_tables(m_scene.name, m_options, views, cells, error_splits(cells));
+    write_sampling_tables(*m_tables, m_scene.name, m_options, views, cells, error_splits(cells));
+    m_tables->commit();
 }
 
 SppErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cells) const {
@@ -153,8 +186,8 @@ SppErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cell
                 std::vector<Image8> images;
                 for (const SamplingCell& c : cells) {
                     const fs::path png = file(
-                        "images",
-                        sampling_cell_name(c.scene, c.sampler, c.spp, c.seed) + "-" + v.name + ".png");
+                        "images", sampling_cell_name(c.scene, c.sampler, c.spp, c.seed) + "-" + v.name,
+                        ".png");
                     if (c.sampler == s && c.spp == spp && c.ok() && fs::exists(png))
                         images.push_back(read_png(png));
                 }
@@ -198,9 +231,9 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
     if (m_options.display_criteria) o.criterion_exposure = ref.exposure;
     const TraceResult r = trace_image(*m_tracer, v, o, notes);
     const Image8 image = quantise(r.image, ref.exposure);
-    const std::string name = t.name + "-" + v.name + ".png";
-    write_png(file("images", name), image);
-    write_png(file("density", name), density_map(r.samples, v.width, v.height));
+    const std::string name = t.name + "-" + v.name;
+    write_png(file("images", name, ".png"), image);
+    write_png(file("density", name, ".png"), density_map(r.samples, v.width, v.height));
     const SampleCounts c = r.counts();
     return {image_errors(image, m_reference8.at(v.name)),
             c.mean,
@@ -213,27 +246,39 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
 
 // The first seed's images and density maps of every sampler at one spp (a white tile where a
 // cell failed).
-void SamplingStudy::write_figures(const View& view, double spp) const {
+void SamplingStudy::write_figures(OutputSet& out, const View& view, double spp) const {
     const Image8& ref = m_reference8.at(view.name);
     std::vector<Image8> images{ref}, maps;
     for (const Criterion* sampler : m_options.samplers) {
         const std::string name =
-            sampling_cell_name(m_scene.name, std::string(sampler->name()), spp, m_options.trace.seed) + "-" +
-            view.name + ".png";
-        const bool ok = fs::exists(file("images", name)) && fs::exists(file("density", name));
+            sampling_cell_name(m_scene.name, std::string(sampler->name()), spp, m_options.trace.seed) +
+            "-" + view.name;
+        const fs::path image = file("images", name, ".png"), map = file("density", name, ".png");
+        const bool ok = fs::exists(image) && fs::exists(map);
         Image8 blank(ref.width, ref.height);
         for (Srgb8& p : blank.pixels) p = {255, 255, 255};
-        images.push_back(ok ? read_png(file("images", name)) : blank);
-        maps.push_back(ok ? read_png(file("density", name)) : blank);
+        images.push_back(ok ? read_png(image) : blank);
+        maps.push_back(ok ? read_png(map) : blank);
     }
     const int shrink = ref.width >= 128 ? 2 : 1;
-    const std::string prefix =
-        m_options.spps.size() == 1 ? view.name : fmt::format("{}-spp{:g}", view.name, spp);
-    write_png(file("figures", prefix + "-images.png"), montage(images, 4, shrink));
-    write_png(file("figures", prefix + "-density.png"), montage(maps, 4, shrink));
+    write_png(out.temp(figure_file(m_options, view, spp, "images")), montage(images, 4, shrink));
+    write_png(out.temp(figure_file(m_options, view, spp, "density")), montage(maps, 4, shrink));
 }
 
 }  // namespace
+
+std::vector<fs::path> sampling_study_output_files(const Scene& scene,
+                                                  const SamplingStudyOptions& o) {
+    std::vector<fs::path> files{o.output / "table.json", o.output / "table.csv",
+                                o.output / "table.md"};
+    for (const View& v : scene.views) {
+        for (double spp : o.spps) {
+            files.push_back(figure_file(o, v, spp, "images"));
+            files.push_back(figure_file(o, v, spp, "density"));
+        }
+    }
+    return files;
+}
 
 std::string sampling_cell_name(const std::string& scene, const std::string& sampler, double spp,
                                std::uint64_t seed) {

@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "common/output_set.h"
 #include "common/progress.h"
 #include "meshes/scene.h"
 #include "studies/metrics.h"
@@ -109,8 +110,15 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j);
 using ErrorSplits = std::map<std::string, std::map<std::string, ErrorSplit>>;
 using SppErrorSplits = std::map<double, ErrorSplits>;
 
-// table.json, table.csv and table.md, from every cell of the study in order.
-void write_sampling_tables(const std::string& scene, const SamplingStudyOptions& options,
+// The files a sampling study writes at its end, once (its tables and figures): checked and
+// locked before any cell, written as one set (common/output_set.h).
+std::vector<std::filesystem::path> sampling_study_output_files(const Scene& scene,
+                                                               const SamplingStudyOptions& options);
+
+// table.json, table.csv and table.md, from every cell of the study in order, into `out`, the set
+// of sampling_study_output_files().
+void write_sampling_tables(OutputSet& out, const std::string& scene,
+                           const SamplingStudyOptions& options,
                            const std::vector<std::string>& views,
                            const std::vector<SamplingCell>& cells,
                            const SppErrorSplits& splits = {});

@@ -174,13 +174,14 @@ nlohmann::json view_to_json(const SamplingView& v) {
 }
 
 SamplingView view_from_json(const nlohmann::json& j) {
+    constexpr std::uint32_t kMaxSpp = std::numeric_limits<std::uint32_t>::max();
     return {j.at("errors").get<ImageErrors>(),
-            json_number(j, "spp", kNaN),
-            j.at("min_spp").get<std::uint32_t>(),
-            j.at("max_spp").get<std::uint32_t>(),
-            json_number(j, "threshold", kNaN),
-            j.at("rays").get<std::uint64_t>(),
-            json_number(j, "seconds", kNaN)};
+            json_non_negative(j, "spp", kNaN),
+            std::uint32_t(json_count(j, "min_spp", kMaxSpp)),
+            std::uint32_t(json_count(j, "max_spp", kMaxSpp)),
+            json_non_negative(j, "threshold", kNaN),
+            json_count(j, "rays"),
+            json_non_negative(j, "seconds", kNaN)};
 }
 
 }  // namespace
@@ -198,16 +199,20 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
     c.scene = j.at("scene").get<std::string>();
     c.sampler = j.at("sampler").get<std::string>();
     c.spp = j.at("spp").get<double>();
-    c.seed = j.at("seed").get<std::uint64_t>();
+    if (!(c.spp > 0 && std::isfinite(c.spp))) {
+        throw InputError(fmt::format("spp: {} is not a positive number", c.spp));
+    }
+    c.seed = json_count(j, "seed");
     c.settings = j.value("settings", nlohmann::json());
-    c.status = j.at("status").get<std::string>();
+    c.status = json_status(j);
     c.message = j.value("message", "");
     for (const auto& [name, v] : j.at("views").items()) c.views[name] = view_from_json(v);
-    c.seconds = json_number(j, "seconds", kNaN);
+    c.seconds = json_non_negative(j, "seconds", kNaN);
     return c;
 }
 
-void write_sampling_tables(const std::string& scene, const SamplingStudyOptions& o,
+void write_sampling_tables(OutputSet& out, const std::string& scene,
+                           const SamplingStudyOptions& o,
                            const std::vector<std::string>& views,
                            const std::vector<SamplingCell>& cells, const SppErrorSplits& splits) {
     // error_split: by sampler and view, and with several spp values by spp first
@@ -241,8 +246,8 @@ void write_sampling_tables(const std::string& scene, const SamplingStudyOptions&
                                   {"views", views},
                                   {"error_split", split_json},
                                   {"cells", all}};
-    write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
-    write_text_atomically(o.output / "table.csv", csv_table(views, cells));
+    write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
+    write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));
     std::string md;
     for (double spp : o.spps) {
         std::vector<SamplingCell> at_spp;
@@ -252,7 +257,7 @@ void write_sampling_tables(const std::string& scene, const SamplingStudyOptions&
         md += (md.empty() ? "" : "\n") +
               md_document(scene, o, spp, views, at_spp, it == splits.end() ? ErrorSplits{} : it->second);
     }
-    write_text_atomically(o.output / "table.md", md);
+    write_text_atomically(out.temp(o.output / "table.md"), md);
 }
 
 }  // namespace hmcr

@@ -15,7 +15,9 @@
 #include "radiosity/solver_settings.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
+#include "common/file_names.h"
 #include "common/hash.h"
+#include "common/output_set.h"
 #include "studies/cell_handout.h"
 #include "studies/reference.h"
 #include "studies/traced_reference.h"
@@ -62,6 +64,7 @@ void validate(const StudyOptions& o) {
     if (o.budgets.empty()) throw InputError("study: no budget given");
     if (o.oracles.empty()) throw InputError("study: no oracle given");
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    check_study_size(std::uint64_t(o.budgets.size()) * o.oracles.size(), o.seeds, o.solver.seed);
     refuse_repeats(o.budgets, "budget");
     std::vector<std::string_view> names;
     for (const Oracle* oracle : o.oracles) names.push_back(oracle->name());
@@ -98,6 +101,11 @@ public:
                     m_tasks.push_back({oracle, b, seed,
                                        cell_name(m_scene.name, std::string(oracle->name()), b, seed)});
                 }
+        // Rank 0 writes the tables: it alone checks, locks and holds them, before any work;
+        // every rank learns of a refusal.
+        together(Ranks::world(), [&] {
+            if (Ranks::world().root()) m_tables.emplace(study_output_files(o), o.output);
+        });
         m_error_options = reflected_error_options(m_scene.mesh);
         m_settings = study_settings(m_scene, m_options);
     }
@@ -107,12 +115,21 @@ public:
 private:
     std::optional<CellResult> previous_cell(std::size_t index);
     std::filesystem::path cell_file(const CellTask& t) const {
-        return m_options.output / "cells" / (t.name + ".json");
+        return named_file(m_options.output / "cells", t.name, ".json");
     }
+    // NAME.vtp and NAME-VIEW.png of a cell's solution (NAME: the cell's name) or of its frozen
+    // re-solve (NAME-mesh).
+    std::filesystem::path mesh_file(const std::string& name) const {
+        return named_file(m_options.output / "meshes", name, ".vtp");
+    }
+    std::filesystem::path image_file(const std::string& name, const View& view) const {
+        return named_file(m_options.output / "images", name + "-" + view.name, ".png");
+    }
+    std::vector<std::filesystem::path> outputs(std::size_t index) const;
     CellResult compute(std::size_t index);
     ObjectError measure(const Solution& solution, const CellTask& t, const std::string& name,
                         std::map<std::string, ImageErrors>& views);
-    void write_mesh_collection() const;
+    void write_mesh_collection(OutputSet& out) const;
     std::string where(std::size_t index) const;
 
     const StudyOptions& m_options;
@@ -122,6 +139,7 @@ private:
     ObjectErrorOptions m_error_options;
     nlohmann::json m_settings;
     StudyReference m_reference;
+    std::optional<OutputSet> m_tables;  // rank 0's
 };
 
 std::string StudyRunner::where(std::size_t index) const {
@@ -142,6 +160,19 @@ std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
     return read_previous_cell<CellResult>(cell_file(t), rule, notes);
 }
 
+// Every file a cell writes, for the checks before any cell is computed.
+std::vector<std::filesystem::path> StudyRunner::outputs(std::size_t index) const {
+    const CellTask& t = m_tasks[index];
+    std::vector<std::string> names{t.name};
+    if (cell_mesh_rays(m_options, t.budget) > 0) names.push_back(t.name + "-mesh");
+    std::vector<std::filesystem::path> files{cell_file(t)};
+    for (const std::string& name : names) {
+        files.push_back(mesh_file(name));
+        for (const View& v : m_scene.views) files.push_back(image_file(name, v));
+    }
+    return files;
+}
+
 void StudyRunner::run() {
     m_reference = load_reference(m_options.reference, m_scene);
     CellLoop<CellResult> loop;
@@ -151,6 +182,7 @@ void StudyRunner::run() {
     loop.to_json = cell_to_json;
     loop.from_json = cell_from_json;
     loop.file = [this](std::size_t i) { return cell_file(m_tasks[i]); };
+    loop.outputs = [this](std::size_t i) { return outputs(i); };
     loop.where = [this](std::size_t i) { return where(i); };
     loop.outcome = [](const CellResult& c) {
         return c.ok() ? "done" : "budget not reached, recorded as failed";
@@ -159,21 +191,22 @@ void StudyRunner::run() {
     if (!Ranks::world().root()) return;  // rank 0 writes the tables
     std::vector<std::string> views;
     for (const View& v : m_scene.views) views.push_back(v.name);
-    write_study_tables(m_scene.name, m_options, views, cells);
-    write_mesh_collection();
+    write_study_tables(*m_tables, m_scene.name, m_options, views, cells);
+    write_mesh_collection(*m_tables);
+    m_tables->commit();
 }
 
 // meshes.pvd: every cell's mesh as one time step, to step through them in one ParaView session.
-void StudyRunner::write_mesh_collection() const {
+void StudyRunner::write_mesh_collection(OutputSet& out) const {
     std::vector<CollectionEntry> entries;
     for (const CellTask& t : m_tasks) {
-        const std::filesystem::path mesh = std::filesystem::path("meshes") / (t.name + ".vtp");
+        const std::filesystem::path mesh = mesh_file(t.name);
         std::error_code ec;
-        if (std::filesystem::is_regular_file(m_options.output / mesh, ec)) {
-            entries.push_back({mesh, t.name});
+        if (std::filesystem::is_regular_file(mesh, ec)) {
+            entries.push_back({std::filesystem::path("meshes") / mesh.filename(), t.name});
         }
     }
-    write_paraview_collection(m_options.output / "meshes.pvd", entries);
+    write_paraview_collection(out.temp(m_options.output / "meshes.pvd"), entries);
 }
 
 CellResult StudyRunner::compute(std::size_t index) {
@@ -220,9 +253,8 @@ CellResult StudyRunner::compute(std::size_t index) {
 ObjectError StudyRunner::measure(const Solution& solution, const CellTask& t,
                                  const std::string& name,
                                  std::map<std::string, ImageErrors>& views) {
-    const ShadedMesh mesh = write_solution(m_options.output / "meshes" / (name + ".vtp"), solution,
-                                           m_scene, m_options.crease_degrees,
-                                           double(t.budget));
+    const ShadedMesh mesh = write_solution(mesh_file(name), solution, m_scene,
+                                           m_options.crease_degrees, double(t.budget));
     const ShadedTracer tracer(mesh);
     const RenderOptions render_options{m_options.samples_per_axis};
     for (View v : m_scene.views) {
@@ -231,7 +263,7 @@ ObjectError StudyRunner::measure(const Solution& solution, const CellTask& t,
         v.height = ref.height;
         const Image8 image =
             quantise(render(tracer, v, render_options), m_reference.exposure.at(v.name));
-        write_png(m_options.output / "images" / (name + "-" + v.name + ".png"), image);
+        write_png(image_file(name, v), image);
         views[v.name] = image_errors(image, ref);
     }
     if (m_reference.mesh) {
@@ -284,6 +316,11 @@ nlohmann::json mesh_rays_json(const StudyOptions& o) {
 std::string cell_name(const std::string& scene, const std::string& oracle, std::size_t budget,
                       std::uint64_t seed) {
     return fmt::format("{}-{}-B{}-s{}", scene, oracle, budget, seed);
+}
+
+std::vector<std::filesystem::path> study_output_files(const StudyOptions& o) {
+    return {o.output / "table.json", o.output / "table.csv", o.output / "table.md",
+            o.output / "plots" / "error_vs_elements.png", o.output / "meshes.pvd"};
 }
 
 void run_study(const Scene& scene, const StudyOptions& options, Progress& progress) {

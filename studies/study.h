@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "common/output_set.h"
 #include "common/progress.h"
 #include "meshes/scene.h"
 #include "radiosity/budget_search.h"
@@ -116,8 +117,13 @@ nlohmann::json study_settings(const Scene& scene, const StudyOptions& options);
 nlohmann::json cell_to_json(const CellResult& cell);
 CellResult cell_from_json(const nlohmann::json& j);
 
-// table.json, table.csv, table.md and the plot, from every cell of the study in order.
-void write_study_tables(const std::string& scene, const StudyOptions& options,
+// The files a study writes at its end, once (its tables, plot and meshes.pvd): checked and
+// locked before any cell, written as one set (common/output_set.h).
+std::vector<std::filesystem::path> study_output_files(const StudyOptions& options);
+
+// table.json, table.csv, table.md and the plot, from every cell of the study in order, into
+// `out`, the set of study_output_files().
+void write_study_tables(OutputSet& out, const std::string& scene, const StudyOptions& options,
                         const std::vector<std::string>& views, const std::vector<CellResult>& cells);
 
 }  // namespace hmcr

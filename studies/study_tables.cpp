@@ -227,9 +227,9 @@ nlohmann::json object_error_json(const ObjectError& e) {
 
 // null: +inf (only B_ref is 0) when measured, NaN when not (a traced reference has no mesh).
 ObjectError object_error_from_json(const nlohmann::json& oe) {
-    const std::size_t samples = oe.at("samples").get<std::size_t>();
-    return {json_number(oe, "relative_l2", samples > 0 ? kInf : kNaN), samples,
-            oe.at("unmatched").get<std::size_t>()};
+    const std::size_t samples = json_count(oe, "samples");
+    return {json_non_negative(oe, "relative_l2", samples > 0 ? kInf : kNaN), samples,
+            json_count(oe, "unmatched")};
 }
 
 std::map<std::string, ImageErrors> views_from_json(const nlohmann::json& views) {
@@ -268,21 +268,21 @@ CellResult cell_from_json(const nlohmann::json& j) {
     CellResult c;
     c.scene = j.at("scene").get<std::string>();
     c.oracle = j.at("oracle").get<std::string>();
-    c.budget = j.at("budget").get<std::size_t>();
-    c.seed = j.at("seed").get<std::uint64_t>();
+    c.budget = json_count(j, "budget");
+    c.seed = json_count(j, "seed");
     c.settings = j.value("settings", nlohmann::json());
-    c.status = j.at("status").get<std::string>();
+    c.status = json_status(j);
     c.message = j.value("message", "");
-    c.epsilon = json_number(j, "epsilon", kNaN);
-    c.leaves = j.at("leaves").get<std::size_t>();
+    c.epsilon = json_non_negative(j, "epsilon", kNaN);
+    c.leaves = json_count(j, "leaves");
     for (const auto& p : j.at("probe_history"))
-        c.probes.push_back({json_number(p, "epsilon", kNaN), p.at("leaves").get<std::size_t>(),
-                            json_number(p, "seconds", kNaN)});
-    c.seconds = json_number(j, "seconds", kNaN);
+        c.probes.push_back({json_non_negative(p, "epsilon", kNaN), json_count(p, "leaves"),
+                            json_non_negative(p, "seconds", kNaN)});
+    c.seconds = json_non_negative(j, "seconds", kNaN);
     c.views = views_from_json(j.at("views"));
     c.object_error = object_error_from_json(j.at("object_error"));
-    c.rays = j.at("rays").get<std::uint64_t>();
-    c.mesh_rays = j.at("mesh_rays").get<std::uint64_t>();
+    c.rays = json_count(j, "rays");
+    c.mesh_rays = json_count(j, "mesh_rays");
     if (c.mesh_rays > 0) {
         c.mesh_views = views_from_json(j.at("mesh_views"));
         c.mesh_object_error = object_error_from_json(j.at("mesh_object_error"));
@@ -290,7 +290,7 @@ CellResult cell_from_json(const nlohmann::json& j) {
     return c;
 }
 
-void write_study_tables(const std::string& scene, const StudyOptions& o,
+void write_study_tables(OutputSet& out, const std::string& scene, const StudyOptions& o,
                         const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     nlohmann::json all = nlohmann::json::array();
     for (const CellResult& c : cells) all.push_back(cell_to_json(c));
@@ -310,10 +310,10 @@ void write_study_tables(const std::string& scene, const StudyOptions& o,
                                     {"reference", o.reference.string()}}},
                                   {"views", views},
                                   {"cells", all}};
-    write_text_atomically(o.output / "table.json", table.dump(2) + "\n");
-    write_text_atomically(o.output / "table.csv", csv_table(views, cells));
-    write_text_atomically(o.output / "table.md", md_table(scene, o, views, cells));
-    write_png(o.output / "plots" / "error_vs_elements.png", error_plot(cells, o.budgets));
+    write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
+    write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));
+    write_text_atomically(out.temp(o.output / "table.md"), md_table(scene, o, views, cells));
+    write_png(out.temp(o.output / "plots" / "error_vs_elements.png"), error_plot(cells, o.budgets));
 }
 
 }  // namespace hmcr

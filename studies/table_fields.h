@@ -1,12 +1,18 @@
 // How the study files write and read a field: CSV numbers and text, and JSON numbers that may
-// be infinite or NaN (JSON has neither: nlohmann writes them as null).
+// be infinite or NaN (JSON has neither: nlohmann writes them as null). A cell file is checked as
+// it is read: a count that is negative or not whole, an error or a time below zero, is an
+// InputError, and the study computes the cell again.
 #pragma once
 
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "common/error.h"
 
 namespace hmcr {
 
@@ -14,6 +20,37 @@ namespace hmcr {
 inline double json_number(const nlohmann::json& j, const char* key, double missing) {
     const auto it = j.find(key);
     return it == j.end() || it->is_null() ? missing : it->get<double>();
+}
+
+// json_number of a quantity that cannot be negative (an error, a PSNR, a time); NaN passes.
+inline double json_non_negative(const nlohmann::json& j, const char* key, double missing) {
+    const double x = json_number(j, key, missing);
+    if (x < 0) throw InputError(fmt::format("{}: {} is negative", key, x));
+    return x;
+}
+
+// The count at `key`: a whole JSON number from 0 to `max` (nlohmann alone would read -3 as
+// 2^64 - 3).
+inline std::uint64_t json_count(const nlohmann::json& j, const char* key,
+                                std::uint64_t max = std::numeric_limits<std::uint64_t>::max()) {
+    const nlohmann::json& value = j.at(key);
+    if (!value.is_number_unsigned()) {
+        throw InputError(fmt::format("{}: {} is not a count", key, quote(value.dump())));
+    }
+    if (value.get<std::uint64_t>() > max) {
+        throw InputError(
+            fmt::format("{}: {} is more than {}", key, value.get<std::uint64_t>(), max));
+    }
+    return value.get<std::uint64_t>();
+}
+
+// A cell's status: "ok" or "failed".
+inline std::string json_status(const nlohmann::json& j) {
+    const std::string status = j.at("status").get<std::string>();
+    if (status != "ok" && status != "failed") {
+        throw InputError("status: " + quote(status) + " is neither \"ok\" nor \"failed\"");
+    }
+    return status;
 }
 
 // NaN is an empty field; infinities are "inf" and "-inf".

@@ -4,6 +4,7 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/file_names.h"
 #include "common/json_fields.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
@@ -33,19 +34,19 @@ std::vector<std::filesystem::path> traced_reference_files(const std::filesystem:
                                                           const Scene& scene) {
     std::vector<std::filesystem::path> files{dir / "reference.json"};
     for (const View& v : scene.views) {
-        files.push_back(dir / "views" / (v.name + ".pfm"));
-        files.push_back(dir / "views" / (v.name + ".png"));
+        files.push_back(named_file(dir / "views", v.name, ".pfm"));
+        files.push_back(named_file(dir / "views", v.name, ".png"));
     }
     return files;
 }
 
-void write_traced_reference(const std::filesystem::path& dir, const Scene& scene,
-                            const TracedReference& ref, const TraceOptions& o,
+void write_traced_reference(OutputSet& out, const std::filesystem::path& dir,
+                            const Scene& scene, const TracedReference& ref, const TraceOptions& o,
                             const std::string& command) {
     nlohmann::json views = nlohmann::json::object();
     for (const auto& [name, v] : ref.views) {
-        write_pfm(dir / "views" / (name + ".pfm"), v.image);
-        write_png(dir / "views" / (name + ".png"), v.image, v.exposure);
+        write_pfm(out.temp(named_file(dir / "views", name, ".pfm")), v.image);
+        write_png(out.temp(named_file(dir / "views", name, ".png")), v.image, v.exposure);
         views[name] = {{"exposure", v.exposure},
                        {"width", v.image.width},
                        {"height", v.image.height},
@@ -66,7 +67,7 @@ void write_traced_reference(const std::filesystem::path& dir, const Scene& scene
                                   {"roulette_depth", o.path.roulette_depth}}},
                                 {"seconds", ref.seconds},
                                 {"views", views}}}};
-    write_text_atomically(dir / "reference.json", j.dump(2) + "\n");
+    write_text_atomically(out.temp(dir / "reference.json"), j.dump(2) + "\n");
 }
 
 bool is_traced_reference(const std::filesystem::path& dir) {
@@ -86,7 +87,7 @@ std::map<std::string, TracedView> read_reference_views(const std::filesystem::pa
             throw InputError((dir / "reference.json").string(),
                              "no view " + quote(v.name) + " of scene " + quote(scene.name));
         }
-        const std::filesystem::path pfm = dir / "views" / (v.name + ".pfm");
+        const std::filesystem::path pfm = named_file(dir / "views", v.name, ".pfm");
         if (!std::filesystem::is_regular_file(pfm)) throw InputError(pfm.string(), "missing");
         try {
             out[v.name] = {read_pfm(pfm), exposure.at(v.name), 0, 0};

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "common/output_set.h"
 #include "common/progress.h"
 #include "meshes/scene.h"
 #include "image/image.h"
@@ -48,10 +49,11 @@ TracedReference compute_traced_reference(const Scene& scene, const std::vector<V
 std::vector<std::filesystem::path> traced_reference_files(const std::filesystem::path& dir,
                                                           const Scene& scene);
 
-// Writes the folder described above, every file atomically; `command` is the invocation.
-void write_traced_reference(const std::filesystem::path& dir, const Scene& scene,
-                            const TracedReference& reference, const TraceOptions& options,
-                            const std::string& command);
+// Writes the folder described above into `out`, an OutputSet of traced_reference_files(dir,
+// scene) (common/output_set.h), which the caller commits; `command` is the invocation.
+void write_traced_reference(OutputSet& out, const std::filesystem::path& dir,
+                            const Scene& scene, const TracedReference& reference,
+                            const TraceOptions& options, const std::string& command);
 
 // Whether the reference folder `dir` is a traced one (reference.json says "kind": "traced");
 // a radiosity reference (studies/reference.h) also has a mesh, reference.vtp.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "common/file_names.h"
 #include "studies/reference.h"
 #include "tests/fuzz/fuzz_support.h"
 
@@ -12,6 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     expect_only_input_errors([&] {
         for (const auto& [view, exposure] : hmcr::read_reference_exposures(work_dir())) {
             if (!(exposure > 0 && std::isfinite(exposure))) crash("an exposure that is not positive");
+            if (hmcr::name_problem(view)) crash("a view name that cannot name a file");
         }
     });
     return 0;

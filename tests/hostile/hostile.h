@@ -4,9 +4,14 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
+#include <thread>
 
 #include "tests/support/cli_run.h"
 
@@ -24,6 +29,24 @@ inline const char* kPlatesMtl =
 inline const char* kPlatesJson =
     R"({"mesh": "plates.obj", "views": [{"name": "side", "position": [2.8, 0.5, 0.5],
         "look_at": [0.5, 0.5, 0.5], "width": 32, "height": 32}]})";
+
+// Starts hmcr ARGS in `dir` (its output in .stdout and .stderr there), sends `signal` after
+// `delay`, returns the exit status.
+inline int interrupted(const std::string& args, const std::filesystem::path& dir, int signal,
+                       std::chrono::milliseconds delay) {
+    const pid_t child = fork();
+    if (child == 0) {
+        const std::string cmd = "cd '" + dir.string() + "' && exec " + HMCR_BINARY + " " + args +
+                                " >.stdout 2>.stderr";
+        execl("/bin/sh", "sh", "-c", cmd.c_str(), nullptr);
+        _exit(127);
+    }
+    std::this_thread::sleep_for(delay);
+    kill(child, signal);
+    int status = 0;
+    waitpid(child, &status, 0);
+    return status;
+}
 
 class Hostile : public testing::Test {
 protected:
@@ -59,5 +82,11 @@ protected:
 
     TempDir m_temp;
 };
+
+// `text` with the first `from` replaced by `to`: a valid input spoiled in one place.
+inline std::string with(std::string text, const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+    return text;
+}
 
 }  // namespace hmcr::test

@@ -13,11 +13,6 @@
 namespace hmcr::test {
 namespace {
 
-std::string with(std::string text, const std::string& from, const std::string& to) {
-    text.replace(text.find(from), from.size(), to);
-    return text;
-}
-
 // The run summary's scene part after `hmcr solve FILE -o out.vtp`.
 nlohmann::json solved_scene(const std::filesystem::path& dir, const std::string& file) {
     const CliRun r = run_hmcr("solve " + file + " --rays 1000 -q -o out.vtp", dir);

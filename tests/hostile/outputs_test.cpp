@@ -1,5 +1,6 @@
 // Hostile outputs: no command writes over one of its own inputs, and an output that cannot be
-// written is refused before the work, in hmcr's words.
+// written is refused before the work, in hmcr's words: every file of the command's set is
+// checked first, so that a refusal leaves none of them.
 #include "tests/hostile/hostile.h"
 
 namespace hmcr::test {
@@ -46,6 +47,55 @@ TEST_F(Hostile, OutputsThatCannotBeWrittenAreRefusedFirst) {
     refused("solve plates.json -o file/x.vtp", "cannot write file/x.vtp");
     std::filesystem::create_directory(dir() / "x.vtp");
     refused("solve plates.json -o x.vtp", "it is a folder");
+}
+
+// Each command is given work of minutes: a refusal that came after it would hit the time limit.
+TEST_F(Hostile, EveryFileOfASetIsCheckedBeforeTheWork) {
+    plates();
+    const std::string long_name(251, 'n');  // NAME.vtp and NAME.png fit in 255 bytes
+    std::filesystem::create_directories(dir() / "d" / "x.json");
+    refused("solve plates.json --rays 1e12 -q -o d/x.vtp", "cannot write d/x.json: it is a folder");
+    refused("solve plates.json --rays 1e12 -q -o d/" + long_name + ".vtp",
+            ".json: its name is 256 bytes long, more than 255");
+    refused("trace plates.json --spp 100000 -q -o d/x.png", "cannot write d/x.json: it is a folder");
+    refused("trace plates.json --spp 100000 -q -o d/" + long_name + ".png",
+            "-density.png: its name is 263 bytes long, more than 255");
+    std::filesystem::create_directories(dir() / "ref" / "views" / "side.png");
+    refused("reference plates.json --rays 1e12 -q -o ref", "cannot write ref/views/side.png");
+    refused("trace-reference plates.json --spp 100000 -q -o ref", "cannot write ref/views/side.png");
+}
+
+TEST_F(Hostile, AStudysCellFilesAreCheckedBeforeTheFirstCell) {
+    plates();
+    accepted("reference plates.json --max-area 0.5 --rays 2000 -q -o ref");
+    std::filesystem::create_directories(dir() / "st" / "cells" / "plates-power-B4-s2.json");
+    refused("study plates.json --reference ref --budgets 4 --oracles power --seeds 2 "
+            "--rays 1e12 -q -o st",
+            "cannot write st/cells/plates-power-B4-s2.json: it is a folder");
+    std::filesystem::create_directories(dir() / "st2" / "images" / "plates-kl-B4-s1-side.png");
+    refused("study plates.json --reference ref --budgets 4 --oracles power,kl --seeds 1 "
+            "--rays 1e12 -q -o st2",
+            "cannot write st2/images/plates-kl-B4-s1-side.png: it is a folder");
+}
+
+// The folders a run makes for its outputs go with them when it is stopped.
+TEST_F(Hostile, AnInterruptedReferenceLeavesNoFolder) {
+    const int status = interrupted("reference cube-room --max-area 0.01 --rays 1e9 -q -o out/ref",
+                                   dir(), SIGTERM, std::chrono::milliseconds(700));
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << read_file(dir() / ".stderr");
+    std::filesystem::remove(dir() / ".stdout");
+    std::filesystem::remove(dir() / ".stderr");
+    EXPECT_TRUE(std::filesystem::is_empty(dir()));
+}
+
+TEST_F(Hostile, RenderIsQuietWhenAsked) {
+    plates(kPlatesObj, std::string(kPlatesMtl) + "frobnicate 1\n");  // ignored, with a warning
+    accepted("solve plates.json --rays 2000 -q -o p.vtp");
+    const CliRun loud = accepted("render p.vtp --scene plates.json -o p.png");
+    EXPECT_NE(loud.err.find("warning"), std::string::npos) << loud.err;
+    const CliRun quiet = accepted("render p.vtp --scene plates.json -q -o q.png");
+    EXPECT_EQ(quiet.err + quiet.out, "");
 }
 
 }  // namespace

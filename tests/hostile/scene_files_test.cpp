@@ -9,11 +9,6 @@
 namespace hmcr::test {
 namespace {
 
-std::string with(std::string text, const std::string& from, const std::string& to) {
-    text.replace(text.find(from), from.size(), to);
-    return text;
-}
-
 // One bad OBJ per class of error of docs/usage.md#bad-input.
 TEST_F(Hostile, EveryClassOfBadObjIsRefusedWithItsLine) {
     const std::pair<std::string, std::string> cases[] = {

@@ -40,7 +40,9 @@ void write_small_reference(const Scene& scene, int size, const fs::path& dir) {
     for (View& v : views) v.width = v.height = size;
     TraceOptions o;
     o.spp = 64;
-    write_traced_reference(dir, scene, compute_traced_reference(scene, views, o), o, "test");
+    OutputSet out(traced_reference_files(dir, scene), dir);
+    write_traced_reference(out, dir, scene, compute_traced_reference(scene, views, o), o, "test");
+    out.commit();
 }
 
 SamplingStudyOptions study(const fs::path& dir, std::vector<std::string> samplers, int seeds) {

@@ -82,7 +82,10 @@ protected:
         ReferenceOptions ro;
         ro.max_area = 4e-3;
         ro.solver.rays = 2'000'000;
-        write_reference(s_dir->path() / "ref", scene, compute_reference(scene, ro), ro, {});
+        const std::filesystem::path ref = s_dir->path() / "ref";
+        OutputSet out(reference_files(ref, scene), ref);
+        write_reference(out, ref, scene, compute_reference(scene, ro), ro, {});
+        out.commit();
     }
     static void TearDownTestSuite() {
         delete s_dir;

@@ -11,6 +11,9 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <sys/resource.h>
+
+#include <csignal>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -177,15 +180,25 @@ TEST_F(VtkExport, ImpossiblePathThrowsAndLeavesNothing) {
     EXPECT_EQ(m_dir.files(), std::vector<std::string>{"file"});
 }
 
+// A disk that fills as VTK writes: a file size limit of 200 bytes (the write then fails with
+// EFBIG instead of raising SIGXFSZ, which is ignored for the while).
 TEST_F(VtkExport, WriterFailureThrowsAndLeavesNothing) {
-    // A legal file name whose temp name exceeds NAME_MAX (255): VTK cannot open the temp file.
-    const auto path = m_dir.path() / (std::string(248, 'a') + ".vtp");
+    const auto path = m_dir.path() / "full.vtp";
+    rlimit old{};
+    ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
+    const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit small = old;
+    small.rlim_cur = 200;
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
     try {
         write_vtp(path, m_mesh, sample_metadata());
         ADD_FAILURE() << "no exception";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("aaaa.vtp"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("cannot write " + path.string()), std::string::npos)
+            << e.what();
     }
+    setrlimit(RLIMIT_FSIZE, &old);
+    std::signal(SIGXFSZ, old_handler);
     EXPECT_TRUE(m_dir.files().empty());
 }
 

@@ -1,0 +1,98 @@
+#include "common/output_set.h"
+
+#include <set>
+#include <stdexcept>
+
+#include "common/durable_file.h"
+#include "common/error.h"
+#include "common/output_paths.h"
+
+namespace hmcr {
+
+namespace fs = std::filesystem;
+
+OutputSet::OutputSet(std::vector<fs::path> files, const fs::path& folder)
+    : m_files(std::move(files)) {
+    try {
+        for (const fs::path& file : m_files) check_output_file(file);
+        if (!folder.empty()) {
+            check_output_folder(folder);
+            make_folders(folder, folder);
+            lock(folder, true);
+        }
+        for (const fs::path& file : m_files) {
+            make_folders(file.parent_path(), file);
+            if (folder.empty()) lock(file, false);
+            std::error_code ignored;
+            fs::remove(create_temp_beside(file), ignored);  // the folder takes files
+        }
+        m_temps.resize(m_files.size());
+    } catch (...) {
+        abandon();
+        throw;
+    }
+}
+
+OutputSet::~OutputSet() {
+    if (!m_committed) abandon();
+}
+
+const fs::path& OutputSet::temp(const fs::path& file) {
+    for (std::size_t i = 0; i < m_files.size(); ++i) {
+        if (m_files[i] != file) continue;
+        if (m_temps[i].empty()) m_temps[i] = create_temp_beside(file);
+        return m_temps[i];
+    }
+    throw std::logic_error(file.string() + " is not an output of this command");
+}
+
+void OutputSet::commit() {
+    for (std::size_t i = 0; i < m_files.size(); ++i) {
+        if (m_temps[i].empty()) throw std::logic_error(m_files[i].string() + " was not written");
+        sync_file(m_temps[i], m_files[i]);
+    }
+    std::set<fs::path> folders;
+    for (std::size_t i = 0; i < m_files.size(); ++i) {
+        std::error_code ec;
+        fs::rename(m_temps[i], m_files[i], ec);
+        if (ec) throw InputError("cannot write " + m_files[i].string(), ec.message());
+        m_temps[i].clear();
+        folders.insert(m_files[i].parent_path());
+    }
+    for (const fs::path& f : folders) sync_folder(f, m_files.front());
+    m_committed = true;
+    m_locks.clear();
+}
+
+// Each missing level of `folder`, made and remembered, so that a failure can take it back; a
+// file in the way fails the `output` that needs the folder.
+void OutputSet::make_folders(const fs::path& folder, const fs::path& output) {
+    if (folder.empty()) return;
+    std::error_code ec;
+    if (fs::is_directory(folder, ec)) return;
+    make_folders(folder.parent_path(), output);
+    if (fs::create_directory(folder, ec)) {
+        m_made_folders.push_back(folder);
+    } else if (std::error_code again; !fs::is_directory(folder, again)) {  // not another run's
+        const std::string why = fs::exists(folder, again) ? "not a folder" : ec.message();
+        throw InputError("cannot write " + output.string(), why + ": " + folder.string());
+    }
+}
+
+void OutputSet::lock(const fs::path& output, bool is_folder) {
+    m_locks.push_back(std::make_unique<OutputLock>(output, is_folder));
+}
+
+void OutputSet::abandon() noexcept {
+    std::error_code ignored;
+    for (const fs::path& tmp : m_temps) {
+        if (!tmp.empty()) fs::remove(tmp, ignored);
+    }
+    m_locks.clear();
+    // Innermost first; a folder that holds anything now (a study's finished cells) stays.
+    for (auto it = m_made_folders.rbegin(); it != m_made_folders.rend(); ++it) {
+        fs::remove(*it, ignored);
+    }
+}
+
+}  // namespace hmcr

@@ -1,0 +1,47 @@
+// A command's output files, written as one set (docs/design.md §5.7). Made before any work, it
+// checks every file (output_paths.h), creates the folders they go into, locks the outputs
+// (output_lock.h) and proves each folder writable by making and removing a temporary file
+// there (durable_file.h). At the end the command writes each file's temporary file (temp(): any
+// writer of atomic_file.h replaces it) and commit() flushes them, renames them all into place
+// and flushes their folders. A failure or a signal before commit() leaves none of the set: the
+// destructor removes the temporary files, the locks and the folders it created.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "common/output_lock.h"
+
+namespace hmcr {
+
+class OutputSet {
+public:
+    // `files`: the set. `folder`: the output folder that holds them all, locked as one (a
+    // reference, a study); empty: each file is locked (a solve's FILE.vtp, .json and .pvsm).
+    // Throws InputError "cannot write PATH: why" for the first file or folder that fails.
+    explicit OutputSet(std::vector<std::filesystem::path> files,
+                       const std::filesystem::path& folder = {});
+    ~OutputSet();
+    OutputSet(const OutputSet&) = delete;
+    OutputSet& operator=(const OutputSet&) = delete;
+
+    // Where `file` (one of the set, spelled as given) is to be written before commit(): a
+    // temporary file beside it, made at the first call.
+    const std::filesystem::path& temp(const std::filesystem::path& file);
+    // Every file into place, durably; then the locks are released. Throws InputError "cannot
+    // write FILE: why" when a flush or a rename fails.
+    void commit();
+
+private:
+    void make_folders(const std::filesystem::path& folder, const std::filesystem::path& output);
+    void lock(const std::filesystem::path& output, bool is_folder);
+    void abandon() noexcept;
+
+    std::vector<std::filesystem::path> m_files, m_temps;  // a temp is empty until temp()
+    std::vector<std::filesystem::path> m_made_folders;  // outermost first
+    std::vector<std::unique_ptr<OutputLock>> m_locks;
+    bool m_committed = false;
+};
+
+}  // namespace hmcr
