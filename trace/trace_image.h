@@ -24,7 +24,7 @@ namespace hmcr {
 // The most samples one pixel takes: the uniform sampler's spp, and an adaptive one's max_spp.
 inline constexpr std::uint32_t kMostSamplesPerPixel = 1'000'000;
 
-// How an adaptive sampler spends the budget (docs/design.md §10.6): `refine`, its scheme
+// How an adaptive sampler spends the budget (docs/design.md §10.6, §10.9): `refine`, its scheme
 // refines each pixel until the threshold that gives the mean spp (trace/threshold_search.h);
 // `map`, the papers' two passes (trace/map_allocation.h).
 enum class Allocation { refine, map };
