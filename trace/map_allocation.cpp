@@ -16,11 +16,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // The samples each pixel takes beyond the first, as real numbers summing to `extra` in total.
 std::vector<double> shares(std::span<const double> values, double extra, double cap) {
     std::vector<double> x(values.size(), 0.0);
-    double positive_sum = 0, smallest = kInf;
+    double smallest = kInf;
     std::size_t positive = 0;
     for (double v : values) {
         if (v > 0) {
-            positive_sum += v;
             smallest = std::min(smallest, v);
             ++positive;
         }
