@@ -35,7 +35,8 @@ View view(const Vec3& position, const Vec3& look_at, double fov, int size) {
 }
 
 TraceResult trace(const PatchMesh& mesh, const View& v, Estimator e, int spp, std::uint64_t seed,
-                  const Criterion& sampler = uniform_criterion(), int threads = 0) {
+                  const Criterion& sampler = uniform_criterion(), int threads = 0,
+                  Allocation allocation = Allocation::refine) {
     PathOptions path;
     path.estimator = e;
     const PathTracer tracer(build_patch_set(mesh), path);
@@ -44,6 +45,7 @@ TraceResult trace(const PatchMesh& mesh, const View& v, Estimator e, int spp, st
     o.spp = spp;
     o.seed = seed;
     o.threads = threads;
+    o.allocation = allocation;
     o.path = path;
     return trace_image(tracer, v, o);
 }
@@ -170,7 +172,7 @@ TEST(SpecularPaths, NextEventAndPurePathTracingAgreeOnMirrors) {
 }
 
 // Mirrors and glossy lobes draw from each sample's own stream: 1 and 2 threads give the same
-// bits, for the uniform sampler and an adaptive one.
+// bits, for the uniform sampler, a batch one, the Cycles-style passes and the map allocation.
 TEST(SpecularPaths, ImagesWithSpecularSurfacesDoNotDependOnTheThreadCount) {
     std::vector<TestPolygon> walls = inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(0.3),
                                                 Rgb::Zero());
@@ -181,10 +183,14 @@ TEST(SpecularPaths, ImagesWithSpecularSurfacesDoNotDependOnTheThreadCount) {
     }
     const PatchMesh mesh = make_patch_mesh(walls);
     const View v = view({0.2, 0.5, 0.3}, {0.9, 0.4, 0.8}, 80, 20);
-    for (const char* name : {"uniform", "srhe"}) {
+    const std::pair<const char*, Allocation> cases[] = {{"uniform", Allocation::refine},
+                                                        {"srhe", Allocation::refine},
+                                                        {"half-difference", Allocation::refine},
+                                                        {"entropy", Allocation::map}};
+    for (const auto& [name, allocation] : cases) {
         const Criterion& c = *criterion_registry().find(name);
-        const TraceResult one = trace(mesh, v, Estimator::mis, 16, 5, c, 1);
-        const TraceResult two = trace(mesh, v, Estimator::mis, 16, 5, c, 2);
+        const TraceResult one = trace(mesh, v, Estimator::mis, 16, 5, c, 1, allocation);
+        const TraceResult two = trace(mesh, v, Estimator::mis, 16, 5, c, 2, allocation);
         EXPECT_TRUE(identical(one.image, two.image)) << name;
         EXPECT_EQ(one.samples, two.samples) << name;
     }
