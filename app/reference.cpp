@@ -28,6 +28,7 @@ struct ReferenceArgs {
 int run_reference(ReferenceArgs& a, const std::string& command_line) {
     if (!(a.options.max_area > 0)) throw InputError("max-area must be positive");
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
+    warn_specular(scene, a.quiet, SpecularUse::solve);
     apply_scene_settings(a.flags, scene, a.options.solver);
     const std::filesystem::path dir(a.output);
     refuse_overwriting(reference_files(dir, scene), scene.inputs);

@@ -47,6 +47,7 @@ int run_render(const RenderArgs& a) {
     }
     check_exposure(a.exposure);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
+    warn_specular(scene, a.quiet, SpecularUse::render);
     OutputSet out(check_outputs(a, scene));
     const View& view = find_view(scene, a.view);
     const double exposure = fixed_exposure(a.exposure, view.name);

@@ -86,4 +86,23 @@ Scene load_scene_reporting(const std::string& name_or_path, bool quiet, SceneUse
     return scene;
 }
 
+void warn_specular(const Scene& scene, bool quiet, SpecularUse use) {
+    if (quiet) return;
+    const FaceMaterials materials(scene.mesh);
+    std::size_t specular = 0;
+    for (auto f : scene.mesh.faces()) {
+        const OpenMesh::Vec3d& ks = materials[f].specular;
+        if (ks[0] > 0 || ks[1] > 0 || ks[2] > 0) ++specular;
+    }
+    if (specular == 0) return;
+    fmt::print(stderr,
+               "hmcr: warning: {} of {} patches of {} reflect specularly (Ks, rs): the radiosity "
+               "engine absorbs that light (docs/design.md §1.2){}\n",
+               specular, scene.mesh.n_faces(), scene.name,
+               use == SpecularUse::render
+                   ? ", so this image shows them with their diffuse radiosity alone, without "
+                     "reflections; `hmcr trace` reflects them"
+                   : "; `hmcr trace` reflects it");
+}
+
 }  // namespace hmcr

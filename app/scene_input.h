@@ -29,4 +29,13 @@ void add_view_flag(CLI::App& command, std::string& view);
 Scene load_scene_reporting(const std::string& name_or_path, bool quiet,
                            SceneUse use = SceneUse::solve, const SceneFlags& flags = {});
 
+// What a radiosity command does with specular surfaces, which the engine absorbs
+// (docs/design.md §1.2): `solve` (a solve, a reference, a meshing study) or `render` (an image of
+// a radiosity solution).
+enum class SpecularUse { solve, render };
+
+// One warning line when some of the scene's patches reflect specularly (Ks, rs), saying how
+// many and what the command makes of them; nothing otherwise or when quiet.
+void warn_specular(const Scene& scene, bool quiet, SpecularUse use);
+
 }  // namespace hmcr

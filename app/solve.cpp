@@ -74,6 +74,7 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     }
     const ProgressMode mode = progress_mode_for(args.progress, args.quiet);
     Scene scene = load_scene_reporting(args.scene, args.quiet, SceneUse::solve, args.scene_flags);
+    warn_specular(scene, args.quiet, SpecularUse::solve);
     apply_scene_settings(args.flags, scene, args.options);
     const fs::path vtp = output_path(args, scene);
     fs::path json = vtp, pvsm = vtp;

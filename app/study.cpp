@@ -1,11 +1,13 @@
 // `hmcr study SCENE --reference DIR -o OUT` and one of
 //   --budgets N,N [--oracles LIST]   a meshing study: every oracle x budget x seed (studies/study.h)
-//   --samplers LIST [--spp N]        a sampling study: every pixel sampler x seed at one mean spp
+//   --samplers LIST [--spp N,N]      a sampling study: every pixel sampler x seed at each mean spp
 //                                    (studies/sampling_study.h)
 // Either takes a radiosity reference (`hmcr reference`) or a traced one (`hmcr trace-reference`).
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <memory>
 #include <sstream>
 
@@ -34,11 +36,8 @@ struct StudyArgs {
     std::string oracles = "all";
     std::string mesh_rays;  // empty: the default, kMeshRaysPerCellRay x the cell's rays
     std::string samplers;   // "all" or "uniform,srhe"; given: a sampling study
-    SamplingStudyOptions sampling = [] {
-        SamplingStudyOptions o;
-        o.trace.spp = 60;
-        return o;
-    }();
+    std::string spps = "60";  // "16,32,60,128"
+    SamplingStudyOptions sampling;
     TraceFlags trace_flags;
     std::vector<const CLI::Option*> meshing_only, sampling_only;  // for the refusal of a mix
     bool quiet = false;
@@ -53,6 +52,16 @@ std::vector<std::string> split_commas(const std::string& text) {
         out.push_back(item);
     }
     return out;
+}
+
+double parse_spp(const std::string& text) {
+    double spp = 0;
+    const char* end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, spp);
+    if (error != std::errc() || stop != end || !std::isfinite(spp) || !(spp > 0)) {
+        throw InputError("spp: " + quote(text) + " is not a positive number of samples per pixel");
+    }
+    return spp;
 }
 
 std::size_t parse_budget(const std::string& text) {
@@ -100,6 +109,8 @@ int run_sampling_study_command(StudyArgs& a) {
     o.trace.threads = a.options.solver.threads;
     o.redo_other_settings = a.options.redo_other_settings;
     o.samplers = named_list(criterion_registry(), split_commas(a.samplers));
+    o.spps.clear();
+    for (const std::string& spp : split_commas(a.spps)) o.spps.push_back(parse_spp(spp));
     apply_trace_flags(a.trace_flags, o.trace);
     validate_sampling_study(o);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
@@ -126,6 +137,7 @@ int run_meshing_study(StudyArgs& a) {
     }
     validate_study(a.options);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
+    warn_specular(scene, a.quiet, SpecularUse::solve);
     apply_scene_settings(a.flags, scene, a.options.solver);
     refuse_study_output(a.options.output, a.options.reference, study_output_files(a.options),
                         scene);
@@ -178,7 +190,9 @@ void add_meshing_flags(CLI::App& cmd, StudyArgs& a) {
 void add_sampling_flags(CLI::App& cmd, StudyArgs& a) {
     cmd.add_option("--samplers", a.samplers,
                    "sampling study: pixel samplers, comma-separated, or all");
-    cmd.add_option("--spp", a.sampling.trace.spp, "mean samples per pixel of every image")
+    cmd.add_option("--spp", a.spps,
+                   "mean samples per pixel of every image, or several, comma-separated: a cell "
+                   "per spp value")
         ->capture_default_str();
     add_trace_flags(cmd, a.sampling.trace, a.trace_flags,
                     {"sampler", "spp", "seed", "threshold", "width", "threads",

@@ -60,7 +60,9 @@ nlohmann::json summary(const TraceArgs& a, const Scene& scene, const View& view,
               {"max", c.max},
               {"tolerance", o.spp_tolerance},
               {"max_per_pixel", max_samples_per_pixel(o)}}},
-            {"threshold", r.threshold},  // NaN (uniform) is written as null
+            {"allocation", allocation_name(o.allocation)},
+            {"fresh", o.fresh},
+            {"threshold", r.threshold},  // NaN (uniform, map) is written as null
             {"threshold_probes", probes},
             {"seed", o.seed},
             {"path",

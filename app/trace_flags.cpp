@@ -17,7 +17,8 @@ bool wanted(const std::set<std::string>& except, const std::string& name) {
     return except.count(name) == 0;
 }
 
-void add_sampling_flags(CLI::App& cmd, TraceOptions& o, const std::set<std::string>& except) {
+void add_sampling_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
+                        const std::set<std::string>& except) {
     if (wanted(except, "sampler")) {
         // Resolved here, where the name is read.
         cmd.add_option_function<std::string>(
@@ -53,13 +54,18 @@ void add_sampling_flags(CLI::App& cmd, TraceOptions& o, const std::set<std::stri
     cmd.add_flag("--fresh", o.fresh,
                  "adaptive samplers: the image from fresh samples at the chosen counts "
                  "(unbiased, about twice the rays)");
+    cmd.add_option("--allocation", flags.allocation,
+                   "adaptive samplers: refine (each pixel until the threshold that gives --spp) "
+                   "or map (8 uniform samples per pixel, then the rest of the budget in "
+                   "proportion to the criterion's map of them)")
+        ->capture_default_str();
 }
 
 }  // namespace
 
 void add_trace_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
                      const std::set<std::string>& except) {
-    add_sampling_flags(cmd, o, except);
+    add_sampling_flags(cmd, o, flags, except);
     if (wanted(except, "seed")) {
         cmd.add_option("--seed", o.seed, "keys every sample's random stream")
             ->transform(count_notation())
@@ -85,6 +91,7 @@ void add_trace_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
 void apply_trace_flags(const TraceFlags& flags, TraceOptions& o) {
     try {
         o.path.estimator = parse_estimator(flags.estimator);
+        o.allocation = parse_allocation(flags.allocation);
     } catch (const std::invalid_argument& e) {
         throw InputError(e.what());
     }

@@ -15,6 +15,7 @@ namespace hmcr {
 // What the flags hold until run time checks and applies them.
 struct TraceFlags {
     std::string estimator = "mis";
+    std::string allocation = "refine";
     std::optional<int> width;  // render at this width, the view's aspect kept
 };
 
@@ -25,7 +26,8 @@ struct TraceFlags {
 void add_trace_flags(CLI::App& command, TraceOptions& options, TraceFlags& flags,
                      const std::set<std::string>& except = {});
 
-// Checks the flags that name things (the estimator) and applies them to `options`;
+// Checks the flags that name things (the estimator, the allocation) and applies them to
+// `options`;
 // throws InputError.
 void apply_trace_flags(const TraceFlags& flags, TraceOptions& options);
 

@@ -23,8 +23,10 @@ struct MgfMaterial {
     std::string name = "(unnamed)";
     Eigen::Vector3d kd = Eigen::Vector3d::Zero();       // diffuse reflectance, RGB
     Eigen::Vector3d emitted = Eigen::Vector3d::Zero();  // E, RGB
+    Eigen::Vector3d ks = Eigen::Vector3d::Zero();       // specular reflectance (rs), RGB
+    double roughness = 0;                               // rs's RMS facet slope
     int sides = 2;
-    SourcePlace kd_at, ed_at;
+    SourcePlace kd_at, ed_at, ks_at;
     std::int32_t soup = -1;  // its soup material; -1 when changed since last used
 };
 

@@ -18,6 +18,7 @@
 #include "meshes/mgf_polygon_count.h"
 #include "meshes/mgf_shapes.h"
 #include "meshes/mgf_transform.h"
+#include "meshes/validation.h"
 
 namespace hmcr {
 namespace {
@@ -201,8 +202,9 @@ private:
         if (e == "o") return object(w);
         if (e == "c" || e == "cxy" || e == "cspec" || e == "cct" || e == "cmix") return color(w);
         if (e == "m" || e == "rd" || e == "ed" || e == "sides") return material(w);
+        if (e == "rs") return specular(w);
         if (e == "v" || e == "p" || e == "n") return vertex(w);
-        if (e == "rs" || e == "ts" || e == "td" || e == "ir" || e == "ies")
+        if (e == "ts" || e == "td" || e == "ir" || e == "ies")
             return m_ignored.add(e, m_where);
         if (e == "fh")
             throw InputError(m_where,
@@ -297,7 +299,7 @@ private:
             if (w.size() >= 3) {  // a new definition: a new soup material when used
                 MgfMaterial& m = m_materials.current();
                 m.name = w[1];
-                m.kd_at = m.ed_at = m_at;
+                m.kd_at = m.ed_at = m.ks_at = m_at;
                 m.soup = -1;
             }
             return;
@@ -319,6 +321,23 @@ private:
             m.emitted = rgb(v, INFINITY);
             m.ed_at = m_at;
         }
+    }
+
+    // rs rho_s alpha: specular reflectance in the current colour and the RMS facet slope of its
+    // Gaussian lobe, 0 for a mirror (docs/design.md §1.7).
+    void specular(const std::vector<std::string>& w) {
+        need(w, 2, 2);
+        const double v = number(w, 1), roughness = number(w, 2);
+        if (!(v >= 0 && v <= 1)) throw InputError(m_where, fmt::format("rs {} is not in [0, 1]", w[1]));
+        if (!(roughness >= 0 && roughness <= kMaxRoughness)) {
+            throw InputError(m_where, fmt::format("rs roughness {} is not in [0, {:g}] (0: a mirror)",
+                                                  w[2], kMaxRoughness));
+        }
+        MgfMaterial& m = m_materials.current();
+        m.soup = -1;
+        m.ks = rgb(v, std::max(v, kMaxColouredReflectance));
+        m.roughness = roughness;
+        m.ks_at = m_at;
     }
 
     void vertex(const std::vector<std::string>& w) {
@@ -466,8 +485,11 @@ std::int32_t MgfReader::soup_material() {
     out.material.name = m.name;
     out.material.kd = m.kd;
     out.material.ke = m.emitted / std::numbers::pi;  // E = pi Ke
+    out.material.ks = m.ks;
+    out.material.roughness = m.roughness;
     out.kd = m.kd_at;
     out.ke = m.ed_at;
+    out.ks = m.ks_at;
     m.soup = std::int32_t(m_soup.materials.size());
     m_soup.materials.push_back(std::move(out));
     return m.soup;
@@ -481,7 +503,7 @@ void MgfReader::finish_warnings() {
                                 seen.first, seen.first == 1 ? "" : "s", seen.second);
         }
         m_soup.warnings.push_back(
-            fmt::format("{}: ignored (hmcr reads diffuse reflection rd and emission ed): {}",
+            fmt::format("{}: ignored (hmcr reads reflection rd and rs and emission ed): {}",
                         m_soup.files.front().string(), list));
     }
     if (m_two_sided > 0) {

@@ -15,8 +15,8 @@ namespace {
 // The MTL statements of the common readers that hmcr has no use for.
 bool is_ignored_mtl_statement(std::string_view key) {
     static constexpr std::string_view kIgnored[] = {
-        "Ka",   "Ks",    "Kt",   "Tf",   "Ns", "Ni", "d",  "Tr", "illum", "sharpness", "bump",
-        "disp", "decal", "refl", "norm", "Pr", "Pm", "Ps", "Pc", "Pcr",   "aniso",     "anisor"};
+        "Ka",   "Kt",    "Tf",   "Ns",   "Ni", "d",  "Tr", "sharpness", "bump",  "disp",
+        "decal", "refl", "norm", "Pr",   "Pm", "Ps", "Pc", "Pcr",       "aniso", "anisor"};
     if (key.rfind("map_", 0) == 0) return true;
     return std::find(std::begin(kIgnored), std::end(kIgnored), key) != std::end(kIgnored);
 }
@@ -49,6 +49,19 @@ struct UnknownStatements {
     }
 };
 
+// The illumination models hmcr reads: 0, 1 and 2 reflect diffusely (Ks, 2's highlight, is not
+// used), 3 adds Ks as an ideal mirror ("reflection on, ray trace on"). The others (glass,
+// refraction, Fresnel, invisible shadow catchers) would be drawn wrongly, so they are refused.
+constexpr int kMirrorIllum = 3;
+
+// Ks and illum of a material as read: Ks becomes its mirror when the material ends with illum 3,
+// whatever the order of the two statements.
+struct SpecularStatements {
+    Eigen::Vector3d ks{0, 0, 0};
+    SourcePlace ks_at;
+    int illum = 0;
+};
+
 // The MTL being read: the material its statements set (none before the first newmtl).
 class MtlReader {
 public:
@@ -59,14 +72,24 @@ public:
         const std::string_view key = s.keyword();
         if (key == "newmtl") {
             define(line, s.rest_trimmed());
-        } else if (key == "Kd" || key == "Ke") {
+        } else if (key == "Kd" || key == "Ke" || key == "Ks") {
             colour(key, line, s);
+        } else if (key == "illum") {
+            illum(line, s);
         } else if (!is_ignored_mtl_statement(key)) {
             m_unknown.add(key, line);
         }
     }
 
-    void finish() { m_unknown.report(m_path, m_soup.warnings); }
+    void finish() {
+        for (const auto& [index, read] : m_specular) {
+            if (read.illum != kMirrorIllum) continue;
+            SoupMaterial& m = m_soup.materials[std::size_t(index)];
+            m.material.ks = read.ks;
+            m.ks = read.ks_at;
+        }
+        m_unknown.report(m_path, m_soup.warnings);
+    }
 
 private:
     // A name defined twice is refused: which of the two a face means is not known.
@@ -82,10 +105,24 @@ private:
         }
         m_current = index;
         m_soup.materials.push_back(
-            {Material{std::string(name), {0, 0, 0}, {0, 0, 0}}, true, place, place});
+            {Material{std::string(name), {0, 0, 0}, {0, 0, 0}}, true, place, place, place});
+        m_specular[index].ks_at = place;
     }
 
-    // Kd or Ke of the current material (checked, then dropped, before the first newmtl).
+    void illum(int line, Statement& s) {
+        const std::string_view token = s.next();
+        if (token.empty() || !s.next().empty()) fail_at_line(m_path, line, "'illum' needs one number");
+        const double model = parse_obj_number(token, m_path, line);
+        if (!(model == 0 || model == 1 || model == 2 || model == kMirrorIllum)) {
+            fail_at_line(m_path, line,
+                         fmt::format("illum {} is not supported: hmcr reads illum 0, 1 and 2 "
+                                     "(diffuse; Ks unused) and 3 (Ks an ideal mirror)",
+                                     token));
+        }
+        if (m_current >= 0) m_specular[m_current].illum = int(model);
+    }
+
+    // Kd, Ke or Ks of the current material (checked, then dropped, before the first newmtl).
     void colour(std::string_view key, int line, Statement& s) {
         std::array<std::string_view, 4> tokens;
         std::size_t n = 0;
@@ -99,9 +136,15 @@ private:
         for (int c = 0; c < 3; ++c)
             value[c] = parse_obj_number(tokens[std::size_t(c)], m_path, line);
         if (m_current < 0) return;
+        const SourcePlace place{m_file, std::uint32_t(line)};
+        if (key == "Ks") {
+            m_specular[m_current].ks = value;
+            m_specular[m_current].ks_at = place;
+            return;
+        }
         SoupMaterial& m = m_soup.materials[std::size_t(m_current)];
         (key == "Kd" ? m.material.kd : m.material.ke) = value;
-        (key == "Kd" ? m.kd : m.ke) = SourcePlace{m_file, std::uint32_t(line)};
+        (key == "Kd" ? m.kd : m.ke) = place;
     }
 
     std::uint32_t m_file;
@@ -109,6 +152,7 @@ private:
     PolygonSoup& m_soup;
     MaterialNames& m_names;
     std::int32_t m_current = -1;  // index in m_soup.materials
+    std::map<std::int32_t, SpecularStatements> m_specular;  // by index in m_soup.materials
     UnknownStatements m_unknown;
 };
 

@@ -237,7 +237,7 @@ private:
                 } else {
                     index = std::int32_t(m_soup.materials.size());
                     m_soup.materials.push_back(
-                        {Material{name, {0, 0, 0}, {0, 0, 0}}, false, {}, {}});
+                        {Material{name, {0, 0, 0}, {0, 0, 0}}, false, {}, {}, {}});
                 }
             }
             material = index;

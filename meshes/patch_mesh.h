@@ -22,6 +22,8 @@ using PatchMesh = OpenMesh::PolyMesh_ArrayKernelT<PatchMeshTraits>;
 struct FaceMaterial {
     OpenMesh::Vec3d reflectance{0, 0, 0};  // rho in [0, 1)
     OpenMesh::Vec3d emission{0, 0, 0};     // E = pi * Ke, W/m^2
+    OpenMesh::Vec3d specular{0, 0, 0};     // Material::ks: the path tracer's alone
+    double roughness = 0;                  // Material::roughness
 };
 
 // Names of the properties every loaded PatchMesh carries.

@@ -34,6 +34,9 @@ void check_material(const PolygonSoup& soup, const SoupMaterial& m, const LoadOp
         throw InputError(soup.where(m.kd), *error);
     }
     if (auto error = check_emission(m.material)) throw InputError(soup.where(m.ke), *error);
+    if (auto error = check_specular(m.material, !options.strict)) {
+        throw InputError(soup.where(m.ks), *error);
+    }
 }
 
 // The material of polygon k: its own (checked), else the default, else an error.
@@ -167,7 +170,8 @@ void make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
     for (const Material& m : materials) {
         const Eigen::Vector3d e = std::numbers::pi * m.ke;
         table.push_back({OpenMesh::Vec3d(m.kd.x(), m.kd.y(), m.kd.z()),
-                          OpenMesh::Vec3d(e.x(), e.y(), e.z())});
+                          OpenMesh::Vec3d(e.x(), e.y(), e.z()),
+                          OpenMesh::Vec3d(m.ks.x(), m.ks.y(), m.ks.z()), m.roughness});
     }
     auto material = material_prop(mesh);
     auto source_line = source_line_prop(mesh);

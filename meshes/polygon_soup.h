@@ -25,7 +25,7 @@ struct SourcePlace {
 struct SoupMaterial {
     Material material;
     bool defined = true;     // false: named by a face but defined nowhere (an error if used)
-    SourcePlace kd, ke;      // where Kd and Ke were set (the definition if they were not)
+    SourcePlace kd, ke, ks;  // where Kd, Ke and Ks were set (the definition if they were not)
 };
 
 struct PolygonSoup {

@@ -198,9 +198,10 @@ void accept_reflectance_one(PolygonSoup& soup, RepairReport& report) {
     std::set<std::string> told;  // one material read twice (MGF) is told once
     for (std::size_t m = 0; m < soup.materials.size(); ++m) {
         const SoupMaterial& sm = soup.materials[m];
-        const Eigen::Vector3d& kd = sm.material.kd;
-        if (!used[m] || !sm.defined || kd.maxCoeff() != 1.0 || kd.minCoeff() < 0) continue;
-        const std::string where = soup.where(sm.kd);
+        // Kd + Ks: a mirror of reflectance 1 absorbs nothing either (Ks is 0 without one)
+        const Eigen::Vector3d total = sm.material.kd + sm.material.ks;
+        if (!used[m] || !sm.defined || total.maxCoeff() != 1.0 || total.minCoeff() < 0) continue;
+        const std::string where = soup.where(sm.material.ks.maxCoeff() > 0 ? sm.ks : sm.kd);
         if (!told.insert(where).second) continue;
         report.add(RepairKind::reflectance_one, where);
         soup.warnings.push_back(fmt::format(

@@ -19,6 +19,11 @@ struct Material {
     std::string name;
     Eigen::Vector3d kd{0, 0, 0};  // diffuse reflectance rho, each channel in [0, 1]
     Eigen::Vector3d ke{0, 0, 0};  // emitted radiance, W sr^-1 m^-2; E = pi * ke
+    // Specular reflectance (docs/design.md §1.2), kd + ks in [0, 1] per channel: an ideal mirror
+    // at roughness 0, else the glossy lobe of MGF's `rs` with roughness its RMS facet slope.
+    // The path tracer reflects it; the radiosity engine absorbs it.
+    Eigen::Vector3d ks{0, 0, 0};
+    double roughness = 0;  // in [0, 1]
 };
 
 struct View {

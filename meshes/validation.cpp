@@ -177,6 +177,21 @@ std::optional<std::string> check_reflectance(const Material& m, bool allow_one) 
     return check_channels(m, m.kd, "reflectance", 1.0, "not below 1");
 }
 
+std::optional<std::string> check_specular(const Material& m, bool allow_one) {
+    if (auto error = check_channels(m, m.ks, "specular reflectance", INFINITY, "not finite")) return error;
+    if (!(m.roughness >= 0 && m.roughness <= kMaxRoughness)) {
+        return fmt::format("roughness {} of material {} is out of range: hmcr reads 0 (a mirror) "
+                           "to {:g}",
+                           m.roughness, quote(m.name), kMaxRoughness);
+    }
+    const Eigen::Vector3d total = m.kd + m.ks;
+    if (allow_one) {
+        return check_channels(m, total, "diffuse + specular reflectance",
+                              std::nextafter(1.0, 2.0), "above 1");
+    }
+    return check_channels(m, total, "diffuse + specular reflectance", 1.0, "not below 1");
+}
+
 std::optional<std::string> check_emission(const Material& m) {
     return check_channels(m, m.ke, "emission", kMaxRadiance,
                           fmt::format("not below {:g} W/(sr m^2)", kMaxRadiance).c_str());

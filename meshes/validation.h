@@ -27,6 +27,9 @@ inline constexpr double kMaxRadiance = 1e20;
 // from about 7e12 m. A scene scaled by 1e13 already solves differently from the same scene at
 // 1e12; by 1e15 no ray finds the light.
 inline constexpr double kMaxCoordinate = 1e12;
+// The largest roughness (RMS facet slope) of a glossy lobe: MGF calls values above 0.2 unusual,
+// and the Gaussian facet model means little once facets tilt by 45 degrees on average.
+inline constexpr double kMaxRoughness = 1;
 
 // The longest edge of a closed polygon: the length the degeneracy tolerances are relative to.
 double largest_edge(const std::vector<Eigen::Vector3d>& corners);
@@ -67,5 +70,8 @@ std::optional<std::pair<std::size_t, std::size_t>> find_duplicate_face(
 // names the material.
 std::optional<std::string> check_reflectance(const Material& m, bool allow_one = false);
 std::optional<std::string> check_emission(const Material& m);
+// Checks Ks not negative, the roughness in [0, kMaxRoughness] and Kd + Ks in [0, 1) (or [0, 1]
+// when allow_one) per channel: a surface reflects at most what it receives.
+std::optional<std::string> check_specular(const Material& m, bool allow_one = false);
 
 }  // namespace hmcr

@@ -84,7 +84,8 @@ PatchSet build_patch_set(const PatchMesh& mesh) {
     set.materials.clear();
     for (const FaceMaterial& m : materials.table()) {
         set.materials.push_back({Rgb(m.reflectance[0], m.reflectance[1], m.reflectance[2]),
-                                 Rgb(m.emission[0], m.emission[1], m.emission[2])});
+                                 Rgb(m.emission[0], m.emission[1], m.emission[2]),
+                                 Rgb(m.specular[0], m.specular[1], m.specular[2]), m.roughness});
     }
     set.vertices = face_vertices(mesh);
     set.patches.reserve(mesh.n_faces());

@@ -68,8 +68,12 @@ private:
 static_assert(sizeof(Patch) == 208);
 
 struct PatchMaterial {
-    Rgb reflectance = Rgb::Zero();
-    Rgb emission = Rgb::Zero();  // emitted radiosity E, W/m^2
+    Rgb reflectance = Rgb::Zero();  // diffuse: the radiosity engine's rho
+    Rgb emission = Rgb::Zero();     // emitted radiosity E, W/m^2
+    // Specular reflectance and its lobe's roughness (0: a mirror), which only the path tracer
+    // reflects: the radiosity engine absorbs it (docs/design.md §1.2).
+    Rgb specular = Rgb::Zero();
+    double roughness = 0;
 };
 
 // The patches of a mesh in face order, their materials, the mesh vertex of each corner, and the

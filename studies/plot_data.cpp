@@ -226,7 +226,11 @@ json plot_data_of_table(const std::filesystem::path& table) {
             std::vector<SamplingCell> cells;
             for (const json& c : j.at("cells")) cells.push_back(sampling_cell_from_json(c));
             check_names(criterion_registry(), cells, [](const SamplingCell& c) { return c.sampler; });
-            return sampling_plot_data(scene, cells, splits_from_json(j.at("error_split")));
+            // With several spp values the splits are by spp first, and the plots show none.
+            const json& spp = options.at("spp");
+            const bool one_spp = !spp.is_array() || spp.size() == 1;
+            return sampling_plot_data(
+                scene, cells, one_spp ? splits_from_json(j.at("error_split")) : ErrorSplits{});
         }
         throw InputError("neither a meshing study's table (options.budgets) nor a sampling "
                          "study's (options.samplers)");

@@ -35,22 +35,33 @@ void validate(const SamplingStudyOptions& o) {
         }
     }
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
-    check_study_size(o.samplers.size(), o.seeds, o.trace.seed);
-    if (o.output.empty()) throw InputError("study: no output folder given");
-    for (const Criterion* s : o.samplers) {
-        TraceOptions t = o.trace;
-        t.sampler = s;
-        validate_trace_options(t);  // the spp target each sampler can reach
+    if (o.spps.empty()) throw InputError("study: no spp given");
+    for (auto it = o.spps.begin(); it != o.spps.end(); ++it) {
+        if (std::find(o.spps.begin(), it, *it) != it) {
+            throw InputError(fmt::format("study: spp {} is given twice", *it));
+        }
     }
+    check_study_size(std::uint64_t(o.samplers.size()) * o.spps.size(), o.seeds, o.trace.seed);
+    if (o.output.empty()) throw InputError("study: no output folder given");
+    for (double spp : o.spps)
+        for (const Criterion* s : o.samplers) {
+            TraceOptions t = o.trace;
+            t.sampler = s;
+            t.spp = spp;
+            validate_trace_options(t);  // the spp target each sampler can reach
+        }
 }
 
-// OUT/figures/VIEW-KIND.png.
-fs::path figure_file(const SamplingStudyOptions& o, const View& view, const char* kind) {
-    return named_file(o.output / "figures", view.name + "-" + kind, ".png");
+// OUT/figures/VIEW-KIND.png, or VIEW-sppN-KIND.png in a study of several spp values.
+fs::path figure_file(const SamplingStudyOptions& o, const View& view, double spp,
+                     const char* kind) {
+    const std::string stem = o.spps.size() == 1 ? view.name : fmt::format("{}-spp{:g}", view.name, spp);
+    return named_file(o.output / "figures", stem + "-" + kind, ".png");
 }
 
 struct CellTask {
     const Criterion* sampler = nullptr;
+    double spp = 0;
     std::uint64_t seed = 0;
     std::string name;
 };
@@ -69,8 +80,8 @@ private:
     std::optional<SamplingCell> previous_cell(std::size_t index);
     SamplingCell compute(std::size_t index);
     SamplingView trace_view(const CellTask& t, const View& view, Progress& notes);
-    void write_figures(OutputSet& out, const View& view) const;
-    ErrorSplits error_splits(const std::vector<SamplingCell>& cells) const;
+    void write_figures(OutputSet& out, const View& view, double spp) const;
+    SppErrorSplits error_splits(const std::vector<SamplingCell>& cells) const;
     std::string where(std::size_t i) const {
         return fmt::format("[{}/{}] {}", i + 1, m_tasks.size(), m_tasks[i].name);
     }
@@ -89,12 +100,13 @@ private:
 SamplingStudy::SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, Progress& progress)
     : m_scene(scene), m_options(o), m_progress(progress) {
     validate(o);
-    for (const Criterion* s : o.samplers)
-        for (int k = 0; k < o.seeds; ++k) {
-            const std::uint64_t seed = o.trace.seed + std::uint64_t(k);
-            m_tasks.push_back(
-                {s, seed, sampling_cell_name(scene.name, std::string(s->name()), o.trace.spp, seed)});
-        }
+    for (double spp : o.spps)
+        for (const Criterion* s : o.samplers)
+            for (int k = 0; k < o.seeds; ++k) {
+                const std::uint64_t seed = o.trace.seed + std::uint64_t(k);
+                m_tasks.push_back({s, spp, seed,
+                                   sampling_cell_name(scene.name, std::string(s->name()), spp, seed)});
+            }
     // Rank 0 writes the tables and figures: it alone checks, locks and holds them, before any
     // work; every rank learns of a refusal.
     together(Ranks::world(), [&] {
@@ -110,7 +122,7 @@ std::optional<SamplingCell> SamplingStudy::previous_cell(std::size_t index) {
     CellFileRule<SamplingCell> rule;
     rule.parse = sampling_cell_from_json;
     rule.is_this_cell = [&](const SamplingCell& c) {
-        return c.scene == m_scene.name && c.sampler == t.sampler->name() && c.spp == m_options.trace.spp &&
+        return c.scene == m_scene.name && c.sampler == t.sampler->name() && c.spp == t.spp &&
                c.seed == t.seed;
     };
     rule.settings = m_settings;
@@ -133,9 +145,10 @@ std::vector<fs::path> SamplingStudy::outputs(std::size_t index) const {
 void SamplingStudy::run() {
     m_reference = read_reference_views(m_options.reference, m_scene);
     for (const auto& [name, v] : m_reference) m_reference8[name] = quantise(v.image, v.exposure);
-    for (const Criterion* s : m_options.samplers) {  // every cell's memory, before the first
+    for (const CellTask& t : m_tasks) {  // every cell's memory, before the first
         TraceOptions o = m_options.trace;
-        o.sampler = s;
+        o.sampler = t.sampler;
+        o.spp = t.spp;
         for (const auto& [name, v] : m_reference) {
             View sized;
             sized.width = v.image.width;
@@ -159,33 +172,36 @@ void SamplingStudy::run() {
     std::vector<std::string> views;
     for (const View& v : m_scene.views) {
         views.push_back(v.name);
-        write_figures(*m_tables, v);
+        for (double spp : m_options.spps) write_figures(*m_tables, v, spp);
     }
     write_sampling_tables(*m_tables, m_scene.name, m_options, views, cells, error_splits(cells));
     m_tables->commit();
 }
 
-ErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cells) const {
-    ErrorSplits splits;
-    for (const Criterion* sampler : m_options.samplers) {
-        const std::string s(sampler->name());
-        for (const View& v : m_scene.views) {
-            std::vector<Image8> images;
-            for (const SamplingCell& c : cells) {
-                const fs::path png =
-                    file("images", sampling_cell_name(c.scene, c.sampler, c.spp, c.seed) + "-" +
-                                       v.name, ".png");
-                if (c.sampler == s && c.ok() && fs::exists(png)) images.push_back(read_png(png));
+SppErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cells) const {
+    SppErrorSplits splits;
+    for (double spp : m_options.spps)
+        for (const Criterion* sampler : m_options.samplers) {
+            const std::string s(sampler->name());
+            for (const View& v : m_scene.views) {
+                std::vector<Image8> images;
+                for (const SamplingCell& c : cells) {
+                    const fs::path png = file(
+                        "images", sampling_cell_name(c.scene, c.sampler, c.spp, c.seed) + "-" + v.name,
+                        ".png");
+                    if (c.sampler == s && c.spp == spp && c.ok() && fs::exists(png))
+                        images.push_back(read_png(png));
+                }
+                if (images.size() >= 2)
+                    splits[spp][s][v.name] = split_error(images, m_reference8.at(v.name));
             }
-            if (images.size() >= 2) splits[s][v.name] = split_error(images, m_reference8.at(v.name));
         }
-    }
     return splits;
 }
 
 SamplingCell SamplingStudy::compute(std::size_t index) {
     const CellTask& t = m_tasks[index];
-    SamplingCell cell{m_scene.name, std::string(t.sampler->name()), m_options.trace.spp, t.seed, m_settings, "ok", "",
+    SamplingCell cell{m_scene.name, std::string(t.sampler->name()), t.spp, t.seed, m_settings, "ok", "",
                       {}, 0};
     const auto start = Clock::now();
     for (const View& v : m_scene.views) {
@@ -211,6 +227,7 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
     v.height = ref.image.height;
     TraceOptions o = m_options.trace;
     o.sampler = t.sampler;
+    o.spp = t.spp;
     o.seed = t.seed;
     if (m_options.display_criteria) o.criterion_exposure = ref.exposure;
     const TraceResult r = trace_image(*m_tracer, v, o, notes);
@@ -228,14 +245,15 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
             r.seconds};
 }
 
-// The first seed's images and density maps of every sampler (a white tile where a cell failed).
-void SamplingStudy::write_figures(OutputSet& out, const View& view) const {
+// The first seed's images and density maps of every sampler at one spp (a white tile where a
+// cell failed).
+void SamplingStudy::write_figures(OutputSet& out, const View& view, double spp) const {
     const Image8& ref = m_reference8.at(view.name);
     std::vector<Image8> images{ref}, maps;
     for (const Criterion* sampler : m_options.samplers) {
         const std::string name =
-            sampling_cell_name(m_scene.name, std::string(sampler->name()), m_options.trace.spp, m_options.trace.seed) + "-" +
-            view.name;
+            sampling_cell_name(m_scene.name, std::string(sampler->name()), spp, m_options.trace.seed) +
+            "-" + view.name;
         const fs::path image = file("images", name, ".png"), map = file("density", name, ".png");
         const bool ok = fs::exists(image) && fs::exists(map);
         Image8 blank(ref.width, ref.height);
@@ -244,8 +262,8 @@ void SamplingStudy::write_figures(OutputSet& out, const View& view) const {
         maps.push_back(ok ? read_png(map) : blank);
     }
     const int shrink = ref.width >= 128 ? 2 : 1;
-    write_png(out.temp(figure_file(m_options, view, "images")), montage(images, 4, shrink));
-    write_png(out.temp(figure_file(m_options, view, "density")), montage(maps, 4, shrink));
+    write_png(out.temp(figure_file(m_options, view, spp, "images")), montage(images, 4, shrink));
+    write_png(out.temp(figure_file(m_options, view, spp, "density")), montage(maps, 4, shrink));
 }
 
 }  // namespace
@@ -256,8 +274,10 @@ std::vector<fs::path> sampling_study_output_files(const Scene& scene,
                                 o.output / "table.md", o.output / "table.tex",
                                 plot_data_file(o.output)};
     for (const View& v : scene.views) {
-        files.push_back(figure_file(o, v, "images"));
-        files.push_back(figure_file(o, v, "density"));
+        for (double spp : o.spps) {
+            files.push_back(figure_file(o, v, spp, "images"));
+            files.push_back(figure_file(o, v, spp, "density"));
+        }
     }
     return files;
 }
@@ -283,6 +303,7 @@ nlohmann::json sampling_study_settings(const Scene& scene, const SamplingStudyOp
             {"tree_depth", t.tree_depth},
             {"display_criteria", o.display_criteria},
             {"fresh", t.fresh},
+            {"allocation", allocation_name(t.allocation)},
             {"path",
              {{"estimator", estimator_name(t.path.estimator)},
               {"max_depth", t.path.max_depth},

@@ -3,10 +3,10 @@
 // radiosity reference's images), as Table 1 and Figures 4-6 of Rigau, Feixas, Sbert,
 // "Refinement criteria based on f-divergences", EGSR 2003.
 //
-// A cell is one (sampler, seed): every view of the scene traced at the reference image's size
-// with the study's target spp (each adaptive sampler's threshold found by search), quantised
-// at the reference's exposure for the view and measured against the reference's image
-// (studies/metrics.h).
+// A cell is one (spp, sampler, seed): every view of the scene traced at the reference image's
+// size with that target spp (each adaptive sampler's threshold found by search, or its samples
+// allocated from its map), quantised at the reference's exposure for the view and measured
+// against the reference's image (studies/metrics.h).
 //
 // On disk (`hmcr study SCENE --reference REF --samplers LIST -o OUT`),
 // CELL = SCENE-SAMPLER-sppN-sSEED:
@@ -18,11 +18,14 @@
 //   OUT/figures/VIEW-images.png    the reference, then every sampler's image of the first
 //                                  seed, in the study's sampler order, 4 to a row, half size
 //   OUT/figures/VIEW-density.png   every sampler's density map of the first seed, the same way
+//                                  (with several spp values VIEW-sppN-images.png and
+//                                  VIEW-sppN-density.png, one of each per spp)
 //   OUT/table.json                 long form: options and every cell
 //   OUT/table.csv                  one row per cell and view
 //   OUT/table.md                   one row per sampler, mean +- standard error over seeds of
 //                                  the errors averaged over the views; the RMSEp split into
-//                                  bias and noise (from the seeds' images); one table per view
+//                                  bias and noise (from the seeds' images); one table per view;
+//                                  all of it once per spp value
 // A search that cannot reach the target (SppNotReached) is a result: the cell is written with
 // status "failed" and its message, and the tables leave it out of the means.
 #pragma once
@@ -47,7 +50,8 @@ struct SamplingStudyOptions {
     std::filesystem::path reference;           // a reference folder of either kind
     std::vector<const Criterion*> samplers = criterion_registry().all();
     int seeds = 3;                             // trace.seed .. trace.seed + seeds - 1
-    TraceOptions trace;                        // every cell's; sampler and seed set per cell
+    std::vector<double> spps{60};              // target mean spp of the cells, in order
+    TraceOptions trace;                        // every cell's; sampler, spp, seed set per cell
     // Adaptive criteria judge display values (TraceOptions::criterion_exposure), at the
     // reference's exposure of each view
     bool display_criteria = false;
@@ -79,7 +83,8 @@ struct SamplingCell {
 };
 
 // Throws InputError on options no sampling study can run with (an unknown or repeated sampler,
-// seeds < 1, bad trace options): checked before anything is read or written.
+// no or a repeated spp value, seeds < 1, bad trace options): checked before anything is read
+// or written.
 void validate_sampling_study(const SamplingStudyOptions& options);
 
 // What a cell's result depends on besides its sampler and seed: the scene's geometry, the
@@ -101,8 +106,9 @@ nlohmann::json sampling_cell_to_json(const SamplingCell& cell);
 SamplingCell sampling_cell_from_json(const nlohmann::json& j);
 
 // The RMSEp split into bias and noise (studies/metrics.h) of every sampler with two or more
-// successful seeds, by sampler and view: from the cells' images.
+// successful seeds, by sampler and view: from the cells' images. SppErrorSplits: by spp.
 using ErrorSplits = std::map<std::string, std::map<std::string, ErrorSplit>>;
+using SppErrorSplits = std::map<double, ErrorSplits>;
 
 // One sampler's split over all its views: the RMS of the views' biases and of their noises.
 ErrorSplit rms_over_views(const std::map<std::string, ErrorSplit>& by_view);
@@ -117,6 +123,7 @@ std::vector<std::filesystem::path> sampling_study_output_files(const Scene& scen
 void write_sampling_tables(OutputSet& out, const std::string& scene,
                            const SamplingStudyOptions& options,
                            const std::vector<std::string>& views,
-                           const std::vector<SamplingCell>& cells, const ErrorSplits& splits = {});
+                           const std::vector<SamplingCell>& cells,
+                           const SppErrorSplits& splits = {});
 
 }  // namespace hmcr

@@ -94,18 +94,21 @@ SummaryTable split_summary(const ErrorSplits& splits, const std::vector<std::str
     return table;
 }
 
-// The paragraph above table.md's tables.
-std::string description(const SamplingStudyOptions& o) {
+// The paragraph above the tables of one spp value.
+std::string description(const SamplingStudyOptions& o, double spp) {
     return fmt::format(
         "{} samples per pixel (±{}%), {} seeds from {}, path estimator {}, at most {} bounces, "
-        "criteria on {}{}, reference {}. Mean ± "
+        "criteria on {}{}{}, reference {}. Mean ± "
         "standard error over the seeds whose searches succeeded (seeds column). RMSE on the "
         "0–255 scale and PSNR in dB against the reference at its exposure; spp: the mean "
         "reached; rays: traced, the threshold search's included. The best mean of each error "
         "column is in bold.",
-        o.trace.spp, 100 * o.trace.spp_tolerance, o.seeds, o.trace.seed,
+        spp, 100 * o.trace.spp_tolerance, o.seeds, o.trace.seed,
         estimator_name(o.trace.path.estimator), o.trace.path.max_depth,
         o.display_criteria ? "display values" : "radiance",
+        o.trace.allocation == Allocation::map
+            ? ", adaptive samples allocated from a map of 8 uniform samples per pixel"
+            : "",
         o.trace.fresh ? ", adaptive images from fresh samples" : "", o.reference.string());
 }
 
@@ -115,11 +118,12 @@ constexpr const char* kSplitText =
     "noise and the 8-bit rounding, which every sampler shares; an unbiased sampler shows only "
     "that.";
 
-std::string md_document(const std::string& scene, const SamplingStudyOptions& o,
+// The Markdown document of the cells at one spp.
+std::string md_document(const std::string& scene, const SamplingStudyOptions& o, double spp,
                         const std::vector<std::string>& views,
                         const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
     std::string out = fmt::format("# Sampling study: {}\n\n{}\n\n## Mean over the views ({})\n\n{}\n",
-                                  scene, description(o), fmt::join(views, ", "),
+                                  scene, description(o, spp), fmt::join(views, ", "),
                                   markdown(summary(cells, "")));
     if (!splits.empty()) {
         out += fmt::format("## Bias and noise\n\n{}\n\n{}\n", kSplitText,
@@ -130,26 +134,29 @@ std::string md_document(const std::string& scene, const SamplingStudyOptions& o,
     return out;
 }
 
-// table.tex: table.md's tables as floats, to \input into a paper with booktabs.
-std::string tex_document(const std::string& scene, const SamplingStudyOptions& o,
-                         const std::vector<std::string>& views,
-                         const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
-    const std::string name = latex_text(scene), label = "tab:" + latex_label(scene) + "-sampling";
+// table.tex's floats of the cells at one spp; `at` names the spp in captions and labels when the
+// study has several.
+std::string tex_floats(const std::string& scene, double spp, bool several,
+                       const std::vector<std::string>& views,
+                       const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+    const std::string name = latex_text(scene);
+    const std::string at = several ? fmt::format(" at {:g} spp", spp) : "";
+    const std::string label = "tab:" + latex_label(scene) + "-sampling" +
+                              (several ? fmt::format("-spp{:g}", spp) : "");
     const std::string what = "mean $\\pm$ standard error over the seeds; the best mean of each "
                              "error column in bold.";
-    std::string out = fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}} and "
-                                  "\\usepackage{{graphicx}}.\n% {}\n",
-                                  name, latex_text(description(o)));
-    out += latex_float(fmt::format("Sampling study of {}, the mean over the views: {}", name, what),
-                     label, summary(cells, ""));
+    std::string out = latex_float(
+        fmt::format("Sampling study of {}{}, the mean over the views: {}", name, at, what), label,
+        summary(cells, ""));
     if (!splits.empty()) {
-        out += latex_float(fmt::format("Sampling study of {}: RMSEp split into bias and noise. {}",
-                                     name, latex_text(kSplitText)),
-                         label + "-split", split_summary(splits, sampler_order(cells)));
+        out += latex_float(fmt::format("Sampling study of {}{}: RMSEp split into bias and noise. {}",
+                                       name, at, latex_text(kSplitText)),
+                           label + "-split", split_summary(splits, sampler_order(cells)));
     }
     for (const std::string& v : views) {
-        out += latex_float(fmt::format("Sampling study of {}, view {}: {}", name, latex_text(v), what),
-                         label + "-" + latex_label(v), summary(cells, v));
+        out += latex_float(
+            fmt::format("Sampling study of {}{}, view {}: {}", name, at, latex_text(v), what),
+            label + "-" + latex_label(v), summary(cells, v));
     }
     return out;
 }
@@ -234,16 +241,25 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
 void write_sampling_tables(OutputSet& out, const std::string& scene,
                            const SamplingStudyOptions& o,
                            const std::vector<std::string>& views,
-                           const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+                           const std::vector<SamplingCell>& cells, const SppErrorSplits& splits) {
+    // error_split: by sampler and view, and with several spp values by spp first
     nlohmann::json split_json = nlohmann::json::object();
-    for (const auto& [sampler, by_view] : splits)
-        for (const auto& [view, e] : by_view)
-            split_json[sampler][view] = {{"bias_rmse_p", e.bias}, {"noise_rmse_p", e.noise}};
+    for (const auto& [spp, by_sampler] : splits)
+        for (const auto& [sampler, by_view] : by_sampler)
+            for (const auto& [view, e] : by_view) {
+                const nlohmann::json part = {{"bias_rmse_p", e.bias}, {"noise_rmse_p", e.noise}};
+                if (o.spps.size() == 1) {
+                    split_json[sampler][view] = part;
+                } else {
+                    split_json[fmt::format("{:g}", spp)][sampler][view] = part;
+                }
+            }
     nlohmann::json all = nlohmann::json::array();
     for (const SamplingCell& c : cells) all.push_back(sampling_cell_to_json(c));
     const nlohmann::json table = {{"scene", scene},
                                   {"options",
-                                   {{"spp", o.trace.spp},
+                                   {{"spp", o.spps},
+                                    {"allocation", allocation_name(o.trace.allocation)},
                                     {"spp_tolerance", o.trace.spp_tolerance},
                                     {"samplers", sampler_order(cells)},
                                     {"seeds", o.seeds},
@@ -259,12 +275,28 @@ void write_sampling_tables(OutputSet& out, const std::string& scene,
                                   {"cells", all}};
     write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
     write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));
-    write_text_atomically(out.temp(o.output / "table.md"),
-                          md_document(scene, o, views, cells, splits));
+    std::string md, tex;
+    const bool several = o.spps.size() > 1;
+    for (double spp : o.spps) {
+        std::vector<SamplingCell> at_spp;
+        for (const SamplingCell& c : cells)
+            if (c.spp == spp) at_spp.push_back(c);
+        const auto it = splits.find(spp);
+        const ErrorSplits& split = it == splits.end() ? ErrorSplits{} : it->second;
+        md += (md.empty() ? "" : "\n") + md_document(scene, o, spp, views, at_spp, split);
+        tex += tex_floats(scene, spp, several, views, at_spp, split);
+    }
+    write_text_atomically(out.temp(o.output / "table.md"), md);
     write_text_atomically(out.temp(o.output / "table.tex"),
-                          tex_document(scene, o, views, cells, splits));
+                          fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}} "
+                                      "and \\usepackage{{graphicx}}.\n% {}\n{}",
+                                      latex_text(scene), latex_text(description(o, o.spps.front())),
+                                      tex));
+    // The plots' bias and noise bars are those of a study of one spp.
+    const ErrorSplits one_spp =
+        splits.size() == 1 && !several ? splits.begin()->second : ErrorSplits{};
     write_text_atomically(out.temp(plot_data_file(o.output)),
-                          plot_data_text(sampling_plot_data(scene, cells, splits)));
+                          plot_data_text(sampling_plot_data(scene, cells, one_spp)));
 }
 
 }  // namespace hmcr

@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "common/interrupt.h"
@@ -103,7 +105,9 @@ void BatchRun::add_batch(const PixelTracer& tracer) {
 // sample of every pixel (tens of GB at 256 x 256).
 class UniformRun final : public PixelRun {
 public:
-    UniformRun(std::uint32_t samples, int x, int y) : m_max(samples), m_x(x), m_y(y) {}
+    // Samples first .. end - 1 (first a multiple of 8).
+    UniformRun(std::uint32_t first, std::uint32_t end, int x, int y)
+        : m_first(first), m_max(end), m_done(first), m_x(x), m_y(y) {}
 
     void extend(double, const PixelTracer& tracer) override {
         for (; m_done < m_max; m_done = std::min(m_done + kBatchSize, m_max)) {
@@ -115,14 +119,16 @@ public:
                         });
         }
     }
-    std::uint32_t samples(double) const override { return m_done; }
-    Rgb radiance(double) const override { return m_sum / double(m_done); }
+    std::uint32_t samples(double) const override { return m_done - m_first; }
+    Rgb radiance(double) const override {
+        return m_done > m_first ? Rgb(m_sum / double(m_done - m_first)) : Rgb::Zero();
+    }
     std::uint64_t rays(double) const override { return m_rays; }
     std::uint64_t rays_traced() const override { return m_rays; }
     double first_value() const override { return std::numeric_limits<double>::quiet_NaN(); }
 
 private:
-    std::uint32_t m_max, m_done = 0;
+    std::uint32_t m_first, m_max, m_done;
     int m_x, m_y;
     Rgb m_sum = Rgb::Zero();
     std::uint64_t m_rays = 0;
@@ -140,8 +146,26 @@ std::uint64_t batch_run_bytes(const Criterion& criterion, std::uint32_t max_samp
 
 std::unique_ptr<PixelRun> make_batch_run(const Criterion& criterion, std::uint32_t max_samples,
                                          int x, int y) {
-    if (criterion.scheme() == Scheme::uniform) return std::make_unique<UniformRun>(max_samples, x, y);
+    if (criterion.scheme() == Scheme::uniform) {
+        return std::make_unique<UniformRun>(0, max_samples, x, y);
+    }
     return std::make_unique<BatchRun>(criterion, max_samples, x, y);
+}
+
+std::vector<TracedSample> trace_pixel_batch(const PixelTracer& tracer, int x, int y,
+                                           std::uint32_t first, std::uint32_t end) {
+    std::vector<TracedSample> out;
+    out.reserve(end - first);
+    trace_batch(tracer, x, y, first, end, [&](const TracedSample& t) { out.push_back(t); });
+    return out;
+}
+
+std::unique_ptr<PixelRun> make_uniform_run(std::uint32_t first, std::uint32_t end, int x, int y) {
+    if (first % kBatchSize != 0 || first > end) {
+        throw std::invalid_argument("make_uniform_run: samples " + std::to_string(first) + ".." +
+                                    std::to_string(end));
+    }
+    return std::make_unique<UniformRun>(first, end, x, y);
 }
 
 }  // namespace hmcr

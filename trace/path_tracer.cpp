@@ -5,7 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "rays/sampling.h"
+#include "trace/bsdf.h"
 
 namespace hmcr {
 namespace {
@@ -26,6 +26,7 @@ Vec3 on_plane(const Patch& p, const Vec3& x) {
 struct PathTracer::Vertex {
     Vec3 point;
     std::uint32_t patch = 0;
+    Vec3 wo;  // unit, back along the path that arrived
 };
 
 std::string estimator_name(Estimator e) {
@@ -72,7 +73,7 @@ CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& r
     const double cos_eye = -p.normal.dot(direction);
     if (cos_eye <= 0) return s;  // a back face: black
     s.geometry = cos_eye / (hit->distance * hit->distance);
-    const Vertex v{on_plane(p, origin + hit->distance * direction), hit->patch};
+    const Vertex v{on_plane(p, origin + hit->distance * direction), hit->patch, -direction};
     s.radiance = emitted(hit->patch) + radiance(v, rng, s.rays);
     return s;
 }
@@ -82,14 +83,17 @@ Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
     Rgb sum = Rgb::Zero(), beta = Rgb::Ones();
     for (int bounce = 1; bounce <= m_options.max_depth; ++bounce) {
         const Patch& p = m_set.patches[v.patch];
-        const Rgb& rho = m_set.reflectance(p);
-        if ((rho <= 0).all()) break;
-        if (m_options.estimator != Estimator::bsdf) {
-            sum += beta * rho * next_event(v, rng, rays);
+        const Bsdf bsdf(m_set.materials[p.material], p.normal, v.wo);
+        if (bsdf.black()) break;
+        if (m_options.estimator != Estimator::bsdf && bsdf.has_smooth_lobe()) {
+            Vec3 w = Vec3::Zero();
+            const Rgb light = next_event(v, bsdf, rng, rays, w);
+            sum += beta * bsdf.pi_f(w) * light;
         }
-        const double xi1 = rng.uniform(), xi2 = rng.uniform();
-        const Vec3 wi = sample_cosine_hemisphere(p.normal, xi1, xi2);
-        beta *= rho;  // f cos / pdf = (rho / pi) cos / (cos / pi)
+        const auto s = bsdf.sample(rng);
+        if (!s) break;
+        const Vec3& wi = s->wi;
+        beta *= s->weight;
         ++rays;
         const auto hit = m_scene.first_hit(v.point, wi);
         if (!hit) break;
@@ -98,12 +102,13 @@ Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
         if (cos_q <= 0) break;  // a back face absorbs
         const double pdf_light =
             m_lights.pdf_area(hit->patch) * hit->distance * hit->distance / cos_q;
-        if (m_options.estimator == Estimator::bsdf || pdf_light == 0) {
+        // Through a mirror the emitter counts whole: next-event estimation cannot find it.
+        if (s->delta || m_options.estimator == Estimator::bsdf || pdf_light == 0) {
             sum += beta * emitted(hit->patch);
         } else if (m_options.estimator == Estimator::mis) {
-            sum += beta * emitted(hit->patch) * power_heuristic(p.normal.dot(wi) / kPi, pdf_light);
+            sum += beta * emitted(hit->patch) * power_heuristic(s->pdf, pdf_light);
         }
-        v = {on_plane(q, v.point + hit->distance * wi), hit->patch};
+        v = {on_plane(q, v.point + hit->distance * wi), hit->patch, -wi};
         if (bounce >= m_options.roulette_depth) {
             const double survive = std::min(1.0, beta.maxCoeff());
             if (rng.uniform() >= survive) break;
@@ -113,22 +118,23 @@ Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
     return sum;
 }
 
-// Next-event estimate of the irradiance at v from the emitters, divided by pi: the caller's
-// rho times it is the directly reflected radiance.
-Rgb PathTracer::next_event(const Vertex& v, Rng& rng, std::uint32_t& rays) const {
+// Next-event estimate of the irradiance at v from the emitters, divided by pi, along the
+// direction w it sampled: the caller's pi f(wo, w) times it is the directly reflected radiance.
+Rgb PathTracer::next_event(const Vertex& v, const Bsdf& bsdf, Rng& rng, std::uint32_t& rays,
+                           Vec3& w) const {
     const double xi = rng.uniform(), xi1 = rng.uniform(), xi2 = rng.uniform();
     const EmitterPoint e = m_lights.sample(m_set.patches, xi, xi1, xi2);
     const Vec3 d = e.point - v.point;
     const double r2 = d.squaredNorm();
     if (!(r2 > 0)) return Rgb::Zero();
-    const Vec3 w = d / std::sqrt(r2);
+    w = d / std::sqrt(r2);
     const double cos_x = m_set.patches[v.patch].normal.dot(w);
     const double cos_y = -m_set.patches[e.patch].normal.dot(w);
     if (cos_x <= 0 || cos_y <= 0) return Rgb::Zero();
     ++rays;
     if (!m_scene.visible(v.point, e.point)) return Rgb::Zero();
     const double weight = m_options.estimator == Estimator::mis
-                              ? power_heuristic(e.pdf_area * r2 / cos_y, cos_x / kPi)
+                              ? power_heuristic(e.pdf_area * r2 / cos_y, bsdf.pdf(w))
                               : 1.0;
     return emitted(e.patch) * (weight * cos_x * cos_y / (r2 * kPi * e.pdf_area));
 }

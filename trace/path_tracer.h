@@ -1,16 +1,21 @@
 // A path tracer of the radiosity engine's scenes: the same patches through the same
 // Embree facade, so that a traced image is an independent solution of the same light transport.
 //
-// Surfaces are Lambertian with reflectance rho; an emitter has radiance Le = E / pi (E its
+// Surfaces reflect diffusely with reflectance rho, plus a mirror or a glossy lobe where the
+// material has specular reflectance (trace/bsdf.h); an emitter has radiance Le = E / pi (E its
 // emitted radiosity, pi Ke) from its front face only. Back faces of anything are black and
 // absorb, as in the radiosity engine, where a ray that hits a back face deposits nothing.
 //
 // The estimator of the radiance along a camera ray (Veach 1997, ch. 9; pbrt's path integrator):
-//   - next-event estimation: at every bounce one point y on the emitters (trace/emitter_sampler.h)
-//     and a shadow ray, contributing f cos_x cos_y Le / (r^2 p_A(y));
-//   - BSDF sampling: a cosine-distributed continuation, throughput times rho;
+//   - next-event estimation: at every bounce on a surface with a diffuse or glossy lobe one
+//     point y on the emitters (trace/emitter_sampler.h) and a shadow ray, contributing
+//     f cos_x cos_y Le / (r^2 p_A(y));
+//   - BSDF sampling: a continuation drawn by trace/bsdf.h (cosine-distributed on a diffuse
+//     surface), throughput times f cos / p (rho on a diffuse surface);
 //   - both kinds of path to an emitter weighed by the power heuristic (beta = 2) of their two
-//     densities in solid angle, p_bsdf = cos_x / pi and p_light = p_A(y) r^2 / cos_y;
+//     densities in solid angle, p_bsdf (cos_x / pi on a diffuse surface) and
+//     p_light = p_A(y) r^2 / cos_y; a mirror's reflection has no density, and an emitter seen
+//     through it counts with weight 1 (next-event estimation cannot sample it);
 //   - Russian roulette from bounce `roulette_depth` on: continue with probability
 //     q = min(1, max channel of the throughput) and divide the throughput by q, which keeps the
 //     estimator unbiased;
@@ -29,6 +34,8 @@
 #include "trace/emitter_sampler.h"
 
 namespace hmcr {
+
+class Bsdf;
 
 enum class Estimator { mis, nee, bsdf };
 
@@ -64,7 +71,8 @@ public:
 private:
     struct Vertex;  // a surface point a path reflects at
     Rgb emitted(std::uint32_t patch) const;  // Le = E / pi
-    Rgb next_event(const Vertex& v, Rng& rng, std::uint32_t& rays) const;
+    Rgb next_event(const Vertex& v, const Bsdf& bsdf, Rng& rng, std::uint32_t& rays,
+                   Vec3& w) const;
     Rgb radiance(Vertex v, Rng& rng, std::uint32_t& rays) const;
 
     PatchSet m_set;

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "trace/pixel_tracer.h"
 #include "trace/criteria/criterion.h"
@@ -56,6 +57,15 @@ std::unique_ptr<PixelRun> make_pixel_run(const Criterion& criterion, const RunLi
 std::unique_ptr<PixelRun> make_batch_run(const Criterion& criterion, std::uint32_t max_samples,
                                          int x, int y);
 std::unique_ptr<PixelRun> make_tree_run(const Criterion& criterion, int max_depth, int x, int y);
+// Samples first .. end - 1 of pixel (x, y), one batch (first a multiple of 8, end - first <= 8),
+// in the order of strata drawn for the batch: the batches every batch run takes.
+std::vector<TracedSample> trace_pixel_batch(const PixelTracer& tracer, int x, int y,
+                                           std::uint32_t first, std::uint32_t end);
+// Samples first .. end - 1 of the pixel's uniform batches (first a multiple of 8, at most end):
+// the rest of a pixel whose first samples were traced by another run, the same samples a
+// uniform run of `end` takes after them. Its radiance is the mean of those samples alone (0 for
+// none).
+std::unique_ptr<PixelRun> make_uniform_run(std::uint32_t first, std::uint32_t end, int x, int y);
 
 // The most memory one pixel's run holds: every sample it can take kept (a uniform run keeps its
 // sums alone), with the spare capacity of growing vectors. An adaptive trace is refused before it

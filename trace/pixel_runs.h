@@ -13,21 +13,42 @@
 
 namespace hmcr {
 
-class PixelRuns {
+// Every pixel's samples of one image as a function of the threshold: what the threshold search
+// (trace/trace_image.cpp) probes. PixelRuns runs each pixel on its own; PassRuns
+// (trace/pass_runs.h) the image in passes.
+class SampleRuns {
 public:
-    PixelRuns(const Criterion& criterion, const RunLimits& limits, const PixelTracer& tracer);
-
-    // Traces what every pixel lacks at the threshold (rows in blocks, `progress` advanced
-    // between them); returns the mean samples per pixel at it. Throws Interrupted within a
-    // pixel after a signal (PixelRun::extend); the runs are then unusable.
-    double extend(double threshold, Progress& progress = no_progress());
+    virtual ~SampleRuns() = default;
+    // Traces what the image lacks at the threshold (`progress` advanced as it goes); returns the
+    // mean samples per pixel at it. A lower threshold only adds samples to a higher one's.
+    // Throws Interrupted (common/interrupt.h) after a signal; the runs are then unusable.
+    virtual double extend(double threshold, Progress& progress = no_progress()) = 0;
 
     // After extend(threshold):
-    Image image(double threshold) const;
-    std::vector<std::uint32_t> samples(double threshold) const;  // per pixel, row-major
-    std::uint64_t rays(double threshold) const;
-    std::uint64_t rays_traced() const;  // including samples beyond the threshold
-    std::vector<double> first_values() const;
+    virtual Image image(double threshold) const = 0;
+    virtual std::vector<std::uint32_t> samples(double threshold) const = 0;  // per pixel, row-major
+    virtual std::uint64_t rays(double threshold) const = 0;
+    virtual std::uint64_t rays_traced() const = 0;  // including samples beyond the threshold
+    // The criterion's value of each pixel's first samples (after an extend).
+    virtual std::vector<double> first_values() const = 0;
+};
+
+class PixelRuns final : public SampleRuns {
+public:
+    PixelRuns(const Criterion& criterion, const RunLimits& limits, const PixelTracer& tracer);
+    // Given runs, one per pixel in row-major order.
+    PixelRuns(std::vector<std::unique_ptr<PixelRun>> runs, const PixelTracer& tracer)
+        : m_tracer(tracer), m_runs(std::move(runs)) {}
+
+    // Traces what every pixel lacks at the threshold (rows in blocks, `progress` advanced
+    // between them). Throws Interrupted within a pixel after a signal (PixelRun::extend).
+    double extend(double threshold, Progress& progress = no_progress()) override;
+
+    Image image(double threshold) const override;
+    std::vector<std::uint32_t> samples(double threshold) const override;
+    std::uint64_t rays(double threshold) const override;
+    std::uint64_t rays_traced() const override;
+    std::vector<double> first_values() const override;
 
 private:
     friend Image fresh_image(const PixelTracer&, const std::vector<std::uint32_t>&,

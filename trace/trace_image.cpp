@@ -12,6 +12,8 @@
 #include "common/memory.h"
 #include "common/stopwatch.h"
 #include "image/camera.h"
+#include "trace/map_allocation.h"
+#include "trace/pass_runs.h"
 #include "trace/pixel_runs.h"
 #include "trace/criteria/display_values.h"
 #include "trace/criteria/registry.h"
@@ -24,8 +26,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // study uses (1, 2, 3, ...).
 constexpr std::uint64_t kFreshSeed = std::uint64_t(1) << 62;
 
-std::uint32_t min_samples_per_pixel(const Criterion& c) {
-    return c.scheme() == Scheme::quadtree ? kNodeSamples : kBatchSize;
+// The quadtree's own limits apply where it refines; the map's first pass is a batch of 8.
+bool refines_quadtree(const TraceOptions& o) {
+    return o.sampler->scheme() == Scheme::quadtree && o.allocation == Allocation::refine;
+}
+
+std::uint32_t min_samples_per_pixel(const TraceOptions& o) {
+    return refines_quadtree(o) ? kNodeSamples : kBatchSize;
 }
 
 void validate(const TraceOptions& o, const Criterion& c) {
@@ -53,7 +60,7 @@ void validate(const TraceOptions& o, const Criterion& c) {
         }
         return;
     }
-    const std::uint32_t lo = min_samples_per_pixel(c), hi = max_samples_per_pixel(o);
+    const std::uint32_t lo = min_samples_per_pixel(o), hi = max_samples_per_pixel(o);
     if (!(o.spp >= lo && o.spp <= hi)) {
         throw InputError(
             fmt::format("spp must be in {}..{} for sampler {} (its first samples "
@@ -77,12 +84,12 @@ double first_probe(std::vector<double> values, double spp, double min, double ma
 }
 
 // The search: first every pixel's first samples, then the probes.
-double search(PixelRuns& runs, const TraceOptions& o, const Criterion& c,
-              std::vector<ThresholdProbe>& probes, Progress& progress) {
+double search(SampleRuns& runs, const TraceOptions& o, std::vector<ThresholdProbe>& probes,
+              Progress& progress) {
     progress.stage("first samples");
     runs.extend(kInf, progress);
     const double start =
-        first_probe(runs.first_values(), o.spp, min_samples_per_pixel(c), max_samples_per_pixel(o));
+        first_probe(runs.first_values(), o.spp, min_samples_per_pixel(o), max_samples_per_pixel(o));
     if (start == 0) {
         throw SppNotReached(
             fmt::format("{} samples per pixel not reached: every pixel's first "
@@ -99,10 +106,10 @@ double search(PixelRuns& runs, const TraceOptions& o, const Criterion& c,
     return search_threshold(spp_at, start, {o.spp, o.spp_tolerance}, probes);
 }
 
-double choose_threshold(const Criterion& c, PixelRuns& runs, const TraceOptions& o,
+double choose_threshold(const Criterion& c, SampleRuns& runs, const TraceOptions& o,
                         std::vector<ThresholdProbe>& probes, Progress& progress) {
     if (c.scheme() != Scheme::uniform && std::isnan(o.threshold)) {
-        return search(runs, o, c, probes, progress);
+        return search(runs, o, probes, progress);
     }
     const double threshold = c.scheme() == Scheme::uniform ? kInf : o.threshold;
     progress.stage("tracing");
@@ -117,21 +124,37 @@ RunLimits limits(const TraceOptions& o, const Criterion& c) {
     return l;
 }
 
+std::unique_ptr<SampleRuns> make_runs(const Criterion& c, const TraceOptions& o,
+                                      const PixelTracer& pixels) {
+    const RunLimits l = limits(o, c);
+    if (c.scheme() == Scheme::passes) return make_pass_runs(c, l.max_samples, pixels);
+    return std::make_unique<PixelRuns>(c, l, pixels);
+}
+
 }  // namespace
 
 std::string TraceOptions::to_string() const {
     return fmt::format(
         "TraceOptions{{sampler={}, spp={}, threshold={}, spp_tolerance={}, "
         "max_spp={}, tree_depth={}, seed={}, threads={}, criterion_exposure={}, fresh={}, "
-        "path={}}}",
+        "allocation={}, path={}}}",
         sampler->name(), spp, threshold, spp_tolerance, max_spp.value_or(0), tree_depth, seed,
-        threads, criterion_exposure, fresh, path.to_string());
+        threads, criterion_exposure, fresh, allocation_name(allocation), path.to_string());
+}
+
+std::string allocation_name(Allocation a) { return a == Allocation::map ? "map" : "refine"; }
+
+Allocation parse_allocation(const std::string& name) {
+    for (Allocation a : {Allocation::refine, Allocation::map}) {
+        if (allocation_name(a) == name) return a;
+    }
+    throw std::invalid_argument("allocation must be refine or map, got '" + name + "'");
 }
 
 void validate_trace_options(const TraceOptions& o) { validate(o, *o.sampler); }
 
 std::uint32_t max_samples_per_pixel(const TraceOptions& o) {
-    if (o.sampler->scheme() == Scheme::quadtree) {
+    if (refines_quadtree(o)) {
         return std::uint32_t(1) << (2 * (o.tree_depth + 1));
     }
     if (o.max_spp) return *o.max_spp;
@@ -143,15 +166,17 @@ void check_trace_memory(const TraceOptions& o, const View& view) {
     const Criterion& c = *o.sampler;
     const RunLimits l = limits(o, c);
     const double pixels = double(view.width) * double(view.height);
-    // Each pixel: its run, the pointer to it, its radiance and its sample count.
-    const double bytes = pixels * double(pixel_run_bytes(c, l) + sizeof(std::unique_ptr<PixelRun>) +
-                                         sizeof(Rgb) + sizeof(std::uint32_t));
-    const char* lower = c.scheme() == Scheme::quadtree ? "lower --tree-depth or --width"
-                        : c.scheme() == Scheme::batches
+    // Each pixel: its run, the pointer to it, its radiance and its sample count; the map keeps
+    // a first batch and a uniform run.
+    const bool map = c.scheme() != Scheme::uniform && o.allocation == Allocation::map;
+    const std::uint64_t run = map ? 2 * batch_run_bytes(c, kBatchSize) : pixel_run_bytes(c, l);
+    const double bytes = pixels * double(run + sizeof(std::unique_ptr<PixelRun>) + sizeof(Rgb) +
+                                         sizeof(std::uint32_t));
+    const char* lower = refines_quadtree(o) ? "lower --tree-depth or --width"
+                        : c.scheme() == Scheme::batches || c.scheme() == Scheme::passes
                             ? "lower --max-spp (default 8 x --spp) or --width"
                             : "lower --width";
-    const std::uint32_t most =
-        c.scheme() == Scheme::quadtree ? max_samples_per_pixel(o) : l.max_samples;
+    const std::uint32_t most = refines_quadtree(o) ? max_samples_per_pixel(o) : l.max_samples;
     require_memory(
         bytes,
         fmt::format("tracing {} x {} pixels at up to {} samples each{}", view.width, view.height,
@@ -188,14 +213,25 @@ TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceO
     }
     const Camera camera = make_camera(view);
     const PixelTracer pixels(tracer, camera, o.seed);
-    PixelRuns runs(criterion, limits(o, criterion), pixels);
     TraceResult r;
-    const double threshold = choose_threshold(criterion, runs, o, r.probes, progress);
+    if (adaptive && o.allocation == Allocation::map) {
+        const PixelTracer fresh(tracer, camera, o.seed ^ kFreshSeed);
+        MapTrace m = trace_from_map(criterion, pixels, o.fresh ? &fresh : nullptr, o.spp,
+                                    max_samples_per_pixel(o), progress);
+        r.image = std::move(m.image);
+        r.samples = std::move(m.samples);
+        r.rays = m.rays;
+        r.rays_traced = m.rays_traced;
+        r.seconds = seconds_since(start);
+        return r;
+    }
+    const std::unique_ptr<SampleRuns> runs = make_runs(criterion, o, pixels);
+    const double threshold = choose_threshold(criterion, *runs, o, r.probes, progress);
     r.threshold = criterion.scheme() == Scheme::uniform ? r.threshold : threshold;
-    r.image = runs.image(threshold);
-    r.samples = runs.samples(threshold);
-    r.rays = runs.rays(threshold);
-    r.rays_traced = runs.rays_traced();
+    r.image = runs->image(threshold);
+    r.samples = runs->samples(threshold);
+    r.rays = runs->rays(threshold);
+    r.rays_traced = runs->rays_traced();
     if (adaptive && o.fresh) {
         progress.stage("fresh samples");
         const PixelTracer fresh(tracer, camera, o.seed ^ kFreshSeed);

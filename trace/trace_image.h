@@ -24,6 +24,15 @@ namespace hmcr {
 // The most samples one pixel takes: the uniform sampler's spp, and an adaptive one's max_spp.
 inline constexpr std::uint32_t kMostSamplesPerPixel = 1'000'000;
 
+// How an adaptive sampler spends the budget (docs/design.md §10.6, §10.9): `refine`, its scheme
+// refines each pixel until the threshold that gives the mean spp (trace/threshold_search.h);
+// `map`, the papers' two passes (trace/map_allocation.h).
+enum class Allocation { refine, map };
+
+// "refine", "map"; parse_allocation throws std::invalid_argument on anything else.
+std::string allocation_name(Allocation a);
+Allocation parse_allocation(const std::string& name);
+
 struct TraceOptions {
     const Criterion* sampler = &uniform_criterion();  // trace/criteria/registry.h
     double spp = 16;                  // mean samples per pixel: exact for uniform (a whole
@@ -41,6 +50,7 @@ struct TraceOptions {
     // Adaptive samplers: the image from fresh samples at the counts the criterion chose
     // (fresh_image of trace/pixel_runs.h: unbiased, and about twice the rays)
     bool fresh = false;
+    Allocation allocation = Allocation::refine;  // adaptive samplers
     PathOptions path;
 
     std::string to_string() const;
@@ -63,7 +73,7 @@ struct TraceResult {
     SampleCounts counts() const;
 };
 
-// The most samples one pixel can get with these options (quadtree: 4^(depth + 1)).
+// The most samples one pixel can get with these options (a quadtree refining: 4^(depth + 1)).
 std::uint32_t max_samples_per_pixel(const TraceOptions& options);
 
 // Throws InputError on bad options: a target outside what the sampler can give. Commands call it

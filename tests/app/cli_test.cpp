@@ -144,7 +144,7 @@ TEST_F(Cli, SolveWritesTheMeshAndASummaryWithCountsAndTimings) {
 // An MGF file solves like an OBJ: a one-sided lamp over a floor, with a non-diffuse statement
 // told once; --mgf-segments sets the tessellation of its sphere.
 TEST_F(Cli, SolveReadsAnMgfFile) {
-    std::ofstream(m_dir / "lamp.mgf") << "m floor =\n sides 1\n rd 0.5\n rs 0.1 0\n"
+    std::ofstream(m_dir / "lamp.mgf") << "m floor =\n sides 1\n rd 0.5\n ts 0.1 0\n"
                                          "v a =\n p 0 0 0\nv b =\n p 1 0 0\nv c =\n p 1 1 0\n"
                                          "v d =\n p 0 1 0\nf a b c d\n"
                                          "m bulb =\n sides 1\n ed 100\nv o =\n p 0.5 0.5 1\n"
@@ -160,7 +160,7 @@ TEST_F(Cli, SolveReadsAnMgfFile) {
     EXPECT_GT(emitted, 100 * sphere * (1 - (M_PI / 8) * (M_PI / 8)));
     const CliRun loud = hmcr("solve " + (m_dir / "lamp.mgf").string() + " --rays 20000 -o " +
                              (m_dir / "lamp.vtp").string());
-    EXPECT_NE(loud.err.find("ignored (hmcr reads diffuse reflection rd and emission ed): rs 1 time"),
+    EXPECT_NE(loud.err.find("ignored (hmcr reads reflection rd and rs and emission ed): ts 1 time"),
               std::string::npos)
         << loud.err;
 }

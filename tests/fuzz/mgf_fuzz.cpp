@@ -5,7 +5,7 @@
 // 10^9 instances must end in an error, not a timeout), then repaired (or not: --strict) and
 // built into a patch mesh as the loader does. What the reader returns must hold finite positions
 // and valid corner and material indices; a loaded mesh, triangles and quads with reflectance in [0,
-// 1].
+// 1], diffuse + specular at most 1 and a roughness in [0, 1].
 #include <cmath>
 #include <cstdint>
 
@@ -38,9 +38,12 @@ void check_mesh(PatchMesh& mesh) {
         if (mesh.valence(fh) < 3 || mesh.valence(fh) > 4)
             crash("face that is neither a triangle nor a quad");
         for (int c = 0; c < 3; ++c) {
-            const double rho = material[fh].reflectance[c];
+            const double rho = material[fh].reflectance[c], ks = material[fh].specular[c];
             if (!(rho >= 0 && rho <= 1)) crash("bad reflectance");
+            if (!(ks >= 0 && rho + ks <= 1)) crash("bad specular reflectance");
         }
+        const double alpha = material[fh].roughness;
+        if (!(alpha >= 0 && alpha <= 1)) crash("bad roughness");
     }
 }
 

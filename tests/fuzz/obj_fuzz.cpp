@@ -23,10 +23,13 @@ void check_mesh(PatchMesh& mesh) {
         for (int c = 0; c < 3; ++c) {
             // 1 is accepted with a warning (docs/usage.md#repairs), above is refused.
             const double rho = material[fh].reflectance[c], e = material[fh].emission[c];
+            const double ks = material[fh].specular[c];
             if (!(rho >= 0 && rho <= 1)) crash("bad reflectance");
+            if (!(ks >= 0 && rho + ks <= 1)) crash("bad specular reflectance");
             if (!(e >= 0 && std::isfinite(e))) crash("bad emission");
             emitted += e;
         }
+        if (material[fh].roughness != 0) crash("an MTL mirror with a roughness");
         if (line[fh] <= 0) crash("face without a source line");
     }
     if (!(emitted > 0)) crash("loaded a scene without an emitter");

@@ -51,7 +51,7 @@ SamplingStudyOptions study(const fs::path& dir, std::vector<std::string> sampler
     o.samplers.clear();
     for (const std::string& name : samplers) o.samplers.push_back(test::criterion(name));
     o.seeds = seeds;
-    o.trace.spp = 12;
+    o.spps = {12};
     o.output = dir / "study";
     return o;
 }
@@ -99,6 +99,37 @@ TEST(SamplingStudy, WritesEveryFileAndResumes) {
     EXPECT_EQ(without_seconds(after), without_seconds(before));
 }
 
+// Several spp values: a cell per spp, sampler and seed; table.md once per spp; figures per spp;
+// the allocation recorded in the cells' settings.
+TEST(SamplingStudy, ASppListGivesCellsAndTablesPerSpp) {
+    const TempDir temp;
+    const Scene scene = load_scene("cornell");
+    write_small_reference(scene, 8, temp.path() / "ref");
+    SamplingStudyOptions o = study(temp.path(), {"uniform", "srhe"}, 2);
+    o.spps = {12, 24};
+    o.trace.allocation = Allocation::map;
+    run_sampling_study(scene, o);
+    for (const char* f : {"cells/cornell-srhe-spp12-s1.json", "cells/cornell-srhe-spp24-s2.json",
+                          "cells/cornell-uniform-spp24-s1.json", "figures/camera-spp12-images.png",
+                          "figures/corner-spp24-density.png"}) {
+        EXPECT_TRUE(fs::exists(o.output / f)) << f;
+    }
+    const auto cell =
+        nlohmann::json::parse(read_file(o.output / "cells" / "cornell-srhe-spp24-s1.json"));
+    EXPECT_EQ(cell["spp"], 24);
+    EXPECT_EQ(cell["settings"]["allocation"], "map");
+    EXPECT_NEAR(cell["views"]["camera"]["spp"].get<double>(), 24, 1.0 / 64);
+    const std::string md = read_file(o.output / "table.md");
+    for (const char* line : {"12 samples per pixel", "24 samples per pixel",
+                             "allocated from a map of 8 uniform samples per pixel"}) {
+        EXPECT_NE(md.find(line), std::string::npos) << line << "\n" << md;
+    }
+    const auto table = nlohmann::json::parse(read_file(o.output / "table.json"));
+    EXPECT_EQ(table["options"]["spp"], nlohmann::json({12, 24}));
+    EXPECT_EQ(table["cells"].size(), 8u);
+    EXPECT_TRUE(table["error_split"].contains("24"));
+}
+
 // Every face of a closed cube emits and reflects nothing: every sample sees the same radiance,
 // so no divergence criterion can refine and no threshold reaches 12 samples per pixel.
 TEST(SamplingStudy, UnreachableTargetIsAFailedCell) {
@@ -127,6 +158,11 @@ TEST(SamplingStudy, BadOptionsAreInputErrors) {
     EXPECT_THROW(run_sampling_study(scene, study(temp.path(), {"kl", "kl"}, 1)), InputError);
     EXPECT_THROW(run_sampling_study(scene, study(temp.path(), {"kl"}, 0)), InputError);
     EXPECT_THROW(run_sampling_study(scene, study(temp.path(), {"kl"}, 1)), InputError);  // no ref
+    SamplingStudyOptions twice = study(temp.path(), {"kl"}, 1);
+    twice.spps = {12, 12};
+    EXPECT_THROW(run_sampling_study(scene, twice), InputError);
+    twice.spps = {};
+    EXPECT_THROW(run_sampling_study(scene, twice), InputError);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "tests/support/statistics.h"
 
+#include <boost/math/special_functions/gamma.hpp>
+
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -84,6 +86,45 @@ testing::AssertionResult t_test(const std::string& what, const std::vector<doubl
     const double t = student_quantile(1e-3 / comparisons, double(e.n - 1));
     return within_standard_errors(what + " (t test, " + std::to_string(e.n) + " runs)", e.mean,
                                   expected, e.standard_error, bias_bound, t);
+}
+
+double chi_square_p_value(double statistic, double dof) {
+    return boost::math::gamma_q(dof / 2, statistic / 2);
+}
+
+testing::AssertionResult chi_square_test(const std::string& what, const std::vector<double>& observed,
+                                         const std::vector<double>& expected, int comparisons) {
+    if (observed.size() != expected.size()) {
+        return testing::AssertionFailure() << what << ": " << observed.size() << " cells observed, "
+                                           << expected.size() << " expected";
+    }
+    constexpr double kMinExpected = 5;
+    double statistic = 0, pooled_observed = 0, pooled_expected = 0;
+    int cells = 0;
+    for (std::size_t i = 0; i < observed.size(); ++i) {
+        if (expected[i] < kMinExpected) {
+            pooled_observed += observed[i];
+            pooled_expected += expected[i];
+            continue;
+        }
+        statistic += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+        ++cells;
+    }
+    if (pooled_expected > 0) {
+        statistic += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) /
+                     pooled_expected;
+        ++cells;
+    } else if (pooled_observed > 0) {
+        return testing::AssertionFailure() << what << ": " << pooled_observed
+                                           << " samples where none are expected";
+    }
+    const double dof = cells - 1, p = chi_square_p_value(statistic, dof);
+    const double level = 1e-3 / comparisons;
+    std::ostringstream msg;
+    msg << what << ": chi-square " << statistic << " on " << dof << " degrees of freedom, p = " << p
+        << (p >= level ? " >= " : " < ") << level;
+    return p >= level ? testing::AssertionSuccess() << msg.str()
+                      : testing::AssertionFailure() << msg.str();
 }
 
 }  // namespace hmcr::test

@@ -33,6 +33,16 @@ testing::AssertionResult within_standard_errors(const std::string& what, double 
 testing::AssertionResult t_test(const std::string& what, const std::vector<double>& samples,
                                 double expected, double bias_bound = 0, int comparisons = 1);
 
+// Pearson's chi-square goodness-of-fit test of observed counts against the expected counts of
+// the same cells (the same total), at level 1e-3 / comparisons (Bonferroni): cells expected
+// below 5 are pooled into one (Cochran's rule), so that the statistic's chi-square distribution
+// holds. The message names the statistic, its degrees of freedom and p-value.
+testing::AssertionResult chi_square_test(const std::string& what, const std::vector<double>& observed,
+                                         const std::vector<double>& expected, int comparisons = 1);
+
+// The upper-tail p-value of a chi-square statistic with `dof` degrees of freedom.
+double chi_square_p_value(double statistic, double dof);
+
 // Two-sided p-value of Student's t statistic `t` with `dof` degrees of freedom, and the
 // quantile with two-sided level `alpha`.
 double student_p_value(double t, double dof);

@@ -28,7 +28,9 @@ PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons) {
         }
         material[f] = std::uint32_t(table.size());
         table.push_back({{p.reflectance[0], p.reflectance[1], p.reflectance[2]},
-                          {p.emission[0], p.emission[1], p.emission[2]}});
+                          {p.emission[0], p.emission[1], p.emission[2]},
+                          {p.specular[0], p.specular[1], p.specular[2]},
+                          p.roughness});
         line[f] = 0;
     }
     return mesh;

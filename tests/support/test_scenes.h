@@ -12,6 +12,8 @@ struct TestPolygon {
     std::vector<Vec3> corners;  // counter-clockwise seen from the front
     Rgb reflectance = Rgb::Zero();
     Rgb emission = Rgb::Zero();  // radiosity E, W/m^2
+    Rgb specular = Rgb::Zero();  // the path tracer's mirror (roughness 0) or glossy lobe
+    double roughness = 0;
 };
 
 // A PatchMesh with the hmcr:* properties; vertices with equal positions are shared.

@@ -135,7 +135,7 @@ TEST(Criteria, UnknownNameListsTheValidOnes) {
     } catch (const InputError& e) {
         EXPECT_STREQ(e.what(),
                      "unknown sampler 'nope' (valid: uniform, cc, var, entropy, "
-                     "binary-entropy, kl, cs, he, srkl, srcs, srhe)");
+                     "binary-entropy, kl, cs, he, srkl, srcs, srhe, half-difference)");
     }
 }
 

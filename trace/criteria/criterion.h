@@ -13,6 +13,11 @@
 //             exceeds the threshold is split into 4 children (above the depth limit), each
 //             keeping the parent's sample that lies in it and adding 3 (Rigau, Feixas, Sbert,
 //             "Entropy-based adaptive supersampling", 2003, section 3.2 and Figure 5).
+//   passes    Blender Cycles' scheme: a first batch of 8 stratified samples in every pixel,
+//             then passes over the image, each giving one more batch of 8 to every pixel still
+//             unconverged; after a pass a pixel is unconverged while value() of all its samples
+//             exceeds the threshold or that of one of its 8 neighbours does (trace/pass_runs.h).
+//             A pixel that stopped never starts again.
 #pragma once
 
 #include <span>
@@ -27,7 +32,7 @@ struct PixelSample {
     double geometry = 0;         // cos(theta) / d^2 of the first hit seen from the eye; 0: none
 };
 
-enum class Scheme { uniform, batches, quadtree };
+enum class Scheme { uniform, batches, quadtree, passes };
 
 class Criterion {
 public:

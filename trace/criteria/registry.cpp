@@ -15,7 +15,8 @@ namespace hmcr {
     X(he)                \
     X(srkl)              \
     X(srcs)              \
-    X(srhe)
+    X(srhe)              \
+    X(half_difference)
 
 #define HMCR_DECLARE(name) std::unique_ptr<Criterion> make_##name##_criterion();
 HMCR_CRITERIA(HMCR_DECLARE)
