@@ -20,8 +20,11 @@ faces), 1970 vertices.
 """
 
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from obj_mesh import Mesh, fmt  # noqa: E402  (scenes/obj_mesh.py)
 
 LX, LY, LZ = 6.0, 3.0, 4.0    # room size (x, y up, z), metres
 TILE = 0.25                    # shell tile size: 24 x 16 x 12 tiles
@@ -44,32 +47,6 @@ MATERIALS = [
     ('cube_green', (0.12, 0.50, 0.15), None, 'green cube'),
     ('cube_teal', (0.10, 0.50, 0.50), None, 'teal cube'),
 ]
-
-
-def fmt(x):
-    s = ('%.6f' % x).rstrip('0').rstrip('.')
-    return '0' if s in ('', '-0') else s
-
-
-class Mesh:
-    def __init__(self):
-        self.verts = []
-        self.vid = {}
-        self.groups = []  # (name, material, [faces])
-
-    def v(self, p):
-        key = tuple(round(c, 6) for c in p)
-        if key not in self.vid:
-            self.verts.append(key)
-            self.vid[key] = len(self.verts)
-        return self.vid[key]
-
-    def group(self, name, mtl):
-        self.groups.append((name, mtl, []))
-        return self.groups[-1][2]
-
-    def face_count(self):
-        return sum(len(g[2]) for g in self.groups)
 
 
 def shell(m):
@@ -117,31 +94,13 @@ def shell(m):
                               m.v((LX, ys[j + 1], zs[k + 1])), m.v((LX, ys[j + 1], zs[k]))])
 
 
-def box(faces, m, lo, hi, omit=()):
-    """Axis-aligned box [lo, hi] with outward normals; omit: subset of
-    {'-x','+x','-y','+y','-z','+z'} (faces touching another surface)."""
-    x0, y0, z0 = lo
-    x1, y1, z1 = hi
-    quads = {
-        '-x': [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)],
-        '+x': [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],
-        '-y': [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)],
-        '+y': [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],
-        '-z': [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],
-        '+z': [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
-    }
-    for side in ('-y', '+y', '-x', '+x', '-z', '+z'):
-        if side not in omit:
-            faces.append([m.v(p) for p in quads[side]])
-
-
 # every box, kept for the intersection check below: (lo, hi)
 BOXES = []
 
 
 def add_box(faces, m, lo, hi, omit=()):
     BOXES.append((lo, hi))
-    box(faces, m, lo, hi, omit)
+    m.box(faces, lo, hi, omit)
 
 
 def legs(faces, m, x0, x1, z0, z1, top, size, inset):

@@ -27,8 +27,11 @@ Output of the current version: 2,104 faces, 2,075 vertices.
 
 import math
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from obj_mesh import Mesh, fmt  # noqa: E402  (scenes/obj_mesh.py)
 
 LX, LY, LZ = 5.0, 3.0, 5.0  # room size (x, y up, z), metres
 # Lights: two 0.8 x 0.4 m ceiling panels, (x0, x1, z0, z1), over either side of the table.
@@ -51,32 +54,6 @@ MATERIALS = [
     ('mirror', (0.05, 0.05, 0.05), (0.85, 0.85, 0.85), None,
      'mirrored pyramid and sphere: an ideal mirror of 0.85 over 0.05 diffuse'),
 ]
-
-
-def fmt(x):
-    s = ('%.6f' % x).rstrip('0').rstrip('.')
-    return '0' if s in ('', '-0') else s
-
-
-class Mesh:
-    def __init__(self):
-        self.verts = []
-        self.vid = {}
-        self.groups = []  # (name, material, [faces])
-
-    def v(self, p):
-        key = tuple(round(c, 6) for c in p)
-        if key not in self.vid:
-            self.verts.append(key)
-            self.vid[key] = len(self.verts)
-        return self.vid[key]
-
-    def group(self, name, mtl):
-        self.groups.append((name, mtl, []))
-        return self.groups[-1][2]
-
-    def face_count(self):
-        return sum(len(g[2]) for g in self.groups)
 
 
 def quad_y(m, faces, x0, x1, z0, z1, y, down):
@@ -107,36 +84,19 @@ def shell(m):
     right.append([m.v((LX, 0, 0)), m.v((LX, 0, LZ)), m.v((LX, LY, LZ)), m.v((LX, LY, 0))])
 
 
-def box(m, faces, lo, hi, omit=()):
-    """Axis-aligned box [lo, hi] with outward normals; omit: faces touching another surface."""
-    x0, y0, z0 = lo
-    x1, y1, z1 = hi
-    quads = {
-        '-x': [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)],
-        '+x': [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],
-        '-y': [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)],
-        '+y': [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],
-        '-z': [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],
-        '+z': [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
-    }
-    for side in ('-y', '+y', '-x', '+x', '-z', '+z'):
-        if side not in omit:
-            faces.append([m.v(p) for p in quads[side]])
-
-
 def table(m):
     f = m.group('table', 'table')
     x0, x1, z0, z1, y0, y1 = TABLE
-    box(m, f, (x0, y0, z0), (x1, y1, z1))
+    m.box(f, (x0, y0, z0), (x1, y1, z1))
     size, inset = 0.06, 0.05
     for lx in (x0 + inset, x1 - inset - size):
         for lz in (z0 + inset, z1 - inset - size):
-            box(m, f, (lx, 0, lz), (lx + size, y0, lz + size), omit=('-y', '+y'))
+            m.box(f, (lx, 0, lz), (lx + size, y0, lz + size), omit=('-y', '+y'))
 
 
 def cubes(m):
-    box(m, m.group('cube_green', 'cube_green'), (4.2, 0, 4.2), (4.8, 0.6, 4.8), omit=('-y',))
-    box(m, m.group('cube_yellow', 'cube_yellow'), (0, 1.4, 1.8), (0.4, 1.8, 2.2), omit=('-x',))
+    m.box(m.group('cube_green', 'cube_green'), (4.2, 0, 4.2), (4.8, 0.6, 4.8), omit=('-y',))
+    m.box(m.group('cube_yellow', 'cube_yellow'), (0, 1.4, 1.8), (0.4, 1.8, 2.2), omit=('-x',))
 
 
 def pyramid(m):

@@ -17,6 +17,10 @@ of `make bench`'s scaling study, generated on demand and kept out of git (about 
 import argparse
 import math
 import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from obj_mesh import box_quads  # noqa: E402  (scenes/obj_mesh.py)
 
 BAY = 3.2        # bay size and ceiling height, metres
 BAY_POWER = 60.0  # emitted power per bay, W (E = pi * Ke over the light's area)
@@ -68,18 +72,8 @@ def grid(obj, material_of, origin, du, dv, nu, nv):
 
 def box(obj, material, lo, hi, omit=()):
     """Axis-aligned box with outward normals, without the faces named in omit."""
-    (x0, y0, z0), (x1, y1, z1) = lo, hi
-    sides = {
-        '-x': [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)],
-        '+x': [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],
-        '-y': [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)],
-        '+y': [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],
-        '-z': [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],
-        '+z': [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
-    }
-    for side in ('-y', '+y', '-x', '+x', '-z', '+z'):
-        if side not in omit:
-            obj.quad(material, sides[side])
+    for quad in box_quads(lo, hi, omit):
+        obj.quad(material, quad)
 
 
 def legs(obj, material, x0, x1, z0, z1, top, size, inset):
