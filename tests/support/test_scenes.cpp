@@ -1,6 +1,7 @@
 #include "tests/support/test_scenes.h"
 
 #include <array>
+#include <cmath>
 #include <map>
 
 namespace hmcr::test {
@@ -34,6 +35,17 @@ PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons) {
         line[f] = 0;
     }
     return mesh;
+}
+
+View test_view(const Vec3& position, const Vec3& look_at, double fov, int size) {
+    View v;
+    v.name = "test";
+    v.position = position;
+    v.look_at = look_at;
+    v.up = std::abs(look_at.y() - position.y()) > 0.5 ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
+    v.fov_degrees = fov;
+    v.width = v.height = size;
+    return v;
 }
 
 TestPolygon axis_rectangle(int axis, double value, const Vec2& lo, const Vec2& hi, bool positive) {

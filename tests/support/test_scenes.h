@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "meshes/patch_mesh.h"
+#include "meshes/scene.h"
 #include "common/types.h"
 
 namespace hmcr::test {
@@ -26,6 +27,10 @@ TestPolygon axis_rectangle(int axis, double value, const Vec2& lo, const Vec2& h
 // The six faces of the box [lo, hi], facing inward, each split into n x n quads.
 std::vector<TestPolygon> inward_box(const Vec3& lo, const Vec3& hi, int n, const Rgb& rho,
                                     const Rgb& emission);
+
+// A square view of `size` pixels from `position` towards `look_at` with `fov` degrees: up is +y,
+// or +z when the view looks more than half a unit up or down (where +y would be nearly along it).
+View test_view(const Vec3& position, const Vec3& look_at, double fov, int size);
 
 // Icosahedron subdivided `level` times and projected on the sphere; faces point inward.
 std::vector<TestPolygon> inward_icosphere(int level, double radius, const Rgb& rho);

@@ -20,17 +20,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-View view(const Vec3& position, const Vec3& look_at, double fov, int size) {
-    View v;
-    v.name = "test";
-    v.position = position;
-    v.look_at = look_at;
-    v.up = Vec3(0, 1, 0);
-    v.fov_degrees = fov;
-    v.width = v.height = size;
-    return v;
-}
-
 Image trace(const PatchMesh& mesh, const View& v, const PathOptions& path, int spp,
             std::uint64_t seed) {
     const PathTracer tracer(build_patch_set(mesh), path);
@@ -70,7 +59,7 @@ TEST_P(FiniteVarianceEstimator, FurnaceRadianceIsEmissionOverOneMinusRho) {
     const double rho = 0.5, e = 1;
     const auto mesh =
         make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 1, Rgb::Constant(rho), Rgb::Constant(e)));
-    const View v = view({0.3, 0.6, 0.1}, {0.7, 0.4, 0.9}, 100, 32);
+    const View v = test_view({0.3, 0.6, 0.1}, {0.7, 0.4, 0.9}, 100, 32);
     for (const int roulette : {1, 3}) {
         const PathOptions p = path(GetParam(), roulette);
         const Image im = trace(mesh, v, p, 4, 17 + std::uint64_t(roulette));
@@ -90,7 +79,7 @@ TEST_P(FiniteVarianceEstimator, FurnaceRadianceIsEmissionOverOneMinusRho) {
 // the mean radiance of the receiver, rho E F / pi, F the plates' form factor.
 TEST_P(EveryEstimator, PlatesReceiverRadianceIsRhoEFOverPi) {
     const Scene scene = load_scene("plates");
-    const View v = view({0.5, 0.5, 0.5}, {0.5, 0.5, 1}, 90, 48);
+    const View v = test_view({0.5, 0.5, 0.5}, {0.5, 0.5, 1}, 90, 48);
     const Image im = trace(scene.mesh, v, path(GetParam()), 4, 5);
     const double expected = 0.5 * 1 * parallel_rectangles(1, 1, 1) / kPi;
     for (int c = 0; c < 3; ++c) {

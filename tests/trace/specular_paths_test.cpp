@@ -23,17 +23,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-View view(const Vec3& position, const Vec3& look_at, double fov, int size) {
-    View v;
-    v.name = "test";
-    v.position = position;
-    v.look_at = look_at;
-    v.up = std::abs(look_at.y() - position.y()) > 0.5 ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
-    v.fov_degrees = fov;
-    v.width = v.height = size;
-    return v;
-}
-
 TraceResult trace(const PatchMesh& mesh, const View& v, Estimator e, int spp, std::uint64_t seed,
                   const Criterion& sampler = uniform_criterion(), int threads = 0,
                   Allocation allocation = Allocation::refine) {
@@ -76,9 +65,9 @@ PatchMesh mixed_furnace(double rho, double e) {
 TEST(SpecularPaths, MixedMirrorAndDiffuseFurnaceIsEmissionOverOneMinusRho) {
     const double rho = 0.5, e = 1, expected = e / (kPi * (1 - rho));
     const PatchMesh mesh = mixed_furnace(rho, e);
-    const View walls[] = {view({0.7, 0.5, 0.45}, {0, 0.52, 0.5}, 60, 24),   // mirror, x = 0
-                          view({0.45, 0.7, 0.5}, {0.5, 0, 0.52}, 60, 24),   // diffuse, y = 0
-                          view({0.5, 0.45, 0.7}, {0.52, 0.5, 0}, 60, 24)};  // mixed, z = 0
+    const View walls[] = {test_view({0.7, 0.5, 0.45}, {0, 0.52, 0.5}, 60, 24),   // mirror, x = 0
+                          test_view({0.45, 0.7, 0.5}, {0.5, 0, 0.52}, 60, 24),   // diffuse, y = 0
+                          test_view({0.5, 0.45, 0.7}, {0.52, 0.5, 0}, 60, 24)};  // mixed, z = 0
     const double bias = std::pow(rho, PathOptions{}.max_depth + 1) / (1 - rho) * e / kPi;
     for (const Estimator est : {Estimator::mis, Estimator::bsdf}) {
         for (const View& v : walls) {
@@ -103,7 +92,7 @@ TEST(SpecularPaths, AnEmitterSeenInAMirrorHasRhoSTimesItsRadiance) {
     TestPolygon light = axis_rectangle(2, 2, {-20, -20}, {20, 20}, false);
     light.emission = kPi * le;
     const PatchMesh mesh = make_patch_mesh({mirror, light});
-    View v = view({0, 0, 1}, {0, 0.01, 0}, 40, 16);
+    View v = test_view({0, 0, 1}, {0, 0.01, 0}, 40, 16);
     for (const Estimator est : {Estimator::mis, Estimator::nee, Estimator::bsdf}) {
         const Image im = trace(mesh, v, est, 4, 2).image;
         for (const Rgb& p : im.pixels)
@@ -182,7 +171,7 @@ TEST(SpecularPaths, ImagesWithSpecularSurfacesDoNotDependOnTheThreadCount) {
         if (k % 5 == 0) walls[k].emission = Rgb::Constant(2);
     }
     const PatchMesh mesh = make_patch_mesh(walls);
-    const View v = view({0.2, 0.5, 0.3}, {0.9, 0.4, 0.8}, 80, 20);
+    const View v = test_view({0.2, 0.5, 0.3}, {0.9, 0.4, 0.8}, 80, 20);
     const std::pair<const char*, Allocation> cases[] = {{"uniform", Allocation::refine},
                                                         {"srhe", Allocation::refine},
                                                         {"half-difference", Allocation::refine},
