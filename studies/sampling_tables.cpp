@@ -281,8 +281,9 @@ void write_sampling_tables(OutputSet& out, const std::string& scene,
         std::vector<SamplingCell> at_spp;
         for (const SamplingCell& c : cells)
             if (c.spp == spp) at_spp.push_back(c);
+        static const ErrorSplits kNone;
         const auto it = splits.find(spp);
-        const ErrorSplits& split = it == splits.end() ? ErrorSplits{} : it->second;
+        const ErrorSplits& split = it == splits.end() ? kNone : it->second;
         md += (md.empty() ? "" : "\n") + md_document(scene, o, spp, views, at_spp, split);
         tex += tex_floats(scene, spp, several, views, at_spp, split);
     }
