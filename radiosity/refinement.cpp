@@ -105,12 +105,13 @@ Step next_step(const RefinementContext& ctx, const Element& i, const Element& j,
 
 }  // namespace
 
-Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch, const Vec2& y_uv,
-                     std::uint32_t source_patch, const Vec2& x_uv, RefinementCounters& counters) {
+Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
+                     RefinementCounters& counters) {
     Hierarchy& h = ctx.hierarchy;
-    Element* i = &h.root(receiver_patch);
+    const Vec2 y_uv = query.y_uv.cast<double>(), x_uv = query.x_uv.cast<double>();
+    Element* i = &h.root(query.receiver_patch);
     if (ctx.fixed_mesh) return h.locate(*i, y_uv);
-    Element* j = &h.root(source_patch);
+    Element* j = &h.root(query.source_patch);
     for (;;) {
         const Step step = next_step(ctx, *i, *j, counters, 1);
         if (step == Step::accept) return *i;
@@ -127,11 +128,18 @@ namespace {
 // A group this large splits its children's descents between threads.
 constexpr std::size_t kParallelRays = 2048;
 
+// What one descent works on: the grouped queries and their receivers, and two index buffers
+// and a child per index entry, of the same length.
+struct Descent {
+    const LinkQuery* rays;
+    Element** receivers;
+};
+
 // refine_link's loop for the rays rays[index[0..n)], which all reach the link (i, j). A refused
 // link's rays are scattered by child into `scratch` (the same range of a second buffer), which
-// becomes the children's `index`.
-void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* rays,
-             std::uint32_t* index, std::uint32_t* scratch, std::size_t n,
+// becomes the children's `index`; `child` holds each entry's child at the level being split.
+void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element* j,
+             std::uint32_t* index, std::uint32_t* scratch, std::uint8_t* child, std::size_t n,
              RefinementCounters& counters) {
     Hierarchy& h = ctx.hierarchy;
     for (;;) {
@@ -143,11 +151,12 @@ void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* ra
         const bool quad = h.patch(*e).is_quad();
         std::array<std::size_t, 4> count{};
         for (std::size_t t = 0; t < n; ++t) {
-            LinkQuery& q = rays[index[t]];
-            q.child = std::uint8_t(e->domain.child_containing(quad, on_i ? q.y_uv : q.x_uv));
-            ++count[q.child];
+            const LinkQuery& q = d.rays[index[t]];
+            const Vec2f& uv = on_i ? q.y_uv : q.x_uv;
+            child[t] = std::uint8_t(e->domain.child_containing(quad, uv.cast<double>()));
+            ++count[child[t]];
         }
-        const int first = rays[index[0]].child;
+        const int first = child[0];
         if (count[std::size_t(first)] == n) {  // all in one child: the loop goes on
             e = &children[first];
             continue;
@@ -155,7 +164,7 @@ void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* ra
         std::array<std::size_t, 5> start{};
         for (std::size_t k = 0; k < 4; ++k) start[k + 1] = start[k] + count[k];
         std::array<std::size_t, 4> next{start[0], start[1], start[2], start[3]};
-        for (std::size_t t = 0; t < n; ++t) scratch[next[rays[index[t]].child]++] = index[t];
+        for (std::size_t t = 0; t < n; ++t) scratch[next[child[t]]++] = index[t];
         // The children's links are decided one after another; their cache sets load meanwhile.
         if (ctx.cache && ctx.oracle.uses_lines()) {
             for (std::size_t k = 0; k < 4; ++k) {
@@ -165,9 +174,9 @@ void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* ra
         }
         auto child_descent = [&](std::size_t k, RefinementCounters& c) {
             if (count[k] == 0) return;
-            Element* child = &children[k];
-            descend(ctx, on_i ? child : i, on_i ? j : child, rays, scratch + start[k],
-                    index + start[k], count[k], c);
+            Element* ck = &children[k];
+            descend(ctx, d, on_i ? ck : i, on_i ? j : ck, scratch + start[k], index + start[k],
+                    child + start[k], count[k], c);
         };
         if (n < kParallelRays) {
             for (std::size_t k = 0; k < 4; ++k) child_descent(k, counters);
@@ -179,17 +188,19 @@ void descend(const RefinementContext& ctx, Element* i, Element* j, LinkQuery* ra
         for (const RefinementCounters& c : sub) counters += c;
         return;
     }
-    for (std::size_t t = 0; t < n; ++t) rays[index[t]].receiver = i;
+    for (std::size_t t = 0; t < n; ++t) d.receivers[index[t]] = i;
 }
 
 }  // namespace
 
-void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
-                  RefinementCounters& counters, DescentScratch& buffers) {
+void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queries,
+                  std::span<Element*> receivers, RefinementCounters& counters,
+                  DescentScratch& buffers) {
     Hierarchy& h = ctx.hierarchy;
     if (ctx.fixed_mesh) {
         tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
-            queries[k].receiver = &h.locate(h.root(queries[k].receiver_patch), queries[k].y_uv);
+            receivers[k] = &h.locate(h.root(queries[k].receiver_patch),
+                                     queries[k].y_uv.cast<double>());
         });
         return;
     }
@@ -204,11 +215,14 @@ void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
     });
     radix_sort(keyed, buffers.keyed_scratch);  // swaps the two vectors: `keys` may be stale
     buffers.grouped.resize(queries.size());
+    buffers.receivers.resize(queries.size());
     buffers.index.resize(queries.size());
     buffers.scratch.resize(queries.size());
+    buffers.child.resize(queries.size());
     LinkQuery* const grouped = buffers.grouped.data();
     std::uint32_t* const index = buffers.index.data();
     std::uint32_t* const scratch = buffers.scratch.data();
+    std::uint8_t* const child = buffers.child.data();
     const Keyed<std::uint32_t>* const sorted = keyed.data();
     tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t t) {
         grouped[t] = queries[sorted[t].value];
@@ -220,19 +234,21 @@ void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
         if (t == 0 || keyed[t].key != keyed[t - 1].key) group_start.push_back(t);
     }
     group_start.push_back(keyed.size());
+    const Descent d{grouped, buffers.receivers.data()};
     tbb::enumerable_thread_specific<RefinementCounters> local;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, group_start.size() - 1, 1), [&](auto r) {
         RefinementCounters& c = local.local();
         for (std::size_t g = r.begin(); g < r.end(); ++g) {
             const std::size_t first = group_start[g], n = group_start[g + 1] - first;
-            descend(ctx, &h.root(grouped[first].receiver_patch),
-                    &h.root(grouped[first].source_patch), grouped, index + first, scratch + first,
-                    n, c);
+            descend(ctx, d, &h.root(grouped[first].receiver_patch),
+                    &h.root(grouped[first].source_patch), index + first, scratch + first,
+                    child + first, n, c);
         }
     });
     for (const RefinementCounters& c : local) counters += c;
+    Element* const* const grouped_receivers = buffers.receivers.data();
     tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t t) {
-        queries[sorted[t].value].receiver = grouped[t].receiver;
+        receivers[sorted[t].value] = grouped_receivers[t];
     });
 }
 

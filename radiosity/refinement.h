@@ -45,36 +45,39 @@ struct RefinementCounters {
     }
 };
 
-// One ray's descent: its patches and points, and the receiver element it ends on.
+// One ray's descent: its patches and points (24 bytes: a batch's descents read them at every
+// level).
 struct LinkQuery {
     std::uint32_t receiver_patch = 0, source_patch = 0;
-    Vec2 y_uv{0, 0}, x_uv{0, 0};  // the hit point on the receiver, the origin on the source
-    Element* receiver = nullptr;  // set by refine_links
-    std::uint8_t child = 0;       // scratch: the child holding the ray's point
+    Vec2f y_uv{0, 0}, x_uv{0, 0};  // the hit point on the receiver, the origin on the source
 };
 
 // Descends from (root of receiver_patch, root of source_patch), subdividing the larger element
 // of a refused link towards the hit point y (receiver) or the ray origin x (source). One ray at
 // a time from the roots, as docs/design.md §3 states it: the reference refine_links is tested
 // against.
-Element& refine_link(const RefinementContext& ctx, std::uint32_t receiver_patch, const Vec2& y_uv,
-                     std::uint32_t source_patch, const Vec2& x_uv, RefinementCounters& counters);
+Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
+                     RefinementCounters& counters);
 
 // refine_links' buffers, kept by the caller between calls.
 struct DescentScratch {
     std::vector<Keyed<std::uint32_t>> keyed, keyed_scratch;
     std::vector<LinkQuery> grouped;
+    std::vector<Element*> receivers;                 // of the grouped queries
     std::vector<std::uint32_t> index, scratch;
+    std::vector<std::uint8_t> child;                 // of each index entry, at one level
     std::vector<std::size_t> group_start;  // where each (receiver, source) group begins
 };
 
 // The same descent for many rays at once, each ending on the element refine_link would give
-// it. Rays of one (receiver patch, source patch) pair share the upper levels of their descents,
-// so each link on their shared paths is decided once for all of them, and the rays split
-// between a refused link's children as their points do. Parallel; oracle_calls counts every
-// ray's decisions, as refine_link does, so it does not depend on how rays are grouped.
-void refine_links(const RefinementContext& ctx, std::span<LinkQuery> queries,
-                  RefinementCounters& counters, DescentScratch& scratch);
+// it (receivers[k] for queries[k]). Rays of one (receiver patch, source patch) pair share the
+// upper levels of their descents, so each link on their shared paths is decided once for all
+// of them, and the rays split between a refused link's children as their points do. Parallel;
+// oracle_calls counts every ray's decisions, as refine_link does, so it does not depend on how
+// rays are grouped.
+void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queries,
+                  std::span<Element*> receivers, RefinementCounters& counters,
+                  DescentScratch& scratch);
 
 // The oracle's value of a link divided by Phi_max is compared with epsilon; this is the value.
 // Counted as `rays` decisions (oracle_calls) when the link carries anything.

@@ -38,50 +38,37 @@ void IterationSources::rebuild(const Hierarchy& h) {
     }
 }
 
+// What generating a ray decided that later stages need: its source leaf, its origin's
+// parameter point there, and the ray's last uniform, which dithers its power's rounding.
+struct RayStart {
+    std::uint32_t leaf = 0;
+    Vec2f x_uv{0, 0};
+    double dither = 0;
+};
+
 namespace {
 
-enum class Fate : std::uint8_t { deposited, escaped, back_face };
-
-struct RayResult {
-    Rgb power = Rgb::Zero();  // the ray's power (deposited: rho * power / A was added later)
-    Fate fate = Fate::escaped;
-};
-
-// Step 3: a source leaf by unshot power, a uniform point on it, a cosine direction.
-struct RayStart {
-    const IterationSources::Leaf* leaf;
-    Vec2 x_uv;
-    Vec3 x, direction;
-};
-
-RayStart start_ray(const Hierarchy& h, const IterationSources& sources, Rng& rng) {
-    const IterationSources::Leaf& leaf = sources.pick(rng.uniform());
+// Step 3: a source leaf by unshot power, a uniform point on it, a cosine direction. The draws
+// of ray `index` of iteration `iteration`, in this order: leaf, point (2), direction (2),
+// dither.
+void start_ray(const Hierarchy& h, const IterationSources& sources, std::uint64_t seed,
+               std::uint32_t iteration, std::uint64_t index, RayStart& start, BatchRay& ray) {
+    Rng rng(seed, iteration, index);
+    const double xi_leaf = rng.uniform();
+    const double xi_u = rng.uniform(), xi_v = rng.uniform();
+    const double xi_r = rng.uniform(), xi_phi = rng.uniform();
+    start.dither = rng.uniform();
+    start.leaf = sources.pick_index(xi_leaf);
+    const IterationSources::Leaf& leaf = sources.leaves[start.leaf];
     const Patch& src = h.patch_set().patches[leaf.patch];
-    const Vec2 x_uv = sample_element(src, leaf.domain, rng.uniform(), rng.uniform());
-    const Vec3 dir = sample_cosine_hemisphere(src.normal, rng.uniform(), rng.uniform());
-    return {&leaf, x_uv, src.point(x_uv), dir};
-}
-
-// Steps 3 and 4; a deposited ray's descent (step 5) is written to `query`, for refine_links.
-RayResult trace_ray(const RefinementContext& ctx, const IterationSources& sources,
-                    double power_scale, Rng& rng, LinkQuery& query) {
-    const Hierarchy& h = ctx.hierarchy;
-    const RayStart start = start_ray(h, sources, rng);
-    RayResult r;
-    r.power = power_scale * start.leaf->unshot / start.leaf->unshot_sum;
-    const auto hit = ctx.scene.first_hit(start.x, start.direction);
-    if (!hit) return r;
-    const Patch& rcv = h.patch_set().patches[hit->patch];
-    if (rcv.normal.dot(start.direction) >= 0) {
-        r.fate = Fate::back_face;
-        return r;
+    const Vec2 x_uv = sample_element(src, leaf.domain, xi_u, xi_v);
+    start.x_uv = x_uv.cast<float>();
+    const Vec3 x = src.point(x_uv);
+    const Vec3 dir = sample_cosine_hemisphere(src.normal, xi_r, xi_phi);
+    for (int c = 0; c < 3; ++c) {
+        ray.origin[c] = float(x[c]);
+        ray.direction[c] = float(dir[c]);
     }
-    query.receiver_patch = hit->patch;
-    query.source_patch = start.leaf->patch;
-    query.y_uv = rcv.param(start.x + hit->distance * start.direction);
-    query.x_uv = start.x_uv;
-    r.fate = Fate::deposited;
-    return r;
 }
 
 }  // namespace
@@ -98,11 +85,17 @@ struct ShootingBuffers::Impl {
     };
     // The batch's descents are made together, after its rays are traced, so that rays between
     // the same patches decide their shared links once (refine_links).
+    // The stages pass each chunk of rays on in these arrays: generated (starts, rays), traced
+    // (hits), and turned into deposits and the queries of their descents.
     struct Batch {
         std::uint64_t first = 0, n = 0;
         std::vector<Chunk> chunks;
+        std::vector<RayStart> starts;
+        std::vector<BatchRay> rays;
+        std::vector<BatchHit> hits;
         std::vector<Deposit> deposits;
         std::vector<LinkQuery> queries;
+        std::vector<Element*> receivers;
     };
     std::array<Batch, 2> batches;  // the second while the first descends (2 threads or more)
     DescentScratch descent;
@@ -119,6 +112,13 @@ constexpr std::uint64_t kGrain = 256;
 // Pilot rays draw from streams of their own, apart from the iteration's rays.
 constexpr std::uint64_t kPilotStream = std::uint64_t(1) << 62;
 
+// The cosine of the receiver's front with the ray direction: negative on a front face.
+double facing(const Patch& receiver, const BatchRay& ray) {
+    return receiver.normal.x() * double(ray.direction[0]) +
+           receiver.normal.y() * double(ray.direction[1]) +
+           receiver.normal.z() * double(ray.direction[2]);
+}
+
 }  // namespace
 
 double reflected_fraction(const RefinementContext& ctx, const IterationSources& sources,
@@ -126,16 +126,20 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
     const Hierarchy& h = ctx.hierarchy;
     if (sources.total <= 0 || rays == 0) return 0;
     set_tracing_float_mode();
+    std::vector<RayStart> starts(rays);
+    std::vector<BatchRay> batch(rays);
+    std::vector<BatchHit> hits(rays);
+    for (std::uint64_t k = 0; k < rays; ++k) {
+        start_ray(h, sources, ctx.seed, iteration, kPilotStream + k, starts[k], batch[k]);
+    }
+    ctx.scene.first_hits(batch, hits);
     double reflected = 0;
     for (std::uint64_t k = 0; k < rays; ++k) {
-        Rng rng(ctx.seed, iteration, kPilotStream + k);
-        const RayStart start = start_ray(h, sources, rng);
-        const auto hit = ctx.scene.first_hit(start.x, start.direction);
-        if (!hit) continue;
-        const Patch& rcv = h.patch_set().patches[hit->patch];
-        if (rcv.normal.dot(start.direction) >= 0) continue;
-        const Rgb unit = start.leaf->unshot / start.leaf->unshot_sum;
-        reflected += channel_sum(h.patch_set().reflectance(rcv) * unit);
+        if (hits[k].patch == BatchHit::kNoHit) continue;
+        const Patch& rcv = h.patch_set().patches[hits[k].patch];
+        if (facing(rcv, batch[k]) >= 0) continue;
+        const IterationSources::Leaf& leaf = sources.leaves[starts[k].leaf];
+        reflected += channel_sum(h.patch_set().reflectance(rcv) * leaf.unshot / leaf.unshot_sum);
     }
     return reflected / double(rays);
 }
@@ -161,32 +165,60 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     using Batch = ShootingBuffers::Impl::Batch;
     std::array<Batch, 2>& batches = buffers->impl().batches;
     for (Batch& b : batches) {
+        b.starts.resize(batch_rays);
+        b.rays.resize(batch_rays);
+        b.hits.resize(batch_rays);
         b.deposits.resize(batch_rays);
         b.queries.resize(batch_rays);
+        b.receivers.resize(batch_rays);
         if (!overlap) break;
     }
+    const Hierarchy& h = ctx.hierarchy;
+    const PatchSet& ps = h.patch_set();
+    // One chunk of rays through the stages: generated, traced, then each ray's power and fate
+    // (steps 3 and 4) and, for a ray that lands, its deposit and the query of its descent.
+    auto trace_chunk = [&](Batch& b, std::uint64_t begin, std::uint64_t end,
+                           ShootingBuffers::Impl::Chunk& chunk) {
+        for (std::uint64_t k = begin; k < end; ++k) {
+            start_ray(h, sources, ctx.seed, iteration, b.first + k, b.starts[k], b.rays[k]);
+        }
+        ctx.scene.first_hits({b.rays.data() + begin, end - begin},
+                             {b.hits.data() + begin, end - begin});
+        for (std::uint64_t k = begin; k < end; ++k) {
+            const RayStart& start = b.starts[k];
+            const IterationSources::Leaf& leaf = sources.leaves[start.leaf];
+            const Rgb power = power_scale * leaf.unshot / leaf.unshot_sum;
+            const Quanta quanta = out.quantum.count(power, start.dither);
+            add(chunk.shot, quanta);
+            b.deposits[k] = {};
+            const BatchHit& hit = b.hits[k];
+            if (hit.patch == BatchHit::kNoHit) {
+                add(chunk.escaped, quanta);
+                continue;
+            }
+            const Patch& rcv = ps.patches[hit.patch];
+            const BatchRay& ray = b.rays[k];
+            if (facing(rcv, ray) >= 0) {
+                add(chunk.back_face, quanta);
+                continue;
+            }
+            const Vec3 y(double(ray.origin[0]) + double(hit.distance) * ray.direction[0],
+                         double(ray.origin[1]) + double(hit.distance) * ray.direction[1],
+                         double(ray.origin[2]) + double(hit.distance) * ray.direction[2]);
+            b.queries[k] = {hit.patch, leaf.patch,
+                            rcv.param_of_hit(hit.second_triangle != 0, hit.b1, hit.b2, y),
+                            start.x_uv};
+            // docs/design.md §3: received += rho * Phi (over A when pushed).
+            b.deposits[k] = {out.quantum.count(ps.reflectance(rcv) * power, start.dither), true};
+        }
+    };
     auto trace = [&](Batch& b, std::uint64_t first) {
         b.first = first;
         b.n = std::min(kBatchRays, slice.end - first);
         b.chunks.assign((b.n + kGrain - 1) / kGrain, {});
         tbb::parallel_for(std::uint64_t(0), b.chunks.size(), [&](std::uint64_t c) {
             set_tracing_float_mode();
-            ShootingBuffers::Impl::Chunk& chunk = b.chunks[c];
-            for (std::uint64_t k = c * kGrain; k < std::min(b.n, (c + 1) * kGrain); ++k) {
-                Rng rng(ctx.seed, iteration, first + k);
-                const RayResult r = trace_ray(ctx, sources, power_scale, rng, b.queries[k]);
-                const double dither = rng.uniform();
-                const Quanta power = out.quantum.count(r.power, dither);
-                add(chunk.shot, power);
-                if (r.fate == Fate::escaped) add(chunk.escaped, power);
-                if (r.fate == Fate::back_face) add(chunk.back_face, power);
-                b.deposits[k] = {};
-                if (r.fate != Fate::deposited) continue;
-                // docs/design.md §3: received += rho * Phi (over A when pushed).
-                const PatchSet& ps = ctx.hierarchy.patch_set();
-                const Rgb& rho = ps.reflectance(ps.patches[b.queries[k].receiver_patch]);
-                b.deposits[k] = {out.quantum.count(rho * r.power, dither), true};
-            }
+            trace_chunk(b, c * kGrain, std::min(b.n, (c + 1) * kGrain), b.chunks[c]);
         });
     };
     DescentScratch& scratch = buffers->impl().descent;
@@ -196,11 +228,12 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             if (b.deposits[k].lands) b.queries[landed++] = b.queries[k];
         }
         RefinementCounters counters;
-        refine_links(ctx, {b.queries.data(), landed}, counters, scratch);
+        refine_links(ctx, {b.queries.data(), landed}, {b.receivers.data(), landed}, counters,
+                     scratch);
         out.counters += counters;
         for (std::uint64_t k = 0, q = 0; k < b.n; ++k) {
             if (!b.deposits[k].lands) continue;
-            add(b.queries[q++].receiver->received, b.deposits[k].quanta);
+            add(b.receivers[q++]->received, b.deposits[k].quanta);
         }
         for (const auto& c : b.chunks) {
             add(out.shot_power, c.shot);

@@ -32,7 +32,7 @@ struct IterationSources {
     // The sources of h's unshot power now, in the storage of the previous iteration's: built
     // while the other threads wait, they were also faulting fresh pages every iteration.
     void rebuild(const Hierarchy& h);
-    const Leaf& pick(double xi) const { return leaves[alias->sample(xi)]; }
+    std::uint32_t pick_index(double xi) const { return std::uint32_t(alias->sample(xi)); }
 
 private:
     std::vector<double> m_weights;  // A_l |Delta B_l|, for the alias table

@@ -233,6 +233,38 @@ std::optional<TriangleHit> EmbreeScene::first_hit_triangle(const Vec3& origin,
     return TriangleHit{rh.hit.primID, double(rh.hit.u), double(rh.hit.v), double(rh.ray.tfar)};
 }
 
+void EmbreeScene::first_hits(std::span<const BatchRay> rays, std::span<BatchHit> hits) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+        const BatchRay& r = rays[k];
+        rh.ray.org_x = r.origin[0];
+        rh.ray.org_y = r.origin[1];
+        rh.ray.org_z = r.origin[2];
+        rh.ray.dir_x = r.direction[0];
+        rh.ray.dir_y = r.direction[1];
+        rh.ray.dir_z = r.direction[2];
+        rh.ray.tnear = float(m_offset);
+        rh.ray.tfar = kInf;
+        rh.ray.time = 0;
+        rh.ray.mask = ~0u;
+        rh.ray.id = 0;
+        rh.ray.flags = 0;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(m_impl->scene, &context, &rh);
+        BatchHit& h = hits[k];
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+            h.patch = BatchHit::kNoHit;
+            continue;
+        }
+        const std::uint32_t t = rh.hit.primID;
+        h = {m_triangle_patch[t], m_triangle_patch.second_of_quad(t), rh.ray.tfar, rh.hit.u,
+             rh.hit.v};
+    }
+}
+
 bool EmbreeScene::visible(const Vec3& p, const Vec3& q) const {
     const Vec3 d = q - p;
     const double len = d.norm();

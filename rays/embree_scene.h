@@ -30,6 +30,21 @@ struct TriangleHit {
     double distance = 0;  // along the (unit) direction
 };
 
+// A ray of a batch, in the single precision Embree takes.
+struct BatchRay {
+    float origin[3], direction[3];  // the direction of unit length
+};
+
+// The first hit of a batch ray: its patch (kNoHit when the ray leaves the scene), which of a
+// quad's two triangles it hit (0 or 1), the distance along the ray and Embree's barycentric
+// coordinates in that triangle (the hit is (1 - b1 - b2) p0 + b1 p1 + b2 p2).
+struct BatchHit {
+    static constexpr std::uint32_t kNoHit = ~std::uint32_t(0);
+    std::uint32_t patch = kNoHit;
+    std::uint32_t second_triangle = 0;
+    float distance = 0, b1 = 0, b2 = 0;
+};
+
 class EmbreeScene {
 public:
     // Each patch's corners are vertices of their own.
@@ -51,6 +66,9 @@ public:
     // first_hit() with the triangle and its barycentric coordinates (for a patch scene the
     // triangle index counts the two triangles of each quad).
     std::optional<TriangleHit> first_hit_triangle(const Vec3& origin, const Vec3& direction) const;
+    // first_hit() of every ray of a batch, for a patch scene: one incoherent single-ray query
+    // each (packets and streams gain nothing for incoherent rays on the measured machines).
+    void first_hits(std::span<const BatchRay> rays, std::span<BatchHit> hits) const;
     // Whether the open segment between two surface points is unoccluded.
     bool visible(const Vec3& p, const Vec3& q) const;
     // visible() for many segments at once, 16 per coherent packet (the segments of one element

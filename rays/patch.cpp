@@ -71,6 +71,15 @@ Vec2 Patch::param(const Vec3& p) const {
     return s > 1 ? Vec2(uv / s) : uv;
 }
 
+Vec2f Patch::param_of_hit(bool second_triangle, float b1, float b2, const Vec3& p) const {
+    if (!is_quad()) return {b1, b2};
+    if (!m_parallelogram) return param(p).cast<float>();
+    // corner 2 = corner 0 + e1 + e3: the triangle (0, 1, 2) maps (b1, b2) to (b1 + b2, b2),
+    // the triangle (0, 2, 3) to (b1, b1 + b2).
+    const float sum = std::min(1.0f, b1 + b2);
+    return second_triangle ? Vec2f(b1, sum) : Vec2f(sum, b2);
+}
+
 double Patch::region_area(const Vec2* uv, int count) const {
     const Vec3 a = point(uv[0]), b = point(uv[1]), c = point(uv[2]);
     if (count == 3) return 0.5 * (b - a).cross(c - a).norm();

@@ -34,6 +34,10 @@ struct Patch {
     Vec3 point(const Vec2& uv) const;
     // Parameter coordinates of a point on the patch plane (clamped to the domain).
     Vec2 param(const Vec3& p) const;
+    // The parameter point of a hit in the patch's triangle (the second of a quad's two, or
+    // the first), at barycentric coordinates (b1, b2) there; `p` is the hit point, which only
+    // a quad that is no parallelogram needs (its map is not affine on either triangle).
+    Vec2f param_of_hit(bool second_triangle, float b1, float b2, const Vec3& p) const;
     // Area of the region with the given parameter-space corners (3 or 4 of them).
     double region_area(const Vec2* uv, int count) const;
     // |dP/du x dP/dv| at uv: constant on triangles, affine in (u, v) on planar quads.

@@ -28,6 +28,8 @@ class TrianglePatches {
         ++m_count;
     }
     std::uint32_t size() const { return m_count; }
+    // Whether triangle t is the second triangle of a quad.
+    bool second_of_quad(std::uint32_t t) const { return (m_bits[t / 64] >> (t % 64)) & 1; }
     std::uint32_t operator[](std::uint32_t t) const {
         // Bits 0 .. t % 64 (all 64 when t % 64 = 63: the shift wraps to 0, minus 1 all ones).
         const std::uint64_t upto = m_bits[t / 64] & ((std::uint64_t(2) << (t % 64)) - 1);

@@ -58,8 +58,8 @@ std::vector<LinkQuery> queries_for(const Hierarchy& h, std::size_t n) {
             q.receiver_patch = any();
             q.source_patch = any();
         }
-        q.y_uv = point_on(h.patch_set().patches[q.receiver_patch], rng);
-        q.x_uv = point_on(h.patch_set().patches[q.source_patch], rng);
+        q.y_uv = point_on(h.patch_set().patches[q.receiver_patch], rng).cast<float>();
+        q.x_uv = point_on(h.patch_set().patches[q.source_patch], rng).cast<float>();
     }
     return out;
 }
@@ -90,17 +90,18 @@ protected:
         };
         std::vector<LinkQuery> queries = queries_for(*grouped, 12'000);
         RefinementCounters grouped_counts, single_counts;
+        std::vector<Element*> receivers(queries.size(), nullptr);
         {
             const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
             DescentScratch scratch;
-            refine_links(context(*grouped), queries, grouped_counts, scratch);
+            refine_links(context(*grouped), queries, receivers, grouped_counts, scratch);
         }
         int deepest = 0;
-        for (const LinkQuery& q : queries) {
-            const Element& e = refine_link(context(*single), q.receiver_patch, q.y_uv,
-                                           q.source_patch, q.x_uv, single_counts);
-            ASSERT_NE(q.receiver, nullptr);
-            ASSERT_EQ(q.receiver->id, e.id) << q.y_uv.transpose() << " / " << q.x_uv.transpose();
+        for (std::size_t k = 0; k < queries.size(); ++k) {
+            const LinkQuery& q = queries[k];
+            const Element& e = refine_link(context(*single), q, single_counts);
+            ASSERT_NE(receivers[k], nullptr);
+            ASSERT_EQ(receivers[k]->id, e.id) << q.y_uv.transpose() << " / " << q.x_uv.transpose();
             deepest = std::max(deepest, int(e.id.depth));
         }
         // A guard that the test refines at all: `vt` on the triangles goes 3 levels deep with
