@@ -17,19 +17,25 @@
 namespace hmcr {
 
 void IterationSources::rebuild(const Hierarchy& h) {
-    leaves.clear();
+    regions.clear();
+    share.clear();
     m_weights.clear();
     total = 0;
     max_share = Rgb::Zero();
+    const std::vector<Patch>& patches = h.patch_set().patches;
     h.for_each_leaf([&](const Element& e) {
-        const double w = e.area * channel_sum(e.unshot);
+        const double sum = channel_sum(e.unshot);
+        const double w = e.area * sum;
         if (w <= 0) return;
         total += w;
-        max_share = max_share.max(e.unshot / channel_sum(e.unshot));
-        leaves.push_back({e.unshot, channel_sum(e.unshot), e.domain, e.id.patch});
+        const Rgb unit = e.unshot / sum;
+        max_share = max_share.max(unit);
+        regions.push_back({e.domain.u0, e.domain.v0, e.domain.s, e.id.patch,
+                           region_map(patches[e.id.patch])});
+        share.push_back(unit);
         m_weights.push_back(w);
     });
-    if (leaves.empty()) {
+    if (regions.empty()) {
         alias.reset();
     } else if (alias) {
         alias->assign(m_weights);
@@ -37,41 +43,6 @@ void IterationSources::rebuild(const Hierarchy& h) {
         alias.emplace(m_weights);
     }
 }
-
-// What generating a ray decided that later stages need: its source leaf, its origin's
-// parameter point there, and the ray's last uniform, which dithers its power's rounding.
-struct RayStart {
-    std::uint32_t leaf = 0;
-    Vec2f x_uv{0, 0};
-    double dither = 0;
-};
-
-namespace {
-
-// Step 3: a source leaf by unshot power, a uniform point on it, a cosine direction. The draws
-// of ray `index` of iteration `iteration`, in this order: leaf, point (2), direction (2),
-// dither.
-void start_ray(const Hierarchy& h, const IterationSources& sources, std::uint64_t seed,
-               std::uint32_t iteration, std::uint64_t index, RayStart& start, BatchRay& ray) {
-    Rng rng(seed, iteration, index);
-    const double xi_leaf = rng.uniform();
-    const double xi_u = rng.uniform(), xi_v = rng.uniform();
-    const double xi_r = rng.uniform(), xi_phi = rng.uniform();
-    start.dither = rng.uniform();
-    start.leaf = sources.pick_index(xi_leaf);
-    const IterationSources::Leaf& leaf = sources.leaves[start.leaf];
-    const Patch& src = h.patch_set().patches[leaf.patch];
-    const Vec2 x_uv = sample_element(src, leaf.domain, xi_u, xi_v);
-    start.x_uv = x_uv.cast<float>();
-    const Vec3 x = src.point(x_uv);
-    const Vec3 dir = sample_cosine_hemisphere(src.normal, xi_r, xi_phi);
-    for (int c = 0; c < 3; ++c) {
-        ray.origin[c] = float(x[c]);
-        ray.direction[c] = float(dir[c]);
-    }
-}
-
-}  // namespace
 
 struct ShootingBuffers::Impl {
     struct Chunk {
@@ -90,8 +61,7 @@ struct ShootingBuffers::Impl {
     struct Batch {
         std::uint64_t first = 0, n = 0;
         std::vector<Chunk> chunks;
-        std::vector<RayStart> starts;
-        std::vector<BatchRay> rays;
+        GeneratedRays rays;
         std::vector<BatchHit> hits;
         std::vector<Deposit> deposits;
         std::vector<LinkQuery> queries;
@@ -112,11 +82,19 @@ constexpr std::uint64_t kGrain = 256;
 // Pilot rays draw from streams of their own, apart from the iteration's rays.
 constexpr std::uint64_t kPilotStream = std::uint64_t(1) << 62;
 
-// The cosine of the receiver's front with the ray direction: negative on a front face.
-double facing(const Patch& receiver, const BatchRay& ray) {
-    return receiver.normal.x() * double(ray.direction[0]) +
-           receiver.normal.y() * double(ray.direction[1]) +
-           receiver.normal.z() * double(ray.direction[2]);
+// The cosine of the receiver's front with ray k's direction: negative on a front face.
+double facing(const Patch& receiver, const GeneratedRays& rays, std::size_t k) {
+    return receiver.normal.x() * double(rays.direction[0][k]) +
+           receiver.normal.y() * double(rays.direction[1][k]) +
+           receiver.normal.z() * double(rays.direction[2][k]);
+}
+
+Vec3 hit_point(const GeneratedRays& rays, std::size_t k, float distance) {
+    Vec3 y;
+    for (int c = 0; c < 3; ++c) {
+        y[c] = double(rays.origin[c][k]) + double(distance) * double(rays.direction[c][k]);
+    }
+    return y;
 }
 
 }  // namespace
@@ -126,20 +104,19 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
     const Hierarchy& h = ctx.hierarchy;
     if (sources.total <= 0 || rays == 0) return 0;
     set_tracing_float_mode();
-    std::vector<RayStart> starts(rays);
-    std::vector<BatchRay> batch(rays);
+    GeneratedRays batch;
+    batch.resize(rays);
     std::vector<BatchHit> hits(rays);
-    for (std::uint64_t k = 0; k < rays; ++k) {
-        start_ray(h, sources, ctx.seed, iteration, kPilotStream + k, starts[k], batch[k]);
-    }
-    ctx.scene.first_hits(batch, hits);
+    const std::vector<Patch>& patches = h.patch_set().patches;
+    generate_rays(patches, sources.regions, *sources.alias, ctx.seed, iteration, kPilotStream,
+                  rays, batch, 0);
+    ctx.scene.first_hits(batch, 0, rays, hits);
     double reflected = 0;
     for (std::uint64_t k = 0; k < rays; ++k) {
         if (hits[k].patch == BatchHit::kNoHit) continue;
-        const Patch& rcv = h.patch_set().patches[hits[k].patch];
-        if (facing(rcv, batch[k]) >= 0) continue;
-        const IterationSources::Leaf& leaf = sources.leaves[starts[k].leaf];
-        reflected += channel_sum(h.patch_set().reflectance(rcv) * leaf.unshot / leaf.unshot_sum);
+        const Patch& rcv = patches[hits[k].patch];
+        if (facing(rcv, batch, k) >= 0) continue;
+        reflected += channel_sum(h.patch_set().reflectance(rcv) * sources.share[batch.region[k]]);
     }
     return reflected / double(rays);
 }
@@ -165,7 +142,6 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     using Batch = ShootingBuffers::Impl::Batch;
     std::array<Batch, 2>& batches = buffers->impl().batches;
     for (Batch& b : batches) {
-        b.starts.resize(batch_rays);
         b.rays.resize(batch_rays);
         b.hits.resize(batch_rays);
         b.deposits.resize(batch_rays);
@@ -179,16 +155,14 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     // (steps 3 and 4) and, for a ray that lands, its deposit and the query of its descent.
     auto trace_chunk = [&](Batch& b, std::uint64_t begin, std::uint64_t end,
                            ShootingBuffers::Impl::Chunk& chunk) {
+        generate_rays(ps.patches, sources.regions, *sources.alias, ctx.seed, iteration,
+                      b.first + begin, end - begin, b.rays, begin);
+        ctx.scene.first_hits(b.rays, begin, end, b.hits);
         for (std::uint64_t k = begin; k < end; ++k) {
-            start_ray(h, sources, ctx.seed, iteration, b.first + k, b.starts[k], b.rays[k]);
-        }
-        ctx.scene.first_hits({b.rays.data() + begin, end - begin},
-                             {b.hits.data() + begin, end - begin});
-        for (std::uint64_t k = begin; k < end; ++k) {
-            const RayStart& start = b.starts[k];
-            const IterationSources::Leaf& leaf = sources.leaves[start.leaf];
-            const Rgb power = power_scale * leaf.unshot / leaf.unshot_sum;
-            const Quanta quanta = out.quantum.count(power, start.dither);
+            const std::uint32_t leaf = b.rays.region[k];
+            const Rgb power = power_scale * sources.share[leaf];
+            const double dither = b.rays.dither[k];
+            const Quanta quanta = out.quantum.count(power, dither);
             add(chunk.shot, quanta);
             b.deposits[k] = {};
             const BatchHit& hit = b.hits[k];
@@ -197,19 +171,16 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
                 continue;
             }
             const Patch& rcv = ps.patches[hit.patch];
-            const BatchRay& ray = b.rays[k];
-            if (facing(rcv, ray) >= 0) {
+            if (facing(rcv, b.rays, k) >= 0) {
                 add(chunk.back_face, quanta);
                 continue;
             }
-            const Vec3 y(double(ray.origin[0]) + double(hit.distance) * ray.direction[0],
-                         double(ray.origin[1]) + double(hit.distance) * ray.direction[1],
-                         double(ray.origin[2]) + double(hit.distance) * ray.direction[2]);
-            b.queries[k] = {hit.patch, leaf.patch,
+            const Vec3 y = hit_point(b.rays, k, hit.distance);
+            b.queries[k] = {hit.patch, sources.regions[leaf].patch,
                             rcv.param_of_hit(hit.second_triangle != 0, hit.b1, hit.b2, y),
-                            start.x_uv};
+                            Vec2f(b.rays.u[k], b.rays.v[k])};
             // docs/design.md §3: received += rho * Phi (over A when pushed).
-            b.deposits[k] = {out.quantum.count(ps.reflectance(rcv) * power, start.dither), true};
+            b.deposits[k] = {out.quantum.count(ps.reflectance(rcv) * power, dither), true};
         }
     };
     auto trace = [&](Batch& b, std::uint64_t first) {

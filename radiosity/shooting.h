@@ -9,30 +9,24 @@
 #include <vector>
 
 #include "rays/alias_table.h"
+#include "rays/ray_generator.h"
 #include "radiosity/refinement.h"
 
 namespace hmcr {
 
 // The sources of one iteration, frozen (Jacobi): the leaves with unshot power, each chosen with
-// probability A_l |Delta B_l| / S. Built once per iteration, for the pilot and for the rays.
+// probability A_l |Delta B_l| / S. Built once per iteration, for the pilot and for the rays;
+// the ray generator reads the leaves as regions (rays/ray_generator.h), copied out of the
+// elements so that a ray reads one small record, not a large element elsewhere.
 struct IterationSources {
-    // What a ray needs of its source leaf, copied out of the element: picking one then reads
-    // one small record instead of a pointer and a large element elsewhere (a cache miss each).
-    struct Leaf {
-        Rgb unshot;             // Delta B
-        double unshot_sum = 0;  // sum_c Delta B_c
-        Domain domain;
-        std::uint32_t patch = 0;
-    };
-    std::vector<Leaf> leaves;
-    double total = 0;                // S
-    Rgb max_share = Rgb::Zero();     // the largest Delta B_c / sum_c Delta B_c of a leaf
+    std::vector<RayRegion> regions;  // each leaf's domain and patch
+    std::vector<Rgb> share;          // each leaf's Delta B / sum_c Delta B_c
+    double total = 0;                 // S
+    Rgb max_share = Rgb::Zero();      // the largest share of a leaf in each channel
     std::optional<AliasTable> alias;  // none when nothing is left to shoot
 
-    // The sources of h's unshot power now, in the storage of the previous iteration's: built
-    // while the other threads wait, they were also faulting fresh pages every iteration.
+    // The sources of h's unshot power now, in the storage of the previous iteration's.
     void rebuild(const Hierarchy& h);
-    std::uint32_t pick_index(double xi) const { return std::uint32_t(alias->sample(xi)); }
 
 private:
     std::vector<double> m_weights;  // A_l |Delta B_l|, for the alias table

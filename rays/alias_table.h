@@ -17,11 +17,16 @@ public:
     // Index i with probability weights[i] / (sum of the weights), from one uniform in [0, 1).
     std::size_t sample(double xi) const;
 
-private:
+    // Bin floor(xi n) keeps its own index with probability `keep`, else takes `alias`: the
+    // layout the vector gathers of rays/ray_generator.cpp read (16 bytes a bin).
     struct Bin {
-        double keep;          // probability of keeping this bin's own index
-        std::uint32_t alias;  // the index taken otherwise
+        double keep;
+        std::uint64_t alias;
     };
+    const Bin* bins() const { return m_bins.data(); }
+    std::size_t size() const { return m_bins.size(); }
+
+private:
     std::vector<Bin> m_bins;
 };
 

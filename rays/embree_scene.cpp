@@ -233,18 +233,18 @@ std::optional<TriangleHit> EmbreeScene::first_hit_triangle(const Vec3& origin,
     return TriangleHit{rh.hit.primID, double(rh.hit.u), double(rh.hit.v), double(rh.ray.tfar)};
 }
 
-void EmbreeScene::first_hits(std::span<const BatchRay> rays, std::span<BatchHit> hits) const {
+void EmbreeScene::first_hits(const GeneratedRays& rays, std::size_t begin, std::size_t end,
+                             std::span<BatchHit> hits) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
-    for (std::size_t k = 0; k < rays.size(); ++k) {
-        const BatchRay& r = rays[k];
-        rh.ray.org_x = r.origin[0];
-        rh.ray.org_y = r.origin[1];
-        rh.ray.org_z = r.origin[2];
-        rh.ray.dir_x = r.direction[0];
-        rh.ray.dir_y = r.direction[1];
-        rh.ray.dir_z = r.direction[2];
+    for (std::size_t k = begin; k < end; ++k) {
+        rh.ray.org_x = rays.origin[0][k];
+        rh.ray.org_y = rays.origin[1][k];
+        rh.ray.org_z = rays.origin[2][k];
+        rh.ray.dir_x = rays.direction[0][k];
+        rh.ray.dir_y = rays.direction[1][k];
+        rh.ray.dir_z = rays.direction[2][k];
         rh.ray.tnear = float(m_offset);
         rh.ray.tfar = kInf;
         rh.ray.time = 0;

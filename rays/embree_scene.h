@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "rays/patch.h"
+#include "rays/ray_generator.h"
 #include "rays/triangle_patches.h"
 
 namespace hmcr {
@@ -28,11 +29,6 @@ struct TriangleHit {
     std::uint32_t triangle = 0;
     double u = 0, v = 0;
     double distance = 0;  // along the (unit) direction
-};
-
-// A ray of a batch, in the single precision Embree takes.
-struct BatchRay {
-    float origin[3], direction[3];  // the direction of unit length
 };
 
 // The first hit of a batch ray: its patch (kNoHit when the ray leaves the scene), which of a
@@ -66,9 +62,11 @@ public:
     // first_hit() with the triangle and its barycentric coordinates (for a patch scene the
     // triangle index counts the two triangles of each quad).
     std::optional<TriangleHit> first_hit_triangle(const Vec3& origin, const Vec3& direction) const;
-    // first_hit() of every ray of a batch, for a patch scene: one incoherent single-ray query
-    // each (packets and streams gain nothing for incoherent rays on the measured machines).
-    void first_hits(std::span<const BatchRay> rays, std::span<BatchHit> hits) const;
+    // first_hit() of rays [begin, end) of a batch into hits[begin, end), for a patch scene:
+    // one incoherent single-ray query each (packets and streams gain nothing for incoherent
+    // rays on the measured machines).
+    void first_hits(const GeneratedRays& rays, std::size_t begin, std::size_t end,
+                    std::span<BatchHit> hits) const;
     // Whether the open segment between two surface points is unoccluded.
     bool visible(const Vec3& p, const Vec3& q) const;
     // visible() for many segments at once, 16 per coherent packet (the segments of one element

@@ -1,7 +1,9 @@
 // Samplers; each comment states the density the tests check it against.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "common/types.h"
@@ -29,6 +31,45 @@ inline void tangent_frame(const Vec3& n, Vec3& t, Vec3& b) {
     const double c = n.x() * n.y() * a;
     t = Vec3(1 + sign * n.x() * n.x() * a, sign * c, -sign * n.x());
     b = Vec3(c, sign + n.y() * n.y() * a, -n.y());
+}
+
+// cos and sin of a quarter turn's Taylor series at |theta| <= pi/4, to theta^18 and theta^17:
+// the first term left out is below 1e-19.
+inline constexpr std::array<double, 10> kTurnCos = {
+    1.0,          -1.0 / 2,           1.0 / 24,           -1.0 / 720,
+    1.0 / 40320,  -1.0 / 3628800,     1.0 / 479001600,    -1.0 / 87178291200.0,
+    1.0 / 20922789888000.0,           -1.0 / 6402373705728000.0};
+inline constexpr std::array<double, 9> kTurnSin = {
+    1.0,           -1.0 / 6,          1.0 / 120,          -1.0 / 5040,
+    1.0 / 362880,  -1.0 / 39916800,   1.0 / 6227020800.0, -1.0 / 1307674368000.0,
+    1.0 / 355687428096000.0};
+inline constexpr double kQuarterTurn = 1.5707963267948966;  // pi / 2
+inline constexpr double kHalfRoot2 = 0.70710678118654752;   // cos(pi / 4)
+
+// c[0] + x2 (c[1] + x2 (c[2] + ...)).
+template <std::size_t N>
+double horner(double x2, const std::array<double, N>& c) {
+    double r = c[N - 1];
+    for (std::size_t k = N - 1; k-- > 0;) r = r * x2 + c[k];
+    return r;
+}
+
+// cos and sin of 2 pi xi, xi in [0, 1), without a library call (the vector ray generator
+// computes them the same way, lane by lane): the quarter turn floor(4 xi), and within it an
+// angle at most pi/4 from its middle, whose series converge fast. Accurate to a few units in
+// the last place of a double.
+inline void cos_sin_turn(double xi, double& cos_out, double& sin_out) {
+    const double four_xi = xi * 4.0;
+    const double quarter = std::floor(four_xi);
+    const double theta = ((four_xi - quarter) - 0.5) * kQuarterTurn;
+    const double t2 = theta * theta;
+    const double c = horner(t2, kTurnCos), s = theta * horner(t2, kTurnSin);
+    const double c1 = (c - s) * kHalfRoot2, s1 = (s + c) * kHalfRoot2;  // at pi/4 + theta
+    const auto q = std::int64_t(quarter);
+    // A quarter turn maps (c, s) to (-s, c): odd quarters swap, the upper half negates.
+    const double cq = (q & 1) ? -s1 : c1, sq = (q & 1) ? c1 : s1;
+    cos_out = q >= 2 ? -cq : cq;
+    sin_out = q >= 2 ? -sq : sq;
 }
 
 // Cosine-distributed direction around the unit normal n; density cos(theta) / pi per sr.

@@ -1,0 +1,376 @@
+// The ray generator of rays/ray_generator.h. The vector kernel is compiled once per instruction
+// set Highway knows (foreach_target.h includes this file again for each) and the widest the
+// machine supports is chosen when the program runs. Every operation is one IEEE operation per
+// lane (no fused multiply-add, no approximate reciprocal), so all widths give the same bits.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "rays/ray_generator.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+
+#include "rays/ray_generator.h"
+#include "rays/rng.h"
+#include "rays/sampling.h"
+
+#ifndef HMCR_RAY_GENERATOR_SHARED
+#define HMCR_RAY_GENERATOR_SHARED
+namespace hmcr::ray_generator {
+
+// Patch fields as the gathers read them: offsets in doubles from the start of a Patch.
+struct PatchLayout {
+    std::int64_t stride, corner, normal;
+};
+inline PatchLayout patch_layout() {
+    static_assert(sizeof(Patch) % sizeof(double) == 0);
+    const Patch p;
+    const auto at = [&](const void* field) {
+        return std::int64_t(static_cast<const char*>(field) - reinterpret_cast<const char*>(&p)) /
+               std::int64_t(sizeof(double));
+    };
+    return {std::int64_t(sizeof(Patch) / sizeof(double)), at(p.corner[0].data()),
+            at(p.normal.data())};
+}
+
+}  // namespace hmcr::ray_generator
+#endif
+
+HWY_BEFORE_NAMESPACE();
+namespace hmcr::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+namespace rg = hmcr::ray_generator;
+
+using D = hn::ScalableTag<double>;
+using DU = hn::RebindToUnsigned<D>;
+using DI = hn::RebindToSigned<D>;
+using V = hn::Vec<D>;
+using VU = hn::Vec<DU>;
+using VI = hn::Vec<DI>;
+
+// SplitMix64's finaliser (rays/rng.h) in every lane.
+HWY_INLINE VU mix(DU du, VU z) {
+    z = hn::Mul(hn::Xor(z, hn::ShiftRight<30>(z)), hn::Set(du, 0xbf58476d1ce4e5b9ULL));
+    z = hn::Mul(hn::Xor(z, hn::ShiftRight<27>(z)), hn::Set(du, 0x94d049bb133111ebULL));
+    return hn::Xor(z, hn::ShiftRight<31>(z));
+}
+
+// Rng(seed, key, index) of every lane, and its next uniform in [0, 1).
+struct Streams {
+    static constexpr std::uint64_t kGamma = 0x9e3779b97f4a7c15ULL;
+    VU state;
+
+    Streams(DU du, std::uint64_t seed, std::uint64_t key, VU index) {
+        const VU a = mix(du, hn::Set(du, seed + kGamma));
+        const VU b = mix(du, hn::Xor(a, hn::Set(du, key + 2 * kGamma)));
+        state = mix(du, hn::Xor(b, hn::Add(index, hn::Set(du, 3 * kGamma))));
+    }
+    V uniform(DU du) {
+        const D d;
+        const DI di;
+        state = hn::Add(state, hn::Set(du, kGamma));
+        const VU bits = hn::ShiftRight<11>(mix(du, state));
+        return hn::Mul(hn::ConvertTo(d, hn::BitCast(di, bits)), hn::Set(d, 0x1.0p-53));
+    }
+};
+
+// Density proportional to (1 - x) a + x b on [0, 1] (rays/sampling.h's sample_linear).
+HWY_INLINE V linear(D d, V a, V b, V xi) {
+    const V one = hn::Set(d, 1.0);
+    const V root = hn::Sqrt(hn::Add(hn::Mul(hn::Mul(hn::Sub(one, xi), a), a),
+                                    hn::Mul(hn::Mul(xi, b), b)));
+    const V x = hn::Div(hn::Mul(xi, hn::Add(a, b)), hn::Add(a, root));
+    return hn::IfThenElse(hn::Eq(a, b), xi, x);
+}
+
+HWY_INLINE V horner(D d, V x2, const double* c, std::size_t n) {
+    V r = hn::Set(d, c[n - 1]);
+    for (std::size_t k = n - 1; k-- > 0;) r = hn::Add(hn::Mul(r, x2), hn::Set(d, c[k]));
+    return r;
+}
+
+// cos and sin of 2 pi xi, xi in [0, 1): the quarter turn floor(4 xi) and an angle within
+// pi/4 of its middle, whose series converge fast.
+HWY_INLINE void cos_sin_turn(D d, V xi, V& cos_out, V& sin_out) {
+    const DI di;
+    const V four_xi = hn::Mul(xi, hn::Set(d, 4.0));
+    const V quarter = hn::Floor(four_xi);
+    const V theta = hn::Mul(hn::Sub(hn::Sub(four_xi, quarter), hn::Set(d, 0.5)),
+                            hn::Set(d, kQuarterTurn));
+    const V t2 = hn::Mul(theta, theta);
+    const V c = horner(d, t2, kTurnCos.data(), kTurnCos.size());
+    const V s = hn::Mul(theta, horner(d, t2, kTurnSin.data(), kTurnSin.size()));
+    const V half_root2 = hn::Set(d, kHalfRoot2);
+    const V c1 = hn::Mul(hn::Sub(c, s), half_root2);  // cos(pi/4 + theta)
+    const V s1 = hn::Mul(hn::Add(s, c), half_root2);  // sin(pi/4 + theta)
+    const VI q = hn::ConvertTo(di, quarter);
+    const auto odd = hn::RebindMask(d, hn::Eq(hn::And(q, hn::Set(di, 1)), hn::Set(di, 1)));
+    const auto upper = hn::RebindMask(d, hn::Gt(q, hn::Set(di, 1)));
+    // A quarter turn maps (c, s) to (-s, c): odd quarters swap, the upper half negates.
+    V cq = hn::IfThenElse(odd, hn::Neg(s1), c1);
+    V sq = hn::IfThenElse(odd, c1, s1);
+    cos_out = hn::IfThenElse(upper, hn::Neg(cq), cq);
+    sin_out = hn::IfThenElse(upper, hn::Neg(sq), sq);
+}
+
+HWY_INLINE V dot3(const V a[3], const V b[3]) {
+    return hn::Add(hn::Add(hn::Mul(a[0], b[0]), hn::Mul(a[1], b[1])), hn::Mul(a[2], b[2]));
+}
+HWY_INLINE void cross3(const V a[3], const V b[3], V out[3]) {
+    out[0] = hn::Sub(hn::Mul(a[1], b[2]), hn::Mul(a[2], b[1]));
+    out[1] = hn::Sub(hn::Mul(a[2], b[0]), hn::Mul(a[0], b[2]));
+    out[2] = hn::Sub(hn::Mul(a[0], b[1]), hn::Mul(a[1], b[0]));
+}
+
+void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t region_count,
+                  const AliasTable::Bin* bins, std::uint64_t seed, std::uint64_t key,
+                  std::uint64_t first, std::size_t n, GeneratedRays* out, std::size_t offset) {
+    const D d;
+    const DU du;
+    const DI di;
+    const std::size_t lanes = hn::Lanes(d);
+    const rg::PatchLayout layout = rg::patch_layout();
+    const double* const patch_doubles = reinterpret_cast<const double*>(patches);
+    const double* const region_doubles = reinterpret_cast<const double*>(regions);
+    const double* const bin_doubles = reinterpret_cast<const double*>(bins);
+    const V one = hn::Set(d, 1.0), zero = hn::Zero(d);
+    HWY_ALIGN double lane_doubles[9][HWY_LANES(double)];
+    HWY_ALIGN std::uint64_t lane_region[HWY_LANES(double)];
+    for (std::size_t k = 0; k < n; k += lanes) {
+        const VU index = hn::Iota(du, first + k);
+        Streams rng(du, seed, key, index);
+        const V xi_region = rng.uniform(du);
+        const V xi_u = rng.uniform(du), xi_v = rng.uniform(du);
+        const V xi_r = rng.uniform(du), xi_phi = rng.uniform(du);
+        const V dither = rng.uniform(du);
+
+        // The region: Walker's alias table (rays/alias_table.h), bins of {keep, alias}.
+        const V scaled = hn::Mul(xi_region, hn::Set(d, double(region_count)));
+        const VI bin = hn::Min(hn::ConvertTo(di, scaled), hn::Set(di, std::int64_t(region_count) - 1));
+        const V keep = hn::GatherIndex(d, bin_doubles, hn::ShiftLeft<1>(bin));
+        const VI alias = hn::BitCast(di, hn::GatherIndex(
+                                             du, reinterpret_cast<const std::uint64_t*>(bins),
+                                             hn::Add(hn::ShiftLeft<1>(bin), hn::Set(di, 1))));
+        const VI region =
+            hn::IfThenElse(hn::RebindMask(di, hn::Lt(hn::Sub(scaled, hn::ConvertTo(d, bin)), keep)),
+                           bin, alias);
+
+        // The region's domain and patch.
+        const VI at = hn::ShiftLeft<2>(region);
+        const V u0 = hn::GatherIndex(d, region_doubles, at);
+        const V v0 = hn::GatherIndex(d, region_doubles, hn::Add(at, hn::Set(di, 1)));
+        const V s = hn::GatherIndex(d, region_doubles, hn::Add(at, hn::Set(di, 2)));
+        const VI patch_map = hn::BitCast(
+            di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(regions),
+                                hn::Add(at, hn::Set(di, 3))));
+        const VI patch = hn::And(patch_map, hn::Set(di, 0xffffffff));
+        const VI map = hn::ShiftRight<32>(patch_map);
+        const VI base = hn::BitCast(
+            di, hn::Mul(hn::BitCast(du, patch), hn::Set(du, std::uint64_t(layout.stride))));
+        V c[4][3], normal[3];
+        for (int q = 0; q < 4; ++q) {
+            for (int a = 0; a < 3; ++a) {
+                c[q][a] = hn::GatherIndex(
+                    d, patch_doubles, hn::Add(base, hn::Set(di, layout.corner + 3 * q + a)));
+            }
+        }
+        for (int a = 0; a < 3; ++a) {
+            normal[a] = hn::GatherIndex(d, patch_doubles, hn::Add(base, hn::Set(di, layout.normal + a)));
+        }
+        const auto is_triangle = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 0)));
+        const auto is_bilinear = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 2)));
+        // P(u, v) = c0 + u e1 + v ev + u v g: ev = c2 - c0, g = 0 on a triangle; ev = c3 - c0,
+        // g = (c0 - c1) + (c2 - c3) on a quad.
+        V e1[3], ev[3], g[3];
+        for (int a = 0; a < 3; ++a) {
+            e1[a] = hn::Sub(c[1][a], c[0][a]);
+            ev[a] = hn::IfThenElse(is_triangle, hn::Sub(c[2][a], c[0][a]), hn::Sub(c[3][a], c[0][a]));
+            g[a] = hn::IfThenElseZero(hn::Not(is_triangle),
+                                      hn::Add(hn::Sub(c[0][a], c[1][a]), hn::Sub(c[2][a], c[3][a])));
+        }
+
+        // The point, uniform by area on the region (rays/element_sampler.h).
+        const V root = hn::Sqrt(xi_u);
+        const V tri_a = hn::Mul(root, hn::Sub(one, xi_v)), tri_b = hn::Mul(root, xi_v);
+        V a = hn::IfThenElse(is_triangle, tri_a, xi_u);
+        V b = hn::IfThenElse(is_triangle, tri_b, xi_v);
+        if (!hn::AllFalse(d, is_bilinear)) {
+            // The Jacobian n . (dP/du x dP/dv) = k0 + k1 u + k2 v, at the domain's corners.
+            V x[3];
+            cross3(e1, ev, x);
+            const V k0 = dot3(normal, x);
+            cross3(e1, g, x);
+            const V k1 = dot3(normal, x);
+            cross3(g, ev, x);
+            const V k2 = dot3(normal, x);
+            const V u1 = hn::Add(u0, s), v1 = hn::Add(v0, s);
+            const V j00 = hn::Add(hn::Add(k0, hn::Mul(k1, u0)), hn::Mul(k2, v0));
+            const V j10 = hn::Add(hn::Add(k0, hn::Mul(k1, u1)), hn::Mul(k2, v0));
+            const V j11 = hn::Add(hn::Add(k0, hn::Mul(k1, u1)), hn::Mul(k2, v1));
+            const V j01 = hn::Add(hn::Add(k0, hn::Mul(k1, u0)), hn::Mul(k2, v1));
+            const V bs = linear(d, hn::Add(j00, j01), hn::Add(j10, j11), xi_u);
+            const V ns = hn::Sub(one, bs);
+            const V bt = linear(d, hn::Add(hn::Mul(ns, j00), hn::Mul(bs, j10)),
+                                hn::Add(hn::Mul(ns, j01), hn::Mul(bs, j11)), xi_v);
+            a = hn::IfThenElse(is_bilinear, bs, a);
+            b = hn::IfThenElse(is_bilinear, bt, b);
+        }
+        const V u = hn::Add(u0, hn::Mul(s, a)), v = hn::Add(v0, hn::Mul(s, b));
+        const V uv = hn::Mul(u, v);
+        V origin[3];
+        for (int k3 = 0; k3 < 3; ++k3) {
+            origin[k3] = hn::Add(hn::Add(hn::Add(c[0][k3], hn::Mul(u, e1[k3])), hn::Mul(v, ev[k3])),
+                                 hn::Mul(uv, g[k3]));
+        }
+
+        // The direction: r cos(phi) t + r sin(phi) b + sqrt(1 - r^2) n, in the tangent frame of
+        // Duff et al. 2017 (rays/sampling.h).
+        const V sign = hn::CopySign(one, normal[2]);
+        const V fa = hn::Div(hn::Set(d, -1.0), hn::Add(sign, normal[2]));
+        const V fc = hn::Mul(hn::Mul(normal[0], normal[1]), fa);
+        const V t[3] = {hn::Add(one, hn::Mul(hn::Mul(hn::Mul(sign, normal[0]), normal[0]), fa)),
+                        hn::Mul(sign, fc), hn::Neg(hn::Mul(sign, normal[0]))};
+        const V bt3[3] = {fc, hn::Add(sign, hn::Mul(hn::Mul(normal[1], normal[1]), fa)),
+                          hn::Neg(normal[1])};
+        const V r = hn::Sqrt(xi_r);
+        V cos_phi, sin_phi;
+        cos_sin_turn(d, xi_phi, cos_phi, sin_phi);
+        const V rc = hn::Mul(r, cos_phi), rs = hn::Mul(r, sin_phi);
+        const V z = hn::Sqrt(hn::Max(zero, hn::Sub(one, xi_r)));
+        V dir[3];
+        for (int k3 = 0; k3 < 3; ++k3) {
+            dir[k3] = hn::Add(hn::Add(hn::Mul(rc, t[k3]), hn::Mul(rs, bt3[k3])),
+                              hn::Mul(z, normal[k3]));
+        }
+
+        const std::size_t count = std::min(lanes, n - k);
+        for (int k3 = 0; k3 < 3; ++k3) {
+            hn::Store(origin[k3], d, lane_doubles[k3]);
+            hn::Store(dir[k3], d, lane_doubles[3 + k3]);
+        }
+        hn::Store(u, d, lane_doubles[6]);
+        hn::Store(v, d, lane_doubles[7]);
+        hn::Store(dither, d, lane_doubles[8]);
+        hn::Store(hn::BitCast(du, region), du, lane_region);
+        const std::size_t o = offset + k;
+        for (std::size_t l = 0; l < count; ++l) {
+            for (int k3 = 0; k3 < 3; ++k3) {
+                out->origin[k3][o + l] = float(lane_doubles[k3][l]);
+                out->direction[k3][o + l] = float(lane_doubles[3 + k3][l]);
+            }
+            out->u[o + l] = float(lane_doubles[6][l]);
+            out->v[o + l] = float(lane_doubles[7][l]);
+            out->dither[o + l] = lane_doubles[8][l];
+            out->region[o + l] = std::uint32_t(lane_region[l]);
+        }
+    }
+}
+
+}  // namespace hmcr::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace hmcr {
+
+HWY_EXPORT(GenerateRays);
+
+namespace {
+
+namespace rg = ray_generator;
+
+double linear(double a, double b, double xi) {
+    if (a == b) return xi;
+    return (xi * (a + b)) / (a + std::sqrt((1.0 - xi) * a * a + xi * b * b));
+}
+
+}  // namespace
+
+RegionMap region_map(const Patch& patch) {
+    if (!patch.is_quad()) return RegionMap::triangle;
+    return patch.is_parallelogram() ? RegionMap::parallelogram : RegionMap::bilinear;
+}
+
+void GeneratedRays::resize(std::size_t n) {
+    for (int k = 0; k < 3; ++k) {
+        origin[k].resize(n);
+        direction[k].resize(n);
+    }
+    region.resize(n);
+    u.resize(n);
+    v.resize(n);
+    dither.resize(n);
+}
+
+RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
+                          const AliasTable& table, std::uint64_t seed, std::uint64_t key,
+                          std::uint64_t index) {
+    Rng rng(seed, key, index);
+    const double xi_region = rng.uniform();
+    const double xi_u = rng.uniform(), xi_v = rng.uniform();
+    const double xi_r = rng.uniform(), xi_phi = rng.uniform();
+    RayStartSample out;
+    out.dither = rng.uniform();
+    out.region = std::uint32_t(table.sample(xi_region));
+    const RayRegion& reg = regions[out.region];
+    const Patch& p = patches[reg.patch];
+    const bool triangle = reg.map == RegionMap::triangle;
+    Vec3 e1, ev, g;
+    for (int a = 0; a < 3; ++a) {
+        e1[a] = p.corner[1][a] - p.corner[0][a];
+        ev[a] = triangle ? p.corner[2][a] - p.corner[0][a] : p.corner[3][a] - p.corner[0][a];
+        g[a] = triangle ? 0.0
+                        : (p.corner[0][a] - p.corner[1][a]) + (p.corner[2][a] - p.corner[3][a]);
+    }
+    const auto cross = [](const Vec3& x, const Vec3& y) {
+        return Vec3(x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]);
+    };
+    const auto dot = [](const Vec3& x, const Vec3& y) {
+        return (x[0] * y[0] + x[1] * y[1]) + x[2] * y[2];
+    };
+    double a = xi_u, b = xi_v;
+    if (triangle) {
+        const double root = std::sqrt(xi_u);
+        a = root * (1.0 - xi_v);
+        b = root * xi_v;
+    } else if (reg.map == RegionMap::bilinear) {
+        const Vec3& n = p.normal;
+        const double k0 = dot(n, cross(e1, ev)), k1 = dot(n, cross(e1, g)),
+                     k2 = dot(n, cross(g, ev));
+        const double u1 = reg.u0 + reg.s, v1 = reg.v0 + reg.s;
+        const double j00 = (k0 + k1 * reg.u0) + k2 * reg.v0, j10 = (k0 + k1 * u1) + k2 * reg.v0;
+        const double j11 = (k0 + k1 * u1) + k2 * v1, j01 = (k0 + k1 * reg.u0) + k2 * v1;
+        a = linear(j00 + j01, j10 + j11, xi_u);
+        const double na = 1.0 - a;
+        b = linear(na * j00 + a * j10, na * j01 + a * j11, xi_v);
+    }
+    const double u = reg.u0 + reg.s * a, v = reg.v0 + reg.s * b, uv = u * v;
+    out.uv = {u, v};
+    for (int k = 0; k < 3; ++k) {
+        out.origin[k] = ((p.corner[0][k] + u * e1[k]) + v * ev[k]) + uv * g[k];
+    }
+    const Vec3& n = p.normal;
+    const double sign = std::copysign(1.0, n[2]);
+    const double fa = -1.0 / (sign + n[2]);
+    const double fc = (n[0] * n[1]) * fa;
+    const Vec3 t(1.0 + ((sign * n[0]) * n[0]) * fa, sign * fc, -(sign * n[0]));
+    const Vec3 bt(fc, sign + (n[1] * n[1]) * fa, -n[1]);
+    double cos_phi = 0, sin_phi = 0;
+    cos_sin_turn(xi_phi, cos_phi, sin_phi);
+    const double r = std::sqrt(xi_r);
+    const double rc = r * cos_phi, rs = r * sin_phi;
+    const double z = std::sqrt(std::max(0.0, 1.0 - xi_r));
+    for (int k = 0; k < 3; ++k) out.direction[k] = (rc * t[k] + rs * bt[k]) + z * n[k];
+    return out;
+}
+
+void generate_rays(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
+                   const AliasTable& table, std::uint64_t seed, std::uint64_t key,
+                   std::uint64_t first, std::size_t n, GeneratedRays& out, std::size_t offset) {
+    HWY_DYNAMIC_DISPATCH(GenerateRays)
+    (patches.data(), regions.data(), regions.size(), table.bins(), seed, key, first, n, &out,
+     offset);
+}
+
+}  // namespace hmcr
+#endif  // HWY_ONCE
