@@ -26,10 +26,6 @@ Hierarchy::Hierarchy(PatchSet patches, HierarchyLimits limits)
     }
 }
 
-bool Hierarchy::can_subdivide(const Element& e) const {
-    return e.area > m_min_area && e.id.depth < m_limits.max_depth;
-}
-
 void Hierarchy::init_child(Element& parent, int k, Element& child) const {
     const Patch& p = patch(parent);
     child.id = parent.id.child(k);

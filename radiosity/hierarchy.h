@@ -38,7 +38,9 @@ public:
     Element& root(std::size_t patch) { return m_roots[patch]; }
     const Element& root(std::size_t patch) const { return m_roots[patch]; }
 
-    bool can_subdivide(const Element& e) const;
+    bool can_subdivide(const Element& e) const {
+        return e.area > m_min_area && e.id.depth < m_limits.max_depth;
+    }
     // Splits every element larger than max_area (m^2) until none is, within max_depth: the
     // fixed uniform mesh of a converged reference (docs/design.md §6). Parallel over patches.
     void subdivide_uniformly(double max_area);

@@ -15,20 +15,33 @@
 namespace hmcr {
 namespace {
 
+// What every link between two patches shares: their normals and the receiver's reflectance,
+// read once for a descent (or a group of them) rather than once for each link decided.
+struct PatchPair {
+    Vec3 receiver_normal, source_normal;
+    Rgb reflectance;  // the receiver's
+};
+
+PatchPair patch_pair(const Hierarchy& h, std::uint32_t receiver, std::uint32_t source) {
+    const PatchSet& ps = h.patch_set();
+    const Patch& r = ps.patches[receiver];
+    return {r.normal, ps.patches[source].normal, ps.reflectance(r)};
+}
+
 // w_ij of docs/design.md §4: the largest share of the source's radiosity the receiver reflects.
 // The papers write it with the total radiosity B_j, as RenderPark's power oracle weighs; hmcr's
-// first choice was the unshot Delta B_j, which refines later iterations much less.
-double link_weight(const RefinementContext& ctx, const Element& receiver, const Element& source) {
+// default is the unshot Delta B_j, which refines later iterations much less (§4.4).
+double link_weight(const RefinementContext& ctx, const PatchPair& pp, const Element& source) {
     const Rgb& b = ctx.link_weight == LinkWeight::total ? source.radiosity : source.unshot;
-    const Hierarchy& h = ctx.hierarchy;
-    return (h.patch_set().reflectance(h.patch(receiver)) * b).maxCoeff();
+    return (pp.reflectance * b).maxCoeff();
 }
 
 std::uint64_t element_key(const ElementId& id) {
     return Rng(id.patch, id.path, id.depth).next_u64();
 }
 
-LinkGeometry centre_geometry(const Hierarchy& h, const Element& i, const Element& j) {
+LinkGeometry centre_geometry(const Hierarchy& h, const PatchPair& pp, const Element& i,
+                             const Element& j) {
     LinkGeometry g;
     g.receiver_area = i.area;
     g.source_area = j.area;
@@ -36,21 +49,21 @@ LinkGeometry centre_geometry(const Hierarchy& h, const Element& i, const Element
     const Vec3 d = j.centre - i.centre;
     g.centre_distance = d.norm();
     if (g.centre_distance > 0) {
-        g.receiver_cos = std::max(0.0, h.patch(i).normal.dot(d) / g.centre_distance);
-        g.source_cos = std::max(0.0, -h.patch(j).normal.dot(d) / g.centre_distance);
+        g.receiver_cos = std::max(0.0, pp.receiver_normal.dot(d) / g.centre_distance);
+        g.source_cos = std::max(0.0, -pp.source_normal.dot(d) / g.centre_distance);
     }
     return g;
 }
 
 // The oracle's geometric factor from the pair's own N_s lines (docs/design.md §3, §4).
-double line_factor(const RefinementContext& ctx, const Element& receiver, const Element& source,
-                   RefinementCounters& counters) {
+double line_factor(const RefinementContext& ctx, const PatchPair& pp, const Element& receiver,
+                   const Element& source, RefinementCounters& counters) {
     const auto start = std::chrono::steady_clock::now();
     thread_local std::vector<double> kernel;
     kernel.resize(std::size_t(ctx.lines));
     Rng rng(ctx.seed, element_key(receiver.id), element_key(source.id));
     sample_kernel(ctx.scene, ctx.hierarchy, receiver, source, rng, kernel);
-    LinkGeometry g = centre_geometry(ctx.hierarchy, receiver, source);
+    LinkGeometry g = centre_geometry(ctx.hierarchy, pp, receiver, source);
     g.kernel = kernel;
     const double factor = ctx.oracle.geometric_factor(g);
     counters.lines_cast += kernel.size();
@@ -62,31 +75,34 @@ double line_factor(const RefinementContext& ctx, const Element& receiver, const 
     return factor;
 }
 
-double geometric_factor(const RefinementContext& ctx, const Element& receiver,
-                        const Element& source, RefinementCounters& counters) {
+double geometric_factor(const RefinementContext& ctx, const PatchPair& pp,
+                        const Element& receiver, const Element& source,
+                        RefinementCounters& counters) {
     if (!ctx.oracle.uses_lines()) {
         ++counters.oracle_evaluations;
-        return ctx.oracle.geometric_factor(centre_geometry(ctx.hierarchy, receiver, source));
+        return ctx.oracle.geometric_factor(centre_geometry(ctx.hierarchy, pp, receiver, source));
     }
-    if (!ctx.cache) return line_factor(ctx, receiver, source, counters);
+    if (!ctx.cache) return line_factor(ctx, pp, receiver, source, counters);
     if (const auto cached = ctx.cache->find(&receiver, &source)) {
         ++counters.cache_hits;
         return *cached;
     }
-    const double factor = line_factor(ctx, receiver, source, counters);
+    const double factor = line_factor(ctx, pp, receiver, source, counters);
     ctx.cache->insert(&receiver, &source, factor);
     return factor;
 }
 
-}  // namespace
-
-double link_value(const RefinementContext& ctx, const Element& receiver, const Element& source,
-                  RefinementCounters& counters, std::uint64_t rays) {
-    const double w = link_weight(ctx, receiver, source);
+// The oracle's value of a link: w_ij times its geometric factor, to be compared with
+// epsilon * Phi_max. Counted as `rays` decisions (oracle_calls) when the link carries anything.
+double link_value(const RefinementContext& ctx, const PatchPair& pp, const Element& receiver,
+                  const Element& source, RefinementCounters& counters, std::uint64_t rays) {
+    const double w = link_weight(ctx, pp, source);
     if (w <= 0) return 0;  // nothing to transport: no refinement can matter
     counters.oracle_calls += rays;
-    return w * geometric_factor(ctx, receiver, source, counters);
+    return w * geometric_factor(ctx, pp, receiver, source, counters);
 }
+
+}  // namespace
 
 namespace {
 
@@ -95,11 +111,11 @@ namespace {
 // the larger one that may still be split. Counted as `rays` decisions.
 enum class Step { accept, split_receiver, split_source };
 
-Step next_step(const RefinementContext& ctx, const Element& i, const Element& j,
-               RefinementCounters& counters, std::uint64_t rays) {
+Step next_step(const RefinementContext& ctx, const PatchPair& pp, const Element& i,
+               const Element& j, RefinementCounters& counters, std::uint64_t rays) {
     const bool split_i = ctx.hierarchy.can_subdivide(i), split_j = ctx.hierarchy.can_subdivide(j);
     if (!split_i && !split_j) return Step::accept;
-    if (link_value(ctx, i, j, counters, rays) < ctx.threshold) return Step::accept;
+    if (link_value(ctx, pp, i, j, counters, rays) < ctx.threshold) return Step::accept;
     return split_i && (!split_j || i.area >= j.area) ? Step::split_receiver : Step::split_source;
 }
 
@@ -112,8 +128,9 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
     Element* i = &h.root(query.receiver_patch);
     if (ctx.fixed_mesh) return h.locate(*i, y_uv);
     Element* j = &h.root(query.source_patch);
+    const PatchPair pp = patch_pair(h, query.receiver_patch, query.source_patch);
     for (;;) {
-        const Step step = next_step(ctx, *i, *j, counters, 1);
+        const Step step = next_step(ctx, pp, *i, *j, counters, 1);
         if (step == Step::accept) return *i;
         // Refused: the element split is replaced by its child holding the ray's point on it
         // (the hit point y on the receiver, the origin x on the source).
@@ -133,6 +150,7 @@ constexpr std::size_t kParallelRays = 2048;
 struct Descent {
     const LinkQuery* rays;
     Element** receivers;
+    PatchPair patches;
 };
 
 // refine_link's loop for the rays rays[index[0..n)], which all reach the link (i, j). A refused
@@ -143,7 +161,7 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
              RefinementCounters& counters) {
     Hierarchy& h = ctx.hierarchy;
     for (;;) {
-        const Step step = next_step(ctx, *i, *j, counters, n);
+        const Step step = next_step(ctx, d.patches, *i, *j, counters, n);
         if (step == Step::accept) break;
         const bool on_i = step == Step::split_receiver;
         Element*& e = on_i ? i : j;
@@ -234,12 +252,14 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
         if (t == 0 || keyed[t].key != keyed[t - 1].key) group_start.push_back(t);
     }
     group_start.push_back(keyed.size());
-    const Descent d{grouped, buffers.receivers.data()};
     tbb::enumerable_thread_specific<RefinementCounters> local;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, group_start.size() - 1, 1), [&](auto r) {
         RefinementCounters& c = local.local();
         for (std::size_t g = r.begin(); g < r.end(); ++g) {
             const std::size_t first = group_start[g], n = group_start[g + 1] - first;
+            const LinkQuery& q = grouped[first];
+            const Descent d{grouped, buffers.receivers.data(),
+                            patch_pair(h, q.receiver_patch, q.source_patch)};
             descend(ctx, d, &h.root(grouped[first].receiver_patch),
                     &h.root(grouped[first].source_patch), index + first, scratch + first,
                     child + first, n, c);

@@ -79,9 +79,4 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
                   std::span<Element*> receivers, RefinementCounters& counters,
                   DescentScratch& scratch);
 
-// The oracle's value of a link divided by Phi_max is compared with epsilon; this is the value.
-// Counted as `rays` decisions (oracle_calls) when the link carries anything.
-double link_value(const RefinementContext& ctx, const Element& receiver, const Element& source,
-                  RefinementCounters& counters, std::uint64_t rays = 1);
-
 }  // namespace hmcr

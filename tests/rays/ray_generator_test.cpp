@@ -10,6 +10,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "rays/domain.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
 
