@@ -68,6 +68,7 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
           {"source", scene.source.string()},
           {"mesh", scene.mesh_path.string()},
           {"patches", st.patches},
+          {"two_sided_patches", st.two_sided_patches},
           {"strict", scene.strict},
           {"repairs", scene.repairs.to_json()},
           {"total_area_m2", st.total_area},

@@ -17,6 +17,12 @@ void add_scene_flags(CLI::App& command, SceneFlags& flags) {
                                 "file's, else {})",
                                 kDefaultCurveSegments))
         ->check(CLI::Range(kMinCurveSegments, kMaxCurveSegments));
+    command
+        .add_option("--sides", flags.sides,
+                    fmt::format("sides of every material, 1 or 2 (default: the scene file's, else "
+                                "MGF's sides statements, else {}; docs/usage.md#sides)",
+                                kDefaultSides))
+        ->check(CLI::Range(1, 2));
 }
 
 void add_view_flag(CLI::App& command, std::string& view) {
@@ -67,6 +73,7 @@ Scene load_scene_reporting(const std::string& name_or_path, bool quiet, SceneUse
     options.use = use;
     options.strict = flags.strict;
     if (flags.mgf_segments > 0) options.curve_segments = flags.mgf_segments;
+    if (flags.sides > 0) options.sides = flags.sides;
     WarningPrinter printer(quiet);
     options.warn = [&printer](const std::string& w) { printer.tell(w); };
     Scene scene = [&] {  // returned in place: a patch mesh is not moved but copied
@@ -80,8 +87,11 @@ Scene load_scene_reporting(const std::string& name_or_path, bool quiet, SceneUse
     printer.finish();
     return_freed_memory();
     if (!quiet && !scene.repairs.empty()) {
-        fmt::print(stderr, "hmcr: repaired {}: {} (--strict refuses them)\n",
-                   scene.mesh_path.string(), scene.repairs.summary());
+        // A strict load joins opposite faces too (docs/usage.md#repairs).
+        const RepairReport& r = scene.repairs;
+        const bool refusable = r.total() > r[RepairKind::sides_joined].count;
+        fmt::print(stderr, "hmcr: repaired {}: {}{}\n", scene.mesh_path.string(), r.summary(),
+                   refusable ? " (--strict refuses them)" : "");
     }
     return scene;
 }

@@ -13,6 +13,7 @@ namespace hmcr {
 struct SceneFlags {
     bool strict = false;   // refuse what the repairs would fix
     int mgf_segments = 0;  // 0: the scene file's, else kDefaultCurveSegments
+    int sides = 0;         // 0: the scene file's, else each material's (docs/usage.md#sides)
 };
 
 // Warnings printed by one load at most (docs/usage.md#bad-input); the rest are counted in one

@@ -101,7 +101,8 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     const ShadedMesh shaded =
         build_shaded_mesh(std::move(sol.hierarchy), args.crease_degrees);
     write_solution(out->temp(vtp), shaded, sol, identity, double(sol.stats.iterations.size()));
-    write_paraview_state(out->temp(pvsm), vtp, find_view(scene, ""));
+    write_paraview_state(out->temp(pvsm), vtp, find_view(scene, ""),
+                         sol.stats.two_sided_patches > 0);
     timings.output_seconds = seconds_since(t_out);
     timings.total_seconds = seconds_since(start);
     auto summary = run_summary(scene, sol, timings, command_line, vtp.string());

@@ -309,7 +309,9 @@ private:
         MgfMaterial& m = m_materials.current();
         m.soup = -1;
         if (e == "sides") {
-            if (v != 1 && v != 2) throw InputError(m_where, "sides is 1 or 2");
+            if (v != 1 && v != 2) {
+                throw InputError(m_where, fmt::format("sides {} is not 1 or 2", w[1]));
+            }
             m.sides = int(v);
         } else if (!(v >= 0)) {
             throw InputError(m_where, fmt::format("{} {} is negative", e, w[1]));
@@ -377,8 +379,6 @@ private:
     SourcePlace m_at;
     std::string m_where;
     Ignored m_ignored;
-    std::size_t m_two_sided = 0;
-    std::string m_first_two_sided;
 };
 
 // The polygons of one geometric entity, in the material and transformation in effect; false
@@ -461,7 +461,6 @@ void MgfReader::add(std::vector<MgfPolygon> polygons, bool reverse) {
     }
     reverse = reverse != mirrors(m_transform);
     const std::int32_t material = soup_material();
-    if (m_materials.current().sides == 2 && m_two_sided++ == 0) m_first_two_sided = m_where;
     std::vector<std::uint32_t> ids;
     for (MgfPolygon& polygon : polygons) {
         if (reverse) std::reverse(polygon.begin(), polygon.end());
@@ -490,6 +489,7 @@ std::int32_t MgfReader::soup_material() {
     out.kd = m.kd_at;
     out.ke = m.ed_at;
     out.ks = m.ks_at;
+    out.sides = m.sides;
     m.soup = std::int32_t(m_soup.materials.size());
     m_soup.materials.push_back(std::move(out));
     return m.soup;
@@ -505,15 +505,6 @@ void MgfReader::finish_warnings() {
         m_soup.warnings.push_back(
             fmt::format("{}: ignored (hmcr reads reflection rd and rs and emission ed): {}",
                         m_soup.files.front().string(), list));
-    }
-    if (m_two_sided > 0) {
-        m_soup.warnings.push_back(fmt::format(
-            "{}: {} surface{} of two-sided materials (sides 2, MGF's default) read one-sided, "
-            "facing "
-            "the way their corners turn (first at {}); the summary's back-face loss tells if that "
-            "is wrong",
-            m_soup.files.front().string(), m_two_sided, m_two_sided == 1 ? "" : "s",
-            m_first_two_sided));
     }
 }
 

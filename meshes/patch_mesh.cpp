@@ -17,6 +17,17 @@ FaceMaterials::FaceMaterials(const PatchMesh& mesh) : m_mesh(mesh) {
         throw std::invalid_argument("patch mesh has no material properties");
     }
     m_table = &mesh.property(table);
+    m_has_back = mesh.get_property_handle(m_back, kBackMaterialProp);
+}
+
+std::uint32_t FaceMaterials::back_index(OpenMesh::FaceHandle f) const {
+    if (!m_has_back) return kOneSided;
+    const std::uint32_t m = m_mesh.property(m_back, f);
+    if (m != kOneSided && m >= m_table->size()) {
+        throw std::invalid_argument("face " + std::to_string(f.idx()) + " names back material " +
+                                    std::to_string(m) + " of " + std::to_string(m_table->size()));
+    }
+    return m;
 }
 
 std::uint32_t FaceMaterials::index(OpenMesh::FaceHandle f) const {

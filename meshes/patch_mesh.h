@@ -30,6 +30,9 @@ struct FaceMaterial {
 inline constexpr const char* kMaterialsProp = "hmcr:materials";    // mesh: vector<FaceMaterial>
 inline constexpr const char* kMaterialProp = "hmcr:material";      // face: index into the table
 inline constexpr const char* kSourceLineProp = "hmcr:source_line";  // face: 1-based, 0 = none
+// face: the material of the face's back side, or kOneSided (the back is black and absorbing)
+inline constexpr const char* kBackMaterialProp = "hmcr:back_material";
+inline constexpr std::uint32_t kOneSided = 0xffffffff;
 
 // Typed handles on those properties (they exist on every mesh the loaders return).
 inline auto materials_prop(PatchMesh& m) {
@@ -37,6 +40,9 @@ inline auto materials_prop(PatchMesh& m) {
 }
 inline auto material_prop(PatchMesh& m) {
     return OpenMesh::getOrMakeProperty<OpenMesh::FaceHandle, std::uint32_t>(m, kMaterialProp);
+}
+inline auto back_material_prop(PatchMesh& m) {
+    return OpenMesh::getOrMakeProperty<OpenMesh::FaceHandle, std::uint32_t>(m, kBackMaterialProp);
 }
 inline auto source_line_prop(PatchMesh& m) {
     return OpenMesh::getOrMakeProperty<OpenMesh::FaceHandle, int>(m, kSourceLineProp);
@@ -49,13 +55,16 @@ class FaceMaterials {
     explicit FaceMaterials(const PatchMesh& mesh);
     // Throws std::invalid_argument when the face's index is not in the table.
     std::uint32_t index(OpenMesh::FaceHandle f) const;
+    // The back side's index, or kOneSided (also for a mesh without the property).
+    std::uint32_t back_index(OpenMesh::FaceHandle f) const;
     const FaceMaterial& operator[](OpenMesh::FaceHandle f) const { return (*m_table)[index(f)]; }
     const std::vector<FaceMaterial>& table() const { return *m_table; }
 
   private:
     const PatchMesh& m_mesh;
     const std::vector<FaceMaterial>* m_table = nullptr;
-    OpenMesh::FPropHandleT<std::uint32_t> m_index;
+    OpenMesh::FPropHandleT<std::uint32_t> m_index, m_back;
+    bool m_has_back = false;
 };
 
 // Gives face f a material of its own, appended to the table (for meshes built by hand).

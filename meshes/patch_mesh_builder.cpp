@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <numbers>
 #include <numeric>
+#include <optional>
 
 #include "meshes/polygon_soup.h"
 #include "meshes/validation.h"
@@ -39,9 +40,10 @@ void check_material(const PolygonSoup& soup, const SoupMaterial& m, const LoadOp
     }
 }
 
-// The material of polygon k: its own (checked), else the default, else an error.
-Material face_material(const PolygonSoup& soup, std::size_t k, const LoadOptions& options) {
-    const std::int32_t id = soup.material[k];
+// Material `id` of polygon k (its front's or its back's): the soup's (checked), else the
+// default, else an error at the polygon.
+Material face_material(const PolygonSoup& soup, std::int32_t id, std::size_t k,
+                       const LoadOptions& options) {
     if (id != PolygonSoup::kNoMaterial && soup.materials[std::size_t(id)].defined) {
         const SoupMaterial& m = soup.materials[std::size_t(id)];
         check_material(soup, m, options);
@@ -49,7 +51,9 @@ Material face_material(const PolygonSoup& soup, std::size_t k, const LoadOptions
     }
     if (options.default_material) return *options.default_material;
     const std::string where = soup.where(soup.place[k]);
-    if (id == PolygonSoup::kNoMaterial) throw InputError(where, "face has no material (no usemtl before it)");
+    if (id == PolygonSoup::kNoMaterial) {
+        throw InputError(where, "face has no material (no usemtl before it)");
+    }
     throw InputError(where, fmt::format("face uses material {}, which no loaded material file "
                                         "defines",
                                         quote(soup.materials[std::size_t(id)].material.name)));
@@ -160,11 +164,16 @@ std::size_t edge_count(const PolygonSoup& soup, const std::vector<int>& id,
     return count;
 }
 
-// `materials[material_of[f]]` is face f's material.
+// The faces' indices into the material table: fronts, and backs (kOneSided for a one-sided
+// face; empty when every face is one-sided, and the mesh then has no back property).
+struct MaterialIndices {
+    std::vector<std::uint32_t> front, back;
+};
+
+// `materials[of.front[f]]` is face f's material.
 void make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
-               const std::vector<Material>& materials,
-               const std::vector<std::uint32_t>& material_of, std::size_t vertex_count,
-               PatchMesh& mesh) {
+               const std::vector<Material>& materials, const MaterialIndices& of,
+               std::size_t vertex_count, PatchMesh& mesh) {
     mesh.reserve(vertex_count, edge_count(soup, id, vertex_count), soup.polygon_count());
     std::vector<FaceMaterial>& table = *materials_prop(mesh);
     for (const Material& m : materials) {
@@ -175,6 +184,8 @@ void make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
     }
     auto material = material_prop(mesh);
     auto source_line = source_line_prop(mesh);
+    std::optional<decltype(back_material_prop(mesh))> back;
+    if (!of.back.empty()) back = back_material_prop(mesh);
     std::vector<OpenMesh::VertexHandle> handles(vertex_count), corners;
     std::vector<int> ids;
     std::vector<Eigen::Vector3d> points;
@@ -182,7 +193,8 @@ void make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
     for (std::size_t f = 0; f < soup.polygon_count(); ++f) {
         welded_face(soup, f, id, ids, points);
         const OpenMesh::FaceHandle fh = add_patch(mesh, ids, points, handles, corners);
-        material[fh] = material_of[f];
+        material[fh] = of.front[f];
+        if (back) (*back)[fh] = of.back[f];
         source_line[fh] = int(soup.place[f].line);
     }
 }
@@ -190,10 +202,11 @@ void make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
 }  // namespace
 
 void PolygonSoup::add_polygon(std::span<const std::uint32_t> ids, std::int32_t material_id,
-                              SourcePlace at) {
+                              SourcePlace at, std::int32_t back_id) {
     corner_ids.insert(corner_ids.end(), ids.begin(), ids.end());
     corner_offsets.push_back(std::uint32_t(corner_ids.size()));
     material.push_back(material_id);
+    back.push_back(back_id);
     place.push_back(at);
 }
 
@@ -229,30 +242,38 @@ void build_patch_mesh(const PolygonSoup& soup, const Welding& welding, const Loa
     // is reported), then referred to by index.
     std::vector<Material> materials;
     std::vector<std::int64_t> resolved(soup.materials.size() + 1, -1);  // by soup id + 1
-    std::vector<std::uint32_t> material_of(soup.polygon_count());
+    const auto index_of = [&](std::int32_t soup_id, std::size_t k) {
+        std::int64_t& slot = resolved[std::size_t(soup_id + 1)];
+        if (slot < 0) {
+            slot = std::int64_t(materials.size());
+            materials.push_back(face_material(soup, soup_id, k, options));
+        }
+        return std::uint32_t(slot);
+    };
+    MaterialIndices of;
+    of.front.resize(soup.polygon_count());
     std::vector<FaceKey> keys(soup.polygon_count());
     std::vector<int> ids;
     std::vector<Eigen::Vector3d> corners;
+    double emitted = 0;
     for (std::size_t k = 0; k < soup.polygon_count(); ++k) {
         welded_face(soup, k, id, ids, corners);
         if (auto error = check_face_geometry(corners, ids)) {
             throw InputError(soup.where(soup.place[k]), *error);
         }
         keys[k] = face_key(ids);
-        std::int64_t& slot = resolved[std::size_t(soup.material[k] + 1)];
-        if (slot < 0) {
-            slot = std::int64_t(materials.size());
-            materials.push_back(face_material(soup, k, options));
-        }
-        material_of[k] = std::uint32_t(slot);
+        of.front[k] = index_of(soup.material[k], k);
+        emitted += materials[of.front[k]].ke.sum();
+        if (soup.back[k] == PolygonSoup::kOneSided) continue;
+        if (of.back.empty()) of.back.assign(soup.polygon_count(), kOneSided);
+        of.back[k] = index_of(soup.back[k], k);
+        emitted += materials[of.back[k]].ke.sum();
     }
     check_duplicates(soup, id, keys);
-    double emitted = 0;
-    for (std::uint32_t m : material_of) emitted += materials[m].ke.sum();
     if (!(emitted > 0) && options.use == SceneUse::solve) {
         throw InputError(top, "no face emits light (give a material used by a face Ke > 0)");
     }
-    make_mesh(soup, id, materials, material_of, vertex_count, mesh);
+    make_mesh(soup, id, materials, of, vertex_count, mesh);
 }
 
 }  // namespace hmcr

@@ -26,10 +26,12 @@ struct SoupMaterial {
     Material material;
     bool defined = true;     // false: named by a face but defined nowhere (an error if used)
     SourcePlace kd, ke, ks;  // where Kd, Ke and Ks were set (the definition if they were not)
+    int sides = 0;           // 1 or 2 as the file says (MGF's `sides`); 0: the format has none
 };
 
 struct PolygonSoup {
     static constexpr std::int32_t kNoMaterial = -1;
+    static constexpr std::int32_t kOneSided = -2;  // a polygon's back: black and absorbing
 
     std::vector<std::filesystem::path> files;  // every file read, in order
     std::vector<Eigen::Vector3d> positions;    // finite
@@ -37,16 +39,19 @@ struct PolygonSoup {
     std::vector<std::string> warnings;         // "file:line: what", one line each
 
     // Polygon k: corners (indices into positions, counter-clockwise seen from the front),
-    // material (index into materials, or kNoMaterial) and the statement it came from.
+    // material (index into materials, or kNoMaterial), the material of its back (the same, or
+    // kOneSided; docs/design.md §1.3) and the statement it came from.
     std::size_t polygon_count() const { return material.size(); }
     std::span<const std::uint32_t> corners(std::size_t k) const {
         return {corner_ids.data() + corner_offsets[k], corner_offsets[k + 1] - corner_offsets[k]};
     }
-    void add_polygon(std::span<const std::uint32_t> ids, std::int32_t material_id, SourcePlace at);
+    void add_polygon(std::span<const std::uint32_t> ids, std::int32_t material_id, SourcePlace at,
+                     std::int32_t back_id = kOneSided);
 
     std::vector<std::uint32_t> corner_offsets{0};
     std::vector<std::uint32_t> corner_ids;
     std::vector<std::int32_t> material;
+    std::vector<std::int32_t> back;
     std::vector<SourcePlace> place;
 
     std::string where(SourcePlace p) const;  // "path:line", or "path" for line 0

@@ -16,9 +16,9 @@ std::size_t RepairReport::total() const {
 }
 
 const char* repair_key(RepairKind kind) {
-    static constexpr const char* kKeys[kRepairKinds] = {"triangulated",       "quads_split",
-                                                        "corners_removed",    "degenerate_dropped",
-                                                        "duplicates_dropped", "reflectance_one"};
+    static constexpr const char* kKeys[kRepairKinds] = {
+        "triangulated",       "quads_split",     "corners_removed", "degenerate_dropped",
+        "duplicates_dropped", "reflectance_one", "sides_joined",    "coincident_dropped"};
     return kKeys[std::size_t(kind)];
 }
 
@@ -30,7 +30,11 @@ std::string RepairReport::summary() const {
          "faces with repeated or collinear corners simplified"},
         {"degenerate face dropped", "degenerate faces dropped"},
         {"duplicate face dropped", "duplicate faces dropped"},
-        {"material with reflectance 1 accepted", "materials with reflectance 1 accepted"}};
+        {"material with reflectance 1 accepted", "materials with reflectance 1 accepted"},
+        {"face facing away from a coincident one joined as its back side",
+         "faces facing away from coincident ones joined as their back sides"},
+        {"coincident face of another material dropped (the first kept)",
+         "coincident faces of another material dropped (the first kept)"}};
     std::string out;
     for (std::size_t k = 0; k < kRepairKinds; ++k) {
         const RepairTally& t = kinds[k];

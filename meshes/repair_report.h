@@ -16,8 +16,10 @@ enum class RepairKind {
     degenerate_dropped,  // a face without area (fewer than 3 distinct, non-collinear corners)
     duplicate_dropped,   // the same corners in the same order and material as an earlier face
     reflectance_one,     // a material with Kd = 1 in a channel, accepted
+    sides_joined,        // a face on an earlier one's corners facing the other way: its back
+    coincident_dropped,  // a face on an earlier one's corners the same way, in another material
 };
-inline constexpr std::size_t kRepairKinds = 6;
+inline constexpr std::size_t kRepairKinds = 8;
 
 struct RepairTally {
     std::size_t count = 0;

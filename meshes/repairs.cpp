@@ -1,15 +1,15 @@
 // The repair pass: per polygon, take out repeated and collinear corners, drop what has no area
-// left, cut what is not a triangle or a planar convex quad into triangles; then drop exact
-// duplicates, and accept reflectance 1.
+// left, cut what is not a triangle or a planar convex quad into triangles; then settle the faces
+// on the same vertices (meshes/coincident_faces.h), and accept reflectance 1.
 #include "meshes/repairs.h"
 
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <limits>
 #include <set>
 
+#include "meshes/coincident_faces.h"
 #include "meshes/triangulate.h"
 #include "meshes/validation.h"
 #include "meshes/weld.h"
@@ -143,57 +143,12 @@ Outcome repair_polygon(Corners& c, const Where& where, RepairReport& report,
     return Outcome::pieces;
 }
 
-// The ids (3 or 4 after the repairs) in the same cyclic order, starting at the smallest, then
-// INT_MAX: equal for the same face written from another corner, not for the reversed face.
-FaceKey cyclic_key(const std::vector<int>& ids) {
-    FaceKey key;
-    key.fill(std::numeric_limits<int>::max());
-    const std::size_t n = std::min<std::size_t>(ids.size(), 4);
-    const std::size_t first = std::size_t(std::min_element(ids.begin(), ids.begin() + n) - ids.begin());
-    for (std::size_t i = 0; i < n; ++i) key[i] = ids[(first + i) % n];
-    return key;
-}
-
-// Drops every polygon of `out` whose cyclic key and material equal those of the first polygon
-// with that key, as a scan in order that kept each new key's first polygon would. Sorting (key,
-// index) records instead of a hash map: at 10^6 polygons the map's node per polygon was a
-// seventh of the load.
-void drop_duplicates(PolygonSoup& out, const std::vector<FaceKey>& keys, const PolygonSoup& soup,
-                     RepairReport& report) {
-    struct Record {
-        FaceKey key;
-        std::uint32_t index;
-    };
-    std::vector<Record> sorted(keys.size());
-    for (std::size_t j = 0; j < keys.size(); ++j) sorted[j] = {keys[j], std::uint32_t(j)};
-    std::sort(sorted.begin(), sorted.end(), [](const Record& a, const Record& b) {
-        return key_order(a.key, a.index, b.key, b.index);
-    });
-    std::vector<bool> dropped(keys.size(), false);
-    bool any = false;
-    for (std::size_t s = 1, first = 0; s < sorted.size(); ++s) {
-        if (!same_key(sorted[s].key, sorted[first].key)) {
-            first = s;
-        } else if (out.material[sorted[s].index] == out.material[sorted[first].index]) {
-            dropped[sorted[s].index] = any = true;
-        }
-    }
-    if (!any) return;
-    PolygonSoup kept;
-    for (std::size_t j = 0; j < keys.size(); ++j) {
-        if (dropped[j]) {
-            report.add(RepairKind::duplicate_dropped, soup.where(out.place[j]));
-        } else {
-            kept.add_polygon(out.corners(j), out.material[j], out.place[j]);
-        }
-    }
-    out = std::move(kept);
-}
-
 void accept_reflectance_one(PolygonSoup& soup, RepairReport& report) {
     std::vector<bool> used(soup.materials.size(), false);
-    for (std::int32_t m : soup.material) {
-        if (m != PolygonSoup::kNoMaterial) used[std::size_t(m)] = true;
+    for (const auto* ids : {&soup.material, &soup.back}) {
+        for (std::int32_t m : *ids) {
+            if (m >= 0) used[std::size_t(m)] = true;
+        }
     }
     std::set<std::string> told;  // one material read twice (MGF) is told once
     for (std::size_t m = 0; m < soup.materials.size(); ++m) {
@@ -219,11 +174,8 @@ RepairReport repair_soup(PolygonSoup& soup, const Welding& welding) {
     RepairReport report;
     const std::vector<int>& welded = welding.id;
     PolygonSoup out;
-    std::vector<FaceKey> keys;  // each output polygon's cyclic key
-    keys.reserve(soup.polygon_count());
     const auto keep = [&](const Corners& c, std::size_t k) {
-        keys.push_back(cyclic_key(c.ids));
-        out.add_polygon(c.soup, soup.material[k], soup.place[k]);
+        out.add_polygon(c.soup, soup.material[k], soup.place[k], soup.back[k]);
     };
     Corners c;
     std::vector<Corners> pieces;
@@ -241,12 +193,19 @@ RepairReport repair_soup(PolygonSoup& soup, const Welding& welding) {
                 break;
         }
     }
-    drop_duplicates(out, keys, soup, report);
     soup.corner_offsets = std::move(out.corner_offsets);
     soup.corner_ids = std::move(out.corner_ids);
     soup.material = std::move(out.material);
+    soup.back = std::move(out.back);
     soup.place = std::move(out.place);
+    resolve_coincident_faces(soup, welded, report);
     accept_reflectance_one(soup, report);
+    return report;
+}
+
+RepairReport join_opposite_faces(PolygonSoup& soup, const Welding& welding) {
+    RepairReport report;
+    join_opposite_faces(soup, welding.id, report);
     return report;
 }
 

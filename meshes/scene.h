@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -51,12 +52,27 @@ inline constexpr int kDefaultCurveSegments = 24;
 inline constexpr int kMinCurveSegments = 4;
 inline constexpr int kMaxCurveSegments = 256;
 
+// The sides of a material whose file does not say (an OBJ's: Blender and Cycles treat a
+// diffuse face as two-sided, docs/decisions.md) when neither the command line nor the scene file
+// sets them (docs/usage.md#sides).
+inline constexpr int kDefaultSides = 2;
+
+// A scene file's sides for materials by name ("material_sides"), and where it says so.
+struct MaterialSides {
+    std::map<std::string, int> by_name;  // 1 or 2
+    std::string where;                   // "scene.json: material_sides"
+};
+
 struct LoadOptions {
     std::optional<Material> default_material;  // used by faces without a material
     SceneUse use = SceneUse::solve;
     WarningFn warn;                             // optional
     bool strict = false;          // refuse what the repairs would fix (docs/usage.md#repairs)
     std::optional<int> curve_segments;  // MGF tessellation; a scene file's value, else the default
+    // Every material's sides (1 or 2): the command line's, else a scene file's; unset: each
+    // material's own (MGF's `sides`), else kDefaultSides. material_sides is over both.
+    std::optional<int> sides;
+    MaterialSides material_sides;
 };
 
 // What loading a mesh file told: every file read for it (the mesh and its material libraries),

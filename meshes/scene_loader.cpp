@@ -19,6 +19,8 @@
 //                                         kd defaults to 0.5 grey, ke to 0
 //     "strict": true,                     optional; refuse what the repairs would fix
 //     "mgf_segments": 24,                 optional; segments per circle of MGF curved surfaces
+//     "sides": 1,                         optional; every material's sides; --sides wins
+//     "material_sides": {"leaf": 2},      optional; sides of materials by name, over "sides"
 //     "generator": "generate.py"          optional; the script beside the file that writes a
 //                                         mesh too large for git (named when it is missing)
 //   }
@@ -37,6 +39,7 @@
 #include "common/data_directory.h"
 #include "common/file_names.h"
 #include "common/text_file.h"
+#include "meshes/material_sides.h"
 #include "meshes/mgf_reader.h"
 #include "meshes/obj_reader.h"
 #include "meshes/repairs.h"
@@ -196,8 +199,9 @@ void take_mesh(Scene& scene, const fs::path& path, const LoadOptions& options) {
     scene.curve_segments = options.curve_segments.value_or(kDefaultCurveSegments);
 }
 
-// A scene file's "strict" and "mgf_segments"; the command line's segment count wins.
+// A scene file's "strict", "mgf_segments" and sides; the command line's segment count wins.
 void apply_load_keys(const json& j, const std::string& file, LoadOptions& options) {
+    apply_sides_keys(j, file, options);  // meshes/material_sides.h
     if (j.contains("strict")) {
         if (!j["strict"].is_boolean()) fail(file + ": strict", "must be true or false");
         options.strict = options.strict || j["strict"].get<bool>();
@@ -217,7 +221,7 @@ Scene load_json_scene(const fs::path& path, const std::string& name, LoadOptions
     const std::string file = path.string();
     const json j = read_json_file(path);
     check_keys(j, {"mesh", "description", "views", "solver", "default_material", "strict",
-                   "mgf_segments", "generator"},
+                   "mgf_segments", "sides", "material_sides", "generator"},
                file);
     if (!j.contains("mesh") || !j["mesh"].is_string()) fail(file, "needs a \"mesh\" string");
     if (j.contains("description") && !j["description"].is_string()) {
@@ -286,9 +290,12 @@ MeshReport load_soup(PolygonSoup soup, const LoadOptions& options, PatchMesh& me
     };
     check_positions(soup);  // before the warnings: a refusal is one line
     tell(0);
+    assign_sides(soup, options);
     RepairReport repairs;
     const Welding welding = weld(soup.positions);  // once: the repairs keep the positions
-    if (!options.strict) {
+    if (options.strict) {
+        repairs = join_opposite_faces(soup, welding);
+    } else {
         const std::size_t told = soup.warnings.size();
         repairs = repair_soup(soup, welding);
         tell(told);

@@ -217,15 +217,18 @@ Leaf leaf_corners(const Element& e, bool quad) {
 // in the output's leaf order, so vertex numbers follow first use as before.
 class Builder {
   public:
-    Builder(const Hierarchy& h, const FaceEdges& edges)
-        : m_h(h), m_topo(h.patch_set(), edges), m_mesh_vertex(m_topo.vertex_count(), kNone) {}
+    Builder(const Hierarchy& h, const FaceEdges& edges, std::uint8_t side)
+        : m_h(h), m_side(side), m_topo(h.patch_set(), edges),
+          m_mesh_vertex(m_topo.vertex_count(), kNone) {}
 
     ConformingPolygons build() {
-        m_h.for_each_leaf([&](const Element& e) { collect_edge_points(e); });
+        m_h.for_each_leaf_of(m_side, [&](const Element& e) { collect_edge_points(e); });
         m_edge_points.seal();
-        m_out.offsets.reserve(m_h.leaf_count() + 1);
-        m_out.polygon_vertices.reserve(4 * m_h.leaf_count());
-        m_h.for_each_leaf([&](const Element& e) {
+        if (m_side == kFront) {
+            m_out.offsets.reserve(m_h.leaf_count() + 1);
+            m_out.polygon_vertices.reserve(4 * m_h.leaf_count());
+        }
+        m_h.for_each_leaf_of(m_side, [&](const Element& e) {
             if (!m_patch_leaves.empty() && m_patch_leaves.front()->id.patch != e.id.patch) {
                 emit_patch();
             }
@@ -279,6 +282,7 @@ class Builder {
 
     // Each leaf edge with the corners strictly inside it, in order from a to b.
     void emit_polygon(const Element& e) {
+        const auto start = std::ptrdiff_t(m_out.polygon_vertices.size());
         const PatchTopology t = m_topo[e.id.patch];
         const Leaf leaf = leaf_corners(e, t.quad());
         for (int k = 0; k < leaf.count; ++k) {
@@ -303,6 +307,9 @@ class Builder {
                     emit_vertex(e.id.patch, point_at(l, t, std::int64_t(it[-1] & mask)));
                 }
             }
+        }
+        if (m_side == kBack) {
+            std::reverse(m_out.polygon_vertices.begin() + start, m_out.polygon_vertices.end());
         }
         m_out.offsets.push_back(std::int64_t(m_out.polygon_vertices.size()));
     }
@@ -343,6 +350,7 @@ class Builder {
     }
 
     const Hierarchy& m_h;
+    std::uint8_t m_side;
     MeshTopology m_topo;
     std::vector<std::uint32_t> m_mesh_vertex;  // output vertex of each mesh vertex
     KeyedVertices m_edge_points;
@@ -355,8 +363,9 @@ class Builder {
 
 }  // namespace
 
-ConformingPolygons build_conforming_polygons(const Hierarchy& h, const FaceEdges& edges) {
-    return Builder(h, edges).build();
+ConformingPolygons build_conforming_polygons(const Hierarchy& h, const FaceEdges& edges,
+                                             std::uint8_t side) {
+    return Builder(h, edges, side).build();
 }
 
 }  // namespace hmcr

@@ -37,12 +37,15 @@ struct LatticeVertex {
 
 struct ConformingPolygons {
     std::vector<LatticeVertex> vertices;          // in order of first use
-    std::vector<std::int64_t> offsets{0};         // one polygon per leaf, canonical leaf order
+    std::vector<std::int64_t> offsets{0};         // one polygon per leaf of the side, in order
     std::vector<std::uint32_t> polygon_vertices;  // indices into vertices, counter-clockwise
 };
 
-// The mesh is the patches' own: PatchSet::vertices, and `edges` = face_edges() of them. Throws
-// std::invalid_argument when the patches have no mesh vertices or they do not match.
-ConformingPolygons build_conforming_polygons(const Hierarchy& h, const FaceEdges& edges);
+// The polygons of one side's leaves (docs/design.md §5.3): a back side's polygons are
+// reversed, so that they face out of the back. The mesh is the patches' own:
+// PatchSet::vertices, and `edges` = face_edges() of them. Throws std::invalid_argument when the
+// patches have no mesh vertices or they do not match.
+ConformingPolygons build_conforming_polygons(const Hierarchy& h, const FaceEdges& edges,
+                                             std::uint8_t side = kFront);
 
 }  // namespace hmcr

@@ -11,15 +11,18 @@
 
 namespace hmcr {
 
-// Deterministic identity: the patch and the path of child indices from its root.
+// Deterministic identity: the patch, its side and the path of child indices from its root.
 struct ElementId {
     std::uint32_t patch = 0;
     std::uint8_t depth = 0;
+    std::uint8_t side = 0;   // kFront or kBack (rays/patch.h)
     std::uint64_t path = 0;  // 2 bits per level, the root's child index most significant
 
-    ElementId child(int k) const { return {patch, std::uint8_t(depth + 1), (path << 2) | unsigned(k)}; }
+    ElementId child(int k) const {
+        return {patch, std::uint8_t(depth + 1), side, (path << 2) | unsigned(k)};
+    }
     auto operator<=>(const ElementId&) const = default;
-    std::string to_string() const;  // "patch/0312"
+    std::string to_string() const;  // "patch/0312", a back side's "patchb/0312"
 };
 
 struct Element {

@@ -16,14 +16,36 @@ Hierarchy::Hierarchy(PatchSet patches, HierarchyLimits limits)
         throw std::invalid_argument("max depth must be between 0 and 24");
     }
     m_min_area = m_limits.min_area * m_patches.total_area;
+    for (std::size_t i = 0; i < m_roots.size(); ++i) init_root(i, kFront, m_roots[i]);
+    if (m_patches.back_materials.empty()) return;
+    m_back_roots = std::vector<std::atomic<Element*>>(m_roots.size());
+    // A back that emits is a source from the first iteration.
     for (std::size_t i = 0; i < m_roots.size(); ++i) {
-        Element& r = m_roots[i];
-        const Patch& p = m_patches.patches[i];
-        r.id = {std::uint32_t(i), 0, 0};
-        r.area = p.area;
-        r.centre = p.point(r.domain.centre(p.is_quad()));
-        r.radiosity = r.unshot = m_patches.emission(p);
+        if (m_patches.two_sided(i) && (m_patches.material(i, kBack).emission > 0).any()) {
+            make_back_root(i);
+        }
     }
+}
+
+void Hierarchy::init_root(std::size_t patch, std::uint8_t side, Element& r) const {
+    const Patch& p = m_patches.patches[patch];
+    r.id = {std::uint32_t(patch), 0, side, 0};
+    r.area = p.area;
+    r.centre = p.point(r.domain.centre(p.is_quad()));
+    r.radiosity = r.unshot = m_patches.material(patch, side).emission;
+}
+
+Element& Hierarchy::make_back_root(std::size_t patch) {
+    if (!m_patches.two_sided(patch)) {
+        throw std::logic_error("the back of one-sided patch " + std::to_string(patch));
+    }
+    const std::lock_guard lock(m_back_mutex);
+    if (Element* r = m_back_roots[patch].load(std::memory_order_acquire)) return *r;
+    Element& r = m_back_storage.emplace_back();
+    init_root(patch, kBack, r);
+    m_back_count.fetch_add(1, std::memory_order_relaxed);
+    m_back_roots[patch].store(&r, std::memory_order_release);
+    return r;
 }
 
 void Hierarchy::init_child(Element& parent, int k, Element& child) const {
@@ -65,7 +87,11 @@ void Hierarchy::subdivide_uniformly(double max_area) {
         Element* c = subdivide(e);
         for (int k = 0; k < 4; ++k) self(self, c[k]);
     };
-    tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) { split(split, m_roots[i]); });
+    // Both sides of a two-sided patch: a reference has the whole scene's elements.
+    tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
+        split(split, m_roots[i]);
+        if (m_patches.two_sided(i)) split(split, root(i, kBack));
+    });
 }
 
 void Hierarchy::subdivide_like(const Hierarchy& shape) {
@@ -78,8 +104,10 @@ void Hierarchy::subdivide_like(const Hierarchy& shape) {
         Element* c = subdivide(e);
         for (int k = 0; k < 4; ++k) self(self, c[k], m[k]);
     };
-    tbb::parallel_for(std::size_t(0), m_roots.size(),
-                      [&](std::size_t i) { split(split, m_roots[i], shape.m_roots[i]); });
+    tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
+        split(split, m_roots[i], shape.m_roots[i]);
+        if (const Element* back = shape.back_root(i)) split(split, root(i, kBack), *back);
+    });
 }
 
 Element& Hierarchy::child_containing(const Element& e, const Vec2& uv) const {
@@ -129,17 +157,25 @@ void push_pull_element(Element& e, const Rgb& from_above, const PowerQuantum& qu
 void Hierarchy::push_pull(const PowerQuantum& quantum) {
     tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
         push_pull_element(m_roots[i], Rgb::Zero(), quantum);
+        if (m_back_roots.empty()) return;
+        if (Element* r = m_back_roots[i].load(std::memory_order_acquire)) {
+            push_pull_element(*r, Rgb::Zero(), quantum);
+        }
     });
 }
 
 Rgb Hierarchy::unshot_power() const {
     Rgb sum = Rgb::Zero();
     for (const Element& r : m_roots) sum += r.area * r.unshot;
+    for (std::size_t p = 0; p < m_back_roots.size(); ++p) {
+        if (const Element* r = back_root(p)) sum += r->area * r->unshot;
+    }
     return sum;
 }
 
 std::size_t Hierarchy::bytes() const {
-    std::size_t b = m_roots.size() * sizeof(Element);
+    std::size_t b = (m_roots.size() + m_back_count.load()) * sizeof(Element) +
+                    m_back_roots.size() * sizeof(std::atomic<Element*>);
     for (const ElementArena& a : m_arenas) b += a.bytes();
     return b;
 }

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <atomic>
+#include <deque>
+#include <mutex>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -35,14 +37,33 @@ public:
     const PatchSet& patch_set() const { return m_patches; }
     const Patch& patch(const Element& e) const { return m_patches.patches[e.id.patch]; }
     std::size_t patch_count() const { return m_patches.patches.size(); }
+    // The unit normal out of the element's side, and that side's material.
+    Vec3 normal(const Element& e) const { return side_normal(patch(e), e.id.side); }
+    const PatchMaterial& material(const Element& e) const {
+        return m_patches.material(e.id.patch, e.id.side);
+    }
+    // The root of a patch's front side.
     Element& root(std::size_t patch) { return m_roots[patch]; }
     const Element& root(std::size_t patch) const { return m_roots[patch]; }
+    // The root of a side, made when first asked for (thread-safe): a two-sided patch's back
+    // has elements only once light reaches it, or from the start if it emits.
+    Element& root(std::size_t patch, std::uint8_t side) {
+        if (side == kFront) return m_roots[patch];
+        if (Element* r = m_back_roots[patch].load(std::memory_order_acquire)) return *r;
+        return make_back_root(patch);
+    }
+    // The back side's root if it exists yet.
+    const Element* back_root(std::size_t patch) const {
+        return m_back_roots.empty() ? nullptr
+                                    : m_back_roots[patch].load(std::memory_order_acquire);
+    }
 
     bool can_subdivide(const Element& e) const {
         return e.area > m_min_area && e.id.depth < m_limits.max_depth;
     }
-    // Splits every element larger than max_area (m^2) until none is, within max_depth: the
-    // fixed uniform mesh of a converged reference (docs/design.md §6). Parallel over patches.
+    // Splits every element larger than max_area (m^2) until none is, within max_depth, on both
+    // sides of a two-sided patch: the fixed uniform mesh of a converged reference
+    // (docs/design.md §6). Parallel over patches.
     void subdivide_uniformly(double max_area);
     // Splits every element that `shape` (a hierarchy of the same patches) has split: the same
     // leaves, for re-solving a mesh frozen (a study's mesh error). Parallel over patches.
@@ -65,15 +86,33 @@ public:
     // Total unshot power sum_l A_l Delta B_l (per channel).
     Rgb unshot_power() const;
 
-    std::size_t element_count() const { return m_patches.patches.size() + 4 * m_blocks.load(); }
+    std::size_t element_count() const {
+        return m_patches.patches.size() + m_back_count.load() + 4 * m_blocks.load();
+    }
     std::size_t leaf_count() const { return element_count() - m_blocks.load(); }
     std::size_t bytes() const;
 
-    // Leaves in canonical order (patch, then child index depth-first): the order of the output.
+    // Leaves in canonical order (the fronts patch by patch, then the backs that exist; child
+    // index depth-first): the order of the output.
     template <class F>
     void for_each_leaf(F&& f) const {
         for (const Element& r : m_roots) visit_leaves(r, f);
+        for (std::size_t p = 0; p < m_back_roots.size(); ++p) {
+            if (const Element* r = back_root(p)) visit_leaves(*r, f);
+        }
     }
+    // The leaves of one side, in canonical order (a back only where it exists).
+    template <class F>
+    void for_each_leaf_of(std::uint8_t side, F&& f) const {
+        if (side == kFront) {
+            for (const Element& r : m_roots) visit_leaves(r, f);
+            return;
+        }
+        for (std::size_t p = 0; p < m_back_roots.size(); ++p) {
+            if (const Element* r = back_root(p)) visit_leaves(*r, f);
+        }
+    }
+    bool has_backs() const { return m_back_count.load() > 0; }
     template <class F>
     static void visit_leaves(const Element& e, F&& f) {
         if (const Element* c = e.children()) {
@@ -83,14 +122,21 @@ public:
         }
     }
 
-    // Every element, parents before children, patch by patch (the order ranks share).
+    // Every element, parents before children, in the roots' canonical order (the order ranks
+    // share).
     template <class F>
     void for_each_element(F&& f) const {
         for (const Element& r : m_roots) visit_all(r, f);
+        for (std::size_t p = 0; p < m_back_roots.size(); ++p) {
+            if (const Element* r = back_root(p)) visit_all(*r, f);
+        }
     }
     template <class F>
     void for_each_element(F&& f) {
         for (Element& r : m_roots) visit_all(r, f);
+        for (std::size_t p = 0; p < m_back_roots.size(); ++p) {
+            if (Element* r = m_back_roots[p].load(std::memory_order_acquire)) visit_all(*r, f);
+        }
     }
 
 private:
@@ -103,11 +149,19 @@ private:
     }
 
     void init_child(Element& parent, int k, Element& child) const;
+    void init_root(std::size_t patch, std::uint8_t side, Element& root) const;
+    Element& make_back_root(std::size_t patch);
 
     PatchSet m_patches;
     HierarchyLimits m_limits;
     double m_min_area = 0;  // absolute
     std::vector<Element> m_roots;
+    // The back sides' roots, made when first needed (none when no patch has a back): the
+    // atomic pointers are read without a lock; m_back_storage, which owns them, takes one.
+    std::vector<std::atomic<Element*>> m_back_roots;
+    std::deque<Element> m_back_storage;
+    std::mutex m_back_mutex;
+    std::atomic<std::size_t> m_back_count{0};
     mutable tbb::enumerable_thread_specific<ElementArena> m_arenas;
     std::atomic<std::size_t> m_blocks{0};
 };

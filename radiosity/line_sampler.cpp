@@ -11,6 +11,7 @@ void sample_kernel(const EmbreeScene& scene, const Hierarchy& hierarchy, const E
                    const Element& j, Rng& rng, std::span<double> out) {
     const Patch& pi = hierarchy.patch(i);
     const Patch& pj = hierarchy.patch(j);
+    const Vec3 ni = hierarchy.normal(i), nj = hierarchy.normal(j);
     const ElementSampler on_i(pi, i.domain), on_j(pj, j.domain);
     constexpr std::size_t kBatch = 64;
     std::array<Vec3, kBatch> xs, ys;
@@ -20,9 +21,12 @@ void sample_kernel(const EmbreeScene& scene, const Hierarchy& hierarchy, const E
         const std::size_t n = std::min(kBatch, out.size() - first);
         std::size_t cast = 0;  // only lines with a non-zero kernel need a visibility query
         for (std::size_t k = 0; k < n; ++k) {
-            const Vec3 x = pi.point(on_i(rng.uniform(), rng.uniform()));
-            const Vec3 y = pj.point(on_j(rng.uniform(), rng.uniform()));
-            out[first + k] = point_kernel(x, pi.normal, y, pj.normal);
+            // The draws in a fixed order (an argument list's order is the compiler's).
+            const double xu = rng.uniform(), xv = rng.uniform();
+            const double yu = rng.uniform(), yv = rng.uniform();
+            const Vec3 x = pi.point(on_i(xu, xv));
+            const Vec3 y = pj.point(on_j(yu, yv));
+            out[first + k] = point_kernel(x, ni, y, nj);
             if (out[first + k] > 0) {
                 xs[cast] = x;
                 ys[cast] = y;

@@ -7,42 +7,59 @@
 namespace hmcr {
 namespace {
 
-// An element id on the wire: patch, depth, path (13 bytes, no padding).
-constexpr std::size_t kIdBytes = sizeof(std::uint32_t) + 1 + sizeof(std::uint64_t);
+// An element on the wire: patch, depth, side, path and whether it is split (14 bytes, no
+// padding). A side's root that exists unsplit is sent too: a back side's root is made where light
+// first reaches it, which may be on one rank only.
+constexpr std::size_t kIdBytes = sizeof(std::uint32_t) + 2 + sizeof(std::uint64_t);
 
-void put(std::string& out, const ElementId& id) {
+void put(std::string& out, const ElementId& id, bool split) {
     char b[kIdBytes];
     std::memcpy(b, &id.patch, 4);
     b[4] = char(id.depth);
-    std::memcpy(b + 5, &id.path, 8);
+    b[5] = char(id.side | (split ? 2 : 0));
+    std::memcpy(b + 6, &id.path, 8);
     out.append(b, kIdBytes);
 }
 
-ElementId get(const char* b) {
+struct WireElement {
     ElementId id;
-    std::memcpy(&id.patch, b, 4);
-    id.depth = std::uint8_t(b[4]);
-    std::memcpy(&id.path, b + 5, 8);
-    return id;
+    bool split = false;
+};
+
+WireElement get(const char* b) {
+    WireElement w;
+    std::memcpy(&w.id.patch, b, 4);
+    w.id.depth = std::uint8_t(b[4]);
+    w.id.side = std::uint8_t(b[5] & 1);
+    w.split = (b[5] & 2) != 0;
+    std::memcpy(&w.id.path, b + 6, 8);
+    return w;
 }
 
-// The ids of every subdivided element, parents first.
-std::string subdivided_ids(const Hierarchy& h) {
+// The ids of every split element, parents first, and of the back roots that are leaves.
+std::string element_ids(const Hierarchy& h) {
     std::string out;
     h.for_each_element([&](const Element& e) {
-        if (!e.is_leaf()) put(out, e.id);
+        if (!e.is_leaf()) {
+            put(out, e.id, true);
+        } else if (e.id.side == kBack && e.id.depth == 0) {
+            put(out, e.id, false);
+        }
     });
     return out;
 }
 
-// Subdivides the element `id` names, and its ancestors first if they are not yet.
-void subdivide_by_id(Hierarchy& h, const ElementId& id) {
-    if (id.patch >= h.patch_count()) throw std::runtime_error("MPI: an element id out of range");
-    Element* e = &h.root(id.patch);
+// Makes the element `w` names, and its ancestors first, and splits it if it is split.
+void make_by_id(Hierarchy& h, const WireElement& w) {
+    const ElementId& id = w.id;
+    if (id.patch >= h.patch_count() || (id.side == kBack && !h.patch_set().two_sided(id.patch))) {
+        throw std::runtime_error("MPI: an element id out of range");
+    }
+    Element* e = &h.root(id.patch, id.side);
     for (int level = id.depth - 1; level >= 0; --level) {
         e = h.subdivide(*e) + ((id.path >> (2 * level)) & 3);
     }
-    h.subdivide(*e);
+    if (w.split) h.subdivide(*e);
 }
 
 }  // namespace
@@ -55,14 +72,15 @@ RaySlice slice_of(std::uint64_t rays, int rank, int ranks) {
 
 void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bool refined) {
     if (ranks.size() == 1) return;
-    if (refined) {
-        const std::vector<std::string> all = ranks.gather_all(subdivided_ids(h));
+    // Backs may appear on a fixed mesh too, where a ray first reaches one.
+    if (refined || !h.patch_set().back_materials.empty()) {
+        const std::vector<std::string> all = ranks.gather_all(element_ids(h));
         together(ranks, [&] {
             for (int r = 0; r < ranks.size(); ++r) {
                 if (r == ranks.rank()) continue;
                 const std::string& ids = all[std::size_t(r)];
                 for (std::size_t k = 0; k + kIdBytes <= ids.size(); k += kIdBytes) {
-                    subdivide_by_id(h, get(ids.data() + k));
+                    make_by_id(h, get(ids.data() + k));
                 }
             }
         });

@@ -22,10 +22,11 @@ struct PatchPair {
     Rgb reflectance;  // the receiver's
 };
 
-PatchPair patch_pair(const Hierarchy& h, std::uint32_t receiver, std::uint32_t source) {
+PatchPair patch_pair(const Hierarchy& h, SideRef receiver, SideRef source) {
     const PatchSet& ps = h.patch_set();
-    const Patch& r = ps.patches[receiver];
-    return {r.normal, ps.patches[source].normal, ps.reflectance(r)};
+    return {side_normal(ps.patches[receiver.patch()], receiver.side()),
+            side_normal(ps.patches[source.patch()], source.side()),
+            ps.material(receiver.patch(), receiver.side()).reflectance};
 }
 
 // w_ij of docs/design.md §4: the largest share of the source's radiosity the receiver reflects.
@@ -36,8 +37,9 @@ double link_weight(const RefinementContext& ctx, const PatchPair& pp, const Elem
     return (pp.reflectance * b).maxCoeff();
 }
 
+// A back side's elements draw from other streams than its front's.
 std::uint64_t element_key(const ElementId& id) {
-    return Rng(id.patch, id.path, id.depth).next_u64();
+    return Rng(id.patch, id.path, id.depth + 256 * std::uint64_t(id.side)).next_u64();
 }
 
 LinkGeometry centre_geometry(const Hierarchy& h, const PatchPair& pp, const Element& i,
@@ -125,10 +127,10 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
                      RefinementCounters& counters) {
     Hierarchy& h = ctx.hierarchy;
     const Vec2 y_uv = query.y_uv.cast<double>(), x_uv = query.x_uv.cast<double>();
-    Element* i = &h.root(query.receiver_patch);
+    Element* i = &h.root(query.receiver.patch(), query.receiver.side());
     if (ctx.fixed_mesh) return h.locate(*i, y_uv);
-    Element* j = &h.root(query.source_patch);
-    const PatchPair pp = patch_pair(h, query.receiver_patch, query.source_patch);
+    Element* j = &h.root(query.source.patch(), query.source.side());
+    const PatchPair pp = patch_pair(h, query.receiver, query.source);
     for (;;) {
         const Step step = next_step(ctx, pp, *i, *j, counters, 1);
         if (step == Step::accept) return *i;
@@ -217,19 +219,19 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
     Hierarchy& h = ctx.hierarchy;
     if (ctx.fixed_mesh) {
         tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
-            receivers[k] = &h.locate(h.root(queries[k].receiver_patch),
-                                     queries[k].y_uv.cast<double>());
+            const SideRef r = queries[k].receiver;
+            receivers[k] = &h.locate(h.root(r.patch(), r.side()), queries[k].y_uv.cast<double>());
         });
         return;
     }
-    // Grouped by (receiver patch, source patch), each group's queries copied together so that
+    // Grouped by (receiver side, source side), each group's queries copied together so that
     // its descent reads a compact block.
-    const std::uint64_t patches = h.patch_count();
+    const std::uint64_t sides = 2 * std::uint64_t(h.patch_count());
     auto& keyed = buffers.keyed;
     keyed.resize(queries.size());
     Keyed<std::uint32_t>* const keys = keyed.data();
     tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
-        keys[k] = {queries[k].receiver_patch * patches + queries[k].source_patch, std::uint32_t(k)};
+        keys[k] = {queries[k].receiver.value * sides + queries[k].source.value, std::uint32_t(k)};
     });
     radix_sort(keyed, buffers.keyed_scratch);  // swaps the two vectors: `keys` may be stale
     buffers.grouped.resize(queries.size());
@@ -259,9 +261,9 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
             const std::size_t first = group_start[g], n = group_start[g + 1] - first;
             const LinkQuery& q = grouped[first];
             const Descent d{grouped, buffers.receivers.data(),
-                            patch_pair(h, q.receiver_patch, q.source_patch)};
-            descend(ctx, d, &h.root(grouped[first].receiver_patch),
-                    &h.root(grouped[first].source_patch), index + first, scratch + first,
+                            patch_pair(h, q.receiver, q.source)};
+            descend(ctx, d, &h.root(q.receiver.patch(), q.receiver.side()),
+                    &h.root(q.source.patch(), q.source.side()), index + first, scratch + first,
                     child + first, n, c);
         }
     });

@@ -45,15 +45,25 @@ struct RefinementCounters {
     }
 };
 
-// One ray's descent: its patches and points (24 bytes: a batch's descents read them at every
+// A side of a patch in one word: 2 * patch + side.
+struct SideRef {
+    std::uint32_t value = 0;
+
+    SideRef() = default;
+    SideRef(std::uint32_t patch, std::uint8_t side) : value(2 * patch + side) {}
+    std::uint32_t patch() const { return value >> 1; }
+    std::uint8_t side() const { return std::uint8_t(value & 1); }
+};
+
+// One ray's descent: its sides and points (24 bytes: a batch's descents read them at every
 // level).
 struct LinkQuery {
-    std::uint32_t receiver_patch = 0, source_patch = 0;
+    SideRef receiver, source;
     Vec2f y_uv{0, 0}, x_uv{0, 0};  // the hit point on the receiver, the origin on the source
 };
 
-// Descends from (root of receiver_patch, root of source_patch), subdividing the larger element
-// of a refused link towards the hit point y (receiver) or the ray origin x (source). One ray at
+// Descends from (root of the receiver side, root of the source side), subdividing the larger
+// element of a refused link towards the hit point y (receiver) or the ray origin x (source). One ray at
 // a time from the roots, as docs/design.md §3 states it: the reference refine_links is tested
 // against.
 Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,

@@ -59,7 +59,7 @@ class CreaseGrouping {
     // asks about each edge from both of its ends. Deciding it there, from two patches anywhere
     // in the patch array, was the largest part of the output stage at 10^6 patches. The faces'
     // vertices and edges are kept (32 bytes a face), so the tree can go.
-    CreaseGrouping(const Hierarchy& h, FaceEdges edges, double crease_degrees)
+    CreaseGrouping(const Hierarchy& h, FaceEdges edges, double crease_degrees, std::uint8_t side)
         : m_vertices(h.patch_set().vertices),
           m_edges(std::move(edges)),
           m_blends(m_edges.edge_count, 0) {
@@ -74,11 +74,13 @@ class CreaseGrouping {
                     first_face[e] = f;
                     continue;
                 }
-                const Patch& p0 = set.patches[first_face[e]];
-                const Patch& p1 = set.patches[f];
-                const bool same_material = (set.reflectance(p0) == set.reflectance(p1)).all() &&
-                                           (set.emission(p0) == set.emission(p1)).all();
-                m_blends[e] = same_material && p0.normal.dot(p1.normal) > cos_crease;
+                const std::uint32_t f0 = first_face[e];
+                if (side == kBack && !(set.two_sided(f0) && set.two_sided(f))) continue;
+                const PatchMaterial &m0 = set.material(f0, side), &m1 = set.material(f, side);
+                const bool same_material = (m0.reflectance == m1.reflectance).all() &&
+                                           (m0.emission == m1.emission).all();
+                m_blends[e] = same_material &&
+                              set.patches[f0].normal.dot(set.patches[f].normal) > cos_crease;
             }
         }
     }
@@ -130,17 +132,21 @@ class CreaseGrouping {
     std::vector<std::pair<std::uint32_t, int>> m_sides;  // (mesh edge, patch) at one vertex
 };
 
-void fill_cells(const Hierarchy& h, ShadedMesh& out) {
-    const std::size_t leaves = h.leaf_count();
-    out.element_radiosity.reserve(leaves);
-    out.hierarchy_level.reserve(leaves);
-    out.patch_id.reserve(leaves);
-    out.element_area.reserve(leaves);
-    h.for_each_leaf([&](const Element& e) {
+void fill_cells(const Hierarchy& h, std::uint8_t side, ShadedMesh& out) {
+    if (side == kFront) {
+        const std::size_t leaves = h.leaf_count();
+        out.element_radiosity.reserve(leaves);
+        out.hierarchy_level.reserve(leaves);
+        out.patch_id.reserve(leaves);
+        out.element_area.reserve(leaves);
+        out.side.reserve(leaves);
+    }
+    h.for_each_leaf_of(side, [&](const Element& e) {
         out.element_radiosity.push_back(e.radiosity);
         out.hierarchy_level.push_back(e.id.depth);
         out.patch_id.push_back(int(e.id.patch));
         out.element_area.push_back(e.area);
+        out.side.push_back(side);
     });
 }
 
@@ -215,12 +221,21 @@ struct FromTree {
     CreaseGrouping grouping;
 };
 
-FromTree take_from_tree(const Hierarchy& h, double crease_degrees) {
-    FaceEdges edges = face_edges(h.patch_set().vertices);
-    ConformingPolygons polys = build_conforming_polygons(h, edges);
-    FromTree t{std::move(polys), {}, CreaseGrouping(h, std::move(edges), crease_degrees)};
-    fill_cells(h, t.out);
+FromTree take_from_tree(const Hierarchy& h, FaceEdges edges, double crease_degrees,
+                        std::uint8_t side) {
+    ConformingPolygons polys = build_conforming_polygons(h, edges, side);
+    FromTree t{std::move(polys), {}, CreaseGrouping(h, std::move(edges), crease_degrees, side)};
+    fill_cells(h, side, t.out);
     return t;
+}
+
+// The fronts, and the backs if any exist: each side's own shading, taken from the tree.
+std::vector<FromTree> take_sides(const Hierarchy& h, double crease_degrees) {
+    FaceEdges edges = face_edges(h.patch_set().vertices);
+    std::vector<FromTree> sides;
+    if (h.has_backs()) sides.push_back(take_from_tree(h, edges, crease_degrees, kBack));
+    sides.insert(sides.begin(), take_from_tree(h, std::move(edges), crease_degrees, kFront));
+    return sides;
 }
 
 ShadedMesh finish(FromTree t) {
@@ -268,16 +283,43 @@ ShadedMesh finish(FromTree t) {
     return std::move(out);
 }
 
+// The backs' cells and points after the fronts'.
+void append(ShadedMesh& out, ShadedMesh back) {
+    const auto points = std::int64_t(out.points.size());
+    const auto corners = std::int64_t(out.connectivity.size());
+    out.points.insert(out.points.end(), back.points.begin(), back.points.end());
+    out.point_radiosity.insert(out.point_radiosity.end(), back.point_radiosity.begin(),
+                               back.point_radiosity.end());
+    for (std::size_t c = 1; c < back.offsets.size(); ++c) {
+        out.offsets.push_back(corners + back.offsets[c]);
+    }
+    for (const std::int64_t v : back.connectivity) out.connectivity.push_back(points + v);
+    const auto extend = [](auto& to, const auto& from) {
+        to.insert(to.end(), from.begin(), from.end());
+    };
+    extend(out.element_radiosity, back.element_radiosity);
+    extend(out.hierarchy_level, back.hierarchy_level);
+    extend(out.patch_id, back.patch_id);
+    extend(out.element_area, back.element_area);
+    extend(out.side, back.side);
+}
+
+ShadedMesh finish_sides(std::vector<FromTree> sides) {
+    ShadedMesh out = finish(std::move(sides.front()));
+    if (sides.size() > 1) append(out, finish(std::move(sides.back())));
+    return out;
+}
+
 }  // namespace
 
 ShadedMesh build_shaded_mesh(const Hierarchy& h, double crease_degrees) {
-    return finish(take_from_tree(h, crease_degrees));
+    return finish_sides(take_sides(h, crease_degrees));
 }
 
 ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, double crease_degrees) {
-    FromTree taken = take_from_tree(*h, crease_degrees);
+    std::vector<FromTree> taken = take_sides(*h, crease_degrees);
     h.reset();
-    return finish(std::move(taken));
+    return finish_sides(std::move(taken));
 }
 
 }  // namespace hmcr

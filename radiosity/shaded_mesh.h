@@ -15,7 +15,9 @@ namespace hmcr {
 // default of `--crease-angle`, references and studies.
 inline constexpr double kCreaseDegrees = 30;
 
-// Plain arrays in VTK's layout: cell c is connectivity[offsets[c] .. offsets[c + 1]).
+// Plain arrays in VTK's layout: cell c is connectivity[offsets[c] .. offsets[c + 1]). The fronts'
+// cells and points come first, then those of the backs that exist (docs/design.md §5.3): the two
+// sides of a patch share no point, so neither side's values blend into the other's.
 struct ShadedMesh {
     std::vector<Vec3> points;
     std::vector<Rgb> point_radiosity;      // Gouraud value of each point, W/m^2
@@ -27,6 +29,9 @@ struct ShadedMesh {
     std::vector<int> hierarchy_level;    // the leaf's depth
     std::vector<int> patch_id;
     std::vector<double> element_area;
+    // The side of its patch each cell shows: kFront, or kBack for the reversed polygons of a
+    // two-sided patch's back, which follow all the fronts.
+    std::vector<std::uint8_t> side;
 
     std::size_t cell_count() const { return offsets.size() - 1; }
 };

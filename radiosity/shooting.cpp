@@ -31,7 +31,7 @@ void IterationSources::rebuild(const Hierarchy& h) {
         const Rgb unit = e.unshot / sum;
         max_share = max_share.max(unit);
         regions.push_back({e.domain.u0, e.domain.v0, e.domain.s, e.id.patch,
-                           region_map(patches[e.id.patch])});
+                           region_map(patches[e.id.patch]), e.id.side});
         share.push_back(unit);
         m_weights.push_back(w);
     });
@@ -82,11 +82,19 @@ constexpr std::uint64_t kGrain = 256;
 // Pilot rays draw from streams of their own, apart from the iteration's rays.
 constexpr std::uint64_t kPilotStream = std::uint64_t(1) << 62;
 
-// The cosine of the receiver's front with ray k's direction: negative on a front face.
-double facing(const Patch& receiver, const GeneratedRays& rays, std::size_t k) {
-    return receiver.normal.x() * double(rays.direction[0][k]) +
-           receiver.normal.y() * double(rays.direction[1][k]) +
-           receiver.normal.z() * double(rays.direction[2][k]);
+// The side of its patch that ray k hit: the front when the ray meets the front's normal, the
+// back when it comes from behind a two-sided patch; none when it escaped or met the back of a
+// one-sided patch, which absorbs it.
+std::optional<std::uint8_t> hit_side(const PatchSet& ps, const BatchHit& hit,
+                                     const GeneratedRays& rays, std::size_t k) {
+    if (hit.patch == BatchHit::kNoHit) return std::nullopt;
+    const Vec3& n = ps.patches[hit.patch].normal;
+    const double facing = n.x() * double(rays.direction[0][k]) +
+                          n.y() * double(rays.direction[1][k]) +
+                          n.z() * double(rays.direction[2][k]);
+    if (facing < 0) return kFront;
+    if (ps.two_sided(hit.patch)) return kBack;
+    return std::nullopt;
 }
 
 Vec3 hit_point(const GeneratedRays& rays, std::size_t k, float distance) {
@@ -113,10 +121,10 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
     ctx.scene.first_hits(batch, 0, rays, hits);
     double reflected = 0;
     for (std::uint64_t k = 0; k < rays; ++k) {
-        if (hits[k].patch == BatchHit::kNoHit) continue;
-        const Patch& rcv = patches[hits[k].patch];
-        if (facing(rcv, batch, k) >= 0) continue;
-        reflected += channel_sum(h.patch_set().reflectance(rcv) * sources.share[batch.region[k]]);
+        const std::optional<std::uint8_t> side = hit_side(h.patch_set(), hits[k], batch, k);
+        if (!side) continue;
+        const PatchMaterial& m = h.patch_set().material(hits[k].patch, *side);
+        reflected += channel_sum(m.reflectance * sources.share[batch.region[k]]);
     }
     return reflected / double(rays);
 }
@@ -166,21 +174,20 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             add(chunk.shot, quanta);
             b.deposits[k] = {};
             const BatchHit& hit = b.hits[k];
-            if (hit.patch == BatchHit::kNoHit) {
-                add(chunk.escaped, quanta);
+            const std::optional<std::uint8_t> side = hit_side(ps, hit, b.rays, k);
+            if (!side) {
+                add(hit.patch == BatchHit::kNoHit ? chunk.escaped : chunk.back_face, quanta);
                 continue;
             }
             const Patch& rcv = ps.patches[hit.patch];
-            if (facing(rcv, b.rays, k) >= 0) {
-                add(chunk.back_face, quanta);
-                continue;
-            }
             const Vec3 y = hit_point(b.rays, k, hit.distance);
-            b.queries[k] = {hit.patch, sources.regions[leaf].patch,
+            const RayRegion& source = sources.regions[leaf];
+            b.queries[k] = {SideRef(hit.patch, *side), SideRef(source.patch, std::uint8_t(source.side)),
                             rcv.param_of_hit(hit.second_triangle != 0, hit.b1, hit.b2, y),
                             Vec2f(b.rays.u[k], b.rays.v[k])};
             // docs/design.md §3: received += rho * Phi (over A when pushed).
-            b.deposits[k] = {out.quantum.count(ps.reflectance(rcv) * power, dither), true};
+            const Rgb& rho = ps.material(hit.patch, *side).reflectance;
+            b.deposits[k] = {out.quantum.count(rho * power, dither), true};
         }
     };
     auto trace = [&](Batch& b, std::uint64_t first) {

@@ -73,6 +73,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     st.total_area = patches.total_area;
     st.max_emitted_power = patches.max_emitted_power;
     st.patches = patches.patches.size();
+    for (std::size_t i = 0; i < st.patches; ++i) st.two_sided_patches += patches.two_sided(i);
     const EmbreeScene scene(patches);
     sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
                                                 HierarchyLimits{options.min_area, options.max_depth, options.max_elements});

@@ -34,6 +34,7 @@ struct SolveStats {
     int threads = 0;                 // worker threads used (by each rank)
     int ranks = 1;                   // MPI processes that shared the rays
     std::size_t patches = 0;        // in the scene
+    std::size_t two_sided_patches = 0;  // of them, those with a back side (docs/design.md §1.3)
     Rgb emitted_power = Rgb::Zero();
     double total_area = 0;          // of the patches, m^2
     double max_emitted_power = 0;   // of one patch, in its brightest channel, W

@@ -8,7 +8,10 @@ Rgb reflected_power(const Hierarchy& h) {
     Rgb sum = Rgb::Zero();
     const PatchSet& set = h.patch_set();
     for (std::size_t p = 0; p < h.patch_count(); ++p) {
-        sum += h.root(p).area * (h.root(p).radiosity - set.emission(set.patches[p]));
+        sum += h.root(p).area * (h.root(p).radiosity - set.material(p, kFront).emission);
+        if (const Element* back = h.back_root(p)) {
+            sum += back->area * (back->radiosity - set.material(p, kBack).emission);
+        }
     }
     return sum;
 }

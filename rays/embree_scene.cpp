@@ -230,7 +230,8 @@ std::optional<TriangleHit> EmbreeScene::first_hit_triangle(const Vec3& origin,
                                                            const Vec3& direction) const {
     const RTCRayHit rh = intersect(m_impl->scene, origin, direction, m_offset);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return TriangleHit{rh.hit.primID, double(rh.hit.u), double(rh.hit.v), double(rh.ray.tfar)};
+    return TriangleHit{rh.hit.primID, double(rh.hit.u), double(rh.hit.v), double(rh.ray.tfar),
+                       Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z)};
 }
 
 void EmbreeScene::first_hits(const GeneratedRays& rays, std::size_t begin, std::size_t end,

@@ -29,6 +29,9 @@ struct TriangleHit {
     std::uint32_t triangle = 0;
     double u = 0, v = 0;
     double distance = 0;  // along the (unit) direction
+    // The triangle's geometric normal, not normalised: (p1 - p0) x (p2 - p0), out of the side
+    // from which its corners run counter-clockwise.
+    Vec3 normal{0, 0, 0};
 };
 
 // The first hit of a batch ray: its patch (kNoHit when the ray leaves the scene), which of a

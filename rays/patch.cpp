@@ -108,11 +108,22 @@ PatchSet build_patch_set(const PatchMesh& mesh) {
         }
         p.finalize();
         p.material = materials.index(f);
-        const Rgb& emission = set.emission(p);
-        set.total_area += p.area;
-        set.emitted_power += p.area * emission;
-        set.max_emitted_power = std::max(set.max_emitted_power, p.area * emission.maxCoeff());
         set.patches.push_back(p);
+        const std::uint32_t back = materials.back_index(f);
+        if (back != kOneSided && set.back_materials.empty()) {
+            set.back_materials.assign(mesh.n_faces(), kOneSided);
+        }
+        if (!set.back_materials.empty()) set.back_materials[std::size_t(f.idx())] = back;
+    }
+    for (std::size_t i = 0; i < set.patches.size(); ++i) {
+        for (const std::uint8_t side : {kFront, kBack}) {
+            if (side == kBack && !set.two_sided(i)) continue;
+            const double area = set.patches[i].area;
+            const Rgb& emission = set.material(i, side).emission;
+            set.total_area += area;
+            set.emitted_power += area * emission;
+            set.max_emitted_power = std::max(set.max_emitted_power, area * emission.maxCoeff());
+        }
     }
     return set;
 }

@@ -71,6 +71,15 @@ private:
 // no padding is needed.
 static_assert(sizeof(Patch) == 208);
 
+// A patch's two sides (docs/design.md §1.3): the front, which its normal points out of, and the
+// back, which only a two-sided patch has (its own material, radiosity and elements).
+inline constexpr std::uint8_t kFront = 0, kBack = 1;
+
+// The unit normal out of a side: the patch's for the front, reversed for the back.
+inline Vec3 side_normal(const Patch& p, std::uint8_t side) {
+    return side == kFront ? p.normal : Vec3(-p.normal);
+}
+
 struct PatchMaterial {
     Rgb reflectance = Rgb::Zero();  // diffuse: the radiosity engine's rho
     Rgb emission = Rgb::Zero();     // emitted radiosity E, W/m^2
@@ -88,12 +97,22 @@ struct PatchSet {
     // connectivity that the Embree scene and the output need, so nothing needs the mesh itself.
     FaceVertices vertices;
     std::vector<PatchMaterial> materials{PatchMaterial{}};  // patches name them by index
-    double total_area = 0;          // A_T
-    double max_emitted_power = 0;   // Phi_max: largest A_i * max_c E_i,c of any patch
-    Rgb emitted_power = Rgb::Zero();  // sum of A_i * E_i
+    // The material of each patch's back side, or kOneSided; empty when no patch has a back.
+    std::vector<std::uint32_t> back_materials;
+    double total_area = 0;          // A_T, of the sides: a two-sided patch's area counts twice
+    double max_emitted_power = 0;   // Phi_max: largest A_i * max_c E_i,c of any side
+    Rgb emitted_power = Rgb::Zero();  // sum of A_i * E_i over the sides
 
     const Rgb& reflectance(const Patch& p) const { return materials[p.material].reflectance; }
     const Rgb& emission(const Patch& p) const { return materials[p.material].emission; }
+
+    bool two_sided(std::size_t patch) const {
+        return !back_materials.empty() && back_materials[patch] != kOneSided;
+    }
+    // The material of a side; the back's only if the patch is two-sided.
+    const PatchMaterial& material(std::size_t patch, std::uint8_t side) const {
+        return materials[side == kFront ? patches[patch].material : back_materials[patch]];
+    }
 };
 
 PatchSet build_patch_set(const PatchMesh& mesh);

@@ -165,7 +165,8 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
             di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(regions),
                                 hn::Add(at, hn::Set(di, 3))));
         const VI patch = hn::And(patch_map, hn::Set(di, 0xffffffff));
-        const VI map = hn::ShiftRight<32>(patch_map);
+        const VI map = hn::And(hn::ShiftRight<32>(patch_map), hn::Set(di, 0xffff));
+        const auto back = hn::RebindMask(d, hn::Eq(hn::ShiftRight<48>(patch_map), hn::Set(di, 1)));
         const VI base = hn::BitCast(
             di, hn::Mul(hn::BitCast(du, patch), hn::Set(du, std::uint64_t(layout.stride))));
         V c[4][3], normal[3];
@@ -178,6 +179,9 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
         for (int a = 0; a < 3; ++a) {
             normal[a] = hn::GatherIndex(d, patch_doubles, hn::Add(base, hn::Set(di, layout.normal + a)));
         }
+        // The corners' map is the same on either side; the direction leaves the region's side.
+        V out_normal[3];
+        for (int a = 0; a < 3; ++a) out_normal[a] = hn::IfThenElse(back, hn::Neg(normal[a]), normal[a]);
         const auto is_triangle = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 0)));
         const auto is_bilinear = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 2)));
         // P(u, v) = c0 + u e1 + v ev + u v g: ev = c2 - c0, g = 0 on a triangle; ev = c3 - c0,
@@ -226,13 +230,13 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
 
         // The direction: r cos(phi) t + r sin(phi) b + sqrt(1 - r^2) n, in the tangent frame of
         // Duff et al. 2017 (rays/sampling.h).
-        const V sign = hn::CopySign(one, normal[2]);
-        const V fa = hn::Div(hn::Set(d, -1.0), hn::Add(sign, normal[2]));
-        const V fc = hn::Mul(hn::Mul(normal[0], normal[1]), fa);
-        const V t[3] = {hn::Add(one, hn::Mul(hn::Mul(hn::Mul(sign, normal[0]), normal[0]), fa)),
-                        hn::Mul(sign, fc), hn::Neg(hn::Mul(sign, normal[0]))};
-        const V bt3[3] = {fc, hn::Add(sign, hn::Mul(hn::Mul(normal[1], normal[1]), fa)),
-                          hn::Neg(normal[1])};
+        const V sign = hn::CopySign(one, out_normal[2]);
+        const V fa = hn::Div(hn::Set(d, -1.0), hn::Add(sign, out_normal[2]));
+        const V fc = hn::Mul(hn::Mul(out_normal[0], out_normal[1]), fa);
+        const V t[3] = {hn::Add(one, hn::Mul(hn::Mul(hn::Mul(sign, out_normal[0]), out_normal[0]), fa)),
+                        hn::Mul(sign, fc), hn::Neg(hn::Mul(sign, out_normal[0]))};
+        const V bt3[3] = {fc, hn::Add(sign, hn::Mul(hn::Mul(out_normal[1], out_normal[1]), fa)),
+                          hn::Neg(out_normal[1])};
         const V r = hn::Sqrt(xi_r);
         V cos_phi, sin_phi;
         cos_sin_turn(d, xi_phi, cos_phi, sin_phi);
@@ -241,7 +245,7 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
         V dir[3];
         for (int k3 = 0; k3 < 3; ++k3) {
             dir[k3] = hn::Add(hn::Add(hn::Mul(rc, t[k3]), hn::Mul(rs, bt3[k3])),
-                              hn::Mul(z, normal[k3]));
+                              hn::Mul(z, out_normal[k3]));
         }
 
         const std::size_t count = std::min(lanes, n - k);
@@ -315,6 +319,7 @@ RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const Ray
     const RayRegion& reg = regions[out.region];
     const Patch& p = patches[reg.patch];
     const bool triangle = reg.map == RegionMap::triangle;
+    const Vec3 facing = reg.side == kBack ? Vec3(-p.normal) : p.normal;
     Vec3 e1, ev, g;
     for (int a = 0; a < 3; ++a) {
         e1[a] = p.corner[1][a] - p.corner[0][a];
@@ -349,7 +354,7 @@ RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const Ray
     for (int k = 0; k < 3; ++k) {
         out.origin[k] = ((p.corner[0][k] + u * e1[k]) + v * ev[k]) + uv * g[k];
     }
-    const Vec3& n = p.normal;
+    const Vec3& n = facing;
     const double sign = std::copysign(1.0, n[2]);
     const double fa = -1.0 / (sign + n[2]);
     const double fc = (n[0] * n[1]) * fa;

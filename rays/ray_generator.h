@@ -16,15 +16,18 @@
 namespace hmcr {
 
 // How a region's points are drawn: the patch's map from its domain to 3D.
-enum class RegionMap : std::uint32_t { triangle, parallelogram, bilinear };
+enum class RegionMap : std::uint16_t { triangle, parallelogram, bilinear };
 RegionMap region_map(const Patch& patch);
 
-// One region rays start from (32 bytes, read by vector gathers).
+// One region rays start from (32 bytes, read by vector gathers): a domain of one side of a
+// patch; rays from the back side leave around the reversed normal.
 struct RayRegion {
     double u0 = 0, v0 = 0, s = 1;  // the domain (rays/domain.h)
     std::uint32_t patch = 0;
     RegionMap map = RegionMap::triangle;
+    std::uint16_t side = 0;  // kFront or kBack (rays/patch.h)
 };
+static_assert(sizeof(RayRegion) == 32);
 
 // The rays [first, first + n) of a batch, structure of arrays: origin and unit direction in the
 // single precision Embree takes; the region each starts from and its parameter point there;

@@ -33,13 +33,18 @@ struct Partial {
 // Looks up the solution's Gouraud radiosity at a point of a given patch (see the header).
 struct SolutionProbe {
     const ShadedTracer& tracer;
-    const std::vector<int>& patch_id;
+    const ShadedMesh& solution;
     double delta;
 
-    std::optional<Rgb> at(const Vec3& p, const Vec3& normal, int patch) const {
-        for (const double side : {1.0, -1.0}) {
-            const auto hit = tracer.hit_along(p + side * delta * normal, -side * normal);
-            if (hit && patch_id[hit->cell] == patch) return hit->radiosity;
+    // `normal` points out of the reference cell's side, so the ray from in front meets the
+    // solution's cell of that side.
+    std::optional<Rgb> at(const Vec3& p, const Vec3& normal, int patch, std::uint8_t side) const {
+        for (const double from : {1.0, -1.0}) {
+            const auto hit = tracer.hit_along(p + from * delta * normal, -from * normal);
+            if (hit && solution.patch_id[hit->cell] == patch &&
+                cell_side(solution, hit->cell) == side) {
+                return hit->radiosity;
+            }
         }
         return std::nullopt;
     }
@@ -78,7 +83,7 @@ std::vector<Vec2> quadrature_points(int k) {
 
 Partial integrate_triangle(const ShadedMesh& ref, const FanTriangle& tri, const Vec3& normal,
                            const SolutionProbe& probe, const std::vector<Vec2>& points,
-                           const std::vector<Rgb>& emission) {
+                           const ObjectErrorOptions& options) {
     const Vec3& p0 = ref.points[tri.points[0]];
     const Vec3 e1 = ref.points[tri.points[1]] - p0, e2 = ref.points[tri.points[2]] - p0;
     const double area = 0.5 * e1.cross(e2).norm();
@@ -89,9 +94,11 @@ Partial integrate_triangle(const ShadedMesh& ref, const FanTriangle& tri, const 
     const Rgb& b2 = ref.point_radiosity[tri.points[2]];
     const double weight = area / double(points.size());
     const int patch = ref.patch_id[tri.cell];
+    const std::uint8_t side = cell_side(ref, tri.cell);
+    const std::vector<Rgb>& emission = side == kBack ? options.back_emission : options.emission;
     for (const Vec2& st : points) {
         const Rgb b_ref = (1 - st.x() - st.y()) * b0 + st.x() * b1 + st.y() * b2;
-        const auto b_sol = probe.at(p0 + st.x() * e1 + st.y() * e2, normal, patch);
+        const auto b_sol = probe.at(p0 + st.x() * e1 + st.y() * e2, normal, patch, side);
         if (!b_sol) ++sum.unmatched;
         sum.squared_error += weight * (b_sol.value_or(Rgb::Zero()) - b_ref).matrix().squaredNorm();
         const Rgb reflected = emission.empty() ? b_ref : Rgb(b_ref - emission[std::size_t(patch)]);
@@ -132,15 +139,19 @@ ObjectError object_space_error(const ShadedTracer& tracer, const ShadedMesh& sol
     }
     check_patch_ids(solution, "solution");
     check_patch_ids(reference, "reference");
-    for (int p : reference.patch_id) {
-        if (!options.emission.empty() && std::size_t(p) >= options.emission.size()) {
-            throw std::invalid_argument("emission has no entry for patch " + std::to_string(p));
+    for (std::size_t c = 0; c < reference.cell_count(); ++c) {
+        const auto p = std::size_t(reference.patch_id[c]);
+        const bool back = cell_side(reference, c) == kBack;
+        const std::vector<Rgb>& e = back ? options.back_emission : options.emission;
+        if (!options.emission.empty() && p >= e.size()) {
+            throw std::invalid_argument(std::string(back ? "back " : "") +
+                                        "emission has no entry for patch " + std::to_string(p));
         }
     }
     const std::vector<FanTriangle> triangles = fan_triangulate(reference);
     std::vector<Vec3> normals(reference.cell_count());
     for (std::size_t c = 0; c < normals.size(); ++c) normals[c] = cell_normal(reference, c);
-    const SolutionProbe probe{tracer, solution.patch_id, 10 * tracer.offset()};
+    const SolutionProbe probe{tracer, solution, 10 * tracer.offset()};
     const std::vector<Vec2> points = quadrature_points(options.subdivisions);
 
     constexpr std::size_t kBlock = 256;
@@ -150,8 +161,8 @@ ObjectError object_space_error(const ShadedTracer& tracer, const ShadedMesh& sol
         const std::size_t end = std::min(triangles.size(), (b + 1) * kBlock);
         for (std::size_t t = b * kBlock; t < end; ++t) {
             const FanTriangle& tri = triangles[t];
-            blocks[b].add(integrate_triangle(reference, tri, normals[tri.cell], probe, points,
-                                             options.emission));
+            blocks[b].add(
+                integrate_triangle(reference, tri, normals[tri.cell], probe, points, options));
         }
     });
     Partial total;

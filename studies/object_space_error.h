@@ -41,6 +41,9 @@ struct ObjectErrorOptions {
     // it a light swamps the denominator: on the Cornell box its 0.7% of the area holds 99% of
     // the integral of |B|^2.
     std::vector<Rgb> emission;
+    // The same for the backs of two-sided patches (by patch id; black for one-sided ones), or
+    // empty when no patch has a back.
+    std::vector<Rgb> back_emission;
 
     std::string to_string() const;
 };

@@ -39,6 +39,13 @@ ObjectErrorOptions reflected_error_options(const PatchMesh& mesh) {
         const OpenMesh::Vec3d& e = materials[f].emission;
         o.emission.emplace_back(e[0], e[1], e[2]);
     }
+    for (auto f : mesh.faces()) {
+        const std::uint32_t back = materials.back_index(f);
+        if (back == kOneSided) continue;
+        o.back_emission.resize(mesh.n_faces(), Rgb::Zero());
+        const OpenMesh::Vec3d& e = materials.table()[back].emission;
+        o.back_emission[std::size_t(f.idx())] = Rgb(e[0], e[1], e[2]);
+    }
     return o;
 }
 

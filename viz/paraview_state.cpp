@@ -35,18 +35,21 @@ std::string reader(const std::filesystem::path& vtp) {
 }
 
 // RadiosityColor as it is (MapScalars 0), interpolated, and unlit: the ambient term alone,
-// at full strength, shows a colour exactly.
-std::string representation() {
+// at full strength, shows a colour exactly. With two-sided patches, back faces are culled
+// (401, "Cull Backface"): a patch's two sides are coincident polygons facing away from each
+// other, and each viewer then sees the side that faces it.
+std::string representation(bool cull_backfaces) {
     const int r = kRepresentation;
     return fmt::format(
         R"(    <Proxy group="representations" type="GeometryRepresentation" id="{}" servers="21">)"
         "\n"
         R"(      <Property name="Input" id="{}.Input" number_of_elements="1"><Proxy value="{}" output_port="0"/></Property>)"
-        "\n{}{}{}{}{}{}{}{}    </Proxy>\n",
+        "\n{}{}{}{}{}{}{}{}{}    </Proxy>\n",
         r, r, kReader, property(r, "Representation", "Surface"),
         property(r, "ColorArrayName", "", "", "", "0", "RadiosityColor"),
         property(r, "MapScalars", 0), property(r, "Interpolation", 1), property(r, "Ambient", 1),
-        property(r, "Diffuse", 0), property(r, "Specular", 0), property(r, "Visibility", 1));
+        property(r, "Diffuse", 0), property(r, "Specular", 0), property(r, "Visibility", 1),
+        cull_backfaces ? property(r, "BackfaceRepresentation", 401) : std::string());
 }
 
 std::string render_view(const View& view) {
@@ -105,7 +108,8 @@ std::string xml_escape(const std::string& text) {
     return out;
 }
 
-std::string paraview_state(const std::filesystem::path& vtp, const View& view) {
+std::string paraview_state(const std::filesystem::path& vtp, const View& view,
+                           bool cull_backfaces) {
     const std::string layout = fmt::format(
         R"(    <Proxy group="misc" type="ViewLayout" id="{}" servers="20"><Layout number_of_elements="1"><Item direction="0" fraction="0.5" view="{}"/></Layout></Proxy>)"
         "\n",
@@ -113,12 +117,12 @@ std::string paraview_state(const std::filesystem::path& vtp, const View& view) {
     return fmt::format(
         "<?xml version=\"1.0\"?>\n<ParaView>\n  <ServerManagerState version=\"5.11.0\">\n"
         "{}{}{}{}{}  </ServerManagerState>\n</ParaView>\n",
-        reader(vtp), representation(), render_view(view), layout, collections(vtp));
+        reader(vtp), representation(cull_backfaces), render_view(view), layout, collections(vtp));
 }
 
 void write_paraview_state(const std::filesystem::path& pvsm, const std::filesystem::path& vtp,
-                          const View& view) {
-    write_text_atomically(pvsm, paraview_state(vtp, view));
+                          const View& view, bool cull_backfaces) {
+    write_text_atomically(pvsm, paraview_state(vtp, view, cull_backfaces));
 }
 
 }  // namespace hmcr

@@ -16,12 +16,14 @@
 namespace hmcr {
 
 // The state XML for the solution file (named by its absolute path: ParaView reads a state's
-// file names as they are) seen from the view.
-std::string paraview_state(const std::filesystem::path& vtp, const View& view);
+// file names as they are) seen from the view; `cull_backfaces` for a solution with two-sided
+// patches, whose back polygons lie on their fronts.
+std::string paraview_state(const std::filesystem::path& vtp, const View& view,
+                           bool cull_backfaces = false);
 
 // Writes paraview_state() atomically.
 void write_paraview_state(const std::filesystem::path& pvsm, const std::filesystem::path& vtp,
-                          const View& view);
+                          const View& view, bool cull_backfaces = false);
 
 // Characters of text that XML gives a meaning (& < > " ') as entities.
 std::string xml_escape(const std::string& text);

@@ -1,5 +1,6 @@
 #include "viz/shaded_tracer.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -52,24 +53,56 @@ std::vector<FanTriangle> fan_triangulate(const ShadedMesh& mesh) {
 }
 
 ShadedTracer::ShadedTracer(const ShadedMesh& mesh)
-    : m_triangles(fan_triangulate(mesh)),
-      m_point_radiosity(mesh.point_radiosity),
-      m_scene(std::make_unique<EmbreeScene>(mesh.points, point_triples(m_triangles))) {}
+    : m_triangles(fan_triangulate(mesh)), m_point_radiosity(mesh.point_radiosity) {
+    for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
+        if (cell_side(mesh, c) != kBack) continue;
+        const auto patch = std::size_t(mesh.patch_id[c]);
+        if (m_two_sided.size() <= patch) m_two_sided.resize(patch + 1, 0);
+        m_two_sided[patch] = 1;
+    }
+    if (!m_two_sided.empty()) {
+        m_patch_of_cell = mesh.patch_id;
+        const auto back = std::stable_partition(m_triangles.begin(), m_triangles.end(),
+                                                [&](const FanTriangle& t) {
+                                                    return cell_side(mesh, t.cell) == kFront;
+                                                });
+        m_back_triangles.assign(back, m_triangles.end());
+        m_triangles.erase(back, m_triangles.end());
+        m_back_scene =
+            std::make_unique<EmbreeScene>(mesh.points, point_triples(m_back_triangles));
+    }
+    m_scene = std::make_unique<EmbreeScene>(mesh.points, point_triples(m_triangles));
+}
+
+std::optional<ShadedHit> ShadedTracer::shade(const std::vector<FanTriangle>& triangles,
+                                             const TriangleHit& hit,
+                                             const Vec3& direction) const {
+    const FanTriangle& t = triangles[hit.triangle];
+    // Embree's (u, v) weigh the triangle's second and third vertex.
+    const Rgb b = (1 - hit.u - hit.v) * m_point_radiosity[t.points[0]] +
+                  hit.u * m_point_radiosity[t.points[1]] + hit.v * m_point_radiosity[t.points[2]];
+    return ShadedHit{t.cell, b, hit.distance, hit.normal.dot(direction) < 0};
+}
 
 std::optional<ShadedHit> ShadedTracer::hit_along(const Vec3& origin, const Vec3& direction) const {
     const std::optional<TriangleHit> hit = m_scene->first_hit_triangle(origin, direction);
     if (!hit) return std::nullopt;
-    const FanTriangle& t = m_triangles[hit->triangle];
-    // Embree's (u, v) weigh the triangle's second and third vertex.
-    const Rgb b = (1 - hit->u - hit->v) * m_point_radiosity[t.points[0]] +
-                  hit->u * m_point_radiosity[t.points[1]] + hit->v * m_point_radiosity[t.points[2]];
-    return ShadedHit{t.cell, b, hit->distance};
+    std::optional<ShadedHit> out = shade(m_triangles, *hit, direction);
+    if (out->facing || !m_back_scene) return out;
+    const auto patch = std::size_t(m_patch_of_cell[out->cell]);
+    if (patch >= m_two_sided.size() || !m_two_sided[patch]) return out;
+    // The back cell on the same plane, as far as the front's within the self-hit offset.
+    const std::optional<TriangleHit> back = m_back_scene->first_hit_triangle(origin, direction);
+    if (back && back->distance <= hit->distance + m_scene->offset()) {
+        return shade(m_back_triangles, *back, direction);
+    }
+    return out;
 }
 
 std::optional<Rgb> ShadedTracer::radiosity_along(const Vec3& origin, const Vec3& direction) const {
     const auto hit = hit_along(origin, direction);
     if (!hit) return std::nullopt;
-    return hit->radiosity;
+    return hit->facing ? hit->radiosity : Rgb(Rgb::Zero());
 }
 
 std::optional<std::uint32_t> ShadedTracer::cell_along(const Vec3& origin,

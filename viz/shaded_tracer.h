@@ -34,7 +34,16 @@ struct ShadedHit {
     std::uint32_t cell = 0;       // the ShadedMesh cell hit
     Rgb radiosity = Rgb::Zero();  // Gouraud value at the hit, W/m^2
     double distance = 0;          // along the unit direction
+    // Whether the ray meets the side the cell shows. A ray from behind a one-sided patch meets
+    // its front's cell from behind, a side that is black; a two-sided patch's back cell is found
+    // instead of its front's.
+    bool facing = true;
 };
+
+// The side a cell shows (a mesh without the array shows fronts only).
+inline std::uint8_t cell_side(const ShadedMesh& mesh, std::size_t cell) {
+    return mesh.side.empty() ? kFront : mesh.side[cell];
+}
 
 class ShadedTracer {
   public:
@@ -43,15 +52,23 @@ class ShadedTracer {
 
     // First hit along a unit direction (either side of a surface), or nullopt on a miss.
     std::optional<ShadedHit> hit_along(const Vec3& origin, const Vec3& direction) const;
+    // What a camera sees there: the hit's radiosity, 0 on a side that is black.
     std::optional<Rgb> radiosity_along(const Vec3& origin, const Vec3& direction) const;
     std::optional<std::uint32_t> cell_along(const Vec3& origin, const Vec3& direction) const;
 
     double offset() const { return m_scene->offset(); }  // Embree's self-hit offset, metres
 
   private:
-    std::vector<FanTriangle> m_triangles;
+    std::optional<ShadedHit> shade(const std::vector<FanTriangle>& triangles,
+                                   const TriangleHit& hit, const Vec3& direction) const;
+
+    // The fronts' cells in one scene, the backs' (if any) in another: a back cell lies on its
+    // front's, and a ray that meets a two-sided front from behind asks the backs' scene.
+    std::vector<FanTriangle> m_triangles, m_back_triangles;
     std::vector<Rgb> m_point_radiosity;
-    std::unique_ptr<EmbreeScene> m_scene;
+    std::vector<std::uint8_t> m_two_sided;  // by patch id
+    std::vector<int> m_patch_of_cell;
+    std::unique_ptr<EmbreeScene> m_scene, m_back_scene;
 };
 
 }  // namespace hmcr

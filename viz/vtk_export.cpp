@@ -1,5 +1,7 @@
 #include "viz/vtk_export.h"
 
+#include <algorithm>
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
@@ -122,6 +124,10 @@ void set_attributes(vtkPolyData* pd, const ShadedMesh& mesh) {
     cd->AddArray(view_array<vtkIntArray>("HierarchyLevel", mesh.hierarchy_level));
     cd->AddArray(view_array<vtkIntArray>("PatchId", mesh.patch_id));
     cd->AddArray(view_array<vtkDoubleArray>("ElementArea", mesh.element_area));
+    // Which side a cell shows: only in a solution with two-sided patches, so that a one-sided
+    // scene's file is what it always was.
+    const bool backs = std::find(mesh.side.begin(), mesh.side.end(), kBack) != mesh.side.end();
+    if (backs) cd->AddArray(view_array<vtkUnsignedCharArray>("Side", mesh.side));
 }
 
 void add_string(vtkFieldData* fd, const char* name, const std::string& value) {

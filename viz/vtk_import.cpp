@@ -16,6 +16,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkVariant.h>
 #include <vtkXMLPolyDataReader.h>
 
@@ -137,6 +138,15 @@ void read_cell_data(vtkPolyData* data, const VtpChecker& check, std::uint64_t pa
         }
         m.patch_id.push_back(p);
         m.element_area.push_back(check.finite_at_least(area->GetValue(c), 0.0, "ElementArea"));
+    }
+    // Side: present only in a solution with two-sided patches; every cell is a front without it.
+    m.side.assign(std::size_t(n), kFront);
+    if (!cd->HasArray("Side")) return;
+    auto* side = check.array<vtkUnsignedCharArray>(cd, "Side", 1, n);
+    for (vtkIdType c = 0; c < n; ++c) {
+        const unsigned value = side->GetValue(c);
+        if (value > kBack) check.fail(fmt::format("cell {} has Side {}, not 0 or 1", c, value));
+        m.side[std::size_t(c)] = std::uint8_t(value);
     }
 }
 

@@ -2,13 +2,15 @@
 //
 // Input: MGF text written to fuzz.mgf, with a NUL byte separating a second file, part.mgf,
 // that fuzz.mgf can include (`i part.mgf`). Read with a small statement budget (arrays of
-// 10^9 instances must end in an error, not a timeout), then repaired (or not: --strict) and
-// built into a patch mesh as the loader does. What the reader returns must hold finite positions
-// and valid corner and material indices; a loaded mesh, triangles and quads with reflectance in [0,
-// 1], diffuse + specular at most 1 and a roughness in [0, 1].
+// 10^9 instances must end in an error, not a timeout), given its sides, then repaired (or, as
+// --strict, only its opposite faces joined) and built into a patch mesh as the loader does. What
+// the reader returns must hold finite positions, valid corner and material indices and sides 1 or
+// 2; a loaded mesh, triangles and quads with reflectance in [0, 1] on both sides, diffuse +
+// specular at most 1 and a roughness in [0, 1].
 #include <cmath>
 #include <cstdint>
 
+#include "meshes/material_sides.h"
 #include "meshes/mgf_reader.h"
 #include "meshes/repairs.h"
 #include "meshes/scene.h"
@@ -30,6 +32,18 @@ void check_soup(const PolygonSoup& soup) {
         if (m < 0 || std::size_t(m) >= soup.materials.size())
             crash("a material index out of range");
     }
+    for (const hmcr::SoupMaterial& m : soup.materials) {
+        if (m.sides != 1 && m.sides != 2) crash("a material of sides other than 1 or 2");
+    }
+}
+
+void check_back(const hmcr::FaceMaterials& material, OpenMesh::FaceHandle fh) {
+    const std::uint32_t back = material.back_index(fh);
+    if (back == hmcr::kOneSided) return;
+    for (int c = 0; c < 3; ++c) {
+        const double rho = material.table()[back].reflectance[c];
+        if (!(rho >= 0 && rho <= 1)) crash("bad reflectance behind");
+    }
 }
 
 void check_mesh(PatchMesh& mesh) {
@@ -44,6 +58,7 @@ void check_mesh(PatchMesh& mesh) {
         }
         const double alpha = material[fh].roughness;
         if (!(alpha >= 0 && alpha <= 1)) crash("bad roughness");
+        check_back(material, fh);
     }
 }
 
@@ -73,8 +88,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             hmcr::PolygonSoup soup = hmcr::read_mgf(work_dir() / "fuzz.mgf", small_budget());
             check_soup(soup);
             hmcr::check_positions(soup);
-            if (!strict) hmcr::repair_soup(soup);
             hmcr::LoadOptions options;
+            hmcr::assign_sides(soup, options);
+            const hmcr::Welding welding = hmcr::weld(soup.positions);
+            if (strict) {
+                hmcr::join_opposite_faces(soup, welding);
+            } else {
+                hmcr::repair_soup(soup, welding);
+            }
             options.strict = strict;
             options.use = hmcr::SceneUse::geometry;
             options.default_material = hmcr::Material{"default", {0.5, 0.5, 0.5}, {0, 0, 0}};

@@ -15,7 +15,8 @@ namespace {
 
 // The run summary's scene part after `hmcr solve FILE -o out.vtp`.
 nlohmann::json solved_scene(const std::filesystem::path& dir, const std::string& file) {
-    const CliRun r = run_hmcr("solve " + file + " --rays 1000 -q -o out.vtp", dir);
+    // One-sided: the area is the polygons' (a two-sided face counts twice, docs/design.md §1.3).
+    const CliRun r = run_hmcr("solve " + file + " --sides 1 --rays 1000 -q -o out.vtp", dir);
     EXPECT_EQ(r.exit_code, 0) << file << "\n" << r.err;
     return nlohmann::json::parse(read_file(dir / "out.json"))["scene"];
 }

@@ -19,7 +19,9 @@ TEST_F(Hostile, EveryClassOfBadObjIsRefusedWithItsLine) {
         {with(kPlatesObj, "f 1 2 3 4", "f 1//2 2 3 4"), "normal reference '1//2'"},
         // The light's only face has no area: the repairs drop it, leaving no light.
         {with(kPlatesObj, "f 1 2 3 4", "f 1 2 2"), "plates.obj: no face emits light"},
-        {std::string(kPlatesObj) + "f 4 3 2 1\n", "plates.obj:14: duplicate face"},
+        // The receiver, its back, and a third face on its corners.
+        {std::string(kPlatesObj) + "f 6 7 8 5\nusemtl emitter\nf 5 8 7 6\n",
+         "plates.obj:16: a third face on the same vertices as the faces on lines 13 and 14"},
         {with(kPlatesObj, "f 1 2 3 4", "f 1 3 2 4"), "plates.obj:11: self-intersecting"},
         {with(kPlatesObj, "usemtl emitter\n", ""), "plates.obj:10: face has no material"},
         {with(kPlatesObj, "usemtl emitter", "usemtl emiter"), "material 'emiter', which no"},
@@ -79,6 +81,37 @@ TEST_F(Hostile, RepairsAreMadeAndSaidInOneLine) {
     EXPECT_NE(r.err.find("warning: plates.mtl:5: reflectance 1 of material 'receiver' accepted"),
               std::string::npos)
         << r.err;
+}
+
+// A face on another's corners facing the other way is its back side (docs/usage.md#repairs):
+// joined with or without --strict, said in one line without the note that --strict refuses it.
+TEST_F(Hostile, OppositeFacesAreJoinedAlsoUnderStrict) {
+    plates(std::string(kPlatesObj) + "f 6 7 8 5\n");
+    for (const char* strict : {"", " --strict"}) {
+        const CliRun r = accepted(std::string("solve plates.obj --rays 2000 -o out.vtp") + strict);
+        EXPECT_NE(r.err.find("hmcr: repaired plates.obj: 1 face facing away from a coincident one "
+                             "joined as its back side (plates.obj:14)\n"),
+                  std::string::npos)
+            << r.err;
+        const auto summary = nlohmann::json::parse(read_file(dir() / "out.json"));
+        EXPECT_EQ(summary["scene"]["patches"], 2);
+        EXPECT_EQ(summary["scene"]["repairs"]["sides_joined"]["count"], 1) << strict;
+    }
+}
+
+// Sides are 1 or 2, on the command line, in a scene file and in MGF.
+TEST_F(Hostile, SidesOtherThanOneOrTwoAreRefused) {
+    plates();
+    refused("solve plates.obj -o out.vtp --sides 3", "--sides");
+    refused("solve plates.obj -o out.vtp --sides 0", "--sides");
+    plates(kPlatesObj, kPlatesMtl,
+           with(kPlatesJson, R"({"mesh": "plates.obj", )",
+                R"({"mesh": "plates.obj", "sides": 3, )"));
+    refused("info plates.json", "plates.json: sides: must be 1 or 2");
+    m_temp.write("sides.mgf", "m lamp =\n ed 100\n sides 3\n");
+    refused("info sides.mgf", "sides.mgf:3: sides 3 is not 1 or 2");
+    m_temp.write("sides.mgf", "m lamp =\n ed 100\n sides 1.5\n");
+    refused("info sides.mgf", "sides.mgf:3: sides 1.5 is not 1 or 2");
 }
 
 TEST_F(Hostile, EveryClassOfBadMaterialIsRefusedWithItsLine) {

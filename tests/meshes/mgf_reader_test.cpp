@@ -106,11 +106,13 @@ TEST(MgfReader, MaterialReflectanceEmissionAndSides) {
     EXPECT_TRUE(contains(soup.where(soup.materials[0].kd), "scene.mgf:11"));
     EXPECT_NEAR(soup.materials[1].material.ke.x(), 100 / kPi, 1e-12);  // E = pi Ke = ed
     EXPECT_TRUE(contains(soup.where(soup.materials[1].ke), "scene.mgf:14"));
-    // Only `lamp` is two-sided (MGF's default): one warning, counting its one face.
-    ASSERT_EQ(soup.warnings.size(), 1u);
-    EXPECT_TRUE(contains(soup.warnings[0], "1 surface of two-sided materials"));
+    // `lamp` says nothing: two-sided, MGF's default.
+    EXPECT_EQ(soup.materials[0].sides, 1);
+    EXPECT_EQ(soup.materials[1].sides, 2);
+    EXPECT_TRUE(soup.warnings.empty());
     EXPECT_TRUE(contains(read_error("m a =\n rd 1.5\n"), "scene.mgf:2: rd 1.5 is above 1"));
-    EXPECT_TRUE(contains(read_error("m a =\n sides 3\n"), "scene.mgf:2: sides is 1 or 2"));
+    EXPECT_TRUE(contains(read_error("m a =\n sides 3\n"), "scene.mgf:2: sides 3 is not 1 or 2"));
+    EXPECT_TRUE(contains(read_error("m a =\n sides 0\n"), "scene.mgf:2: sides 0 is not 1 or 2"));
     EXPECT_TRUE(contains(read_error("m nope\n"), "scene.mgf:1: undefined name 'nope'"));
 }
 

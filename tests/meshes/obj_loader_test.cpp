@@ -217,12 +217,18 @@ TEST(ObjLoader, NonConvexQuad) {
 }
 
 TEST(ObjLoader, DuplicateFaces) {
+    // A face, the same face seen from the back (its back side, meshes/coincident_faces.h) and a
+    // third face on the same vertices: a surface has two sides.
     const std::string body =
         "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
-        "f 1 2 3 4\n"   // 7
-        "f 4 3 2 1\n";  // 8: the same face seen from the back
-    EXPECT_TRUE(contains(obj_error(body),
-                         "scene.obj:8: duplicate face: same vertices as the face on line 7"));
+        "f 1 2 3 4\n"                 // 7
+        "f 4 3 2 1\n"                 // 8
+        "usemtl light\nf 2 3 4 1\n";  // 10
+    EXPECT_TRUE(contains(obj_error(body), "scene.obj:10: a third face on the same vertices as "
+                                          "the faces on lines 7 and 8: a surface has two sides"));
+    // Strict: a copy is refused, with both lines.
+    EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nf 2 3 1\n"),
+                         "scene.obj:7: duplicate face: same vertices as the face on line 6"));
 }
 
 TEST(ObjLoader, FaceWithoutMaterial) {

@@ -123,7 +123,7 @@ TEST(Repairs, FaceWithoutAreaIsDropped) {
     EXPECT_TRUE(contains(load(flat, true).error, "scene.obj:7: degenerate face"));
 }
 
-TEST(Repairs, ExactDuplicateIsDroppedAReversedOneIsNot) {
+TEST(Repairs, ExactDuplicateIsDroppedAReversedOneIsTheBackAnotherMaterialLoses) {
     const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     const Loaded same = load(tri + "f 2 3 1\n");
     ASSERT_TRUE(same.error.empty()) << same.error;
@@ -131,11 +131,24 @@ TEST(Repairs, ExactDuplicateIsDroppedAReversedOneIsNot) {
     EXPECT_EQ(same.file.repairs[RepairKind::duplicate_dropped].count, 1u);
     EXPECT_TRUE(contains(same.file.repairs[RepairKind::duplicate_dropped].first, "scene.obj:8"));
     EXPECT_TRUE(contains(load(tri + "f 2 3 1\n", true).error, "scene.obj:8: duplicate face"));
-    // Facing the other way, or in another material: which one is meant is not known.
-    EXPECT_TRUE(contains(load(tri + "f 3 2 1\n").error,
-                         "scene.obj:8: duplicate face: same vertices as the face on line 7, "
-                         "facing the other way"));
-    EXPECT_TRUE(contains(load(tri + "usemtl white\nf 1 2 3\n").error, "with another material"));
+    // Facing the other way: the back side, in the material of the face that faces that way.
+    const Loaded back = load(tri + "usemtl white\nf 3 2 1\n");
+    ASSERT_TRUE(back.error.empty()) << back.error;
+    ASSERT_EQ(back.file.mesh.n_faces(), 1u + 1);
+    EXPECT_TRUE(contains(back.file.repairs[RepairKind::sides_joined].first, "scene.obj:9"));
+    const FaceMaterials m(back.file.mesh);
+    const OpenMesh::FaceHandle f(0);
+    EXPECT_EQ(m[f].reflectance[0], 0.5);                        // grey in front
+    EXPECT_EQ(m.table()[m.back_index(f)].reflectance[0], 1.0);  // white behind
+    // The same way in another material: the first face stays (strict: refused).
+    const Loaded other = load(tri + "usemtl white\nf 1 2 3\n");
+    ASSERT_TRUE(other.error.empty()) << other.error;
+    ASSERT_EQ(other.file.mesh.n_faces(), 1u + 1);
+    EXPECT_TRUE(contains(other.file.repairs[RepairKind::coincident_dropped].first, "scene.obj:9"));
+    EXPECT_EQ(FaceMaterials(other.file.mesh)[f].reflectance[0], 0.5);
+    EXPECT_TRUE(contains(load(tri + "usemtl light\nf 1 2 3\n", true).error,
+                         "scene.obj:9: duplicate face: same vertices as the face on line 7, "
+                         "with another material"));
 }
 
 TEST(Repairs, EveryLaterCopyIsDroppedTheFirstKeptInItsPlace) {

@@ -50,16 +50,16 @@ std::vector<LinkQuery> queries_for(const Hierarchy& h, std::size_t n) {
     const std::uint32_t patches = std::uint32_t(h.patch_count());
     auto any = [&] { return std::uint32_t(rng.uniform() * patches); };
     for (LinkQuery& q : out) {
+        std::uint32_t receiver = any(), source = any();
         if (rng.uniform() < 0.6) {
             const std::uint32_t pair = std::uint32_t(rng.uniform() * 3);
-            q.receiver_patch = pair % patches;
-            q.source_patch = (pair + 1 + patches / 2) % patches;
-        } else {
-            q.receiver_patch = any();
-            q.source_patch = any();
+            receiver = pair % patches;
+            source = (pair + 1 + patches / 2) % patches;
         }
-        q.y_uv = point_on(h.patch_set().patches[q.receiver_patch], rng).cast<float>();
-        q.x_uv = point_on(h.patch_set().patches[q.source_patch], rng).cast<float>();
+        q.receiver = SideRef(receiver, kFront);
+        q.source = SideRef(source, kFront);
+        q.y_uv = point_on(h.patch_set().patches[receiver], rng).cast<float>();
+        q.x_uv = point_on(h.patch_set().patches[source], rng).cast<float>();
     }
     return out;
 }

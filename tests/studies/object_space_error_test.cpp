@@ -132,7 +132,7 @@ TEST(ObjectSpaceError, TwoLinearFieldsMatchTheClosedForm) {
     const ShadedMesh reference = grid(4, 4, linear(kReference));
     // The 3-point rule integrates the quadratic |B_sol - B_ref|^2 exactly at any k.
     for (const int k : {1, 2, 3}) {
-        const ObjectError e = object_space_error(solution, reference, {k, {}});
+        const ObjectError e = object_space_error(solution, reference, {k, {}, {}});
         EXPECT_NEAR(e.relative_l2, expected, kTol) << "k = " << k << ", " << e.to_string();
     }
     // The estimator integrates over the reference's surface: the roles are not symmetric.
@@ -183,7 +183,7 @@ TEST(ObjectSpaceError, RejectsMalformedInput) {
     no_patches.patch_id.clear();
     EXPECT_THROW(object_space_error(no_patches, ref), std::invalid_argument);
     EXPECT_THROW(object_space_error(ref, no_patches), std::invalid_argument);
-    EXPECT_THROW(object_space_error(ref, ref, {0, {}}), std::invalid_argument);
+    EXPECT_THROW(object_space_error(ref, ref, {0, {}, {}}), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "tests/support/test_scenes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -33,6 +34,18 @@ PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons) {
                           {p.specular[0], p.specular[1], p.specular[2]},
                           p.roughness});
         line[f] = 0;
+    }
+    const bool any_back =
+        std::any_of(polygons.begin(), polygons.end(), [](const TestPolygon& p) { return p.two_sided; });
+    if (!any_back) return mesh;
+    auto back = back_material_prop(mesh);
+    for (auto f : mesh.faces()) {
+        const TestPolygon& p = polygons[std::size_t(f.idx())];
+        back[f] = kOneSided;
+        if (!p.two_sided) continue;
+        back[f] = std::uint32_t(table.size());
+        table.push_back({{p.back_reflectance[0], p.back_reflectance[1], p.back_reflectance[2]},
+                          {p.back_emission[0], p.back_emission[1], p.back_emission[2]}});
     }
     return mesh;
 }

@@ -15,9 +15,14 @@ struct TestPolygon {
     Rgb emission = Rgb::Zero();  // radiosity E, W/m^2
     Rgb specular = Rgb::Zero();  // the path tracer's mirror (roughness 0) or glossy lobe
     double roughness = 0;
+    // A back side with its own material, or none (the back is black and absorbing).
+    bool two_sided = false;
+    Rgb back_reflectance = Rgb::Zero();
+    Rgb back_emission = Rgb::Zero();
 };
 
-// A PatchMesh with the hmcr:* properties; vertices with equal positions are shared.
+// A PatchMesh with the hmcr:* properties (the back materials only if a polygon is two-sided);
+// vertices with equal positions are shared.
 PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons);
 
 // Axis-aligned rectangle in the plane `axis` = value, spanning [lo, hi] in the other two
