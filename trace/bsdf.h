@@ -27,7 +27,8 @@ namespace hmcr {
 
 class Bsdf {
 public:
-    // wo: the unit direction back along the arriving path, in front of the unit normal n.
+    // wo: the unit direction back along the arriving path, in front of the unit normal n (the
+    // normal of the side the path meets: reversed on the back of a two-sided patch).
     Bsdf(const PatchMaterial& material, const Vec3& n, const Vec3& wo);
 
     bool black() const { return m_black; }

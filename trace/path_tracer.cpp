@@ -15,8 +15,8 @@ constexpr double kPi = std::numbers::pi;
 double power_heuristic(double pdf, double other) { return pdf * pdf / (pdf * pdf + other * other); }
 
 // The hit point put back onto its patch's plane: Embree's float distance leaves it up to ~1e-7
-// of the path length off, and a point behind the surface would let a grazing bounce hit its own
-// patch from behind (a back face, so the path would be absorbed).
+// of the path length off, and a point on the wrong side of the surface would let a grazing
+// bounce hit its own patch from the other side.
 Vec3 on_plane(const Patch& p, const Vec3& x) {
     return x - p.normal * p.normal.dot(x - p.corner[0]);
 }
@@ -26,8 +26,17 @@ Vec3 on_plane(const Patch& p, const Vec3& x) {
 struct PathTracer::Vertex {
     Vec3 point;
     std::uint32_t patch = 0;
+    std::uint8_t side = kFront;  // the side the path arrived on
     Vec3 wo;  // unit, back along the path that arrived
 };
+
+std::optional<PathTracer::SideHit> PathTracer::side_met(std::uint32_t patch,
+                                                        const Vec3& direction) const {
+    const double cos_front = -m_set.patches[patch].normal.dot(direction);
+    if (cos_front > 0) return SideHit{kFront, cos_front};
+    if (cos_front < 0 && m_set.two_sided(patch)) return SideHit{kBack, -cos_front};
+    return std::nullopt;  // the back of a one-sided patch, or grazing
+}
 
 std::string estimator_name(Estimator e) {
     switch (e) {
@@ -60,8 +69,8 @@ PathTracer::PathTracer(const PatchSet& patches, const PathOptions& options)
     }
 }
 
-Rgb PathTracer::emitted(std::uint32_t patch) const {
-    return m_set.emission(m_set.patches[patch]) / kPi;
+Rgb PathTracer::emitted(std::uint32_t patch, std::uint8_t side) const {
+    return m_set.material(patch, side).emission / kPi;
 }
 
 CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& rng) const {
@@ -70,11 +79,12 @@ CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& r
     const auto hit = m_scene.first_hit(origin, direction);
     if (!hit) return s;
     const Patch& p = m_set.patches[hit->patch];
-    const double cos_eye = -p.normal.dot(direction);
-    if (cos_eye <= 0) return s;  // a back face: black
-    s.geometry = cos_eye / (hit->distance * hit->distance);
-    const Vertex v{on_plane(p, origin + hit->distance * direction), hit->patch, -direction};
-    s.radiance = emitted(hit->patch) + radiance(v, rng, s.rays);
+    const auto eye = side_met(hit->patch, direction);
+    if (!eye) return s;  // the back of a one-sided patch: black
+    s.geometry = eye->cos / (hit->distance * hit->distance);
+    const Vertex v{on_plane(p, origin + hit->distance * direction), hit->patch, eye->side,
+                   -direction};
+    s.radiance = emitted(hit->patch, eye->side) + radiance(v, rng, s.rays);
     return s;
 }
 
@@ -82,8 +92,8 @@ CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& r
 Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
     Rgb sum = Rgb::Zero(), beta = Rgb::Ones();
     for (int bounce = 1; bounce <= m_options.max_depth; ++bounce) {
-        const Patch& p = m_set.patches[v.patch];
-        const Bsdf bsdf(m_set.materials[p.material], p.normal, v.wo);
+        const Bsdf bsdf(m_set.material(v.patch, v.side), side_normal(m_set.patches[v.patch], v.side),
+                        v.wo);
         if (bsdf.black()) break;
         if (m_options.estimator != Estimator::bsdf && bsdf.has_smooth_lobe()) {
             Vec3 w = Vec3::Zero();
@@ -97,18 +107,19 @@ Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
         ++rays;
         const auto hit = m_scene.first_hit(v.point, wi);
         if (!hit) break;
-        const Patch& q = m_set.patches[hit->patch];
-        const double cos_q = -q.normal.dot(wi);
-        if (cos_q <= 0) break;  // a back face absorbs
+        const auto met = side_met(hit->patch, wi);
+        if (!met) break;  // the back of a one-sided patch absorbs
         const double pdf_light =
-            m_lights.pdf_area(hit->patch) * hit->distance * hit->distance / cos_q;
+            m_lights.pdf_area(hit->patch, met->side) * hit->distance * hit->distance / met->cos;
+        const Rgb le = emitted(hit->patch, met->side);
         // Through a mirror the emitter counts whole: next-event estimation cannot find it.
         if (s->delta || m_options.estimator == Estimator::bsdf || pdf_light == 0) {
-            sum += beta * emitted(hit->patch);
+            sum += beta * le;
         } else if (m_options.estimator == Estimator::mis) {
-            sum += beta * emitted(hit->patch) * power_heuristic(s->pdf, pdf_light);
+            sum += beta * le * power_heuristic(s->pdf, pdf_light);
         }
-        v = {on_plane(q, v.point + hit->distance * wi), hit->patch, -wi};
+        v = {on_plane(m_set.patches[hit->patch], v.point + hit->distance * wi), hit->patch,
+             met->side, -wi};
         if (bounce >= m_options.roulette_depth) {
             const double survive = std::min(1.0, beta.maxCoeff());
             if (rng.uniform() >= survive) break;
@@ -128,15 +139,15 @@ Rgb PathTracer::next_event(const Vertex& v, const Bsdf& bsdf, Rng& rng, std::uin
     const double r2 = d.squaredNorm();
     if (!(r2 > 0)) return Rgb::Zero();
     w = d / std::sqrt(r2);
-    const double cos_x = m_set.patches[v.patch].normal.dot(w);
-    const double cos_y = -m_set.patches[e.patch].normal.dot(w);
+    const double cos_x = side_normal(m_set.patches[v.patch], v.side).dot(w);
+    const double cos_y = -side_normal(m_set.patches[e.patch], e.side).dot(w);
     if (cos_x <= 0 || cos_y <= 0) return Rgb::Zero();
     ++rays;
     if (!m_scene.visible(v.point, e.point)) return Rgb::Zero();
     const double weight = m_options.estimator == Estimator::mis
                               ? power_heuristic(e.pdf_area * r2 / cos_y, bsdf.pdf(w))
                               : 1.0;
-    return emitted(e.patch) * (weight * cos_x * cos_y / (r2 * kPi * e.pdf_area));
+    return emitted(e.patch, e.side) * (weight * cos_x * cos_y / (r2 * kPi * e.pdf_area));
 }
 
 }  // namespace hmcr

@@ -3,12 +3,14 @@
 //
 // Surfaces reflect diffusely with reflectance rho, plus a mirror or a glossy lobe where the
 // material has specular reflectance (trace/bsdf.h); an emitter has radiance Le = E / pi (E its
-// emitted radiosity, pi Ke) from its front face only. Back faces of anything are black and
-// absorb, as in the radiosity engine, where a ray that hits a back face deposits nothing.
+// emitted radiosity, pi Ke). A path that meets a patch takes the side it meets, as the radiosity
+// engine does (docs/design.md §1.3, §10.1): the front, or the back of a two-sided patch, with that
+// side's material, reflecting into that side's hemisphere (around the reversed normal on a back,
+// a mirror's included). The back of a one-sided patch is black and absorbs.
 //
 // The estimator of the radiance along a camera ray (Veach 1997, ch. 9; pbrt's path integrator):
 //   - next-event estimation: at every bounce on a surface with a diffuse or glossy lobe one
-//     point y on the emitters (trace/emitter_sampler.h) and a shadow ray, contributing
+//     point y on the emitting sides (trace/emitter_sampler.h) and a shadow ray, contributing
 //     f cos_x cos_y Le / (r^2 p_A(y));
 //   - BSDF sampling: a continuation drawn by trace/bsdf.h (cosine-distributed on a diffuse
 //     surface), throughput times f cos / p (rho on a diffuse surface);
@@ -25,6 +27,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,7 +57,7 @@ Estimator parse_estimator(const std::string& name);
 // One camera ray's result: what the pixel sampling criteria see.
 struct CameraSample {
     Rgb radiance = Rgb::Zero();  // W sr^-1 m^-2
-    double geometry = 0;         // cos(theta) / d^2 at the first hit (front faces; 0 otherwise)
+    double geometry = 0;         // |cos(theta)| / d^2 at the first hit (0 on a black back)
     std::uint32_t rays = 0;      // Embree queries cast, shadow rays included
 };
 
@@ -70,7 +73,13 @@ public:
 
 private:
     struct Vertex;  // a surface point a path reflects at
-    Rgb emitted(std::uint32_t patch) const;  // Le = E / pi
+    struct SideHit {
+        std::uint8_t side = kFront;
+        double cos = 0;  // between the side's normal and the reversed direction, > 0
+    };
+    // The side a ray along `direction` meets, or none: the back of a one-sided patch, or grazing.
+    std::optional<SideHit> side_met(std::uint32_t patch, const Vec3& direction) const;
+    Rgb emitted(std::uint32_t patch, std::uint8_t side) const;  // Le = E / pi of the side
     Rgb next_event(const Vertex& v, const Bsdf& bsdf, Rng& rng, std::uint32_t& rays,
                    Vec3& w) const;
     Rgb radiance(Vertex v, Rng& rng, std::uint32_t& rays) const;

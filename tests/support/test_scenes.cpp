@@ -45,7 +45,8 @@ PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons) {
         if (!p.two_sided) continue;
         back[f] = std::uint32_t(table.size());
         table.push_back({{p.back_reflectance[0], p.back_reflectance[1], p.back_reflectance[2]},
-                          {p.back_emission[0], p.back_emission[1], p.back_emission[2]}});
+                          {p.back_emission[0], p.back_emission[1], p.back_emission[2]},
+                          {p.back_specular[0], p.back_specular[1], p.back_specular[2]}});
     }
     return mesh;
 }

@@ -19,6 +19,7 @@ struct TestPolygon {
     bool two_sided = false;
     Rgb back_reflectance = Rgb::Zero();
     Rgb back_emission = Rgb::Zero();
+    Rgb back_specular = Rgb::Zero();  // the back's mirror (the path tracer's alone)
 };
 
 // A PatchMesh with the hmcr:* properties (the back materials only if a polygon is two-sided);
