@@ -10,7 +10,7 @@
 #include "app/count.h"
 #include "app/terminal_progress.h"
 #include "common/stopwatch.h"
-#include "information/leaf_patches.h"
+#include "information/back_sides.h"
 #include "information/scene_information.h"
 #include "meshes/scene.h"
 #include "viz/solution_file.h"
@@ -30,16 +30,16 @@ struct InfoArgs {
     SceneFlags scene_flags;
 };
 
-// The discretisation `hmcr info` measures: a scene's patches, or a solution's leaves.
+// The discretisation `hmcr info` measures: a scene's patches, or a solution's leaves, by side.
 struct InfoTarget {
     std::string label;
-    PatchSet patches;
+    ChannelStates states;
 };
 
 InfoTarget info_target(const InfoArgs& a) {
     if (fs::path(a.scene).extension() != ".vtp") {
         const Scene scene = load_scene_reporting(a.scene, false, SceneUse::geometry, a.scene_flags);
-        return {scene.name, build_patch_set(scene.mesh)};
+        return {scene.name, patch_states(build_patch_set(scene.mesh))};
     }
     // With --scene the solution must be of that scene; without, it names its own.
     const SolutionFile solution =
@@ -48,13 +48,20 @@ InfoTarget info_target(const InfoArgs& a) {
             : read_solution(a.scene, load_scene_reporting(a.solution_scene, false,
                                                           SceneUse::geometry, a.scene_flags));
     return {solution.meta.scene + " (leaves of " + fs::path(a.scene).filename().string() + ")",
-            leaf_patches(solution.mesh)};
+            leaf_states(solution.mesh)};
+}
+
+// "N patches", and with backs "N patches and M backs (S sides)": the channel's states.
+std::string state_count(const InfoTarget& t) {
+    const std::size_t fronts = t.states.fronts(), sides = t.states.states.patches.size();
+    if (sides == fronts) return fmt::format("{} patches", fronts);
+    return fmt::format("{} patches and {} backs ({} sides)", fronts, sides - fronts, sides);
 }
 
 void print_table(const InfoTarget& t, const InformationMeasures& m, double seconds) {
-    fmt::print("{}: {} patches, {} {} lines, {} rays ({} open), {:.1f} s; bits, +- one standard "
+    fmt::print("{}: {}, {} {} lines, {} rays ({} open), {:.1f} s; bits, +- one standard "
                "error, bias to subtract (1/n extrapolation)\n",
-               t.label, t.patches.patches.size(), m.lines, line_method_name(m.method), m.samples,
+               t.label, state_count(t), m.lines, line_method_name(m.method), m.samples,
                m.samples_open, seconds);
     const std::pair<const char*, InformationMeasures::Value> rows[] = {
         {"H_P   positional entropy", m.h_p},     {"H_S   visibility entropy", m.h_s},
@@ -71,13 +78,16 @@ void print_json(const InfoTarget& t, const InformationMeasures& m, double open, 
     nlohmann::json j = to_json(m);
     j["open_fraction"] = open;
     j["scene"] = t.label;
-    j["patches"] = t.patches.patches.size();
+    j["patches"] = t.states.fronts();
+    if (t.states.backs) j["backs"] = t.states.states.patches.size() - t.states.fronts();
     j["seconds"] = seconds;
     fmt::print("{}\n", j.dump(2));
 }
 
 // The measures describe a closed scene's channel, with every row of F sampled.
-void warn_assumptions(const InformationMeasures& m, double open, std::size_t patches) {
+void warn_assumptions(const InformationMeasures& m, double open, const InfoTarget& t) {
+    const std::size_t states = t.states.states.patches.size();
+    const char* noun = t.states.backs ? "sides" : "patches";
     if (open > 0.01) {
         fmt::print(stderr,
                    "hmcr: warning: {:.1f}% of the rays leave the scene or hit a back face; the "
@@ -92,9 +102,9 @@ void warn_assumptions(const InformationMeasures& m, double open, std::size_t pat
     }
     if (m.patches_unsampled > 0) {
         fmt::print(stderr,
-                   "hmcr: warning: no line crossed {} of the {} patches; their rows of F are "
+                   "hmcr: warning: no line crossed {} of the {} {}; their rows of F are "
                    "missing (use more lines)\n",
-                   m.patches_unsampled, patches);
+                   m.patches_unsampled, states, noun);
     }
 }
 
@@ -104,7 +114,7 @@ InformationMeasures measure(const InfoTarget& target, const LineOptions& o) {
     const bool terminal = progress_mode_for("auto", false) == ProgressMode::bar;
     TerminalProgress progress(terminal ? ProgressMode::bar : ProgressMode::none, "hmcr info");
     progress.stage(fmt::format("{} lines", line_method_name(o.method)));
-    return scene_information(target.patches, o, progress);
+    return scene_information(target.states, o, progress);
 }
 
 int run_info(const InfoArgs& a) {
@@ -123,7 +133,7 @@ int run_info(const InfoArgs& a) {
     } else {
         print_table(target, m, seconds);
     }
-    warn_assumptions(m, open, target.patches.patches.size());
+    warn_assumptions(m, open, target);
     return 0;
 }
 

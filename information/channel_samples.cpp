@@ -21,10 +21,10 @@ const char* line_method_name(LineMethod method) {
 }
 
 ChannelSamples trace_lines(const PatchSet& patches, const EmbreeScene& scene,
-                           const LineOptions& options, Progress& progress) {
+                           const LineOptions& options, Progress& progress, const BackSides* backs) {
     return options.method == LineMethod::local
-               ? trace_local_lines(patches, scene, options, progress)
-               : trace_global_lines(patches, scene, options, progress);
+               ? trace_local_lines(patches, scene, options, progress, backs)
+               : trace_global_lines(patches, scene, options, progress, backs);
 }
 
 void parallel_blocks(std::uint64_t blocks, Progress& progress,

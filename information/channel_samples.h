@@ -1,7 +1,7 @@
-// Samples of a scene's visibility channel (docs/design.md §7): rays leaving the front of a patch
-// from an area-uniform point in a cosine-distributed direction, each with the patch whose front
-// face it hits first. F_ij is the share of i's rays that land on j; misses and back-face hits
-// land on no patch. Two ways to draw them (Sbert, "The use of global random directions to
+// Samples of a scene's visibility channel (docs/design.md §7): rays leaving a state (a patch's
+// front, or the back of a two-sided one, §7.7) from an area-uniform point in a
+// cosine-distributed direction, each with the state it meets first. F_ij is the share of i's
+// rays that land on j; misses and hits on the back of a one-sided patch land on no state. Two ways to draw them (Sbert, "The use of global random directions to
 // compute radiosity", 1997):
 // - local lines: from each patch i, n_i rays with n_i proportional to A_i;
 // - global lines: uniformly distributed lines through the scene's bounding sphere. Along a
@@ -94,14 +94,22 @@ std::uint32_t batch_count(const LineOptions& options);
 // Local rays per patch: a multiple of the batch count, at least one per batch, about N a_i.
 std::vector<std::uint64_t> local_line_counts(const PatchSet& patches, const LineOptions& options);
 
-// The tracers report the fraction of lines traced to `progress`.
+class BackSides;
+
+// The tracers report the fraction of lines traced to `progress`. `patches` are the channel's
+// states and `scene` holds their fronts; with `backs` (information/back_sides.h) the states
+// after the fronts are backs, which rays leave around their own normal and land on when they
+// meet a front from behind.
 ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& scene,
-                                 const LineOptions& options, Progress& progress = no_progress());
+                                 const LineOptions& options, Progress& progress = no_progress(),
+                                 const BackSides* backs = nullptr);
 ChannelSamples trace_global_lines(const PatchSet& patches, const EmbreeScene& scene,
-                                  const LineOptions& options, Progress& progress = no_progress());
+                                  const LineOptions& options, Progress& progress = no_progress(),
+                                  const BackSides* backs = nullptr);
 // By options.method.
 ChannelSamples trace_lines(const PatchSet& patches, const EmbreeScene& scene,
-                           const LineOptions& options, Progress& progress = no_progress());
+                           const LineOptions& options, Progress& progress = no_progress(),
+                           const BackSides* backs = nullptr);
 
 // Runs f(block) for every block in [0, blocks) on all cores, in rounds between which the
 // calling thread reports the fraction done.

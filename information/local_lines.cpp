@@ -8,6 +8,7 @@
 #include "rays/element_sampler.h"
 #include "rays/rng.h"
 #include "rays/sampling.h"
+#include "information/back_sides.h"
 #include "information/channel_samples.h"
 
 namespace hmcr {
@@ -20,9 +21,9 @@ struct RayOutcome {
     double log_kernel = 0;  // log2(A_T F(x, y)), valid when target is a patch
 };
 
-// Ray k of patch i: an area-uniform origin, a cosine direction, its first front-face hit.
-RayOutcome trace_ray(const PatchSet& set, const EmbreeScene& scene, std::uint64_t seed,
-                     std::uint32_t i, std::uint64_t k) {
+// Ray k of state i: an area-uniform origin, a cosine direction, the state it meets first.
+RayOutcome trace_ray(const PatchSet& set, const EmbreeScene& scene, const BackSides* backs,
+                     std::uint64_t seed, std::uint32_t i, std::uint64_t k) {
     const Patch& p = set.patches[i];
     Rng rng(seed, i, k);
     const double xi1 = rng.uniform(), xi2 = rng.uniform();
@@ -31,11 +32,14 @@ RayOutcome trace_ray(const PatchSet& set, const EmbreeScene& scene, std::uint64_
     const Vec3 d = sample_cosine_hemisphere(p.normal, xi3, xi4);
     const auto hit = scene.first_hit(x, d);
     if (!hit) return {};
-    const Patch& q = set.patches[hit->patch];
-    if (q.normal.dot(d) >= 0) return {};  // back face
-    const double value = log_kernel_along(p, x, q, d, set.total_area);
+    std::uint32_t target = hit->patch;
+    if (set.patches[target].normal.dot(d) >= 0) {  // met from behind: a back state, or none
+        target = backs ? backs->at(target, x, d, hit->distance) : BackSides::kNoState;
+        if (target == BackSides::kNoState) return {};
+    }
+    const double value = log_kernel_along(p, x, set.patches[target], d, set.total_area);
     if (std::isnan(value)) return {};
-    return {hit->patch, value};
+    return {target, value};
 }
 
 }  // namespace
@@ -52,7 +56,8 @@ std::vector<std::uint64_t> local_line_counts(const PatchSet& patches, const Line
 }
 
 ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& scene,
-                                 const LineOptions& options, Progress& progress) {
+                                 const LineOptions& options, Progress& progress,
+                                 const BackSides* backs) {
     ChannelSamples out;
     const std::uint32_t b = out.batches = batch_count(options);
     // One target (4 bytes) per ray, and the slot table: refused before it is allocated.
@@ -82,7 +87,7 @@ ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& sce
         for (std::uint64_t g = g0; g < g1; ++g) {
             while (g >= start[i + 1]) ++i;
             const std::uint64_t k = g - start[i];
-            const RayOutcome r = trace_ray(patches, scene, options.seed, i, k);
+            const RayOutcome r = trace_ray(patches, scene, backs, options.seed, i, k);
             out.target[out.first[i * b + k % b] + k / b] = r.target;
             if (r.target != ChannelSamples::kNoPatch) tallies[block].add(k % b, r.log_kernel);
         }

@@ -72,9 +72,16 @@ InformationMeasures::Value batch_value(double estimate, const std::vector<double
 
 InformationMeasures scene_information(const PatchSet& patches, const LineOptions& options,
                                       Progress& progress) {
-    const EmbreeScene scene(patches.patches);
-    return scene_information(patches, trace_lines(patches, scene, options, progress),
-                             options.method);
+    return scene_information(patch_states(patches), options, progress);
+}
+
+InformationMeasures scene_information(const ChannelStates& c, const LineOptions& options,
+                                      Progress& progress) {
+    const std::vector<Patch> fronts(c.states.patches.begin(),
+                                    c.states.patches.begin() + std::ptrdiff_t(c.fronts()));
+    const EmbreeScene scene(fronts);
+    return scene_information(
+        c.states, trace_lines(c.states, scene, options, progress, c.backs.get()), options.method);
 }
 
 InformationMeasures scene_information(const PatchSet& patches, const ChannelSamples& samples,

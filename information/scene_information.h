@@ -1,6 +1,6 @@
 // Information measures of a scene's visibility channel (docs/design.md §7; Feixas, del Acebo,
 // Bekaert, Sbert, "An information theory framework for the analysis of scene complexity",
-// Eurographics 1999). The states are the patches of a discretisation, the transition
+// Eurographics 1999). The states are the sides of a discretisation's patches, the transition
 // probabilities their form factors, the stationary distribution the relative areas
 // a_i = A_i / A_T. In bits:
 //   H_P = -sum a_i log a_i                       positional entropy
@@ -24,6 +24,7 @@
 
 #include "rays/embree_scene.h"
 #include "rays/patch.h"
+#include "information/back_sides.h"
 #include "information/channel_samples.h"
 
 namespace hmcr {
@@ -42,12 +43,17 @@ struct InformationMeasures {
     LineMethod method = LineMethod::local;
     std::size_t lines = 0;              // lines traced
     std::size_t samples = 0;            // rays leaving a patch (local: one per line)
-    std::size_t samples_open = 0;       // of which without a front-face hit (skipped in I^c_S)
-    std::size_t patches_unsampled = 0;  // patches no line crossed: their rows are missing
+    std::size_t samples_open = 0;       // of which landing on no state (skipped in I^c_S)
+    std::size_t patches_unsampled = 0;  // states no line crossed: their rows are missing
 };
 
-// The measures of the discretisation given by the patches, from freshly traced lines.
+// The measures of the discretisation given by the patches, from freshly traced lines: its
+// states are the sides of the patches (information/back_sides.h), a patch's front and the back
+// of a two-sided one.
 InformationMeasures scene_information(const PatchSet& patches, const LineOptions& options,
+                                      Progress& progress = no_progress());
+// The same for the states of any discretisation (a solution's leaves).
+InformationMeasures scene_information(const ChannelStates& states, const LineOptions& options,
                                       Progress& progress = no_progress());
 // The same from samples already traced on these patches.
 InformationMeasures scene_information(const PatchSet& patches, const ChannelSamples& samples,

@@ -9,7 +9,7 @@
 #include "meshes/scene.h"
 #include "tests/meshes/scene_files.h"
 
-namespace hmcr {
+namespace hmcr::sides_test {
 namespace {
 
 using test::contains;
@@ -213,4 +213,4 @@ TEST(Sides, TheRepairSummaryNamesTheNewKinds) {
 }
 
 }  // namespace
-}  // namespace hmcr
+}  // namespace hmcr::sides_test
