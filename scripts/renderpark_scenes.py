@@ -10,9 +10,10 @@ What it does, in order:
 2. Writes, for each scene, a scene file `WORK/scenes/NAME.json` naming the MGF file, with the views
    below: positions inside the rooms, looking at lit parts (the default view of a bare mesh looks
    at the bounding box from outside, where every wall shows its dark outer face).
-3. Runs `hmcr solve` with its defaults (the kl oracle, 2,684,000 rays; WORK/NAME.vtp, .json and
-   .pvsm) and `hmcr render` of each view (WORK/NAME-VIEW.png), and prints a markdown table from each run summary: patches, of
-   which two-sided, the repairs the load reported, load and solve seconds, leaves, peak memory.
+3. Runs `hmcr solve` with its defaults (the kl oracle, 2,684,000 rays; WORK/NAME.vtp, .json
+   and .pvsm) and `hmcr render` of each view (WORK/NAME-VIEW.png), and prints a markdown table
+   from each run summary: patches, of which two-sided, the repairs the load reported, load and
+   solve seconds, leaves, peak memory.
 
 Standard library only.  Usage:
     scripts/renderpark_scenes.py --hmcr build/hmcr --work /tmp/rpk-scenes [--rpk-source DIR]
@@ -40,7 +41,7 @@ SCENES = [
      [view("back", (6.6, 10.9, 1.8), (3.0, 3.0, 0.7)),
       view("front", (0.6, 0.4, 1.7), (4.5, 7.5, 0.9))]),
     ("hospital", "hospital/hosp.mgf", "a hospital floor: corridor, waiting room and offices",
-     [view("waiting", (5.6, 2.5, 1.6), (3.5, 8.0, 0.7)),
+     [view("waiting", (5.2, 2.4, 1.6), (3.4, 8.0, 0.6)),
       view("corridor", (1.5, 0.5, 1.6), (1.5, 12.0, 1.0))]),
     ("graz", "office1/graz.mgf", "an office in Graz: desks, shelves, chairs, a window wall",
      [view("desk", (5.0, 0.2, 1.6), (1.5, 3.5, 0.8)),
@@ -49,16 +50,16 @@ SCENES = [
      [view("corner", (3.8, 5.5, 1.6), (1.5, 1.0, 0.8))]),
     ("office3", "office3/office.mgf", "an office with a lamp on a desk (y up)",
      [view("corner", (2.0, 3.0, 2.0), (-1.2, 2.0, -1.2), up=(0, 1, 0))]),
-    ("corridor", "corridor.mgf", "a corridor with glossy doors, a sphere and a torus",
-     [view("along", (5.0, 1.0, 3.0), (5.0, 15.0, 2.0))]),
+    ("corridor", "corridor.mgf", "an L-shaped corridor with glossy doors, a sphere and a torus",
+     [view("along", (0.0, 0.5, 3.0), (3.0, 16.0, 2.5))]),
     ("cube", "cube.mgf", "a room with a glossy floor and coloured blocks under one light",
-     [view("corner", (9.5, 0.5, 5.0), (5.0, 5.0, 2.0))]),
-    ("floor_gloss", "floor_gloss.mgf", "a room with a glossy floor and a sphere",
-     [view("corner", (0.3, 0.3, 1.5), (7.0, 3.0, 0.5))]),
-    ("soda", "soda.mgf", "Soda Hall's lobby: glasses, bottles and tableware on a table (y up)",
+     [view("corner", (8.5, 1.5, 5.0), (3.5, 6.0, 1.5), fov=65)]),
+    ("floor_gloss", "floor_gloss.mgf", "a floor, a green stand and a glossy red sphere under a "
+     "light (not a room)", [view("oblique", (3.0, -1.0, 1.6), (6.0, 2.0, 0.4), fov=50)]),
+    ("soda", "soda.mgf", "a bar: a counter, stools, tables, glasses and globe lamps (y up)",
      [view("table", (2.8, 1.6, 6.0), (-1.0, 0.8, -2.0), up=(0, 1, 0))]),
     ("examp1", "examp1.mgf", "a fluorescent luminaire, seen from below (not a room)",
-     [view("below", (0.5, -0.5, -0.7), (0.0, 0.0, 0.0), fov=50)]),
+     [view("below", (0.0, 0.0, -0.9), (0.0, 0.0, 0.0), up=(0, 1, 0), fov=55)]),
 ]
 
 
@@ -94,7 +95,8 @@ def repairs_cell(repairs):
              "duplicates_dropped": "duplicates dropped", "reflectance_one": "reflectance 1",
              "sides_joined": "**sides joined**", "coincident_dropped": "**coincident dropped**",
              "specular_reduced": "rs reduced"}
-    parts = [f"{v['count']:,} {short.get(k, k)}" for k, v in repairs.items() if k != "count"]
+    order = list(short) + sorted(set(repairs) - set(short) - {"count"})
+    parts = [f"{repairs[k]['count']:,} {short.get(k, k)}" for k in order if k in repairs]
     return ", ".join(parts) or "none"
 
 

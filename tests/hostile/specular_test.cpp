@@ -55,7 +55,8 @@ TEST_F(Hostile, BadSpecularMgfIsRefusedWithItsLine) {
     // rd + rs above 1 is a repair (a smaller rs) that a strict load refuses.
     m_temp.write("plates.mgf", with(kPlatesMgf, " rd 0.5\n", " rd 0.5\n rs 0.6 0.1\n"));
     refused("solve plates.mgf --strict -o out.vtp",
-            "plates.mgf:6: diffuse + specular reflectance 1.1 of material 'receiver' is not below 1");
+            "plates.mgf:6: diffuse + specular reflectance 1.1 of material 'receiver' is not "
+            "below 1");
 }
 
 TEST_F(Hostile, BadAllocationAndSppListsAreRefused) {
