@@ -90,4 +90,9 @@ Eigen::Vector3d chromaticity_rgb(const Chromaticity& c, double luminance) {
     return m * to_xyz(c, luminance);
 }
 
+double rgb_luminance(const Eigen::Vector3d& rgb) {
+    static const Eigen::Matrix3d m = xyz_to_rgb().inverse();
+    return m.row(1).dot(rgb);
+}
+
 }  // namespace hmcr

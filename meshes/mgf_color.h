@@ -41,4 +41,7 @@ std::optional<Chromaticity> mix_chromaticity(
 // outside the RGB gamut can come out negative; the caller decides.
 Eigen::Vector3d chromaticity_rgb(const Chromaticity& c, double luminance);
 
+// The luminance Y of a linear RGB colour (the inverse of chromaticity_rgb's).
+double rgb_luminance(const Eigen::Vector3d& rgb);
+
 }  // namespace hmcr

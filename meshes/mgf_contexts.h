@@ -25,6 +25,7 @@ struct MgfMaterial {
     Eigen::Vector3d emitted = Eigen::Vector3d::Zero();  // E, RGB
     Eigen::Vector3d ks = Eigen::Vector3d::Zero();       // specular reflectance (rs), RGB
     double roughness = 0;                               // rs's RMS facet slope
+    double rd = 0, rs = 0;                              // the luminances rd and rs stated
     int sides = 2;
     SourcePlace kd_at, ed_at, ks_at;
     std::int32_t soup = -1;  // its soup material; -1 when changed since last used

@@ -318,6 +318,7 @@ private:
         } else if (e == "rd") {
             if (v > 1) throw InputError(m_where, fmt::format("rd {} is above 1", w[1]));
             m.kd = rgb(v, std::max(v, kMaxColouredReflectance));
+            m.rd = v;
             m.kd_at = m_at;
         } else {
             m.emitted = rgb(v, INFINITY);
@@ -338,6 +339,7 @@ private:
         MgfMaterial& m = m_materials.current();
         m.soup = -1;
         m.ks = rgb(v, std::max(v, kMaxColouredReflectance));
+        m.rs = v;
         m.roughness = roughness;
         m.ks_at = m_at;
     }
@@ -362,6 +364,7 @@ private:
     void prism(const std::vector<std::string>& w);
     void add(std::vector<MgfPolygon> polygons, bool reverse);
     std::int32_t soup_material();
+    void fit_reflectances(const MgfMaterial& m, Material& out);
     void finish_warnings();
 
     MgfOptions m_options;
@@ -485,14 +488,37 @@ std::int32_t MgfReader::soup_material() {
     out.material.kd = m.kd;
     out.material.ke = m.emitted / std::numbers::pi;  // E = pi Ke
     out.material.ks = m.ks;
+    fit_reflectances(m, out.material);
     out.material.roughness = m.roughness;
     out.kd = m.kd_at;
     out.ke = m.ed_at;
     out.ks = m.ks_at;
     out.sides = m.sides;
+    out.specular_reducible = true;
     m.soup = std::int32_t(m_soup.materials.size());
     m_soup.materials.push_back(std::move(out));
     return m.soup;
+}
+
+// MGF states rd and rs as luminances, and lets them sum to 1. Two colours that fit alone can
+// still sum above 1 in a channel (a saturated red rd under a white rs); when their luminances
+// allow it, both move toward their greys together, keeping their luminances, until every
+// channel fits as rd's does alone (docs/design.md §11.3). A sum of luminances above 1 is left
+// for the validation to refuse.
+void MgfReader::fit_reflectances(const MgfMaterial& m, Material& out) {
+    const double luminance = m.rd + m.rs;
+    const double upper = std::min(std::max(luminance, kMaxColouredReflectance), 1.0);
+    const Eigen::Vector3d total = m.kd + m.ks;
+    if (luminance > 1 || total.maxCoeff() <= upper) return;
+    double t = 1;  // how much of the colours is kept
+    for (int k = 0; k < 3; ++k) {
+        if (total[k] > upper) t = std::min(t, (upper - luminance) / (total[k] - luminance));
+    }
+    const Eigen::Vector3d grey_d = Eigen::Vector3d::Constant(m.rd);
+    const Eigen::Vector3d grey_s = Eigen::Vector3d::Constant(m.rs);
+    out.kd = t == 0 ? grey_d : (grey_d + t * (m.kd - grey_d)).cwiseMax(0.0);
+    out.ks = t == 0 ? grey_s : (grey_s + t * (m.ks - grey_s)).cwiseMax(0.0);
+    m_ignored.add("(colours moved toward grey to fit RGB)", m_soup.where(m.ks_at));
 }
 
 void MgfReader::finish_warnings() {

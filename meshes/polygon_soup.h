@@ -27,6 +27,9 @@ struct SoupMaterial {
     bool defined = true;     // false: named by a face but defined nowhere (an error if used)
     SourcePlace kd, ke, ks;  // where Kd, Ke and Ks were set (the definition if they were not)
     int sides = 0;           // 1 or 2 as the file says (MGF's `sides`); 0: the format has none
+    // MGF: a specular part (rs) that takes the sum with the diffuse one above 1 may be reduced
+    // to fit, a repair (meshes/repairs.h); OBJ's Ks of a mirror (illum 3) is the user's word.
+    bool specular_reducible = false;
 };
 
 struct PolygonSoup {

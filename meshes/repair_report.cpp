@@ -18,7 +18,8 @@ std::size_t RepairReport::total() const {
 const char* repair_key(RepairKind kind) {
     static constexpr const char* kKeys[kRepairKinds] = {
         "triangulated",       "quads_split",     "corners_removed", "degenerate_dropped",
-        "duplicates_dropped", "reflectance_one", "sides_joined",    "coincident_dropped"};
+        "duplicates_dropped", "reflectance_one", "sides_joined",    "coincident_dropped",
+        "specular_reduced"};
     return kKeys[std::size_t(kind)];
 }
 
@@ -34,7 +35,9 @@ std::string RepairReport::summary() const {
         {"face facing away from a coincident one joined as its back side",
          "faces facing away from coincident ones joined as their back sides"},
         {"coincident face of another material dropped (the first kept)",
-         "coincident faces of another material dropped (the first kept)"}};
+         "coincident faces of another material dropped (the first kept)"},
+        {"material with rd + rs above 1 given a smaller rs",
+         "materials with rd + rs above 1 given a smaller rs"}};
     std::string out;
     for (std::size_t k = 0; k < kRepairKinds; ++k) {
         const RepairTally& t = kinds[k];

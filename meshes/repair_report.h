@@ -18,8 +18,9 @@ enum class RepairKind {
     reflectance_one,     // a material with Kd = 1 in a channel, accepted
     sides_joined,        // a face on an earlier one's corners facing the other way: its back
     coincident_dropped,  // a face on an earlier one's corners the same way, in another material
+    specular_reduced,    // an MGF material's rs reduced so that rd + rs fits below 1
 };
-inline constexpr std::size_t kRepairKinds = 8;
+inline constexpr std::size_t kRepairKinds = 9;
 
 struct RepairTally {
     std::size_t count = 0;

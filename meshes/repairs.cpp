@@ -143,13 +143,42 @@ Outcome repair_polygon(Corners& c, const Where& where, RepairReport& report,
     return Outcome::pieces;
 }
 
-void accept_reflectance_one(PolygonSoup& soup, RepairReport& report) {
+// Whether a face (either side) uses each of the soup's materials.
+std::vector<bool> used_materials(const PolygonSoup& soup) {
     std::vector<bool> used(soup.materials.size(), false);
     for (const auto* ids : {&soup.material, &soup.back}) {
         for (std::int32_t m : *ids) {
             if (m >= 0) used[std::size_t(m)] = true;
         }
     }
+    return used;
+}
+
+// An MGF material whose rd + rs is above 1 in a channel (RenderPark's scenes write up to 1.3):
+// its specular part is scaled down until the sum's largest channel is 0.99, as a coloured rd
+// alone is fitted (meshes/mgf_reader.cpp). rd, which the radiosity engine uses, stays; only the
+// path tracer's glossy lobe is dimmer than written.
+void reduce_specular(PolygonSoup& soup, RepairReport& report) {
+    constexpr double kFit = 0.99;
+    const std::vector<bool> used = used_materials(soup);
+    std::set<std::string> told;  // one material read twice (MGF) is told once
+    for (std::size_t m = 0; m < soup.materials.size(); ++m) {
+        SoupMaterial& sm = soup.materials[m];
+        Material& mat = sm.material;
+        if (!used[m] || !sm.specular_reducible || (mat.kd + mat.ks).maxCoeff() <= 1) continue;
+        if (!mat.ks.allFinite() || mat.ks.minCoeff() < 0 || mat.kd.maxCoeff() > 1) continue;
+        double scale = 1;
+        for (int k = 0; k < 3; ++k) {
+            if (mat.ks[k] > 0) scale = std::min(scale, std::max(0.0, kFit - mat.kd[k]) / mat.ks[k]);
+        }
+        mat.ks *= scale;
+        const std::string where = soup.where(sm.ks);
+        if (told.insert(where).second) report.add(RepairKind::specular_reduced, where);
+    }
+}
+
+void accept_reflectance_one(PolygonSoup& soup, RepairReport& report) {
+    const std::vector<bool> used = used_materials(soup);
     std::set<std::string> told;  // one material read twice (MGF) is told once
     for (std::size_t m = 0; m < soup.materials.size(); ++m) {
         const SoupMaterial& sm = soup.materials[m];
@@ -199,6 +228,7 @@ RepairReport repair_soup(PolygonSoup& soup, const Welding& welding) {
     soup.back = std::move(out.back);
     soup.place = std::move(out.place);
     resolve_coincident_faces(soup, welded, report);
+    reduce_specular(soup, report);
     accept_reflectance_one(soup, report);
     return report;
 }

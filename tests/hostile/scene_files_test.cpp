@@ -114,6 +114,16 @@ TEST_F(Hostile, SidesOtherThanOneOrTwoAreRefused) {
     refused("info sides.mgf", "sides.mgf:3: sides 1.5 is not 1 or 2");
 }
 
+// A third face on the corners of a face and its back, in MGF: one line naming all three.
+TEST_F(Hostile, AThirdMgfFaceOnTheCornersOfTwoIsRefused) {
+    m_temp.write("third.mgf",
+                 "m lamp =\n ed 100\nv a =\n p 0 0 0\nv b =\n p 1 0 0\nv c =\n p 0 1 0\n"
+                 "f a b c\nf c b a\nm grey =\n rd 0.5\nf b c a\n");
+    refused("solve third.mgf -o out.vtp",
+            "third.mgf:13: a third face on the same vertices as the faces on lines 9 and 10: a "
+            "surface has two sides");
+}
+
 TEST_F(Hostile, EveryClassOfBadMaterialIsRefusedWithItsLine) {
     const std::pair<std::string, std::string> cases[] = {
         {with(kPlatesMtl, "Kd 0.5 0.5 0.5", "Kd 1.2 0.5 0.5"), "plates.mtl:5: reflectance 1.2"},

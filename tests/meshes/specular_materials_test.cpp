@@ -3,6 +3,7 @@
 // illumination models and bad roughness refused at their line.
 #include <gtest/gtest.h>
 
+#include "meshes/mgf_color.h"
 #include "meshes/mgf_reader.h"
 #include "meshes/obj_reader.h"
 #include "meshes/scene.h"
@@ -124,9 +125,47 @@ TEST(SpecularMaterials, MgfBadRsIsRefusedAtItsLine) {
     EXPECT_TRUE(contains(error(" rs 0.5 1.5\n"), "scene.mgf:11: rs roughness 1.5 is not in [0, 1]"));
     EXPECT_TRUE(contains(error(" rs -0.5 0\n"), "scene.mgf:11: rs -0.5 is not in [0, 1]"));
     EXPECT_TRUE(contains(error(" rs 0.5\n"), "scene.mgf:11:"));
-    EXPECT_TRUE(contains(error(" rd 0.6\n rs 0.5 0.05\n"),
+}
+
+// rd + rs above 1 (RenderPark's cube: a yellow rd 0.9 under rs 0.2) is repaired by a smaller
+// rs, the sum's largest channel 0.99, rd kept; a strict load refuses it at the rs line.
+TEST(SpecularMaterials, MgfRdPlusRsAbove1GetsASmallerRs) {
+    const std::string text = mgf(" rd 0.6\n rs 0.5 0.05\n");
+    const MeshFile file = load_mgf(text);
+    EXPECT_EQ(square(file).reflectance, OpenMesh::Vec3d(0.6, 0.6, 0.6));
+    EXPECT_NEAR(square(file).specular[0], 0.39, 1e-12);
+    EXPECT_EQ(square(file).roughness, 0.05);
+    EXPECT_EQ(file.repairs[RepairKind::specular_reduced].count, 1u);
+    EXPECT_EQ(file.repairs[RepairKind::specular_reduced].first.substr(
+                  file.repairs[RepairKind::specular_reduced].first.size() - 12),
+              "scene.mgf:12");
+    EXPECT_TRUE(contains(scene_error([&] { load_mgf(text, true); }),
                          "scene.mgf:12: diffuse + specular reflectance 1.1 of material 'm' is "
-                         "above 1"));
+                         "not below 1"));
+    // A red rd whose channel alone is 0.99 leaves its rs no room in that channel.
+    const MeshFile red = load_mgf(mgf(" c\n  cxy 0.7 0.3\n rd 0.5\n c\n rs 0.6 0\n"));
+    EXPECT_LE((square(red).reflectance + square(red).specular).max(), 0.99 + 1e-12);
+    EXPECT_EQ(square(red).specular, OpenMesh::Vec3d(0, 0, 0));
+}
+
+double luminance(const OpenMesh::Vec3d& c) { return rgb_luminance({c[0], c[1], c[2]}); }
+
+// MGF states rd and rs as luminances, which the specification lets sum to 1. A saturated colour
+// of a modest luminance has a channel near 1 (RenderPark's hospital: a red rd 0.29 under a
+// white rs 0.29), and a grey written as cxy 0.333333 0.333333 is a hair off white (its cube:
+// rd 0.6, rs 0.4): both fit once their colours move toward grey, keeping their luminances.
+TEST(SpecularMaterials, MgfRdPlusRsOfALuminanceUpTo1FitsTowardGrey) {
+    const MeshFile red = load_mgf(mgf(" c\n  cxy 0.75 0.1\n rd 0.29\n c\n rs 0.29 0.05\n"));
+    const FaceMaterial m = square(red);
+    EXPECT_LE((m.reflectance + m.specular).max(), 0.99 + 1e-12);
+    EXPECT_NEAR(luminance(m.reflectance), 0.29, 1e-12);
+    EXPECT_NEAR(luminance(m.specular), 0.29, 1e-12);
+    EXPECT_GT(m.reflectance[0], 2 * m.reflectance[1]);  // still red
+    EXPECT_EQ(red.repairs.total(), 0u);
+    const MeshFile grey = load_mgf(
+        mgf(" c\n  cxy 0.333333 0.333333\n rd 0.6\n rs 0.4 0.01\n"));
+    EXPECT_EQ(square(grey).reflectance + square(grey).specular, OpenMesh::Vec3d(1, 1, 1));
+    EXPECT_EQ(grey.repairs[RepairKind::reflectance_one].count, 1u);  // it absorbs nothing
 }
 
 }  // namespace
