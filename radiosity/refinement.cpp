@@ -147,8 +147,8 @@ namespace {
 // A group this large splits its children's descents between threads.
 constexpr std::size_t kParallelRays = 2048;
 
-// What one descent works on: the grouped queries and their receivers, and two index buffers
-// and a child per index entry, of the same length.
+// What every descent of one (receiver patch, source patch) group shares: the grouped queries,
+// where each one's receiver goes, and the pair's patch data.
 struct Descent {
     const LinkQuery* rays;
     Element** receivers;

@@ -50,18 +50,17 @@ void throw_if_failed(const EmbreeScene::Impl& impl, const char* step) {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// One closest-hit query, ignoring hits closer than tnear.
-RTCRayHit intersect(RTCScene scene, const Vec3& origin, const Vec3& direction, double tnear) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+// One closest-hit query from origin o along direction d, ignoring hits closer than tnear.
+RTCRayHit intersect(RTCScene scene, RTCIntersectContext& context, float ox, float oy, float oz,
+                    float dx, float dy, float dz, float tnear) {
     RTCRayHit rh;
-    rh.ray.org_x = float(origin.x());
-    rh.ray.org_y = float(origin.y());
-    rh.ray.org_z = float(origin.z());
-    rh.ray.dir_x = float(direction.x());
-    rh.ray.dir_y = float(direction.y());
-    rh.ray.dir_z = float(direction.z());
-    rh.ray.tnear = float(tnear);
+    rh.ray.org_x = ox;
+    rh.ray.org_y = oy;
+    rh.ray.org_z = oz;
+    rh.ray.dir_x = dx;
+    rh.ray.dir_y = dy;
+    rh.ray.dir_z = dz;
+    rh.ray.tnear = tnear;
     rh.ray.tfar = kInf;
     rh.ray.time = 0;
     rh.ray.mask = ~0u;
@@ -71,6 +70,14 @@ RTCRayHit intersect(RTCScene scene, const Vec3& origin, const Vec3& direction, d
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene, &context, &rh);
     return rh;
+}
+
+RTCRayHit intersect(RTCScene scene, const Vec3& origin, const Vec3& direction, double tnear) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    return intersect(scene, context, float(origin.x()), float(origin.y()), float(origin.z()),
+                     float(direction.x()), float(direction.y()), float(direction.z()),
+                     float(tnear));
 }
 
 }  // namespace
@@ -238,23 +245,11 @@ void EmbreeScene::first_hits(const GeneratedRays& rays, std::size_t begin, std::
                              std::span<BatchHit> hits) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rh;
     for (std::size_t k = begin; k < end; ++k) {
-        rh.ray.org_x = rays.origin[0][k];
-        rh.ray.org_y = rays.origin[1][k];
-        rh.ray.org_z = rays.origin[2][k];
-        rh.ray.dir_x = rays.direction[0][k];
-        rh.ray.dir_y = rays.direction[1][k];
-        rh.ray.dir_z = rays.direction[2][k];
-        rh.ray.tnear = float(m_offset);
-        rh.ray.tfar = kInf;
-        rh.ray.time = 0;
-        rh.ray.mask = ~0u;
-        rh.ray.id = 0;
-        rh.ray.flags = 0;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(m_impl->scene, &context, &rh);
+        const RTCRayHit rh =
+            intersect(m_impl->scene, context, rays.origin[0][k], rays.origin[1][k],
+                      rays.origin[2][k], rays.direction[0][k], rays.direction[1][k],
+                      rays.direction[2][k], float(m_offset));
         BatchHit& h = hits[k];
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
             h.patch = BatchHit::kNoHit;

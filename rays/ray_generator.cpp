@@ -279,17 +279,6 @@ namespace hmcr {
 
 HWY_EXPORT(GenerateRays);
 
-namespace {
-
-namespace rg = ray_generator;
-
-double linear(double a, double b, double xi) {
-    if (a == b) return xi;
-    return (xi * (a + b)) / (a + std::sqrt((1.0 - xi) * a * a + xi * b * b));
-}
-
-}  // namespace
-
 RegionMap region_map(const Patch& patch) {
     if (!patch.is_quad()) return RegionMap::triangle;
     return patch.is_parallelogram() ? RegionMap::parallelogram : RegionMap::bilinear;
@@ -335,9 +324,9 @@ RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const Ray
     };
     double a = xi_u, b = xi_v;
     if (triangle) {
-        const double root = std::sqrt(xi_u);
-        a = root * (1.0 - xi_v);
-        b = root * xi_v;
+        const Vec2 ab = sample_uniform_triangle(xi_u, xi_v);
+        a = ab.x();
+        b = ab.y();
     } else if (reg.map == RegionMap::bilinear) {
         const Vec3& n = p.normal;
         const double k0 = dot(n, cross(e1, ev)), k1 = dot(n, cross(e1, g)),
@@ -345,9 +334,9 @@ RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const Ray
         const double u1 = reg.u0 + reg.s, v1 = reg.v0 + reg.s;
         const double j00 = (k0 + k1 * reg.u0) + k2 * reg.v0, j10 = (k0 + k1 * u1) + k2 * reg.v0;
         const double j11 = (k0 + k1 * u1) + k2 * v1, j01 = (k0 + k1 * reg.u0) + k2 * v1;
-        a = linear(j00 + j01, j10 + j11, xi_u);
+        a = sample_linear(j00 + j01, j10 + j11, xi_u);
         const double na = 1.0 - a;
-        b = linear(na * j00 + a * j10, na * j01 + a * j11, xi_v);
+        b = sample_linear(na * j00 + a * j10, na * j01 + a * j11, xi_v);
     }
     const double u = reg.u0 + reg.s * a, v = reg.v0 + reg.s * b, uv = u * v;
     out.uv = {u, v};
@@ -355,11 +344,8 @@ RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const Ray
         out.origin[k] = ((p.corner[0][k] + u * e1[k]) + v * ev[k]) + uv * g[k];
     }
     const Vec3& n = facing;
-    const double sign = std::copysign(1.0, n[2]);
-    const double fa = -1.0 / (sign + n[2]);
-    const double fc = (n[0] * n[1]) * fa;
-    const Vec3 t(1.0 + ((sign * n[0]) * n[0]) * fa, sign * fc, -(sign * n[0]));
-    const Vec3 bt(fc, sign + (n[1] * n[1]) * fa, -n[1]);
+    Vec3 t, bt;
+    tangent_frame(n, t, bt);
     double cos_phi = 0, sin_phi = 0;
     cos_sin_turn(xi_phi, cos_phi, sin_phi);
     const double r = std::sqrt(xi_r);

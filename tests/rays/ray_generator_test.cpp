@@ -50,6 +50,15 @@ Regions test_regions() {
 
 constexpr std::size_t kRays = 20'000;
 
+// n rays of the stream (seed, key) from the regions, by their weights.
+GeneratedRays generated(const Regions& r, std::uint64_t seed, std::uint64_t key, std::size_t n) {
+    const AliasTable table(r.weights);
+    GeneratedRays out;
+    out.resize(n);
+    generate_rays(r.set.patches, r.regions, table, seed, key, 0, n, out, 0);
+    return out;
+}
+
 void expect_equal_to_reference(const Regions& r, const AliasTable& table, const char* target) {
     GeneratedRays out;
     out.resize(kRays + 3);
@@ -85,11 +94,8 @@ TEST(RayGenerator, EveryInstructionSetGivesTheReferenceBits) {
 // domain with the child's share of the area.
 TEST(RayGenerator, RegionsByWeightAndPointsUniformByArea) {
     const Regions r = test_regions();
-    const AliasTable table(r.weights);
     const std::size_t n = 400'000;
-    GeneratedRays out;
-    out.resize(n);
-    generate_rays(r.set.patches, r.regions, table, 3, 5, 0, n, out, 0);
+    const GeneratedRays out = generated(r, 3, 5, n);
     const double total = std::accumulate(r.weights.begin(), r.weights.end(), 0.0);
     std::vector<std::array<int, 4>> children(r.regions.size());
     std::vector<int> picked(r.regions.size());
@@ -127,11 +133,8 @@ TEST(RayGenerator, RegionsByWeightAndPointsUniformByArea) {
 // direction is a unit vector on the patch's front side.
 TEST(RayGenerator, DirectionsAreCosineDistributed) {
     const Regions r = test_regions();
-    const AliasTable table(r.weights);
     const std::size_t n = 400'000;
-    GeneratedRays out;
-    out.resize(n);
-    generate_rays(r.set.patches, r.regions, table, 9, 2, 0, n, out, 0);
+    const GeneratedRays out = generated(r, 9, 2, n);
     constexpr int kBins = 8;
     std::array<int, kBins> cos2_bins{}, azimuth_bins{};
     for (std::size_t k = 0; k < n; ++k) {
