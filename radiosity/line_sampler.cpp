@@ -21,10 +21,11 @@ void sample_kernel(const EmbreeScene& scene, const Hierarchy& hierarchy, const E
         const std::size_t n = std::min(kBatch, out.size() - first);
         std::size_t cast = 0;  // only lines with a non-zero kernel need a visibility query
         for (std::size_t k = 0; k < n; ++k) {
-            // The draws in a fixed order (an argument list's order is the compiler's).
-            const double xu = rng.uniform(), xv = rng.uniform();
-            const double yu = rng.uniform(), yv = rng.uniform();
+            // The draws in a fixed order, each point's v before its u (an argument list's order
+            // would be the compiler's): the same lines from every compiler.
+            const double xv = rng.uniform(), xu = rng.uniform();
             const Vec3 x = pi.point(on_i(xu, xv));
+            const double yv = rng.uniform(), yu = rng.uniform();
             const Vec3 y = pj.point(on_j(yu, yv));
             out[first + k] = point_kernel(x, ni, y, nj);
             if (out[first + k] > 0) {
