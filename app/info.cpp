@@ -90,7 +90,7 @@ void warn_assumptions(const InformationMeasures& m, double open, const InfoTarge
     const char* noun = t.states.backs ? "sides" : "patches";
     if (open > 0.01) {
         fmt::print(stderr,
-                   "hmcr: warning: {:.1f}% of the rays leave the scene or hit a back face; the "
+                   "hmcr: warning: {:.1f}% of the rays leave the scene or hit a one-sided back; the "
                    "measures assume a closed scene (rows of F summing to 1)\n",
                    100 * open);
     }

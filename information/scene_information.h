@@ -10,8 +10,8 @@
 //   I^c_S = (1/N) sum_k log(A_T F(x_k, y_k))     continuous mutual information
 //   I^c_S - I_S >= 0                             discretisation error
 // The form factors come from local or global lines (information/channel_samples.h); I^c_S uses the
-// point kernel on the same rays (skipping those that miss or hit a back face). Standard errors are batch
-// means: each measure is computed on every one of the independent ray batches, and
+// point kernel on the same rays (skipping those that miss or hit a one-sided back). Standard errors
+// are batch means: each measure is computed on every one of the independent ray batches, and
 // SE = sd(batch values) / sqrt(batches).
 //
 // The plug-in entropies are biased: H_S low and I_S high, by at most log2(1 + (K - 1) / n) for

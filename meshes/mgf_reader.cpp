@@ -503,8 +503,8 @@ std::int32_t MgfReader::soup_material() {
 // MGF states rd and rs as luminances, and lets them sum to 1. Two colours that fit alone can
 // still sum above 1 in a channel (a saturated red rd under a white rs); when their luminances
 // allow it, both move toward their greys together, keeping their luminances, until every
-// channel fits as rd's does alone (docs/design.md §11.3). A sum of luminances above 1 is left
-// for the validation to refuse.
+// channel fits as rd's does alone (docs/design.md §1.7). A sum of luminances above 1 is left
+// for the repair that reduces rs (meshes/repairs.cpp).
 void MgfReader::fit_reflectances(const MgfMaterial& m, Material& out) {
     const double luminance = m.rd + m.rs;
     const double upper = std::min(std::max(luminance, kMaxColouredReflectance), 1.0);
