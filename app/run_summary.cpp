@@ -14,7 +14,8 @@ nlohmann::json iterations_json(const SolveStats& st) {
                         {"unshot_before_w", rgb_json(it.unshot_before)},
                         {"unshot_after_w", rgb_json(it.unshot_after)},
                         {"leaves_after", it.leaves_after},
-                        {"seconds", it.seconds}});
+                        {"seconds", it.seconds},
+                        {"frozen", it.frozen}});
     }
     return list;
 }
@@ -76,6 +77,7 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
         {"options", options_json(solution.options, st)},
         {"counts",
          {{"rays", st.rays},
+          {"refining_rays", st.refining_rays},
           {"iterations", st.iterations.size()},
           {"oracle_calls", st.oracle_calls},
           {"oracle_evaluations", st.oracle_evaluations},
@@ -88,6 +90,7 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
          {{"load", timings.load_seconds},
           {"setup", st.setup_seconds},
           {"shooting", st.shooting_seconds},
+          {"refining", st.refining_seconds},
           {"push_pull", st.push_pull_seconds},
           {"oracles_all_threads", st.oracle_seconds},
           {"solve", st.total_seconds},

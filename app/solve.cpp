@@ -1,8 +1,10 @@
 // `hmcr solve SCENE`: solve at epsilon or to a leaf budget, write SCENE.vtp and its summary.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "app/scene_input.h"
 #include "app/command.h"
@@ -51,9 +53,14 @@ void report(const Scene& scene, const Solution& sol, const RunTimings& timings,
         fmt::print(stderr, "hmcr: warning: {:.1f}% of the shot power hit back faces "
                            "(flipped normals?)\n", 100 * sol.stats.back_face_fraction());
     }
-    fmt::print("{}: {} leaves, {} rays in {} iterations, {:.2f} s -> {}, {} and {}\n",
-               scene.name, sol.stats.leaves, sol.stats.rays, sol.stats.iterations.size(),
-               timings.total_seconds, vtp.string(), json.string(), pvsm.string());
+    const std::string refining =
+        sol.stats.refining_rays > 0 && sol.stats.refining_rays < sol.stats.rays
+            ? fmt::format(" ({} refining the mesh, the rest frozen)", sol.stats.refining_rays)
+            : "";
+    fmt::print("{}: {} leaves, {} rays{} in {} iterations, {:.2f} s -> {}, {} and {}\n",
+               scene.name, sol.stats.leaves, sol.stats.rays, refining,
+               sol.stats.iterations.size(), timings.total_seconds, vtp.string(), json.string(),
+               pvsm.string());
 }
 
 // The budget options are checked whether or not a budget is given: a bad value is a mistake

@@ -49,7 +49,7 @@ std::size_t Search::probe(double x) {
     o.epsilon = std::exp(x);
     const std::size_t k = m_result.probes.size() + 1;
     m_progress.stage(fmt::format("budget probe {}", k));
-    Solution sol = solve(m_mesh, o, m_progress, m_ranks);
+    Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks);
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
     m_result.probes.push_back(p);
     m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves ({:.1f} s)", k,
@@ -95,7 +95,14 @@ BudgetResult Search::run() {
                              : m_options.epsilon;
     double x = std::log(start);
     for (int k = 0; k < m_budget.max_probes; ++k) {
-        if (within(probe(x))) return std::move(m_result);
+        if (within(probe(x))) {
+            if (m_options.refine_share < 1) {
+                m_progress.stage("the mesh frozen");
+                m_result.solution =
+                    freeze_pass(std::move(m_result.solution), m_progress, m_ranks);
+            }
+            return std::move(m_result);
+        }
         // The leaf count is a step function of epsilon: one decision flipping near the top of a
         // tree changes every ray's descent below it (and, through the noise, the rest of the
         // solve), so it can jump across the whole tolerance at one epsilon.

@@ -3,6 +3,7 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -53,8 +54,10 @@ double SolveStats::back_face_fraction() const {
 namespace {
 
 // `shape`: a frozen mesh to solve on, or none (refine, or the uniform mesh of uniform_max_area).
+// The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
+// refining pass's, so that its rays are not theirs again.
 Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierarchy* shape,
-                    Progress& progress, const Ranks& ranks) {
+                    Progress& progress, const Ranks& ranks, std::uint32_t first_iteration = 0) {
     validate(options);
     const auto start = Clock::now();
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
@@ -103,7 +106,8 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     // The cap only guards against a scene that never converges; stop ends real solves.
     ShootingBuffers buffers;
     IterationSources sources;
-    for (std::uint32_t it = 0; channel_sum(unshot) >= options.stop * emitted && it < 10'000; ++it) {
+    for (std::uint32_t k = 0; channel_sum(unshot) >= options.stop * emitted && k < 10'000; ++k) {
+        const std::uint32_t it = first_iteration + k;
         const auto t0 = Clock::now();
         IterationRecord rec;
         rec.unshot_before = unshot;
@@ -150,19 +154,91 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
         st.cache_evictions = cache->evictions();
     }
     st.total_seconds = seconds_since(start);
+    if (!fixed_mesh) {
+        st.refining_rays = st.rays;
+        st.refining_seconds = st.total_seconds;
+    }
     return sol;
 }
 
+// The refining pass's rays: its share of the whole, at least one, leaving one for the frozen pass.
+std::uint64_t refining_rays(const SolverOptions& o) {
+    if (o.refine_share >= 1 || o.rays < 2) return o.rays;
+    const auto n = std::uint64_t(std::llround(o.refine_share * double(o.rays)));
+    return std::clamp<std::uint64_t>(n, 1, o.rays - 1);
+}
+
+// One pass's fractions as a part [start, start + share] of the whole solve's.
+class PartProgress final : public Progress {
+public:
+    PartProgress(Progress& outer, double start, double share)
+        : m_outer(outer), m_start(start), m_share(share) {}
+    void stage(std::string_view label) override { m_outer.stage(label); }
+    void advance(double fraction) override { m_outer.advance(m_start + m_share * fraction); }
+    void note(std::string_view line) override { m_outer.note(line); }
+
+private:
+    Progress& m_outer;
+    double m_start, m_share;
+};
+
 }  // namespace
+
+Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& progress,
+                     const Ranks& ranks) {
+    SolverOptions o = options;
+    o.rays = refining_rays(options);
+    o.refine_share = 1;
+    Solution sol = solve_with(std::move(patches), o, nullptr, progress, ranks);
+    sol.options = options;
+    return sol;
+}
+
+Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
+    const SolverOptions& options = refined.options;
+    if (options.refine_share >= 1 || options.rays < 2) return refined;
+    SolverOptions o = options;
+    o.rays = options.rays - refining_rays(options);
+    Solution sol = solve_with(refined.hierarchy->patch_set(), o, refined.hierarchy.get(),
+                              progress, ranks, std::uint32_t(refined.stats.iterations.size()));
+    sol.options = options;
+    SolveStats& st = sol.stats;
+    const SolveStats& r = refined.stats;
+    st.rays += r.rays;
+    st.refining_rays = r.rays;
+    st.oracle_calls = r.oracle_calls;
+    st.oracle_evaluations = r.oracle_evaluations;
+    st.cache_hits = r.cache_hits;
+    st.lines_cast = r.lines_cast;
+    st.oracle_seconds = r.oracle_seconds;
+    st.cache_bytes = r.cache_bytes;
+    st.cache_capacity = r.cache_capacity;
+    st.cache_evictions = r.cache_evictions;
+    st.epsilon = r.epsilon;
+    st.setup_seconds += r.setup_seconds;
+    st.shooting_seconds += r.shooting_seconds;
+    st.push_pull_seconds += r.push_pull_seconds;
+    st.total_seconds += r.total_seconds;
+    st.refining_seconds = r.total_seconds;
+    for (IterationRecord& it : st.iterations) it.frozen = true;
+    st.iterations.insert(st.iterations.begin(), r.iterations.begin(), r.iterations.end());
+    return sol;
+}
 
 Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& progress,
                const Ranks& ranks) {
-    return solve_with(build_patch_set(mesh), options, nullptr, progress, ranks);
+    return solve(build_patch_set(mesh), options, progress, ranks);
 }
 
 Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress,
                const Ranks& ranks) {
-    return solve_with(std::move(patches), options, nullptr, progress, ranks);
+    if (options.refine_share >= 1) {
+        return solve_with(std::move(patches), options, nullptr, progress, ranks);
+    }
+    validate(options);
+    const double share = double(refining_rays(options)) / double(options.rays);
+    PartProgress first(progress, 0, share), second(progress, share, 1 - share);
+    return freeze_pass(refine_pass(std::move(patches), options, first, ranks), second, ranks);
 }
 
 Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy& shape,

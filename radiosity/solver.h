@@ -19,11 +19,13 @@ struct IterationRecord {
     Rgb unshot_after = Rgb::Zero();
     std::size_t leaves_after = 0;
     double seconds = 0;
+    bool frozen = false;  // an iteration of the frozen pass of refine-then-freeze
 };
 
 struct SolveStats {
     std::vector<IterationRecord> iterations;
     std::uint64_t rays = 0;
+    std::uint64_t refining_rays = 0;       // of them, those that refined the mesh
     std::uint64_t oracle_calls = 0;        // link decisions
     std::uint64_t oracle_evaluations = 0;  // geometric factors computed
     std::uint64_t cache_hits = 0;
@@ -38,12 +40,15 @@ struct SolveStats {
     Rgb emitted_power = Rgb::Zero();
     double total_area = 0;          // of the patches, m^2
     double max_emitted_power = 0;   // of one patch, in its brightest channel, W
+    // The power balance of the pass whose values the solution holds (the frozen one when the
+    // mesh was refined first, docs/design.md §3.10).
     Rgb shot_power = Rgb::Zero();       // sum over iterations of the rays' power
     Rgb escaped_power = Rgb::Zero();    // shot power that left the scene
     Rgb back_face_power = Rgb::Zero();  // shot power absorbed by back faces
     Rgb unshot_power = Rgb::Zero();     // left when the solve stopped
     std::size_t elements = 0, leaves = 0, hierarchy_bytes = 0;
     double setup_seconds = 0, shooting_seconds = 0, push_pull_seconds = 0, total_seconds = 0;
+    double refining_seconds = 0;  // the refining pass's part of total_seconds
 
     // Fraction of the shot power that hit back faces (a sign of flipped normals if > 1%).
     double back_face_fraction() const;
@@ -57,13 +62,23 @@ struct Solution {
 
 // Throws InputError on a bad option (unknown oracle, no rays, ...) or a scene without light.
 // Reports the fraction of the rays shot to `progress`. `ranks` share every iteration's rays
-// (rank_merge.h) and all return the same solution, bit for bit, as one process would.
+// (rank_merge.h) and all return the same solution, bit for bit, as one process would. With
+// options.refine_share below 1 it is refine_pass, then freeze_pass.
 Solution solve(const PatchMesh& mesh, const SolverOptions& options,
                Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 // The same from the mesh's patches (build_patch_set), so that the mesh can be released before
 // the rays are shot.
 Solution solve(PatchSet patches, const SolverOptions& options,
                Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
+
+// Refine-then-freeze (docs/design.md §3.10). refine_pass is the refined solve with the refining
+// share of the rays, what a budget search probes; freeze_pass solves its leaves again from
+// scratch with the rest and returns that solution, with the refining pass's mesh statistics and
+// both passes' iterations. With refine_share 1 they are solve() and the identity.
+Solution refine_pass(PatchSet patches, const SolverOptions& options,
+                     Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
+Solution freeze_pass(Solution refined, Progress& progress = no_progress(),
+                     const Ranks& ranks = Ranks::single());
 
 // The same solve on a frozen mesh: the leaves of `shape` (a solution of the same mesh), no
 // refinement and no oracle. With many rays its error is the mesh's alone (studies' mesh error).

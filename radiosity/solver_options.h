@@ -71,6 +71,9 @@ concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
     X(LinkWeight,    link_weight, LinkWeight::unshot, true,           "unshot or total",            \
       scene_file, "a link's weight w_ij: the receiver's reflectance times the source's unshot "  \
                   "(Delta B) or total (B) radiosity")                                           \
+    X(double,        refine_share, 1,       v > 0 && v <= 1,         "in (0, 1]",                 \
+      scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
+                  "frozen, from scratch (1: one refined solve)")                                 \
     X(double,        stop,      0.01,       v > 0 && v < 1,          "in (0, 1)",                 \
       scene_file, "stop when the unshot power is below stop x the emitted power")                \
     X(double,        cache_mb,  32,         v >= 0 && v <= 1 << 20,  "in [0, 1048576]",           \

@@ -98,13 +98,15 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
             ? fmt::format("{} with {} rays, the error of the mesh itself", frozen, *o.mesh_rays)
             : std::string("mesh: not measured (--mesh-rays 0)");
     return fmt::format(
-        "{}, N_s = {}, link weight {}, budget tolerance {}%, {} seeds from {}. Mean ± standard "
+        "{}, N_s = {}, link weight {}, refine share {}, budget tolerance {}%, {} seeds from {}. "
+        "Mean ± standard "
         "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
         "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
         "area-weighted relative L2 error of the reflected radiosity against the reference (– "
         "against a traced reference, which has no mesh); "
         "{}; seconds: the budget search. The best mean of each error column is in bold.",
-        rays, o.solver.lines, name(o.solver.link_weight), 100 * o.budget_tolerance, o.seeds,
+        rays, o.solver.lines, name(o.solver.link_weight), o.solver.refine_share,
+        100 * o.budget_tolerance, o.seeds,
         o.solver.seed, views.size(), fmt::join(views, ", "), mesh);
 }
 
@@ -248,6 +250,7 @@ void write_study_tables(OutputSet& out, const std::string& scene, const StudyOpt
                                     {"rays_per_leaf", o.rays_per_leaf},
                                     {"mesh_rays", mesh_rays_json(o)},
                                     {"link_weight", name(o.solver.link_weight)},
+                                    {"refine_share", o.solver.refine_share},
                                     {"lines", o.solver.lines},
                                     {"budget_tolerance", o.budget_tolerance},
                                     {"samples_per_axis", o.samples_per_axis},

@@ -1,5 +1,5 @@
 // MPI runs give what one process gives (docs/cluster.md): `mpirun -n 1, 2, 3` of a refined
-// solve, a budget solve, a reference and a study against the same command without mpirun, file
+// solve, a refined-then-frozen solve, a budget solve, a reference and a study against the same command without mpirun, file
 // for file and byte for byte; summaries and tables equal but for timings and the per-process
 // cache counters. And a study killed on one rank resumes with another rank count.
 #include <gtest/gtest.h>
@@ -75,6 +75,15 @@ TEST(MpiRuns, RefinedSolvesAreTheSameBitsOnAnyRankCount) {
     TempDir dir;
     against_one_process(dir.path(), "solve cornell --oracle kl --rays 300000 -q -o ", ".vtp",
                         {1, 2, 3}, [&](const std::string& name, int k) {
+                            expect_same_solve(dir.path(), name, k);
+                        });
+}
+
+TEST(MpiRuns, RefineThenFreezeIsTheSameBitsOnAnyRankCount) {
+    TempDir dir;
+    against_one_process(dir.path(),
+                        "solve cornell --oracle kl --refine-share 0.4 --rays 300000 -q -o ",
+                        ".vtp", {1, 2, 3}, [&](const std::string& name, int k) {
                             expect_same_solve(dir.path(), name, k);
                         });
 }

@@ -1,0 +1,116 @@
+// Refine, then freeze (docs/design.md §3.10): the refining pass's mesh, the frozen pass's values,
+// exact on the plates, and the same bits for any thread count and under a budget search.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "meshes/scene.h"
+#include "radiosity/budget_search.h"
+#include "radiosity/solver.h"
+#include "tests/support/analytic.h"
+#include "tests/support/plugins.h"
+#include "tests/support/statistics.h"
+#include "tests/support/test_scenes.h"
+
+namespace hmcr::test::refine_then_freeze {
+namespace {
+
+std::vector<ElementId> leaf_ids(const Hierarchy& h) {
+    std::vector<ElementId> ids;
+    h.for_each_leaf([&](const Element& e) { ids.push_back(e.id); });
+    return ids;
+}
+
+std::vector<float> leaf_values(const Hierarchy& h) {
+    std::vector<float> v;
+    h.for_each_leaf([&](const Element& e) {
+        for (int c = 0; c < 3; ++c) v.push_back(float(e.radiosity[c]));
+    });
+    return v;
+}
+
+SolverOptions options(const char* oracle, std::uint64_t rays, double share) {
+    SolverOptions o;
+    o.oracle = test::oracle(oracle);
+    o.rays = rays;
+    o.seed = 4;
+    o.lines = 4;
+    o.refine_share = share;
+    return o;
+}
+
+std::size_t frozen_iterations(const SolveStats& st) {
+    return std::size_t(std::count_if(st.iterations.begin(), st.iterations.end(),
+                                     [](const IterationRecord& it) { return it.frozen; }));
+}
+
+// The plates of solver_test (emitter rho = 0, E = 1; receiver rho = 0.5, 1 m above): only the
+// frozen pass's first iteration reaches the receiver, its N_0 rays each hitting it with
+// probability F, so the receiver's B = rho hits / N_0 is a binomial mean of rho F.
+TEST(RefineThenFreeze, PlatesReceiverGetsRhoTimesEmissionTimesFormFactor) {
+    TestPolygon emitter = axis_rectangle(2, 0, {0, 0}, {1, 1}, true);
+    emitter.emission = Rgb::Constant(1);
+    TestPolygon receiver = axis_rectangle(2, 1, {0, 0}, {1, 1}, false);
+    receiver.reflectance = Rgb::Constant(0.5);
+    const PatchMesh mesh = make_patch_mesh({emitter, receiver});
+    for (const char* oracle : {"power", "kl"}) {
+        SolverOptions o = options(oracle, 400'000, 0.5);
+        o.epsilon = 1e-3;
+        const Solution sol = solve(mesh, o);
+        ASSERT_GT(sol.stats.leaves, 2u) << oracle;
+        const auto first = std::find_if(sol.stats.iterations.begin(), sol.stats.iterations.end(),
+                                        [](const IterationRecord& it) { return it.frozen; });
+        ASSERT_NE(first, sol.stats.iterations.end()) << oracle;
+        const double f = parallel_rectangles(1, 1, 1), n0 = double(first->rays);
+        const double se = 0.5 * std::sqrt(f * (1 - f) / n0);
+        EXPECT_TRUE(within_standard_errors(std::string(oracle) + " receiver B",
+                                           sol.hierarchy->root(1).radiosity[1], 0.5 * f, se));
+    }
+}
+
+// The mesh is the one a refined solve with the refining share of the rays builds; the rays are
+// both passes'; the oracle counts are the refining pass's.
+TEST(RefineThenFreeze, TheMeshIsTheRefiningSharesAndTheRaysAreBothPasses) {
+    const Scene scene = load_scene("cornell");
+    const Solution both = solve(scene.mesh, options("kl", 400'000, 0.25));
+    const Solution refined = solve(scene.mesh, options("kl", 100'000, 1));
+    EXPECT_EQ(leaf_ids(*both.hierarchy), leaf_ids(*refined.hierarchy));
+    EXPECT_EQ(both.stats.oracle_calls, refined.stats.oracle_calls);
+    EXPECT_EQ(both.stats.refining_rays, refined.stats.rays);
+    EXPECT_GT(frozen_iterations(both.stats), 0u);
+    EXPECT_EQ(frozen_iterations(refined.stats), 0u);
+    EXPECT_NEAR(double(both.stats.rays), 400'000.0, 0.02 * 400'000);
+    EXPECT_NE(leaf_values(*both.hierarchy), leaf_values(*refined.hierarchy));
+}
+
+TEST(RefineThenFreeze, OneAndTwoThreadsGiveTheSameBits) {
+    const Scene scene = load_scene("cornell");
+    SolverOptions o = options("power", 300'000, 0.5);
+    o.threads = 1;
+    const Solution one = solve(scene.mesh, o);
+    o.threads = 2;
+    const Solution two = solve(scene.mesh, o);
+    EXPECT_EQ(leaf_ids(*one.hierarchy), leaf_ids(*two.hierarchy));
+    EXPECT_EQ(leaf_values(*one.hierarchy), leaf_values(*two.hierarchy));
+}
+
+// A budget search probes with the refining pass and freezes the accepted probe: its leaves are
+// within the tolerance and those of the same search with the refining share of the rays.
+TEST(RefineThenFreeze, ABudgetSearchFreezesTheAcceptedProbe) {
+    Scene scene = load_scene("cornell");
+    const BudgetOptions budget{.leaves = 3000, .tolerance = 0.02};
+    const BudgetResult both = solve_for_budget(scene.mesh, options("power", 400'000, 0.5), budget);
+    const BudgetResult refined =
+        solve_for_budget(scene.mesh, options("power", 200'000, 1), budget);
+    const Solution& s = both.solution;
+    EXPECT_LE(std::abs(double(s.stats.leaves) - 3000.0), 0.02 * 3000);
+    EXPECT_EQ(leaf_ids(*s.hierarchy), leaf_ids(*refined.solution.hierarchy));
+    EXPECT_EQ(both.probes.size(), refined.probes.size());
+    EXPECT_GT(frozen_iterations(s.stats), 0u);
+    EXPECT_NEAR(double(s.stats.rays), 400'000.0, 0.02 * 400'000);
+}
+
+}  // namespace
+}  // namespace hmcr::test::refine_then_freeze
