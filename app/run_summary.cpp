@@ -15,7 +15,8 @@ nlohmann::json iterations_json(const SolveStats& st) {
                         {"unshot_after_w", rgb_json(it.unshot_after)},
                         {"leaves_after", it.leaves_after},
                         {"seconds", it.seconds},
-                        {"frozen", it.frozen}});
+                        {"frozen", it.frozen},
+                        {"control_constant", rgb_json(it.control_constant)}});
     }
     return list;
 }

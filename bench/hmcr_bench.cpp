@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "bench/bench_row.h"
+#include "bench/control_variate.h"
 #include "bench/scaling.h"
 #include "common/atomic_file.h"
 #include "oracles/registry.h"
@@ -80,6 +81,8 @@ int main(int argc, char** argv) {
     using namespace hmcr::bench;
     // A scaling point, run by the scaling study in a process of its own.
     if (argc == 7 && std::strcmp(argv[1], "--row") == 0) return run_row_process(argv + 2);
+    const std::string cv_seeds = flag(argc, argv, "--control-variate");
+    if (!cv_seeds.empty()) return run_control_variate_study(std::stoi(cv_seeds));
     const std::string results = flag(argc, argv, "--results");
     const std::string scaling = flag(argc, argv, "--scaling");
     std::vector<nlohmann::json> rows = run_oracle_rows();

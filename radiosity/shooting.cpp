@@ -10,31 +10,26 @@
 #include <optional>
 #include <vector>
 
+#include "radiosity/control_variate.h"
 #include "rays/element_sampler.h"
 #include "rays/rng.h"
 #include "rays/sampling.h"
 
 namespace hmcr {
 
-void IterationSources::rebuild(const Hierarchy& h) {
-    regions.clear();
-    share.clear();
-    m_weights.clear();
-    total = 0;
-    max_share = Rgb::Zero();
-    const std::vector<Patch>& patches = h.patch_set().patches;
-    h.for_each_leaf([&](const Element& e) {
-        const double sum = channel_sum(e.unshot);
-        const double w = e.area * sum;
-        if (w <= 0) return;
-        total += w;
-        const Rgb unit = e.unshot / sum;
-        max_share = max_share.max(unit);
-        regions.push_back({e.domain.u0, e.domain.v0, e.domain.s, e.id.patch,
-                           region_map(patches[e.id.patch]), e.id.side});
-        share.push_back(unit);
-        m_weights.push_back(w);
-    });
+void IterationSources::add(const RayRegion& region, double area, const Rgb& shot) {
+    const double sum = shot.cwiseAbs().sum();
+    const double w = area * sum;
+    if (!(w > 0)) return;
+    total += w;
+    const Rgb unit = shot / sum;
+    max_share = max_share.max(unit.cwiseAbs());
+    regions.push_back(region);
+    share.push_back(unit);
+    m_weights.push_back(w);
+}
+
+void IterationSources::finish() {
     if (regions.empty()) {
         alias.reset();
     } else if (alias) {
@@ -42,6 +37,57 @@ void IterationSources::rebuild(const Hierarchy& h) {
     } else {
         alias.emplace(m_weights);
     }
+}
+
+void IterationSources::rebuild(const Hierarchy& h) {
+    clear();
+    const std::vector<Patch>& ps = h.patch_set().patches;
+    patches = &ps;
+    h.for_each_leaf([&](const Element& e) {
+        add({e.domain.u0, e.domain.v0, e.domain.s, e.id.patch, region_map(ps[e.id.patch]),
+             e.id.side},
+            e.area, e.unshot);
+    });
+    finish();
+}
+
+void IterationSources::rebuild(const Hierarchy& h, const Rgb& beta, const ZeroSurfaces& zero) {
+    clear();
+    const std::vector<Patch>& ps = zero.patches;
+    patches = &ps;
+    h.for_each_leaf([&](const Element& e) {
+        add({e.domain.u0, e.domain.v0, e.domain.s, e.id.patch, region_map(ps[e.id.patch]),
+             e.id.side},
+            e.area, e.unshot - beta);
+    });
+    add_zero_surfaces(zero, -beta);
+    finish();
+}
+
+void IterationSources::rebuild(const ZeroSurfaces& zero) {
+    clear();
+    patches = &zero.patches;
+    add_zero_surfaces(zero, Rgb::Ones());
+    finish();
+}
+
+// The backs of one-sided patches and the background's faces, whole, at radiosity 0.
+void IterationSources::add_zero_surfaces(const ZeroSurfaces& zero, const Rgb& shot) {
+    const std::vector<Patch>& ps = zero.patches;
+    for (const std::uint32_t p : zero.backs) {
+        add({0, 0, 1, p, region_map(ps[p]), kBack}, ps[p].area, shot);
+    }
+    for (std::size_t p = zero.scene_patches; p < ps.size(); ++p) {
+        add({0, 0, 1, std::uint32_t(p), region_map(ps[p]), kFront}, ps[p].area, shot);
+    }
+}
+
+void IterationSources::clear() {
+    regions.clear();
+    share.clear();
+    m_weights.clear();
+    total = 0;
+    max_share = Rgb::Zero();
 }
 
 struct ShootingBuffers::Impl {
@@ -81,6 +127,8 @@ constexpr std::uint64_t kGrain = 256;
 
 // Pilot rays draw from streams of their own, apart from the iteration's rays.
 constexpr std::uint64_t kPilotStream = std::uint64_t(1) << 62;
+// The zero surfaces' pilot rays (§3.11): the pilot streams of an iteration no solve reaches.
+constexpr std::uint32_t kZeroPilotKey = UINT32_MAX;
 
 // The side of its patch that ray k hit: the front when the ray meets the front's normal, the
 // back when it comes from behind a two-sided patch; none when it escaped or met the back of a
@@ -115,8 +163,7 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
     GeneratedRays batch;
     batch.resize(rays);
     std::vector<BatchHit> hits(rays);
-    const std::vector<Patch>& patches = h.patch_set().patches;
-    generate_rays(patches, sources.regions, *sources.alias, ctx.seed, iteration, kPilotStream,
+    generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration, kPilotStream,
                   rays, batch, 0);
     ctx.scene.first_hits(batch, 0, rays, hits);
     double reflected = 0;
@@ -127,6 +174,27 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
         reflected += channel_sum(m.reflectance * sources.share[batch.region[k]]);
     }
     return reflected / double(rays);
+}
+
+double zero_surfaces_seen(const RefinementContext& ctx, const ZeroSurfaces& zero,
+                          std::uint64_t rays) {
+    IterationSources sources;
+    sources.rebuild(zero);
+    if (sources.total <= 0 || rays == 0) return 1;
+    set_tracing_float_mode();
+    GeneratedRays batch;
+    batch.resize(rays);
+    std::vector<BatchHit> hits(rays);
+    generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, kZeroPilotKey,
+                  kPilotStream, rays, batch, 0);
+    ctx.scene.first_hits(batch, 0, rays, hits);
+    const PatchSet& ps = ctx.hierarchy.patch_set();
+    std::uint64_t seen = 0;
+    for (std::uint64_t k = 0; k < rays; ++k) {
+        const std::optional<std::uint8_t> side = hit_side(ps, hits[k], batch, k);
+        seen += side && (ps.material(hits[k].patch, *side).reflectance > 0).any();
+    }
+    return double(seen) / double(rays);
 }
 
 IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
@@ -163,7 +231,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     // (steps 3 and 4) and, for a ray that lands, its deposit and the query of its descent.
     auto trace_chunk = [&](Batch& b, std::uint64_t begin, std::uint64_t end,
                            ShootingBuffers::Impl::Chunk& chunk) {
-        generate_rays(ps.patches, sources.regions, *sources.alias, ctx.seed, iteration,
+        generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration,
                       b.first + begin, end - begin, b.rays, begin);
         ctx.scene.first_hits(b.rays, begin, end, b.hits);
         for (std::uint64_t k = begin; k < end; ++k) {

@@ -14,21 +14,36 @@
 
 namespace hmcr {
 
+struct ZeroSurfaces;
+
 // The sources of one iteration, frozen (Jacobi): the leaves with unshot power, each chosen with
 // probability A_l |Delta B_l| / S. Built once per iteration, for the pilot and for the rays;
 // the ray generator reads the leaves as regions (rays/ray_generator.h), copied out of the
 // elements so that a ray reads one small record, not a large element elsewhere.
+// With a control constant beta (docs/design.md §3.11) a leaf shoots Delta B_l - beta, with
+// weight A_l sum_c |Delta B_l,c - beta_c|, and the zero surfaces shoot -beta.
 struct IterationSources {
     std::vector<RayRegion> regions;  // each leaf's domain and patch
-    std::vector<Rgb> share;          // each leaf's Delta B / sum_c Delta B_c
+    std::vector<Rgb> share;          // each leaf's (Delta B - beta) / sum_c |Delta B_c - beta_c|
     double total = 0;                 // S
-    Rgb max_share = Rgb::Zero();      // the largest share of a leaf in each channel
+    Rgb max_share = Rgb::Zero();      // the largest |share| of a leaf in each channel
     std::optional<AliasTable> alias;  // none when nothing is left to shoot
+    // The patches the regions name: the scene's, or with `zero` its patches and background.
+    const std::vector<Patch>* patches = nullptr;
 
     // The sources of h's unshot power now, in the storage of the previous iteration's.
     void rebuild(const Hierarchy& h);
+    // The sources of h's unshot power minus beta, the zero surfaces' -beta included.
+    void rebuild(const Hierarchy& h, const Rgb& beta, const ZeroSurfaces& zero);
+    // The zero surfaces alone, each by its area.
+    void rebuild(const ZeroSurfaces& zero);
 
 private:
+    void clear();
+    void add(const RayRegion& region, double area, const Rgb& shot);
+    void add_zero_surfaces(const ZeroSurfaces& zero, const Rgb& shot);
+    void finish();
+
     std::vector<double> m_weights;  // A_l |Delta B_l|, for the alias table
 };
 
@@ -66,6 +81,11 @@ class ShootingBuffers {
 // pilot rays traced without refinement or deposits (for the ray schedule).
 double reflected_fraction(const RefinementContext& ctx, const IterationSources& sources,
                           std::uint32_t iteration, std::uint64_t rays);
+
+// The share of `rays` pilot rays from the zero surfaces, uniform over their area and on streams
+// of their own, that land on a side of reflectance > 0 (docs/design.md §3.11); 1 without rays.
+double zero_surfaces_seen(const RefinementContext& ctx, const ZeroSurfaces& zero,
+                          std::uint64_t rays);
 
 // Shoots the rays `slice` of the `rays` rays of iteration `iteration` and adds their deposits,
 // in quanta, to the elements' received accumulators.

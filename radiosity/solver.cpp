@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "common/error.h"
 #include "common/interrupt.h"
 #include "common/stopwatch.h"
 #include "rays/embree_scene.h"
+#include "radiosity/control_variate.h"
 #include "radiosity/link_cache.h"
 #include "radiosity/rank_merge.h"
 #include "radiosity/ray_schedule.h"
@@ -100,19 +102,35 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
                                 .link_weight = options.link_weight};
     st.setup_seconds = seconds_since(start);
 
+    // The control variate needs every side that may receive light to exist from the start
+    // (it adds rho beta to each), and every deposit on the leaf at its hit point (§3.11).
+    std::optional<ZeroSurfaces> zero;
+    if (fixed_mesh && options.control_variate == ControlVariate::constant) {
+        zero.emplace(h.patch_set());
+        zero->seen = zero_surfaces_seen(ctx, *zero, kPilotRays);
+        for (std::size_t p = 0; p < h.patch_count(); ++p) {
+            if (h.patch_set().two_sided(p)) h.root(p, kBack);
+        }
+    }
     const double emitted = channel_sum(st.emitted_power);
     RaySchedule schedule(options.rays, options.stop * emitted);
     Rgb unshot = h.unshot_power();
     // The cap only guards against a scene that never converges; stop ends real solves.
     ShootingBuffers buffers;
-    IterationSources sources;
+    IterationSources sources, shifted;
     for (std::uint32_t k = 0; channel_sum(unshot) >= options.stop * emitted && k < 10'000; ++k) {
         const std::uint32_t it = first_iteration + k;
         const auto t0 = Clock::now();
         IterationRecord rec;
         rec.unshot_before = unshot;
         sources.rebuild(h);
+        // The schedule and its pilot rays follow the true unshot power, with or without the
+        // control variate; the rays shoot it minus beta where beta is not 0.
         const double ratio = reflected_fraction(ctx, sources, it, kPilotRays);
+        const Rgb beta = zero ? control_constant(h, *zero) : Rgb::Zero();
+        const bool shift = (beta != 0).any();
+        rec.control_constant = beta;
+        if (shift) shifted.rebuild(h, beta, *zero);
         rec.rays = schedule.next(channel_sum(unshot), ratio);
         // Out of rays before the stop criterion: what is unshot stays unshot (an iteration of
         // no rays would push zero received radiosity over it and lose that power).
@@ -122,7 +140,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
         together(ranks, [&] {
             const RaySlice slice = slice_of(rec.rays, ranks.rank(), ranks.size());
             out = shoot_iteration(
-                ctx, sources, it, rec.rays, slice,
+                ctx, shift ? shifted : sources, it, rec.rays, slice,
                 [&](std::uint64_t n) {
                     const double done = double(done_before) + double(n) * ranks.size();
                     progress.advance(std::min(1.0, done / double(options.rays)));
@@ -134,6 +152,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
         st.shooting_seconds += seconds_since(t0);
         const auto t1 = Clock::now();
         h.push_pull(out.quantum);
+        if (shift) add_constant(h, beta);
         st.push_pull_seconds += seconds_since(t1);
         unshot = rec.unshot_after = h.unshot_power();
         if (!unshot.isFinite().all()) throw std::runtime_error("the unshot power is not finite");

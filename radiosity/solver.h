@@ -20,6 +20,7 @@ struct IterationRecord {
     std::size_t leaves_after = 0;
     double seconds = 0;
     bool frozen = false;  // an iteration of the frozen pass of refine-then-freeze
+    Rgb control_constant = Rgb::Zero();  // beta of the control variate (0: none), §3.11
 };
 
 struct SolveStats {

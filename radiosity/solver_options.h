@@ -32,6 +32,11 @@ const Oracle* default_oracle();  // kl
 enum class LinkWeight { unshot, total };
 std::string_view name(LinkWeight weight);  // "unshot", "total"
 
+// What the shooting subtracts from every surface's unshot radiosity and adds back exactly:
+// nothing, or a constant per channel (docs/design.md §3.11).
+enum class ControlVariate { none, constant };
+std::string_view name(ControlVariate cv);  // "none", "constant"
+
 // Settings whose values are names (flags, scene files and summaries spell them): parse gives
 // none for a name that is not one.
 template <class T>
@@ -45,6 +50,11 @@ template <>
 struct SettingNames<LinkWeight> {
     static std::optional<LinkWeight> parse(std::string_view name);
     static std::string_view name(LinkWeight weight) { return hmcr::name(weight); }
+};
+template <>
+struct SettingNames<ControlVariate> {
+    static std::optional<ControlVariate> parse(std::string_view name);
+    static std::string_view name(ControlVariate cv) { return hmcr::name(cv); }
 };
 template <class T>
 concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
@@ -71,6 +81,9 @@ concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
     X(LinkWeight,    link_weight, LinkWeight::unshot, true,           "unshot or total",            \
       scene_file, "a link's weight w_ij: the receiver's reflectance times the source's unshot "  \
                   "(Delta B) or total (B) radiosity")                                           \
+    X(ControlVariate, control_variate, ControlVariate::none, true,  "none or constant",          \
+      scene_file, "on a fixed mesh, shoot the unshot radiosity minus a constant per channel and "\
+                  "add the constant's share exactly (none: shoot it all)")                       \
     X(double,        refine_share, 1,       v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \

@@ -91,6 +91,7 @@ std::string Setting<T>::flag() const {
 }
 template struct Setting<OracleRef>;
 template struct Setting<LinkWeight>;
+template struct Setting<ControlVariate>;
 template struct Setting<double>;
 template struct Setting<int>;
 template struct Setting<std::uint64_t>;
@@ -102,6 +103,7 @@ T parse_named(const Setting<T>& s, std::string_view text) {
 }
 template OracleRef parse_named(const Setting<OracleRef>&, std::string_view);
 template LinkWeight parse_named(const Setting<LinkWeight>&, std::string_view);
+template ControlVariate parse_named(const Setting<ControlVariate>&, std::string_view);
 
 const Oracle* default_oracle() { return oracle_registry().find("kl"); }
 
@@ -118,6 +120,16 @@ std::optional<LinkWeight> SettingNames<LinkWeight>::parse(std::string_view name)
 
 std::string_view name(LinkWeight weight) {
     return weight == LinkWeight::total ? "total" : "unshot";
+}
+
+std::optional<ControlVariate> SettingNames<ControlVariate>::parse(std::string_view name) {
+    if (name == "none") return ControlVariate::none;
+    if (name == "constant") return ControlVariate::constant;
+    return std::nullopt;
+}
+
+std::string_view name(ControlVariate cv) {
+    return cv == ControlVariate::constant ? "constant" : "none";
 }
 
 std::uint64_t default_max_elements() {

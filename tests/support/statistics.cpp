@@ -1,5 +1,6 @@
 #include "tests/support/statistics.h"
 
+#include <boost/math/distributions/fisher_f.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 
 #include <array>
@@ -86,6 +87,22 @@ testing::AssertionResult t_test(const std::string& what, const std::vector<doubl
     const double t = student_quantile(1e-3 / comparisons, double(e.n - 1));
     return within_standard_errors(what + " (t test, " + std::to_string(e.n) + " runs)", e.mean,
                                   expected, e.standard_error, bias_bound, t);
+}
+
+testing::AssertionResult variance_smaller(const std::string& what,
+                                          const std::vector<double>& smaller,
+                                          const std::vector<double>& larger) {
+    const Estimate s = estimate_mean(smaller), l = estimate_mean(larger);
+    if (s.n < 2 || l.n < 2) return testing::AssertionFailure() << what << ": 2 samples or more";
+    const double var_s = s.standard_error * s.standard_error * double(s.n);
+    const double var_l = l.standard_error * l.standard_error * double(l.n);
+    const double d_l = double(l.n - 1), d_s = double(s.n - 1);
+    const double p = var_s > 0 ? boost::math::cdf(boost::math::complement(
+                                     boost::math::fisher_f(d_l, d_s), var_l / var_s))
+                               : (var_l > 0 ? 0.0 : 1.0);
+    auto result = p < 1e-3 ? testing::AssertionSuccess() : testing::AssertionFailure();
+    return result << what << ": F = " << var_l << " / " << var_s << " with (" << d_l << ", "
+                  << d_s << ") degrees of freedom, p = " << p;
 }
 
 double chi_square_p_value(double statistic, double dof) {

@@ -40,6 +40,13 @@ testing::AssertionResult t_test(const std::string& what, const std::vector<doubl
 testing::AssertionResult chi_square_test(const std::string& what, const std::vector<double>& observed,
                                          const std::vector<double>& expected, int comparisons = 1);
 
+// One-sided F test of two independent samples (e.g. one value per seed, two estimators): passes
+// when it rejects "var(smaller) >= var(larger)" at level 1e-3. The message names the
+// statistic s_larger^2 / s_smaller^2, its degrees of freedom and p-value.
+testing::AssertionResult variance_smaller(const std::string& what,
+                                          const std::vector<double>& smaller,
+                                          const std::vector<double>& larger);
+
 // The upper-tail p-value of a chi-square statistic with `dof` degrees of freedom.
 double chi_square_p_value(double statistic, double dof);
 
