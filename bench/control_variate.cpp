@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <string>
 #include <vector>
 
 #include "meshes/scene.h"
@@ -63,10 +64,11 @@ int run_control_variate_study(int seeds) {
         const Scene scene = load_scene(name);
         const Spread none = spread(scene, ControlVariate::none, seeds);
         const Spread cv = spread(scene, ControlVariate::constant, seeds);
-        fmt::print("| {} | {} | {:.4g} | {:.4g} | {:.4g} | {:.3g} | {:.2f} | {:.2f} | {} |\n",
-                   name, none.leaves, none.mean_b, none.variance, cv.variance,
-                   cv.variance > 0 ? none.variance / cv.variance : 0.0, none.seconds, cv.seconds,
-                   cv.negative);
+        const std::string gain =
+            cv.variance > 0 ? fmt::format("{:.3g}", none.variance / cv.variance) : "exact";
+        fmt::print("| {} | {} | {:.4g} | {:.4g} | {:.4g} | {} | {:.2f} | {:.2f} | {} |\n", name,
+                   none.leaves, none.mean_b, none.variance, cv.variance, gain, none.seconds,
+                   cv.seconds, cv.negative);
         std::fflush(stdout);
     }
     return 0;

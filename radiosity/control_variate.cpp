@@ -98,26 +98,23 @@ bool face_closed(const PatchSet& ps, const Patch& face, int f, double tol) {
     return covered >= face.area * (1 - 1e-9);
 }
 
-// The beta minimising (P + z |beta|) (P + seen z |beta|), P(beta) = sum_j A_j |v_j - beta| over
-// `values` (v_j, A_j) and z the zero surfaces' area (§3.11). Between consecutive values and 0
-// both factors are linear and positive, so their product is monotone or concave there: its
-// minimum is at one of those points. 0 wins ties (the plain iteration).
-double best_constant(std::vector<std::pair<double, double>>& values, double z, double seen) {
-    values.emplace_back(0.0, 0.0);  // 0 is a corner of |beta|
+// The area-weighted median of `values` (v_j, A_j) with `zero_weight` more at 0. The medians
+// (the minimisers of sum_j A_j |v_j - beta|) are an interval [a, b]: of them, the one nearest 0,
+// so that a tie keeps the plain iteration (§3.11).
+double weighted_median(std::vector<std::pair<double, double>>& values, double zero_weight) {
+    values.emplace_back(0.0, zero_weight);
     std::sort(values.begin(), values.end());
-    double total_a = 0, total_av = 0;
-    for (const auto& [v, a] : values) total_a += a, total_av += a * v;
-    double best = 0, best_cost = HUGE_VAL, zero_cost = HUGE_VAL;
-    double below_a = 0, below_av = 0;  // of the values before k
-    for (const auto& [x, a] : values) {
-        const double p = (below_a * x - below_av) + ((total_av - below_av) - (total_a - below_a) * x);
-        const double cost = (p + z * std::abs(x)) * (p + seen * z * std::abs(x));
-        if (x == 0) zero_cost = std::min(zero_cost, cost);
-        if (cost < best_cost) best = x, best_cost = cost;
-        below_a += a;
-        below_av += a * x;
+    double total = 0;
+    for (const auto& [v, a] : values) total += a;
+    double below = 0;
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        below += values[k].second;
+        if (below < 0.5 * total) continue;
+        const double a = values[k].first;
+        const double b = below > 0.5 * total || k + 1 == values.size() ? a : values[k + 1].first;
+        return std::clamp(0.0, a, b);
     }
-    return zero_cost <= best_cost ? 0.0 : best;
+    return 0;
 }
 
 }  // namespace
@@ -159,9 +156,19 @@ Rgb control_constant(const Hierarchy& h, const ZeroSurfaces& zero) {
     for (int c = 0; c < 3; ++c) {
         values.clear();
         h.for_each_leaf([&](const Element& e) { values.emplace_back(e.unshot[c], e.area); });
-        beta[c] = best_constant(values, zero.area, zero.seen);
+        beta[c] = weighted_median(values, std::sqrt(zero.seen) * zero.area);
     }
     return beta;
+}
+
+std::uint64_t zero_surface_rays(std::uint64_t rays, double sides_power, double zero_power,
+                                double seen) {
+    if (zero_power <= 0 || rays == 0) return 0;
+    if (sides_power <= 0) return rays;
+    const double share = zero_power / (sides_power + zero_power);
+    const double best = std::sqrt(seen) * zero_power / (sides_power + std::sqrt(seen) * zero_power);
+    const auto n = std::uint64_t(std::llround(double(rays) * std::max(best, 0.01 * share)));
+    return std::clamp<std::uint64_t>(n, 1, rays > 1 ? rays - 1 : 1);
 }
 
 void add_constant(Hierarchy& h, const Rgb& beta) {

@@ -29,10 +29,17 @@ struct ZeroSurfaces {
     bool has_background() const { return patches.size() > scene_patches; }
 };
 
-// The constant per channel that minimises the estimator's variance as §3.11 models it:
-// S (S - (1 - seen) z |beta|), S = sum_j A_j |Delta B_j - beta| over every leaf of every side
-// and the zero surfaces (area z, Delta B = 0). With seen = 1, the area-weighted median.
+// The constant per channel that minimises the estimator's variance as §3.11 models it,
+// (P + sqrt(seen) z |beta|)^2, P = sum_l A_l |Delta B_l - beta| over every leaf of every side and
+// z the zero surfaces' area: the area-weighted median of Delta B, the zero surfaces at 0 with
+// the area sqrt(seen) z.
 Rgb control_constant(const Hierarchy& h, const ZeroSurfaces& zero);
+
+// How many of an iteration's `rays` the zero surfaces shoot, given the power the sides and they
+// shoot: the share sqrt(seen) Z / (S + sqrt(seen) Z), which minimises the modelled variance, but
+// at least 1% of their share of the power and at least one ray (§3.11).
+std::uint64_t zero_surface_rays(std::uint64_t rays, double sides_power, double zero_power,
+                                double seen);
 
 // Adds rho_side beta to the radiosity and the unshot radiosity of every element of every side.
 void add_constant(Hierarchy& h, const Rgb& beta);

@@ -51,35 +51,30 @@ void IterationSources::rebuild(const Hierarchy& h) {
     finish();
 }
 
-void IterationSources::rebuild(const Hierarchy& h, const Rgb& beta, const ZeroSurfaces& zero) {
+void IterationSources::rebuild(const Hierarchy& h, const Rgb& beta) {
     clear();
-    const std::vector<Patch>& ps = zero.patches;
+    const std::vector<Patch>& ps = h.patch_set().patches;
     patches = &ps;
     h.for_each_leaf([&](const Element& e) {
         add({e.domain.u0, e.domain.v0, e.domain.s, e.id.patch, region_map(ps[e.id.patch]),
              e.id.side},
             e.area, e.unshot - beta);
     });
-    add_zero_surfaces(zero, -beta);
-    finish();
-}
-
-void IterationSources::rebuild(const ZeroSurfaces& zero) {
-    clear();
-    patches = &zero.patches;
-    add_zero_surfaces(zero, Rgb::Ones());
     finish();
 }
 
 // The backs of one-sided patches and the background's faces, whole, at radiosity 0.
-void IterationSources::add_zero_surfaces(const ZeroSurfaces& zero, const Rgb& shot) {
+void IterationSources::rebuild(const ZeroSurfaces& zero, const Rgb& shot) {
+    clear();
     const std::vector<Patch>& ps = zero.patches;
+    patches = &ps;
     for (const std::uint32_t p : zero.backs) {
         add({0, 0, 1, p, region_map(ps[p]), kBack}, ps[p].area, shot);
     }
     for (std::size_t p = zero.scene_patches; p < ps.size(); ++p) {
         add({0, 0, 1, std::uint32_t(p), region_map(ps[p]), kFront}, ps[p].area, shot);
     }
+    finish();
 }
 
 void IterationSources::clear() {
@@ -176,10 +171,18 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
     return reflected / double(rays);
 }
 
+void add_part(IterationOutcome& whole, const IterationOutcome& part) {
+    whole.rays += part.rays;
+    add(whole.shot_power, part.shot_power);
+    add(whole.escaped_power, part.escaped_power);
+    add(whole.back_face_power, part.back_face_power);
+    whole.counters += part.counters;
+}
+
 double zero_surfaces_seen(const RefinementContext& ctx, const ZeroSurfaces& zero,
                           std::uint64_t rays) {
     IterationSources sources;
-    sources.rebuild(zero);
+    sources.rebuild(zero, Rgb::Ones());
     if (sources.total <= 0 || rays == 0) return 1;
     set_tracing_float_mode();
     GeneratedRays batch;
@@ -200,12 +203,15 @@ double zero_surfaces_seen(const RefinementContext& ctx, const ZeroSurfaces& zero
 IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
                                  std::uint32_t iteration, std::uint64_t rays, RaySlice slice,
                                  const std::function<void(std::uint64_t)>& on_batch,
-                                 ShootingBuffers* buffers) {
+                                 ShootingBuffers* buffers, const RayPart& part) {
     IterationOutcome out;
+    if (part.quantum) out.quantum = *part.quantum;
     if (rays == 0 || sources.total <= 0) return out;
     slice.end = std::min(slice.end, rays);
     const double power_scale = sources.total / double(rays);  // S / N_iter
-    out.quantum = PowerQuantum::for_iteration(power_scale * sources.max_share, rays);
+    if (!part.quantum) {
+        out.quantum = PowerQuantum::for_iteration(power_scale * sources.max_share, rays);
+    }
     if (slice.begin >= slice.end) return out;
     const std::uint64_t batch_rays = std::min(slice.end - slice.begin, kBatchRays);
     // One thread cannot overlap anything: it reuses one batch's buffers, which stay in cache.
@@ -232,7 +238,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     auto trace_chunk = [&](Batch& b, std::uint64_t begin, std::uint64_t end,
                            ShootingBuffers::Impl::Chunk& chunk) {
         generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration,
-                      b.first + begin, end - begin, b.rays, begin);
+                      part.first_key + b.first + begin, end - begin, b.rays, begin);
         ctx.scene.first_hits(b.rays, begin, end, b.hits);
         for (std::uint64_t k = begin; k < end; ++k) {
             const std::uint32_t leaf = b.rays.region[k];

@@ -33,15 +33,14 @@ struct IterationSources {
 
     // The sources of h's unshot power now, in the storage of the previous iteration's.
     void rebuild(const Hierarchy& h);
-    // The sources of h's unshot power minus beta, the zero surfaces' -beta included.
-    void rebuild(const Hierarchy& h, const Rgb& beta, const ZeroSurfaces& zero);
-    // The zero surfaces alone, each by its area.
-    void rebuild(const ZeroSurfaces& zero);
+    // The sources of h's unshot power minus beta.
+    void rebuild(const Hierarchy& h, const Rgb& beta);
+    // The zero surfaces, each shooting the radiosity `shot` (-beta) over its area.
+    void rebuild(const ZeroSurfaces& zero, const Rgb& shot);
 
 private:
     void clear();
     void add(const RayRegion& region, double area, const Rgb& shot);
-    void add_zero_surfaces(const ZeroSurfaces& zero, const Rgb& shot);
     void finish();
 
     std::vector<double> m_weights;  // A_l |Delta B_l|, for the alias table
@@ -51,6 +50,14 @@ private:
 // iteration; a single process shoots all of it, the default).
 struct RaySlice {
     std::uint64_t begin = 0, end = UINT64_MAX;
+};
+
+// The rays of an iteration may come in parts with sources of their own (the control variate's
+// zero surfaces, docs/design.md §3.11): a part's ray k has the stream key first_key + k, and
+// every part deposits in the iteration's common quantum. The default: one part.
+struct RayPart {
+    std::uint64_t first_key = 0;
+    std::optional<PowerQuantum> quantum;  // none: the part's own, from its sources
 };
 
 struct IterationOutcome {
@@ -94,6 +101,9 @@ double zero_surfaces_seen(const RefinementContext& ctx, const ZeroSurfaces& zero
 IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
                                  std::uint32_t iteration, std::uint64_t rays, RaySlice slice = {},
                                  const std::function<void(std::uint64_t)>& on_batch = {},
-                                 ShootingBuffers* buffers = nullptr);
+                                 ShootingBuffers* buffers = nullptr, const RayPart& part = {});
+
+// Adds `part`'s rays, power totals and counters to `whole` (both in the same quantum).
+void add_part(IterationOutcome& whole, const IterationOutcome& part);
 
 }  // namespace hmcr

@@ -46,6 +46,15 @@ void add_iteration(SolveStats& st, const IterationOutcome& out) {
     st.back_face_power += out.quantum.power(out.back_face_power);
 }
 
+// The quantum of an iteration shot in two parts: bounds every ray of both (§9.3).
+PowerQuantum common_quantum(const IterationSources& a, std::uint64_t a_rays,
+                            const IterationSources& b, std::uint64_t b_rays) {
+    Rgb bound = Rgb::Zero();
+    if (a_rays > 0) bound = bound.max(a.total / double(a_rays) * a.max_share);
+    if (b_rays > 0) bound = bound.max(b.total / double(b_rays) * b.max_share);
+    return PowerQuantum::for_iteration(bound, a_rays + b_rays);
+}
+
 }  // namespace
 
 double SolveStats::back_face_fraction() const {
@@ -117,7 +126,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     Rgb unshot = h.unshot_power();
     // The cap only guards against a scene that never converges; stop ends real solves.
     ShootingBuffers buffers;
-    IterationSources sources, shifted;
+    IterationSources sources, shifted, zero_sources;
     for (std::uint32_t k = 0; channel_sum(unshot) >= options.stop * emitted && k < 10'000; ++k) {
         const std::uint32_t it = first_iteration + k;
         const auto t0 = Clock::now();
@@ -130,23 +139,41 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
         const Rgb beta = zero ? control_constant(h, *zero) : Rgb::Zero();
         const bool shift = (beta != 0).any();
         rec.control_constant = beta;
-        if (shift) shifted.rebuild(h, beta, *zero);
+        if (shift) {
+            shifted.rebuild(h, beta);
+            zero_sources.rebuild(*zero, -beta);
+        }
         rec.rays = schedule.next(channel_sum(unshot), ratio);
         // Out of rays before the stop criterion: what is unshot stays unshot (an iteration of
         // no rays would push zero received radiosity over it and lose that power).
         if (rec.rays == 0) break;
+        const std::uint64_t zero_rays =
+            shift ? zero_surface_rays(rec.rays, shifted.total, zero_sources.total, zero->seen) : 0;
+        const std::uint64_t side_rays = rec.rays - zero_rays;
         const std::uint64_t done_before = st.rays;
         IterationOutcome out;
         together(ranks, [&] {
-            const RaySlice slice = slice_of(rec.rays, ranks.rank(), ranks.size());
-            out = shoot_iteration(
-                ctx, shift ? shifted : sources, it, rec.rays, slice,
-                [&](std::uint64_t n) {
-                    const double done = double(done_before) + double(n) * ranks.size();
-                    progress.advance(std::min(1.0, done / double(options.rays)));
-                    throw_if_interrupted();
-                },
-                &buffers);
+            std::uint64_t done_parts = 0;
+            auto on_batch = [&](std::uint64_t n) {
+                const double done = double(done_before) + double(done_parts + n) * ranks.size();
+                progress.advance(std::min(1.0, done / double(options.rays)));
+                throw_if_interrupted();
+            };
+            if (!shift) {
+                out = shoot_iteration(ctx, sources, it, rec.rays,
+                                      slice_of(rec.rays, ranks.rank(), ranks.size()), on_batch,
+                                      &buffers);
+                return;
+            }
+            // The sides' rays and the zero surfaces', from sources of their own, in one quantum.
+            const RayPart sides{0, common_quantum(shifted, side_rays, zero_sources, zero_rays)};
+            out = shoot_iteration(ctx, shifted, it, side_rays,
+                                  slice_of(side_rays, ranks.rank(), ranks.size()), on_batch,
+                                  &buffers, sides);
+            done_parts = out.rays;
+            add_part(out, shoot_iteration(ctx, zero_sources, it, zero_rays,
+                                          slice_of(zero_rays, ranks.rank(), ranks.size()),
+                                          on_batch, &buffers, {side_rays, sides.quantum}));
         });
         merge_iteration(h, out, ranks, !fixed_mesh);
         st.shooting_seconds += seconds_since(t0);

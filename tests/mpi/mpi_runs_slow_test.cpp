@@ -1,5 +1,6 @@
 // MPI runs give what one process gives (docs/cluster.md): `mpirun -n 1, 2, 3` of a refined
-// solve, a refined-then-frozen solve, a budget solve, a reference and a study against the same command without mpirun, file
+// solve, a refined-then-frozen solve (also with the control variate), a budget solve, a
+// reference and a study against the same command without mpirun, file
 // for file and byte for byte; summaries and tables equal but for timings and the per-process
 // cache counters. And a study killed on one rank resumes with another rank count.
 #include <gtest/gtest.h>
@@ -83,6 +84,18 @@ TEST(MpiRuns, RefineThenFreezeIsTheSameBitsOnAnyRankCount) {
     TempDir dir;
     against_one_process(dir.path(),
                         "solve cornell --oracle kl --refine-share 0.4 --rays 300000 -q -o ",
+                        ".vtp", {1, 2, 3}, [&](const std::string& name, int k) {
+                            expect_same_solve(dir.path(), name, k);
+                        });
+}
+
+// The frozen pass with the control variate (docs/design.md §3.11): its zero surfaces, pilot
+// and beta are the same on every rank.
+TEST(MpiRuns, TheControlVariateIsTheSameBitsOnAnyRankCount) {
+    TempDir dir;
+    against_one_process(dir.path(),
+                        "solve cornell --oracle kl --refine-share 0.4 --control-variate constant "
+                        "--rays 300000 -q -o ",
                         ".vtp", {1, 2, 3}, [&](const std::string& name, int k) {
                             expect_same_solve(dir.path(), name, k);
                         });
