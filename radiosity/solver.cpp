@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 
@@ -53,6 +54,28 @@ PowerQuantum common_quantum(const IterationSources& a, std::uint64_t a_rays,
     if (a_rays > 0) bound = bound.max(a.total / double(a_rays) * a.max_share);
     if (b_rays > 0) bound = bound.max(b.total / double(b_rays) * b.max_share);
     return PowerQuantum::for_iteration(bound, a_rays + b_rays);
+}
+
+// This rank's slice of an iteration's `rays`: all from `sources`, or with the control variate
+// the last `zero_rays` of them from the zero surfaces' sources, in one quantum (§3.11).
+// `on_batch` gets the rays this rank has shot so far.
+IterationOutcome shoot_on_rank(const RefinementContext& ctx, const IterationSources& sources,
+                               const IterationSources* zero, std::uint32_t it,
+                               std::uint64_t rays, std::uint64_t zero_rays, const Ranks& ranks,
+                               const std::function<void(std::uint64_t)>& on_batch,
+                               ShootingBuffers& buffers) {
+    const auto slice = [&](std::uint64_t n) { return slice_of(n, ranks.rank(), ranks.size()); };
+    if (!zero) return shoot_iteration(ctx, sources, it, rays, slice(rays), on_batch, &buffers);
+    const std::uint64_t side_rays = rays - zero_rays;
+    const RayPart sides{0, common_quantum(sources, side_rays, *zero, zero_rays)};
+    IterationOutcome out =
+        shoot_iteration(ctx, sources, it, side_rays, slice(side_rays), on_batch, &buffers, sides);
+    const std::uint64_t done = out.rays;
+    add_part(out, shoot_iteration(
+                      ctx, *zero, it, zero_rays, slice(zero_rays),
+                      [&](std::uint64_t n) { if (on_batch) on_batch(done + n); }, &buffers,
+                      {side_rays, sides.quantum}));
+    return out;
 }
 
 }  // namespace
@@ -149,31 +172,18 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
         if (rec.rays == 0) break;
         const std::uint64_t zero_rays =
             shift ? zero_surface_rays(rec.rays, shifted.total, zero_sources.total, zero->seen) : 0;
-        const std::uint64_t side_rays = rec.rays - zero_rays;
         const std::uint64_t done_before = st.rays;
         IterationOutcome out;
         together(ranks, [&] {
-            std::uint64_t done_parts = 0;
-            auto on_batch = [&](std::uint64_t n) {
-                const double done = double(done_before) + double(done_parts + n) * ranks.size();
-                progress.advance(std::min(1.0, done / double(options.rays)));
-                throw_if_interrupted();
-            };
-            if (!shift) {
-                out = shoot_iteration(ctx, sources, it, rec.rays,
-                                      slice_of(rec.rays, ranks.rank(), ranks.size()), on_batch,
-                                      &buffers);
-                return;
-            }
-            // The sides' rays and the zero surfaces', from sources of their own, in one quantum.
-            const RayPart sides{0, common_quantum(shifted, side_rays, zero_sources, zero_rays)};
-            out = shoot_iteration(ctx, shifted, it, side_rays,
-                                  slice_of(side_rays, ranks.rank(), ranks.size()), on_batch,
-                                  &buffers, sides);
-            done_parts = out.rays;
-            add_part(out, shoot_iteration(ctx, zero_sources, it, zero_rays,
-                                          slice_of(zero_rays, ranks.rank(), ranks.size()),
-                                          on_batch, &buffers, {side_rays, sides.quantum}));
+            out = shoot_on_rank(
+                ctx, shift ? shifted : sources, shift ? &zero_sources : nullptr, it, rec.rays,
+                zero_rays, ranks,
+                [&](std::uint64_t n) {
+                    const double done = double(done_before) + double(n) * ranks.size();
+                    progress.advance(std::min(1.0, done / double(options.rays)));
+                    throw_if_interrupted();
+                },
+                buffers);
         });
         merge_iteration(h, out, ranks, !fixed_mesh);
         st.shooting_seconds += seconds_since(t0);
