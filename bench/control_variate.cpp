@@ -58,8 +58,9 @@ Spread spread(const Scene& scene, ControlVariate cv, int seeds) {
 }  // namespace
 
 int run_control_variate_study(int seeds) {
-    fmt::print("| scene | leaves | mean B | var B, none | var B, constant | gain | s/solve, none | "
-               "s/solve, constant | negative leaves |\n|---|---|---|---|---|---|---|---|---|\n");
+    fmt::print(
+        "| scene | leaves | mean B | var B, none | var B, constant | gain | s/solve, none | "
+        "s/solve, constant | negative leaves |\n|---|---|---|---|---|---|---|---|---|\n");
     for (const char* name : {"cornell", "cube-room", "furnace", "plates", "shadow", "mgf-room"}) {
         const Scene scene = load_scene(name);
         const Spread none = spread(scene, ControlVariate::none, seeds);

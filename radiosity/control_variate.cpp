@@ -1,8 +1,8 @@
 #include "radiosity/control_variate.h"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <utility>
 
 namespace hmcr {
@@ -39,8 +39,7 @@ bool reflects(const PatchMaterial& m) { return (m.reflectance > 0).any(); }
 
 // Whether side (q, side) of reflectance > 0 may see the back of one-sided patch p: both must
 // have a corner strictly in front of the other (a necessary condition for F > 0).
-bool may_see_back(const PatchSet& ps, std::size_t q, std::uint8_t side, std::size_t p,
-                  double tol) {
+bool may_see_back(const PatchSet& ps, std::size_t q, std::uint8_t side, std::size_t p, double tol) {
     const Patch& pp = ps.patches[p];
     const Patch& pq = ps.patches[q];
     return farthest_along(pq, pp.corner[0], -pp.normal) > tol &&
@@ -136,7 +135,8 @@ std::vector<Patch> background_faces(const PatchSet& ps) {
     return open;
 }
 
-ZeroSurfaces::ZeroSurfaces(const PatchSet& ps) : patches(ps.patches), scene_patches(ps.patches.size()) {
+ZeroSurfaces::ZeroSurfaces(const PatchSet& ps)
+    : patches(ps.patches), scene_patches(ps.patches.size()) {
     const Box b = bounding_box(ps);
     const double tol = plane_tolerance(b);
     for (std::size_t p = 0; p < ps.patches.size(); ++p) {

@@ -158,8 +158,8 @@ double reflected_fraction(const RefinementContext& ctx, const IterationSources& 
     GeneratedRays batch;
     batch.resize(rays);
     std::vector<BatchHit> hits(rays);
-    generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration, kPilotStream,
-                  rays, batch, 0);
+    generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration,
+                  kPilotStream, rays, batch, 0);
     ctx.scene.first_hits(batch, 0, rays, hits);
     double reflected = 0;
     for (std::uint64_t k = 0; k < rays; ++k) {

@@ -1,13 +1,14 @@
 // The constant control variate (docs/design.md §3.11): exact where the plain estimator is
 // exact, the same expected values, less spread where the unshot radiosity is nearly constant,
 // and the same bits for any thread count.
+#include "radiosity/control_variate.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "meshes/scene.h"
-#include "radiosity/control_variate.h"
 #include "radiosity/solver.h"
 #include "tests/support/analytic.h"
 #include "tests/support/statistics.h"
@@ -31,8 +32,8 @@ SolverOptions fixed_mesh(std::uint64_t rays, std::uint64_t seed, double max_area
 // seed.
 TEST(ControlVariate, FurnaceIsExact) {
     const double rho = 0.5, e = 1;
-    const auto mesh = make_patch_mesh(
-        inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(rho), Rgb::Constant(e)));
+    const auto mesh =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(rho), Rgb::Constant(e)));
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
         const Solution sol = solve(mesh, fixed_mesh(30'000, seed, 1.0 / 64));
         const double k = double(sol.stats.iterations.size());
@@ -68,6 +69,28 @@ TEST(ControlVariate, SameExpectationLessSpreadInAClosedBox) {
     }
     EXPECT_TRUE(t_test("B with minus B without", difference, 0));
     EXPECT_TRUE(variance_smaller("spread of B over seeds", with, without));
+}
+
+// The plates of solver_test (emitter rho = 0, E = 1; receiver rho = 0.5, 1 m above, B = rho E F):
+// the open bounding box outweighs the lit area, so beta is 0 in every iteration and the solve
+// is the plain one, bit for bit, with its exact expectation.
+TEST(ControlVariate, PlatesKeepThePlainIterations) {
+    TestPolygon emitter = axis_rectangle(2, 0, {0, 0}, {1, 1}, true);
+    emitter.emission = Rgb::Constant(1);
+    TestPolygon receiver = axis_rectangle(2, 1, {0, 0}, {1, 1}, false);
+    receiver.reflectance = Rgb::Constant(0.5);
+    const auto mesh = make_patch_mesh({emitter, receiver});
+    SolverOptions o = fixed_mesh(50'000, 4, 1.0 / 16);
+    const Solution cv = solve(mesh, o);
+    o.control_variate = ControlVariate::none;
+    const Solution plain = solve(mesh, o);
+    for (const IterationRecord& it : cv.stats.iterations)
+        EXPECT_TRUE((it.control_constant == 0).all());
+    std::vector<Rgb> a, b;
+    cv.hierarchy->for_each_leaf([&](const Element& l) { a.push_back(l.radiosity); });
+    plain.hierarchy->for_each_leaf([&](const Element& l) { b.push_back(l.radiosity); });
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) ASSERT_TRUE((a[k] == b[k]).all()) << "leaf " << k;
 }
 
 // Open: two parallel unit plates 0.1 m apart, two-sided, both sides emitting 1 and reflecting
@@ -113,7 +136,8 @@ TEST(ControlVariate, SameBitsForOneAndTwoThreads) {
     o.threads = 2;
     const Solution two = solve(scene.mesh, o);
     bool shifted = false;
-    for (const IterationRecord& it : one.stats.iterations) shifted |= (it.control_constant != 0).any();
+    for (const IterationRecord& it : one.stats.iterations)
+        shifted |= (it.control_constant != 0).any();
     EXPECT_TRUE(shifted);
     std::vector<Rgb> a, b;
     one.hierarchy->for_each_leaf([&](const Element& l) { a.push_back(l.radiosity); });
@@ -125,8 +149,8 @@ TEST(ControlVariate, SameBitsForOneAndTwoThreads) {
 // The zero surfaces: a closed box has none; an open one its open faces; the back of a
 // one-sided patch counts where a reflecting side faces it.
 TEST(ControlVariate, ZeroSurfaces) {
-    const auto closed = make_patch_mesh(
-        inward_box({0, 0, 0}, {1, 1, 1}, 1, Rgb::Constant(0.5), Rgb::Constant(1)));
+    const auto closed =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 1, Rgb::Constant(0.5), Rgb::Constant(1)));
     const ZeroSurfaces none(build_patch_set(closed));
     EXPECT_FALSE(none.has_background());
     EXPECT_TRUE(none.backs.empty());
