@@ -159,17 +159,18 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
         // The schedule and its pilot rays follow the true unshot power, with or without the
         // control variate; the rays shoot it minus beta where beta is not 0.
         const double ratio = reflected_fraction(ctx, sources, it, kPilotRays);
-        const Rgb beta = zero ? control_constant(h, *zero) : Rgb::Zero();
+        rec.rays = schedule.next(channel_sum(unshot), ratio);
+        // Out of rays before the stop criterion: what is unshot stays unshot (an iteration of
+        // no rays would push zero received radiosity over it and lose that power).
+        if (rec.rays == 0) break;
+        // A shifted iteration needs a ray for each of its two parts.
+        const Rgb beta = zero && rec.rays >= 2 ? control_constant(h, *zero) : Rgb::Zero();
         const bool shift = (beta != 0).any();
         rec.control_constant = beta;
         if (shift) {
             shifted.rebuild(h, beta);
             zero_sources.rebuild(*zero, -beta);
         }
-        rec.rays = schedule.next(channel_sum(unshot), ratio);
-        // Out of rays before the stop criterion: what is unshot stays unshot (an iteration of
-        // no rays would push zero received radiosity over it and lose that power).
-        if (rec.rays == 0) break;
         const std::uint64_t zero_rays =
             shift ? zero_surface_rays(rec.rays, shifted.total, zero_sources.total, zero->seen) : 0;
         const std::uint64_t done_before = st.rays;
