@@ -98,7 +98,7 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
             ? fmt::format("{} with {} rays, the error of the mesh itself", frozen, *o.mesh_rays)
             : std::string("mesh: not measured (--mesh-rays 0)");
     return fmt::format(
-        "{}, N_s = {}, link weight {}, refine share {}, budget tolerance {}%, {} seeds from {}. "
+        "{}, N_s = {}, link weight {}, refine share {}{}, budget tolerance {}%, {} seeds from {}. "
         "Mean ± standard "
         "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
         "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
@@ -106,6 +106,10 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
         "against a traced reference, which has no mesh); "
         "{}; seconds: the budget search. The best mean of each error column is in bold.",
         rays, o.solver.lines, name(o.solver.link_weight), o.solver.refine_share,
+        // Named only when on, so that the tables of plain studies keep their bytes.
+        o.solver.control_variate == ControlVariate::none
+            ? std::string()
+            : fmt::format(", control variate {}", name(o.solver.control_variate)),
         100 * o.budget_tolerance, o.seeds,
         o.solver.seed, views.size(), fmt::join(views, ", "), mesh);
 }
@@ -240,7 +244,7 @@ void write_study_tables(OutputSet& out, const std::string& scene, const StudyOpt
                         const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     nlohmann::json all = nlohmann::json::array();
     for (const CellResult& c : cells) all.push_back(cell_to_json(c));
-    const nlohmann::json table = {{"scene", scene},
+    nlohmann::json table = {{"scene", scene},
                                   {"options",
                                    {{"budgets", o.budgets},
                                     {"oracles", oracle_order(cells)},
@@ -257,6 +261,10 @@ void write_study_tables(OutputSet& out, const std::string& scene, const StudyOpt
                                     {"reference", o.reference.string()}}},
                                   {"views", views},
                                   {"cells", all}};
+    nlohmann::json& options = table["options"];
+    if (o.solver.control_variate != ControlVariate::none) {
+        options["control_variate"] = name(o.solver.control_variate);
+    }
     write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
     write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));
     write_text_atomically(out.temp(o.output / "table.md"), md_table(scene, o, views, cells));
