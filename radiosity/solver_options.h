@@ -71,7 +71,7 @@ concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
     X(LinkWeight,    link_weight, LinkWeight::unshot, true,           "unshot or total",            \
       scene_file, "a link's weight w_ij: the receiver's reflectance times the source's unshot "  \
                   "(Delta B) or total (B) radiosity")                                           \
-    X(double,        refine_share, 1,       v > 0 && v <= 1,         "in (0, 1]",                 \
+    X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \
     X(double,        stop,      0.01,       v > 0 && v < 1,          "in (0, 1)",                 \
