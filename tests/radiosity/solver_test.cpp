@@ -61,7 +61,8 @@ void expect_furnace(const SolverOptions& base, int split, std::size_t min_leaves
         SolverOptions o = base;
         o.seed = seed;
         const Solution sol = solve(mesh, o);
-        const bool frozen = o.refine_share < 1;
+        const bool frozen = std::any_of(sol.stats.iterations.begin(), sol.stats.iterations.end(),
+                                        [](const IterationRecord& it) { return it.frozen; });
         const auto counted = std::size_t(std::count_if(
             sol.stats.iterations.begin(), sol.stats.iterations.end(),
             [&](const IterationRecord& it) { return it.frozen == frozen; }));
@@ -153,7 +154,8 @@ void expect_energy_balance(const Solution& sol) {
         const Rgb irradiance = (h.root(p).radiosity - h.patch_set().emission(patch)) / rho;
         absorbed += patch.area * (1 - rho) * irradiance;
     }
-    const bool frozen = sol.stats.refining_rays < sol.stats.rays;
+    const bool frozen = std::any_of(sol.stats.iterations.begin(), sol.stats.iterations.end(),
+                                    [](const IterationRecord& it) { return it.frozen; });
     Rgb reflected = Rgb::Zero();
     for (const auto& it : sol.stats.iterations) {
         if (it.frozen == frozen) reflected += it.unshot_after;
