@@ -70,7 +70,8 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
     cmd->add_option("--max-area", o.max_area, "largest element area, m^2")->capture_default_str();
     // The uniform mesh has no oracle and no limits; rays and seeds are the reference's own.
     a->flags = add_solver_flags(*cmd, o.solver,
-                                {"oracle", "epsilon", "lines", "min_area", "max_depth", "cache_mb", "link_weight"},
+                                {"oracle", "epsilon", "lines", "min_area", "max_depth", "cache_mb",
+                                 "link_weight", "refine_share"},
                                 {"rays", "seed"});
     cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel of the view images")
         ->capture_default_str();

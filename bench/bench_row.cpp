@@ -32,6 +32,8 @@ RowResult run_row(const RowSpec& spec) {
     o.rays = spec.rays;
     o.lines = kLines;
     o.threads = spec.threads;
+    // The refining shooter is what the floor bounds: every ray descends and deposits.
+    o.refine_share = 1;
     double first_shooting = 0;
     {
         const Solution sol = solve(scene.mesh, o);

@@ -218,9 +218,15 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     return sol;
 }
 
+// Refine-then-freeze applies to a refined mesh of at least two rays; a fixed mesh (a reference's
+// uniform one) has nothing to refine, so all its rays solve it.
+bool refines_then_freezes(const SolverOptions& o) {
+    return o.refine_share < 1 && o.uniform_max_area <= 0 && o.rays >= 2;
+}
+
 // The refining pass's rays: its share of the whole, at least one, leaving one for the frozen pass.
 std::uint64_t refining_rays(const SolverOptions& o) {
-    if (o.refine_share >= 1 || o.rays < 2) return o.rays;
+    if (!refines_then_freezes(o)) return o.rays;
     const auto n = std::uint64_t(std::llround(o.refine_share * double(o.rays)));
     return std::clamp<std::uint64_t>(n, 1, o.rays - 1);
 }
@@ -253,7 +259,7 @@ Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& p
 
 Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     const SolverOptions& options = refined.options;
-    if (options.refine_share >= 1 || options.rays < 2) return refined;
+    if (!refines_then_freezes(options)) return refined;
     SolverOptions o = options;
     o.rays = options.rays - refining_rays(options);
     Solution sol = solve_with(refined.hierarchy->patch_set(), o, refined.hierarchy.get(),
@@ -289,7 +295,7 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
 
 Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress,
                const Ranks& ranks) {
-    if (options.refine_share >= 1) {
+    if (!refines_then_freezes(options)) {
         return solve_with(std::move(patches), options, nullptr, progress, ranks);
     }
     validate(options);

@@ -84,7 +84,7 @@ concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
     X(ControlVariate, control_variate, ControlVariate::none, true,  "none or constant",          \
       scene_file, "on a fixed mesh, shoot the unshot radiosity minus a constant per channel and "\
                   "add the constant's share exactly (none: shoot it all)")                       \
-    X(double,        refine_share, 1,       v > 0 && v <= 1,         "in (0, 1]",                 \
+    X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \
     X(double,        stop,      0.01,       v > 0 && v < 1,          "in (0, 1)",                 \

@@ -213,7 +213,7 @@ def rpk_command(rpk, mgf, args, clustering):
 
 def hmcr_command(args, out_dir):
     return [args.hmcr, "solve", "cornell", "--oracle", "power", "--threads", "1",
-            "--epsilon", str(args.hmcr_epsilon), "--rays", str(args.rays), "-q",
+            "--refine-share", "1", "--epsilon", str(args.hmcr_epsilon), "--rays", str(args.rays), "-q",
             "-o", os.path.join(out_dir, "cornell.vtp")]
 
 

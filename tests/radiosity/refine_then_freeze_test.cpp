@@ -96,6 +96,19 @@ TEST(RefineThenFreeze, OneAndTwoThreadsGiveTheSameBits) {
     EXPECT_EQ(leaf_values(*one.hierarchy), leaf_values(*two.hierarchy));
 }
 
+// A reference's uniform mesh has nothing to refine: every ray solves it, whatever the share.
+TEST(RefineThenFreeze, AUniformMeshIgnoresTheShare) {
+    const Scene scene = load_scene("cornell");
+    SolverOptions o = options("power", 100'000, 0.1);
+    o.uniform_max_area = 0.01;
+    const Solution shared = solve(scene.mesh, o);
+    o.refine_share = 1;
+    const Solution whole = solve(scene.mesh, o);
+    EXPECT_EQ(frozen_iterations(shared.stats), 0u);
+    EXPECT_EQ(shared.stats.iterations.size(), whole.stats.iterations.size());
+    EXPECT_EQ(leaf_values(*shared.hierarchy), leaf_values(*whole.hierarchy));
+}
+
 // A budget search probes with the refining pass and freezes the accepted probe: its leaves are
 // within the tolerance and those of the same search with the refining share of the rays.
 TEST(RefineThenFreeze, ABudgetSearchFreezesTheAcceptedProbe) {
