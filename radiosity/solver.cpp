@@ -35,13 +35,16 @@ std::unique_ptr<LinkCache> make_link_cache(const Oracle& oracle, const SolverOpt
     return std::make_unique<LinkCache>(std::size_t(o.cache_mb * (1 << 20)));
 }
 
-void add_iteration(SolveStats& st, const IterationOutcome& out) {
+// `shifted`: the iteration shot Delta B - beta (§3.11); its signed powers stay out of the power
+// balance, which keeps the iterations that shot the unshot power itself (the first always).
+void add_iteration(SolveStats& st, const IterationOutcome& out, bool shifted) {
     st.rays += out.rays;
     st.oracle_calls += out.counters.oracle_calls;
     st.oracle_evaluations += out.counters.oracle_evaluations;
     st.cache_hits += out.counters.cache_hits;
     st.lines_cast += out.counters.lines_cast;
     st.oracle_seconds += 1e-9 * double(out.counters.oracle_nanoseconds);
+    if (shifted) return;
     st.shot_power += out.quantum.power(out.shot_power);
     st.escaped_power += out.quantum.power(out.escaped_power);
     st.back_face_power += out.quantum.power(out.back_face_power);
@@ -197,7 +200,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
         rec.leaves_after = h.leaf_count();
         rec.seconds = seconds_since(t0);
         schedule.record(rec.rays);
-        add_iteration(st, out);
+        add_iteration(st, out, shift);
         st.iterations.push_back(rec);
     }
     st.unshot_power = unshot;

@@ -98,7 +98,8 @@ void read_points(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
         for (int k = 0; k < 3; ++k) check.finite_at_least(p[k], -HUGE_VAL, "a point coordinate");
         m.points.emplace_back(p[0], p[1], p[2]);
         Rgb r;
-        for (int k = 0; k < 3; ++k) r[k] = check.finite_at_least<double>(b->GetValue(3 * i + k), 0, "Radiosity");
+        // Negative where a signed estimator (the control variate, design.md §3.11) undershoots.
+        for (int k = 0; k < 3; ++k) r[k] = check.finite_at_least<double>(b->GetValue(3 * i + k), -HUGE_VAL, "Radiosity");
         m.point_radiosity.push_back(r);
     }
 }
@@ -129,7 +130,9 @@ void read_cell_data(vtkPolyData* data, const VtpChecker& check, std::uint64_t pa
     auto* area = check.array<vtkDoubleArray>(cd, "ElementArea", 1, n);
     for (vtkIdType c = 0; c < n; ++c) {
         Rgb r;
-        for (int k = 0; k < 3; ++k) r[k] = check.finite_at_least<double>(eb->GetValue(3 * c + k), 0, "ElementRadiosity");
+        for (int k = 0; k < 3; ++k) {
+            r[k] = check.finite_at_least<double>(eb->GetValue(3 * c + k), -HUGE_VAL, "ElementRadiosity");
+        }
         m.element_radiosity.push_back(r);
         m.hierarchy_level.push_back(check.finite_at_least(level->GetValue(c), 0, "HierarchyLevel"));
         const int p = check.finite_at_least(patch->GetValue(c), 0, "PatchId");

@@ -100,6 +100,18 @@ TEST_F(HostileSolution, ValuesOutOfRangeAreRefused) {
     expect_refused("nan.vtp", "Radiosity nan");
 }
 
+// A signed estimator (the control variate, docs/design.md §3.11) may leave a dim leaf below 0:
+// a value, not damage. Both readers take it; the image shows it black.
+TEST_F(HostileSolution, NegativeRadiosityIsAValue) {
+    spoilt("negative.vtp", [](vtkPolyData* d) {
+        vtkFloatArray::SafeDownCast(d->GetPointData()->GetArray("Radiosity"))->SetValue(0, -0.25f);
+        vtkFloatArray::SafeDownCast(d->GetCellData()->GetArray("ElementRadiosity"))
+            ->SetValue(1, -0.5f);
+    });
+    accepted("render negative.vtp --scene plates.json -o negative.png");
+    accepted("info negative.vtp --scene plates.json");
+}
+
 TEST_F(HostileSolution, ASolutionOfAnotherSceneIsRefused) {
     refused("render good.vtp --scene cornell -o x.png", "is a solution of scene 'plates'");
     refused("info good.vtp --scene cornell", "not of 'cornell'");

@@ -126,6 +126,22 @@ TEST(ControlVariate, OpenTwoSidedPlates) {
 
 // The Cornell box's open side is background, its walls' backs are not seen: the same leaves
 // and values, bit for bit, with 1 and 2 threads.
+// A shifted iteration's powers are signed sums of Delta B - beta and -beta: the summary's
+// balance keeps the iterations that shot the unshot power itself, so on the Cornell box (open
+// at the front, no flipped faces) the shot power is the first iteration's emitted power at least,
+// and the escaped and back-face shares stay the plain solve's kind of numbers.
+TEST(ControlVariate, ThePowerBalanceKeepsThePlainIterations) {
+    const Scene scene = load_scene("cornell");
+    const Solution sol = solve(scene.mesh, fixed_mesh(400'000, 2, 1e-3));
+    bool shifted = false;
+    for (const IterationRecord& it : sol.stats.iterations) shifted |= (it.control_constant != 0).any();
+    ASSERT_TRUE(shifted);
+    EXPECT_GE(sol.stats.shot_power.sum(), 0.99 * sol.stats.emitted_power.sum());
+    EXPECT_GT(sol.stats.escaped_power.minCoeff(), 0);
+    EXPECT_GE(sol.stats.back_face_fraction(), 0);
+    EXPECT_LT(sol.stats.back_face_fraction(), 0.01);
+}
+
 TEST(ControlVariate, SameBitsForOneAndTwoThreads) {
     const Scene scene = load_scene("cornell");
     SolverOptions o = fixed_mesh(60'000, 3, 0.0);
