@@ -150,24 +150,33 @@ Vec3 hit_point(const GeneratedRays& rays, std::size_t k, float distance) {
 
 }  // namespace
 
-double reflected_fraction(const RefinementContext& ctx, const IterationSources& sources,
-                          std::uint32_t iteration, std::uint64_t rays) {
-    const Hierarchy& h = ctx.hierarchy;
-    if (sources.total <= 0 || rays == 0) return 0;
+// `rays` pilot rays from `sources` on the pilot streams of `key`, traced without descent or
+// deposit: visit(material, region) for each that lands on a side, with the side's material and
+// the source region the ray left.
+template <class Visit>
+void trace_pilots(const RefinementContext& ctx, const IterationSources& sources,
+                  std::uint32_t key, std::uint64_t rays, Visit visit) {
     set_tracing_float_mode();
     GeneratedRays batch;
     batch.resize(rays);
     std::vector<BatchHit> hits(rays);
-    generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration,
-                  kPilotStream, rays, batch, 0);
+    generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, key, kPilotStream,
+                  rays, batch, 0);
     ctx.scene.first_hits(batch, 0, rays, hits);
-    double reflected = 0;
+    const PatchSet& ps = ctx.hierarchy.patch_set();
     for (std::uint64_t k = 0; k < rays; ++k) {
-        const std::optional<std::uint8_t> side = hit_side(h.patch_set(), hits[k], batch, k);
-        if (!side) continue;
-        const PatchMaterial& m = h.patch_set().material(hits[k].patch, *side);
-        reflected += channel_sum(m.reflectance * sources.share[batch.region[k]]);
+        const std::optional<std::uint8_t> side = hit_side(ps, hits[k], batch, k);
+        if (side) visit(ps.material(hits[k].patch, *side), batch.region[k]);
     }
+}
+
+double reflected_fraction(const RefinementContext& ctx, const IterationSources& sources,
+                          std::uint32_t iteration, std::uint64_t rays) {
+    if (sources.total <= 0 || rays == 0) return 0;
+    double reflected = 0;
+    trace_pilots(ctx, sources, iteration, rays, [&](const PatchMaterial& m, std::uint32_t region) {
+        reflected += channel_sum(m.reflectance * sources.share[region]);
+    });
     return reflected / double(rays);
 }
 
@@ -184,19 +193,10 @@ double zero_surfaces_seen(const RefinementContext& ctx, const ZeroSurfaces& zero
     IterationSources sources;
     sources.rebuild(zero, Rgb::Ones());
     if (sources.total <= 0 || rays == 0) return 1;
-    set_tracing_float_mode();
-    GeneratedRays batch;
-    batch.resize(rays);
-    std::vector<BatchHit> hits(rays);
-    generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, kZeroPilotKey,
-                  kPilotStream, rays, batch, 0);
-    ctx.scene.first_hits(batch, 0, rays, hits);
-    const PatchSet& ps = ctx.hierarchy.patch_set();
     std::uint64_t seen = 0;
-    for (std::uint64_t k = 0; k < rays; ++k) {
-        const std::optional<std::uint8_t> side = hit_side(ps, hits[k], batch, k);
-        seen += side && (ps.material(hits[k].patch, *side).reflectance > 0).any();
-    }
+    trace_pilots(ctx, sources, kZeroPilotKey, rays, [&](const PatchMaterial& m, std::uint32_t) {
+        seen += (m.reflectance > 0).any();
+    });
     return double(seen) / double(rays);
 }
 
