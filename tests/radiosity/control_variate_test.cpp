@@ -17,6 +17,15 @@
 namespace hmcr::test {
 namespace {
 
+// The same leaves with the same radiosity, bit for bit.
+void expect_same_leaves(const Hierarchy& x, const Hierarchy& y) {
+    std::vector<Rgb> a, b;
+    x.for_each_leaf([&](const Element& l) { a.push_back(l.radiosity); });
+    y.for_each_leaf([&](const Element& l) { b.push_back(l.radiosity); });
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) ASSERT_TRUE((a[k] == b[k]).all()) << "leaf " << k;
+}
+
 SolverOptions fixed_mesh(std::uint64_t rays, std::uint64_t seed, double max_area) {
     SolverOptions o;
     o.rays = rays;
@@ -75,22 +84,14 @@ TEST(ControlVariate, SameExpectationLessSpreadInAClosedBox) {
 // the open bounding box outweighs the lit area, so beta is 0 in every iteration and the solve
 // is the plain one, bit for bit, with its exact expectation.
 TEST(ControlVariate, PlatesKeepThePlainIterations) {
-    TestPolygon emitter = axis_rectangle(2, 0, {0, 0}, {1, 1}, true);
-    emitter.emission = Rgb::Constant(1);
-    TestPolygon receiver = axis_rectangle(2, 1, {0, 0}, {1, 1}, false);
-    receiver.reflectance = Rgb::Constant(0.5);
-    const auto mesh = make_patch_mesh({emitter, receiver});
+    const auto mesh = unit_plates(0.5);
     SolverOptions o = fixed_mesh(50'000, 4, 1.0 / 16);
     const Solution cv = solve(mesh, o);
     o.control_variate = ControlVariate::none;
     const Solution plain = solve(mesh, o);
     for (const IterationRecord& it : cv.stats.iterations)
         EXPECT_TRUE((it.control_constant == 0).all());
-    std::vector<Rgb> a, b;
-    cv.hierarchy->for_each_leaf([&](const Element& l) { a.push_back(l.radiosity); });
-    plain.hierarchy->for_each_leaf([&](const Element& l) { b.push_back(l.radiosity); });
-    ASSERT_EQ(a.size(), b.size());
-    for (std::size_t k = 0; k < a.size(); ++k) ASSERT_TRUE((a[k] == b[k]).all()) << "leaf " << k;
+    expect_same_leaves(*cv.hierarchy, *plain.hierarchy);
 }
 
 // Open: two parallel unit plates 0.1 m apart, two-sided, both sides emitting 1 and reflecting
@@ -155,11 +156,7 @@ TEST(ControlVariate, SameBitsForOneAndTwoThreads) {
     for (const IterationRecord& it : one.stats.iterations)
         shifted |= (it.control_constant != 0).any();
     EXPECT_TRUE(shifted);
-    std::vector<Rgb> a, b;
-    one.hierarchy->for_each_leaf([&](const Element& l) { a.push_back(l.radiosity); });
-    two.hierarchy->for_each_leaf([&](const Element& l) { b.push_back(l.radiosity); });
-    ASSERT_EQ(a.size(), b.size());
-    for (std::size_t k = 0; k < a.size(); ++k) ASSERT_TRUE((a[k] == b[k]).all()) << "leaf " << k;
+    expect_same_leaves(*one.hierarchy, *two.hierarchy);
 }
 
 // The zero surfaces: a closed box has none; an open one its open faces; the back of a

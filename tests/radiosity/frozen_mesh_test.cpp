@@ -18,13 +18,7 @@ namespace {
 // (rho = 0.5), whose exact radiosity at (x, y) is rho E F(point -> emitter).
 constexpr double kRho = 0.5;
 
-PatchMesh plates() {
-    TestPolygon emitter = axis_rectangle(2, 0, {0, 0}, {1, 1}, true);
-    emitter.emission = Rgb::Constant(1);
-    TestPolygon receiver = axis_rectangle(2, 1, {0, 0}, {1, 1}, false);
-    receiver.reflectance = Rgb::Constant(kRho);
-    return make_patch_mesh({emitter, receiver});
-}
+PatchMesh plates() { return unit_plates(kRho); }
 
 double exact_b(double x, double y) {
     return kRho * point_to_parallel_rectangle(-x, 1 - x, -y, 1 - y, 1);

@@ -50,11 +50,7 @@ std::size_t frozen_iterations(const SolveStats& st) {
 // frozen pass's first iteration reaches the receiver, its N_0 rays each hitting it with
 // probability F, so the receiver's B = rho hits / N_0 is a binomial mean of rho F.
 TEST(RefineThenFreeze, PlatesReceiverGetsRhoTimesEmissionTimesFormFactor) {
-    TestPolygon emitter = axis_rectangle(2, 0, {0, 0}, {1, 1}, true);
-    emitter.emission = Rgb::Constant(1);
-    TestPolygon receiver = axis_rectangle(2, 1, {0, 0}, {1, 1}, false);
-    receiver.reflectance = Rgb::Constant(0.5);
-    const PatchMesh mesh = make_patch_mesh({emitter, receiver});
+    const PatchMesh mesh = unit_plates(0.5);
     for (const char* oracle : {"power", "kl"}) {
         SolverOptions o = options(oracle, 400'000, 0.5);
         o.epsilon = 1e-3;

@@ -34,11 +34,7 @@ protected:
 // whose radiosity is rho E F. Only the first iteration reaches the receiver, with N_0 rays
 // each hitting it with probability F: B = rho hits / (N_0 A) is a binomial mean.
 TEST_P(EveryOracle, PlatesReceiverGetsRhoTimesEmissionTimesFormFactor) {
-    TestPolygon emitter = axis_rectangle(2, 0, {0, 0}, {1, 1}, true);
-    emitter.emission = Rgb::Constant(1);
-    TestPolygon receiver = axis_rectangle(2, 1, {0, 0}, {1, 1}, false);
-    receiver.reflectance = Rgb::Constant(0.5);
-    const Solution sol = solve(make_patch_mesh({emitter, receiver}), options(400'000, 21));
+    const Solution sol = solve(unit_plates(0.5), options(400'000, 21));
     const double f = parallel_rectangles(1, 1, 1), n0 = double(sol.stats.iterations[0].rays);
     const double se = 0.5 * std::sqrt(f * (1 - f) / n0);
     for (int c = 0; c < 3; ++c) {

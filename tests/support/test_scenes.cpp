@@ -77,6 +77,14 @@ TestPolygon axis_rectangle(int axis, double value, const Vec2& lo, const Vec2& h
     return poly;
 }
 
+PatchMesh unit_plates(double rho) {
+    TestPolygon emitter = axis_rectangle(2, 0, {0, 0}, {1, 1}, true);
+    emitter.emission = Rgb::Constant(1);
+    TestPolygon receiver = axis_rectangle(2, 1, {0, 0}, {1, 1}, false);
+    receiver.reflectance = Rgb::Constant(rho);
+    return make_patch_mesh({emitter, receiver});
+}
+
 std::vector<TestPolygon> inward_box(const Vec3& lo, const Vec3& hi, int n, const Rgb& rho,
                                     const Rgb& emission) {
     std::vector<TestPolygon> faces;

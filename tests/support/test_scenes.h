@@ -30,6 +30,10 @@ PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons);
 // coordinates (cyclic order), facing +axis when `positive`.
 TestPolygon axis_rectangle(int axis, double value, const Vec2& lo, const Vec2& hi, bool positive);
 
+// The solver tests' plates: a unit square emitter (rho 0, E 1) at z = 0 facing up, and 1 m above
+// it a unit square receiver of reflectance rho facing down, whose B is rho E F.
+PatchMesh unit_plates(double rho);
+
 // The six faces of the box [lo, hi], facing inward, each split into n x n quads.
 std::vector<TestPolygon> inward_box(const Vec3& lo, const Vec3& hi, int n, const Rgb& rho,
                                     const Rgb& emission);
