@@ -37,6 +37,11 @@ std::string_view name(LinkWeight weight);  // "unshot", "total"
 enum class ControlVariate { none, constant };
 std::string_view name(ControlVariate cv);  // "none", "constant"
 
+// Clusters of patches above the patch roots, and how a cluster receives and emits: none, or as
+// an isotropic cloud of surfaces (docs/design.md §2.7).
+enum class Clustering { none, isotropic };
+std::string_view name(Clustering c);  // "none", "isotropic"
+
 // Settings whose values are names (flags, scene files and summaries spell them): parse gives
 // none for a name that is not one.
 template <class T>
@@ -55,6 +60,11 @@ template <>
 struct SettingNames<ControlVariate> {
     static std::optional<ControlVariate> parse(std::string_view name);
     static std::string_view name(ControlVariate cv) { return hmcr::name(cv); }
+};
+template <>
+struct SettingNames<Clustering> {
+    static std::optional<Clustering> parse(std::string_view name);
+    static std::string_view name(Clustering c) { return hmcr::name(c); }
 };
 template <class T>
 concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
@@ -84,6 +94,9 @@ concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
     X(ControlVariate, control_variate, ControlVariate::none, true,  "none or constant",          \
       scene_file, "on a fixed mesh, shoot the unshot radiosity minus a constant per channel and "\
                   "add the constant's share exactly (none: shoot it all)")                       \
+    X(Clustering,    clustering, Clustering::none, true,            "none or isotropic",         \
+      scene_file, "clusters of patches above the patch roots, each receiving and emitting as an "\
+                  "isotropic cloud of surfaces (none: the hierarchy starts at the patches)")    \
     X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \

@@ -92,6 +92,7 @@ std::string Setting<T>::flag() const {
 template struct Setting<OracleRef>;
 template struct Setting<LinkWeight>;
 template struct Setting<ControlVariate>;
+template struct Setting<Clustering>;
 template struct Setting<double>;
 template struct Setting<int>;
 template struct Setting<std::uint64_t>;
@@ -104,6 +105,7 @@ T parse_named(const Setting<T>& s, std::string_view text) {
 template OracleRef parse_named(const Setting<OracleRef>&, std::string_view);
 template LinkWeight parse_named(const Setting<LinkWeight>&, std::string_view);
 template ControlVariate parse_named(const Setting<ControlVariate>&, std::string_view);
+template Clustering parse_named(const Setting<Clustering>&, std::string_view);
 
 const Oracle* default_oracle() { return oracle_registry().find("kl"); }
 
@@ -131,6 +133,14 @@ std::optional<ControlVariate> SettingNames<ControlVariate>::parse(std::string_vi
 std::string_view name(ControlVariate cv) {
     return cv == ControlVariate::constant ? "constant" : "none";
 }
+
+std::optional<Clustering> SettingNames<Clustering>::parse(std::string_view name) {
+    if (name == "none") return Clustering::none;
+    if (name == "isotropic") return Clustering::isotropic;
+    return std::nullopt;
+}
+
+std::string_view name(Clustering c) { return c == Clustering::isotropic ? "isotropic" : "none"; }
 
 std::uint64_t default_max_elements() {
     const std::uint64_t memory = physical_memory_bytes();
