@@ -42,6 +42,13 @@ std::uint64_t element_key(const ElementId& id) {
     return Rng(id.patch, id.path, id.depth + 256 * std::uint64_t(id.side)).next_u64();
 }
 
+// The cosine at one end of the centre line, along d of length `distance` (negating d is exact):
+// 0 where the side faces away; 1/4 at a cluster's end, which has no normal (docs/design.md §2.7).
+double end_cosine(const Vec3& normal, const Vec3& d, double distance) {
+    if (normal == Vec3::Zero()) return 0.25;
+    return std::max(0.0, normal.dot(d) / distance);
+}
+
 LinkGeometry centre_geometry(const Hierarchy& h, const PatchPair& pp, const Element& i,
                              const Element& j) {
     LinkGeometry g;
@@ -51,8 +58,8 @@ LinkGeometry centre_geometry(const Hierarchy& h, const PatchPair& pp, const Elem
     const Vec3 d = j.centre - i.centre;
     g.centre_distance = d.norm();
     if (g.centre_distance > 0) {
-        g.receiver_cos = std::max(0.0, pp.receiver_normal.dot(d) / g.centre_distance);
-        g.source_cos = std::max(0.0, -pp.source_normal.dot(d) / g.centre_distance);
+        g.receiver_cos = end_cosine(pp.receiver_normal, d, g.centre_distance);
+        g.source_cos = end_cosine(pp.source_normal, -d, g.centre_distance);
     }
     return g;
 }
@@ -64,7 +71,7 @@ double line_factor(const RefinementContext& ctx, const PatchPair& pp, const Elem
     thread_local std::vector<double> kernel;
     kernel.resize(std::size_t(ctx.lines));
     Rng rng(ctx.seed, element_key(receiver.id), element_key(source.id));
-    sample_kernel(ctx.scene, ctx.hierarchy, receiver, source, rng, kernel);
+    sample_kernel(ctx.scene, ctx.hierarchy, receiver, source, rng, kernel, ctx.clusters);
     LinkGeometry g = centre_geometry(ctx.hierarchy, pp, receiver, source);
     g.kernel = kernel;
     const double factor = ctx.oracle.geometric_factor(g);
@@ -113,11 +120,31 @@ namespace {
 // the larger one that may still be split. Counted as `rays` decisions.
 enum class Step { accept, split_receiver, split_source };
 
+// A cluster may always be split, into its children; an element within the limits of §2.5.
+bool splittable(const RefinementContext& ctx, const Element& e) {
+    return is_cluster(e) || ctx.hierarchy.can_subdivide(e);
+}
+
+// The pair of a link with a cluster at an end (docs/design.md §2.7): that end has no normal
+// (isotropic), and a cluster receiver reflects its area-weighted mean reflectance.
+PatchPair cluster_pair(const RefinementContext& ctx, PatchPair pp, const Element& i,
+                       const Element& j) {
+    if (is_cluster(i)) {
+        pp.receiver_normal = Vec3::Zero();
+        pp.reflectance = ctx.clusters->reflectance(i);
+    }
+    if (is_cluster(j)) pp.source_normal = Vec3::Zero();
+    return pp;
+}
+
 Step next_step(const RefinementContext& ctx, const PatchPair& pp, const Element& i,
                const Element& j, RefinementCounters& counters, std::uint64_t rays) {
-    const bool split_i = ctx.hierarchy.can_subdivide(i), split_j = ctx.hierarchy.can_subdivide(j);
+    const bool split_i = splittable(ctx, i), split_j = splittable(ctx, j);
     if (!split_i && !split_j) return Step::accept;
-    if (link_value(ctx, pp, i, j, counters, rays) < ctx.threshold) return Step::accept;
+    const double value = is_cluster(i) || is_cluster(j)
+                             ? link_value(ctx, cluster_pair(ctx, pp, i, j), i, j, counters, rays)
+                             : link_value(ctx, pp, i, j, counters, rays);
+    if (value < ctx.threshold) return Step::accept;
     return split_i && (!split_j || i.area >= j.area) ? Step::split_receiver : Step::split_source;
 }
 
@@ -130,13 +157,20 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
     Element* i = &h.root(query.receiver.patch(), query.receiver.side());
     if (ctx.fixed_mesh) return h.locate(*i, y_uv);
     Element* j = &h.root(query.source.patch(), query.source.side());
+    if (ctx.clusters) i = j = &ctx.clusters->top();
     const PatchPair pp = patch_pair(h, query.receiver, query.source);
     for (;;) {
         const Step step = next_step(ctx, pp, *i, *j, counters, 1);
         if (step == Step::accept) return *i;
         // Refused: the element split is replaced by its child holding the ray's point on it
-        // (the hit point y on the receiver, the origin x on the source).
+        // (the hit point y on the receiver, the origin x on the source), a cluster by its child
+        // holding the ray's side.
         Element*& e = step == Step::split_receiver ? i : j;
+        if (is_cluster(*e)) {
+            const SideRef side = &e == &i ? query.receiver : query.source;
+            e = &ctx.clusters->child_toward(*e, side.value);
+            continue;
+        }
         h.subdivide(*e);
         e = &h.child_containing(*e, &e == &i ? y_uv : x_uv);
     }
@@ -167,6 +201,11 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
         if (step == Step::accept) break;
         const bool on_i = step == Step::split_receiver;
         Element*& e = on_i ? i : j;
+        if (is_cluster(*e)) {  // every ray of the group holds the same sides
+            const LinkQuery& q = d.rays[index[0]];
+            e = &ctx.clusters->child_toward(*e, on_i ? q.receiver.value : q.source.value);
+            continue;
+        }
         Element* const children = h.subdivide(*e);
         const bool quad = h.patch(*e).is_quad();
         std::array<std::size_t, 4> count{};
@@ -262,9 +301,10 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
             const LinkQuery& q = grouped[first];
             const Descent d{grouped, buffers.receivers.data(),
                             patch_pair(h, q.receiver, q.source)};
-            descend(ctx, d, &h.root(q.receiver.patch(), q.receiver.side()),
-                    &h.root(q.source.patch(), q.source.side()), index + first, scratch + first,
-                    child + first, n, c);
+            Element* const top = ctx.clusters ? &ctx.clusters->top() : nullptr;
+            descend(ctx, d, top ? top : &h.root(q.receiver.patch(), q.receiver.side()),
+                    top ? top : &h.root(q.source.patch(), q.source.side()), index + first,
+                    scratch + first, child + first, n, c);
         }
     });
     for (const RefinementCounters& c : local) counters += c;

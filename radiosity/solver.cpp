@@ -14,6 +14,7 @@
 #include "common/interrupt.h"
 #include "common/stopwatch.h"
 #include "rays/embree_scene.h"
+#include "radiosity/clusters.h"
 #include "radiosity/control_variate.h"
 #include "radiosity/link_cache.h"
 #include "radiosity/rank_merge.h"
@@ -81,6 +82,15 @@ IterationOutcome shoot_on_rank(const RefinementContext& ctx, const IterationSour
     return out;
 }
 
+// Push-pull through the clusters, if any, then the sides' trees (docs/design.md §2.7, §3.6).
+void push_pull(Hierarchy& h, ClusterTree* clusters, const PowerQuantum& quantum) {
+    if (!clusters) return h.push_pull(quantum);
+    std::vector<Rgb> from_above;
+    clusters->push(quantum, from_above);
+    h.push_pull(quantum, from_above);
+    clusters->pull();
+}
+
 }  // namespace
 
 double SolveStats::back_face_fraction() const {
@@ -126,6 +136,11 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     }
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
+    // Fixed meshes deposit on the leaf at the hit: they have no use for clusters (§2.7).
+    const std::unique_ptr<ClusterTree> clusters =
+        !fixed_mesh && options.clustering == Clustering::isotropic
+            ? std::make_unique<ClusterTree>(h)
+            : nullptr;
     const RefinementContext ctx{.hierarchy = h,
                                 .oracle = oracle,
                                 .scene = scene,
@@ -134,7 +149,8 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
                                 .seed = options.seed,
                                 .cache = cache.get(),
                                 .fixed_mesh = fixed_mesh,
-                                .link_weight = options.link_weight};
+                                .link_weight = options.link_weight,
+                                .clusters = clusters.get()};
     st.setup_seconds = seconds_since(start);
 
     // The control variate needs every side that may receive light to exist from the start
@@ -189,10 +205,10 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
                 },
                 buffers);
         });
-        merge_iteration(h, out, ranks, !fixed_mesh);
+        merge_iteration(h, out, ranks, !fixed_mesh, clusters.get());
         st.shooting_seconds += seconds_since(t0);
         const auto t1 = Clock::now();
-        h.push_pull(out.quantum);
+        push_pull(h, clusters.get(), out.quantum);
         if (shift) add_constant(h, beta);
         st.push_pull_seconds += seconds_since(t1);
         unshot = rec.unshot_after = h.unshot_power();

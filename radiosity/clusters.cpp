@@ -1,0 +1,155 @@
+#include "radiosity/clusters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "rays/element_sampler.h"
+
+namespace hmcr {
+
+ClusterTree::ClusterTree(Hierarchy& h) : m_h(h) {
+    const PatchSet& ps = h.patch_set();
+    const auto patches = std::uint32_t(h.patch_count());
+    std::uint32_t two_sided = 0;
+    for (std::uint32_t p = 0; p < patches; ++p) {
+        if (ps.two_sided(p)) {
+            h.root(p, kBack);
+            ++two_sided;
+        }
+    }
+    // A binary tree over the patches has patches - 1 inner clusters; a two-sided patch is a
+    // cluster of its two sides.
+    m_elements = std::vector<Element>(patches - 1 + two_sided);
+    m_nodes.resize(m_elements.size());
+    m_position.assign(2 * std::size_t(patches), 0);
+    m_side.reserve(patches + two_sided);
+    m_cumulative.assign(1, 0.0);
+    std::vector<std::uint32_t> order(patches);
+    for (std::uint32_t p = 0; p < patches; ++p) order[p] = p;
+    m_top = build(order);
+}
+
+Element& ClusterTree::new_cluster(std::uint32_t first) {
+    Element& c = m_elements[m_used];
+    c.id = {std::uint32_t(m_used), 0, kClusterSide, 0};
+    m_nodes[m_used].first = first;
+    ++m_used;
+    return c;
+}
+
+// The sides of one patch: its front root, or a cluster of its front and back.
+Element* ClusterTree::leaf(std::uint32_t patch) {
+    const bool two = m_h.patch_set().two_sided(patch);
+    Element* c = two ? &new_cluster(std::uint32_t(m_side.size())) : nullptr;
+    for (std::uint8_t side = kFront; side <= (two ? kBack : kFront); ++side) {
+        const Element& root = m_h.root(patch, side);
+        const std::uint32_t value = 2 * patch + side;
+        m_position[value] = std::uint32_t(m_side.size());
+        m_side.push_back(value);
+        m_cumulative.push_back(m_cumulative.back() + root.area);
+    }
+    if (!c) return &m_h.root(patch);
+    Node& n = m_nodes[c->id.patch];
+    n.child = {&m_h.root(patch, kFront), &m_h.root(patch, kBack)};
+    n.mid = n.first + 1;
+    finish(*c);
+    return c;
+}
+
+// docs/design.md §2.7: the median of the centres along the longest side of their bounding box,
+// ordered by that coordinate, then by index, so that each half is one set whatever the sort.
+Element* ClusterTree::build(std::span<std::uint32_t> patches) {
+    if (patches.size() == 1) return leaf(patches[0]);
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const std::uint32_t p : patches) {
+        lo = lo.cwiseMin(m_h.root(p).centre);
+        hi = hi.cwiseMax(m_h.root(p).centre);
+    }
+    const Vec3 extent = hi - lo;
+    int axis = 0;
+    for (int a = 1; a < 3; ++a) {
+        if (extent[a] > extent[axis]) axis = a;
+    }
+    const std::size_t half = patches.size() / 2;
+    std::nth_element(patches.begin(), patches.begin() + std::ptrdiff_t(half), patches.end(),
+                     [&](std::uint32_t a, std::uint32_t b) {
+                         const double ca = m_h.root(a).centre[axis], cb = m_h.root(b).centre[axis];
+                         return ca < cb || (ca == cb && a < b);
+                     });
+    Element& c = new_cluster(std::uint32_t(m_side.size()));
+    const std::size_t index = c.id.patch;
+    Element* first = build(patches.first(half));
+    m_nodes[index].mid = std::uint32_t(m_side.size());
+    Element* second = build(patches.subspan(half));
+    m_nodes[index].child = {first, second};
+    finish(c);
+    return &c;
+}
+
+// Area, centre, reflectance, B and Delta B from the finished children.
+void ClusterTree::finish(Element& c) {
+    Node& n = m_nodes[c.id.patch];
+    n.end = std::uint32_t(m_side.size());
+    c.area = 0;
+    c.centre = Vec3::Zero();
+    n.reflectance = Rgb::Zero();
+    for (const Element* k : n.child) {
+        c.area += k->area;
+        c.centre += k->area * k->centre;
+        n.reflectance += k->area * (is_cluster(*k) ? m_nodes[k->id.patch].reflectance
+                                                   : m_h.material(*k).reflectance);
+    }
+    c.centre /= c.area;
+    n.reflectance /= c.area;
+    average(c);
+}
+
+void ClusterTree::average(Element& c) const {
+    const Node& n = m_nodes[c.id.patch];
+    c.radiosity = (n.child[0]->area * n.child[0]->radiosity +
+                   n.child[1]->area * n.child[1]->radiosity) / c.area;
+    c.unshot = (n.child[0]->area * n.child[0]->unshot + n.child[1]->area * n.child[1]->unshot) /
+               c.area;
+}
+
+std::pair<Vec3, Vec3> ClusterTree::point(const Element& c, double xu, double xv) const {
+    const Node& n = m_nodes[c.id.patch];
+    const double base = m_cumulative[n.first], area = m_cumulative[n.end] - base;
+    const double a = base + xu * area;
+    // The side whose share of [base, base + area) holds a.
+    const auto it = std::upper_bound(m_cumulative.begin() + n.first + 1,
+                                     m_cumulative.begin() + n.end, a);
+    const auto pos = std::size_t(it - m_cumulative.begin()) - 1;
+    const double lo = m_cumulative[pos], width = m_cumulative[pos + 1] - lo;
+    const double u = std::clamp((a - lo) / width, 0.0, std::nextafter(1.0, 0.0));
+    const std::uint32_t side = m_side[pos];
+    const Patch& p = m_h.patch_set().patches[side >> 1];
+    return {p.point(sample_element(p, Domain{}, u, xv)), side_normal(p, std::uint8_t(side & 1))};
+}
+
+void ClusterTree::push(const PowerQuantum& quantum, std::vector<Rgb>& from_above) {
+    from_above.assign(m_position.size(), Rgb::Zero());
+    if (is_cluster(*m_top)) push_node(*m_top, Rgb::Zero(), quantum, from_above);
+}
+
+void ClusterTree::push_node(Element& c, const Rgb& above, const PowerQuantum& quantum,
+                            std::vector<Rgb>& from_above) {
+    const Rgb h = above + quantum.power(c.received) / c.area;
+    c.received = {};
+    for (Element* k : m_nodes[c.id.patch].child) {
+        if (is_cluster(*k)) {
+            push_node(*k, h, quantum, from_above);
+        } else {
+            from_above[2 * std::size_t(k->id.patch) + k->id.side] = m_h.material(*k).reflectance * h;
+        }
+    }
+}
+
+void ClusterTree::pull() {
+    // Children have larger indices than their parent (depth-first numbering): the reverse
+    // index order visits children first.
+    for (std::size_t k = m_elements.size(); k-- > 0;) average(m_elements[k]);
+}
+
+}  // namespace hmcr

@@ -1,0 +1,83 @@
+// Clusters of patches above the patch roots, each receiving and emitting as an isotropic cloud of
+// surfaces (docs/design.md §2.7): a binary tree built once from the patches' centres, whose
+// nodes are elements the descent links like any other.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "radiosity/hierarchy.h"
+
+namespace hmcr {
+
+// The side value of a cluster's ElementId: no patch side has it, so its lines' streams are its
+// own (its id.patch is the cluster's index, in depth-first order).
+inline constexpr std::uint8_t kClusterSide = 2;
+inline bool is_cluster(const Element& e) { return e.id.side == kClusterSide; }
+
+class ClusterTree {
+public:
+    // The tree over h's patches. Makes every two-sided patch's back root, which the clusters
+    // hold from the start.
+    explicit ClusterTree(Hierarchy& h);
+    ClusterTree(const ClusterTree&) = delete;
+    ClusterTree& operator=(const ClusterTree&) = delete;
+
+    // Where every descent starts: a cluster, or the only patch's front root.
+    Element& top() const { return *m_top; }
+    std::size_t size() const { return m_elements.size(); }
+
+    // The child of cluster c that holds the side `side_value` (2 * patch + side).
+    Element& child_toward(const Element& c, std::uint32_t side_value) const {
+        const Node& n = m_nodes[c.id.patch];
+        return *n.child[m_position[side_value] < n.mid ? 0 : 1];
+    }
+    // rho_C, the area-weighted mean reflectance of the cluster's sides.
+    const Rgb& reflectance(const Element& c) const { return m_nodes[c.id.patch].reflectance; }
+    // A point uniform by area on cluster c and the normal of the side it lies on, from two
+    // uniform numbers.
+    std::pair<Vec3, Vec3> point(const Element& c, double xu, double xv) const;
+
+    // The first half of push-pull: the clusters' received power, as irradiance carried down,
+    // becomes for each side the radiosity rho_q h its root starts its own push-pull with
+    // (from_above[2 * patch + side], resized and zeroed here).
+    void push(const PowerQuantum& quantum, std::vector<Rgb>& from_above);
+    // The last half: every cluster takes the area-weighted averages of its children's B and
+    // Delta B, children first.
+    void pull();
+
+    // Every cluster, in index order (the order every rank shares).
+    template <class F>
+    void for_each_cluster(F&& f) {
+        for (Element& e : m_elements) f(e);
+    }
+
+private:
+    struct Node {
+        std::array<Element*, 2> child{};
+        std::uint32_t first = 0, mid = 0, end = 0;  // its sides' positions, child 1's from mid
+        Rgb reflectance = Rgb::Zero();
+    };
+
+    Element* build(std::span<std::uint32_t> patches);
+    Element* leaf(std::uint32_t patch);
+    Element& new_cluster(std::uint32_t first);
+    void finish(Element& c);
+    void average(Element& c) const;  // B and Delta B from the children's
+    void push_node(Element& c, const Rgb& above, const PowerQuantum& quantum,
+                   std::vector<Rgb>& from_above);
+
+    Hierarchy& m_h;
+    std::vector<Element> m_elements;  // sized once: clusters never move
+    std::vector<Node> m_nodes;
+    std::size_t m_used = 0;
+    std::vector<std::uint32_t> m_position;  // of each side value, in the tree's order
+    std::vector<std::uint32_t> m_side;      // the side value at each position
+    std::vector<double> m_cumulative;       // areas of the sides before each position
+    Element* m_top = nullptr;
+};
+
+}  // namespace hmcr
