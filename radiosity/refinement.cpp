@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include "radiosity/line_sampler.h"
@@ -64,6 +66,15 @@ LinkGeometry centre_geometry(const Hierarchy& h, const PatchPair& pp, const Elem
     return g;
 }
 
+// A link with a cluster at an end none of whose lines carries light: a ray did, so the lines
+// are too few to say how the light spreads over the cluster, whose sides may face away from
+// it. Refused, so that the cluster is split (docs/design.md §2.7).
+bool unseen_cluster_link(const Element& receiver, const Element& source,
+                         std::span<const double> kernel) {
+    return (is_cluster(receiver) || is_cluster(source)) &&
+           std::all_of(kernel.begin(), kernel.end(), [](double f) { return f == 0; });
+}
+
 // The oracle's geometric factor from the pair's own N_s lines (docs/design.md §3, §4).
 double line_factor(const RefinementContext& ctx, const PatchPair& pp, const Element& receiver,
                    const Element& source, RefinementCounters& counters) {
@@ -74,7 +85,9 @@ double line_factor(const RefinementContext& ctx, const PatchPair& pp, const Elem
     sample_kernel(ctx.scene, ctx.hierarchy, receiver, source, rng, kernel, ctx.clusters);
     LinkGeometry g = centre_geometry(ctx.hierarchy, pp, receiver, source);
     g.kernel = kernel;
-    const double factor = ctx.oracle.geometric_factor(g);
+    const double factor = unseen_cluster_link(receiver, source, kernel)
+                              ? std::numeric_limits<double>::infinity()
+                              : ctx.oracle.geometric_factor(g);
     counters.lines_cast += kernel.size();
     ++counters.oracle_evaluations;
     counters.oracle_nanoseconds += std::uint64_t(
@@ -145,7 +158,10 @@ Step next_step(const RefinementContext& ctx, const PatchPair& pp, const Element&
                              ? link_value(ctx, cluster_pair(ctx, pp, i, j), i, j, counters, rays)
                              : link_value(ctx, pp, i, j, counters, rays);
     if (value < ctx.threshold) return Step::accept;
-    return split_i && (!split_j || i.area >= j.area) ? Step::split_receiver : Step::split_source;
+    // A receiver cluster is split before its source (the top cluster then): its decision is
+    // the same for every source, which keeps the furnace exact (docs/design.md §2.7).
+    return is_cluster(i) || (split_i && (!split_j || i.area >= j.area)) ? Step::split_receiver
+                                                                         : Step::split_source;
 }
 
 }  // namespace
