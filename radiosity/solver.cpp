@@ -20,6 +20,7 @@
 #include "radiosity/ray_schedule.h"
 #include "radiosity/shooting.h"
 #include "radiosity/solver_settings.h"
+#include "radiosity/view_importance.h"
 
 namespace hmcr {
 namespace {
@@ -126,6 +127,13 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     }
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
+    // Importance weighs the oracle's decisions, so a fixed mesh has no use for it (§3.12).
+    ViewImportance importance;
+    if (!fixed_mesh && options.importance == Importance::views) {
+        importance = solve_view_importance(h.patch_set(), scene, options.views, options, ranks);
+        st.importance_rays = importance.rays;
+        st.importance_seconds = importance.seconds;
+    }
     const RefinementContext ctx{.hierarchy = h,
                                 .oracle = oracle,
                                 .scene = scene,
@@ -134,7 +142,8 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
                                 .seed = options.seed,
                                 .cache = cache.get(),
                                 .fixed_mesh = fixed_mesh,
-                                .link_weight = options.link_weight};
+                                .link_weight = options.link_weight,
+                                .receiver_weights = importance.receiver_weights};
     st.setup_seconds = seconds_since(start);
 
     // The control variate needs every side that may receive light to exist from the start
@@ -272,6 +281,8 @@ Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     const SolveStats& r = refined.stats;
     st.rays += r.rays;
     st.refining_rays = r.rays;
+    st.importance_rays = r.importance_rays;
+    st.importance_seconds = r.importance_seconds;
     st.oracle_calls = r.oracle_calls;
     st.oracle_evaluations = r.oracle_evaluations;
     st.cache_hits = r.cache_hits;

@@ -16,7 +16,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "meshes/view.h"
 #include "oracles/registry.h"
 
 namespace hmcr {
@@ -37,6 +39,11 @@ std::string_view name(LinkWeight weight);  // "unshot", "total"
 enum class ControlVariate { none, constant };
 std::string_view name(ControlVariate cv);  // "none", "constant"
 
+// What weighs a refining solve's link values besides the oracle: nothing, or the receiver's
+// importance for the scene's views (docs/design.md §3.12).
+enum class Importance { none, views };
+std::string_view name(Importance importance);  // "none", "views"
+
 // Settings whose values are names (flags, scene files and summaries spell them): parse gives
 // none for a name that is not one.
 template <class T>
@@ -55,6 +62,11 @@ template <>
 struct SettingNames<ControlVariate> {
     static std::optional<ControlVariate> parse(std::string_view name);
     static std::string_view name(ControlVariate cv) { return hmcr::name(cv); }
+};
+template <>
+struct SettingNames<Importance> {
+    static std::optional<Importance> parse(std::string_view name);
+    static std::string_view name(Importance importance) { return hmcr::name(importance); }
 };
 template <class T>
 concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
@@ -87,6 +99,9 @@ concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
     X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \
+    X(Importance,    importance, Importance::none, true,             "none or views",             \
+      scene_file, "views: weigh a refining solve's link values by the receiver's importance "    \
+                  "for the scene's views, so that elements go where they look (none: do not)")  \
     X(double,        stop,      0.01,       v > 0 && v < 1,          "in (0, 1)",                 \
       scene_file, "stop when the unshot power is below stop x the emitted power")                \
     X(double,        cache_mb,  32,         v >= 0 && v <= 1 << 20,  "in [0, 1048576]",           \
@@ -113,6 +128,8 @@ struct SolverOptions {
 #define HMCR_FIELD(type, name, default_value, ...) type name = default_value;
     HMCR_SOLVER_SETTINGS(HMCR_FIELD)
 #undef HMCR_FIELD
+    // Not a setting: the scene's views, which importance = views solves for.
+    std::vector<View> views;
 };
 
 }  // namespace hmcr

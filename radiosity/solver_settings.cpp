@@ -92,6 +92,7 @@ std::string Setting<T>::flag() const {
 template struct Setting<OracleRef>;
 template struct Setting<LinkWeight>;
 template struct Setting<ControlVariate>;
+template struct Setting<Importance>;
 template struct Setting<double>;
 template struct Setting<int>;
 template struct Setting<std::uint64_t>;
@@ -104,6 +105,7 @@ T parse_named(const Setting<T>& s, std::string_view text) {
 template OracleRef parse_named(const Setting<OracleRef>&, std::string_view);
 template LinkWeight parse_named(const Setting<LinkWeight>&, std::string_view);
 template ControlVariate parse_named(const Setting<ControlVariate>&, std::string_view);
+template Importance parse_named(const Setting<Importance>&, std::string_view);
 
 const Oracle* default_oracle() { return oracle_registry().find("kl"); }
 
@@ -130,6 +132,16 @@ std::optional<ControlVariate> SettingNames<ControlVariate>::parse(std::string_vi
 
 std::string_view name(ControlVariate cv) {
     return cv == ControlVariate::constant ? "constant" : "none";
+}
+
+std::optional<Importance> SettingNames<Importance>::parse(std::string_view name) {
+    if (name == "none") return Importance::none;
+    if (name == "views") return Importance::views;
+    return std::nullopt;
+}
+
+std::string_view name(Importance importance) {
+    return importance == Importance::views ? "views" : "none";
 }
 
 std::uint64_t default_max_elements() {

@@ -92,6 +92,21 @@ TEST(RefineThenFreeze, OneAndTwoThreadsGiveTheSameBits) {
     EXPECT_EQ(leaf_values(*one.hierarchy), leaf_values(*two.hierarchy));
 }
 
+// View importance's adjoint solve and weights do not depend on the thread count either.
+TEST(RefineThenFreeze, ViewImportanceGivesTheSameBitsOnOneAndTwoThreads) {
+    const Scene scene = load_scene("cornell");
+    SolverOptions o = options("kl", 300'000, 0.5);
+    o.importance = Importance::views;
+    o.views = scene.views;
+    o.threads = 1;
+    const Solution one = solve(scene.mesh, o);
+    o.threads = 2;
+    const Solution two = solve(scene.mesh, o);
+    EXPECT_GT(one.stats.importance_rays, 0u);
+    EXPECT_EQ(leaf_ids(*one.hierarchy), leaf_ids(*two.hierarchy));
+    EXPECT_EQ(leaf_values(*one.hierarchy), leaf_values(*two.hierarchy));
+}
+
 // A reference's uniform mesh has nothing to refine: every ray solves it, whatever the share.
 TEST(RefineThenFreeze, AUniformMeshIgnoresTheShare) {
     const Scene scene = load_scene("cornell");
