@@ -128,11 +128,16 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
     // Importance weighs the oracle's decisions, so a fixed mesh has no use for it (§3.12).
-    ViewImportance importance;
-    if (!fixed_mesh && options.importance == Importance::views) {
-        importance = solve_view_importance(h.patch_set(), scene, options.views, options, ranks);
-        st.importance_rays = importance.rays;
-        st.importance_seconds = importance.seconds;
+    std::shared_ptr<const ViewImportance>& importance = sol.options.view_importance;
+    if (fixed_mesh || options.importance == Importance::none) {
+        importance.reset();
+    } else if (!importance) {
+        importance = std::make_shared<const ViewImportance>(
+            solve_view_importance(h.patch_set(), scene, options.views, options, ranks));
+    }
+    if (importance) {
+        st.importance_rays = importance->rays;
+        st.importance_seconds = importance->seconds;
     }
     const RefinementContext ctx{.hierarchy = h,
                                 .oracle = oracle,
@@ -143,7 +148,10 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
                                 .cache = cache.get(),
                                 .fixed_mesh = fixed_mesh,
                                 .link_weight = options.link_weight,
-                                .receiver_weights = importance.receiver_weights};
+                                .receiver_weights = importance
+                                                        ? std::span<const Rgb>(
+                                                              importance->receiver_weights)
+                                                        : std::span<const Rgb>()};
     st.setup_seconds = seconds_since(start);
 
     // The control variate needs every side that may receive light to exist from the start
@@ -265,7 +273,9 @@ Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& p
     o.rays = refining_rays(options);
     o.refine_share = 1;
     Solution sol = solve_with(std::move(patches), o, nullptr, progress, ranks);
+    auto importance = std::move(sol.options.view_importance);
     sol.options = options;
+    sol.options.view_importance = std::move(importance);
     return sol;
 }
 

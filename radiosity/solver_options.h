@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,6 +25,8 @@
 namespace hmcr {
 
 enum class SettingScope { scene_file, command_line, internal };
+
+struct ViewImportance;  // radiosity/view_importance.h
 
 // The refinement oracle of a solve, resolved from its name where the name is read.
 using OracleRef = const Oracle*;
@@ -128,8 +131,10 @@ struct SolverOptions {
 #define HMCR_FIELD(type, name, default_value, ...) type name = default_value;
     HMCR_SOLVER_SETTINGS(HMCR_FIELD)
 #undef HMCR_FIELD
-    // Not a setting: the scene's views, which importance = views solves for.
+    // Not settings: the scene's views, which importance = views solves for, and that solve
+    // once made (a budget search's probes share it: it depends on the seed and rays alone).
     std::vector<View> views;
+    std::shared_ptr<const ViewImportance> view_importance;
 };
 
 }  // namespace hmcr

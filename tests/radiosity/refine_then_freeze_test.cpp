@@ -136,5 +136,21 @@ TEST(RefineThenFreeze, ABudgetSearchFreezesTheAcceptedProbe) {
     EXPECT_NEAR(double(s.stats.rays), 400'000.0, 0.02 * 400'000);
 }
 
+// The probes of a budget search share one importance solve: the accepted probe's mesh is the
+// one a solve at its epsilon makes with an importance solve of its own.
+TEST(RefineThenFreeze, ABudgetSearchSharesItsViewImportance) {
+    Scene scene = load_scene("cornell");
+    SolverOptions o = options("power", 200'000, 0.5);
+    o.importance = Importance::views;
+    o.views = scene.views;
+    const BudgetResult found = solve_for_budget(scene.mesh, o, {.leaves = 3000, .tolerance = 0.02});
+    ASSERT_GT(found.probes.size(), 1u);
+    o.epsilon = found.solution.stats.epsilon;
+    const Solution alone = solve(scene.mesh, o);
+    EXPECT_EQ(leaf_ids(*found.solution.hierarchy), leaf_ids(*alone.hierarchy));
+    EXPECT_EQ(leaf_values(*found.solution.hierarchy), leaf_values(*alone.hierarchy));
+    EXPECT_EQ(found.solution.stats.importance_rays, alone.stats.importance_rays);
+}
+
 }  // namespace
 }  // namespace hmcr::test::refine_then_freeze
