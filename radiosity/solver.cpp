@@ -1,5 +1,6 @@
 #include "radiosity/solver.h"
 
+#include <fmt/format.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -134,6 +135,8 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     } else if (!importance) {
         importance = std::make_shared<const ViewImportance>(
             solve_view_importance(h.patch_set(), scene, options.views, options, ranks));
+        progress.note(fmt::format("view importance of {} view(s): {} rays, {:.2f} s",
+                                  options.views.size(), importance->rays, importance->seconds));
     }
     if (importance) {
         st.importance_rays = importance->rays;
