@@ -70,6 +70,7 @@ void apply_scene_settings(const SolverFlags& flags, const Scene& scene, SolverOp
         },
         options, from_scene);
     validate(options);
+    options.views = scene.views;
 }
 
 }  // namespace hmcr

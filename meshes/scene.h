@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "meshes/patch_mesh.h"
 #include "meshes/repair_report.h"
+#include "meshes/view.h"
 
 namespace hmcr {
 
@@ -25,16 +26,6 @@ struct Material {
     // The path tracer reflects it; the radiosity engine absorbs it.
     Eigen::Vector3d ks{0, 0, 0};
     double roughness = 0;  // in [0, 1]
-};
-
-struct View {
-    std::string name;
-    Eigen::Vector3d position{0, 0, 0};
-    Eigen::Vector3d look_at{0, 0, 1};
-    Eigen::Vector3d up{0, 1, 0};
-    double fov_degrees = 40;  // vertical field of view
-    int width = 512;
-    int height = 512;
 };
 
 // What the scene is loaded for. Solving needs an emitter and a material on every face;

@@ -50,6 +50,7 @@ std::size_t Search::probe(double x) {
     const std::size_t k = m_result.probes.size() + 1;
     m_progress.stage(fmt::format("budget probe {}", k));
     Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks);
+    m_options.view_importance = sol.options.view_importance;  // the same for every probe
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
     m_result.probes.push_back(p);
     m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves ({:.1f} s)", k,

@@ -8,7 +8,8 @@
 
 namespace hmcr {
 
-ClusterTree::ClusterTree(Hierarchy& h) : m_h(h) {
+ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights)
+    : m_h(h), m_weights(receiver_weights) {
     const PatchSet& ps = h.patch_set();
     const auto patches = std::uint32_t(h.patch_count());
     std::uint32_t two_sided = 0;
@@ -87,22 +88,26 @@ Element* ClusterTree::build(std::span<std::uint32_t> patches) {
     return &c;
 }
 
-// Area, centre, reflectance, B and Delta B from the finished children.
+// Area, centre, receiver weight, B and Delta B from the finished children.
 void ClusterTree::finish(Element& c) {
     Node& n = m_nodes[c.id.patch];
     n.end = std::uint32_t(m_side.size());
     c.area = 0;
     c.centre = Vec3::Zero();
-    n.reflectance = Rgb::Zero();
+    n.weight = Rgb::Zero();
     for (const Element* k : n.child) {
         c.area += k->area;
         c.centre += k->area * k->centre;
-        n.reflectance += k->area * (is_cluster(*k) ? m_nodes[k->id.patch].reflectance
-                                                   : m_h.material(*k).reflectance);
+        n.weight += k->area * (is_cluster(*k) ? m_nodes[k->id.patch].weight : side_weight(*k));
     }
     c.centre /= c.area;
-    n.reflectance /= c.area;
+    n.weight /= c.area;
     average(c);
+}
+
+Rgb ClusterTree::side_weight(const Element& root) const {
+    if (m_weights.empty()) return m_h.material(root).reflectance;
+    return m_weights[2 * std::size_t(root.id.patch) + root.id.side];
 }
 
 void ClusterTree::average(Element& c) const {

@@ -21,8 +21,10 @@ inline bool is_cluster(const Element& e) { return e.id.side == kClusterSide; }
 class ClusterTree {
 public:
     // The tree over h's patches. Makes every two-sided patch's back root, which the clusters
-    // hold from the start.
-    explicit ClusterTree(Hierarchy& h);
+    // hold from the start. receiver_weights (per side value) are what a link's weight takes
+    // for each side instead of its reflectance (view importance, docs/design.md §3.12); empty:
+    // the reflectances.
+    explicit ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights = {});
     ClusterTree(const ClusterTree&) = delete;
     ClusterTree& operator=(const ClusterTree&) = delete;
 
@@ -35,8 +37,9 @@ public:
         const Node& n = m_nodes[c.id.patch];
         return *n.child[m_position[side_value] < n.mid ? 0 : 1];
     }
-    // rho_C, the area-weighted mean reflectance of the cluster's sides.
-    const Rgb& reflectance(const Element& c) const { return m_nodes[c.id.patch].reflectance; }
+    // What a link's weight takes for cluster c as a receiver: the area-weighted mean of its
+    // sides' reflectances (rho_C), or of their receiver weights.
+    const Rgb& receiver_weight(const Element& c) const { return m_nodes[c.id.patch].weight; }
     // A point uniform by area on cluster c and the normal of the side it lies on, from two
     // uniform numbers.
     std::pair<Vec3, Vec3> point(const Element& c, double xu, double xv) const;
@@ -59,18 +62,20 @@ private:
     struct Node {
         std::array<Element*, 2> child{};
         std::uint32_t first = 0, mid = 0, end = 0;  // its sides' positions, child 1's from mid
-        Rgb reflectance = Rgb::Zero();
+        Rgb weight = Rgb::Zero();  // receiver_weight()
     };
 
     Element* build(std::span<std::uint32_t> patches);
     Element* leaf(std::uint32_t patch);
     Element& new_cluster(std::uint32_t first);
     void finish(Element& c);
+    Rgb side_weight(const Element& root) const;  // a side root's receiver weight
     void average(Element& c) const;  // B and Delta B from the children's
     void push_node(Element& c, const Rgb& above, const PowerQuantum& quantum,
                    std::vector<Rgb>& from_above);
 
     Hierarchy& m_h;
+    std::span<const Rgb> m_weights;  // per side value; empty: the reflectances
     std::vector<Element> m_elements;  // sized once: clusters never move
     std::vector<Node> m_nodes;
     std::size_t m_used = 0;

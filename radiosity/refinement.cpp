@@ -17,18 +17,20 @@
 namespace hmcr {
 namespace {
 
-// What every link between two patches shares: their normals and the receiver's reflectance,
-// read once for a descent (or a group of them) rather than once for each link decided.
+// What every link between two patches shares: their normals and the receiver's reflectance
+// (or its importance-weighted stand-in), read once for a descent (or a group of them) rather
+// than once for each link decided.
 struct PatchPair {
     Vec3 receiver_normal, source_normal;
     Rgb reflectance;  // the receiver's
 };
 
-PatchPair patch_pair(const Hierarchy& h, SideRef receiver, SideRef source) {
-    const PatchSet& ps = h.patch_set();
+PatchPair patch_pair(const RefinementContext& ctx, SideRef receiver, SideRef source) {
+    const PatchSet& ps = ctx.hierarchy.patch_set();
     return {side_normal(ps.patches[receiver.patch()], receiver.side()),
             side_normal(ps.patches[source.patch()], source.side()),
-            ps.material(receiver.patch(), receiver.side()).reflectance};
+            ctx.receiver_weights.empty() ? ps.material(receiver.patch(), receiver.side()).reflectance
+                                         : ctx.receiver_weights[receiver.value]};
 }
 
 // w_ij of docs/design.md §4: the largest share of the source's radiosity the receiver reflects.
@@ -139,12 +141,12 @@ bool splittable(const RefinementContext& ctx, const Element& e) {
 }
 
 // The pair of a link with a cluster at an end (docs/design.md §2.7): that end has no normal
-// (isotropic), and a cluster receiver reflects its area-weighted mean reflectance.
+// (isotropic), and a cluster receiver's weight is the area-weighted mean of its sides'.
 PatchPair cluster_pair(const RefinementContext& ctx, PatchPair pp, const Element& i,
                        const Element& j) {
     if (is_cluster(i)) {
         pp.receiver_normal = Vec3::Zero();
-        pp.reflectance = ctx.clusters->reflectance(i);
+        pp.reflectance = ctx.clusters->receiver_weight(i);
     }
     if (is_cluster(j)) pp.source_normal = Vec3::Zero();
     return pp;
@@ -174,7 +176,7 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
     if (ctx.fixed_mesh) return h.locate(*i, y_uv);
     Element* j = &h.root(query.source.patch(), query.source.side());
     if (ctx.clusters) i = j = &ctx.clusters->top();
-    const PatchPair pp = patch_pair(h, query.receiver, query.source);
+    const PatchPair pp = patch_pair(ctx, query.receiver, query.source);
     for (;;) {
         const Step step = next_step(ctx, pp, *i, *j, counters, 1);
         if (step == Step::accept) return *i;
@@ -316,7 +318,7 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
             const std::size_t first = group_start[g], n = group_start[g + 1] - first;
             const LinkQuery& q = grouped[first];
             const Descent d{grouped, buffers.receivers.data(),
-                            patch_pair(h, q.receiver, q.source)};
+                            patch_pair(ctx, q.receiver, q.source)};
             Element* const top = ctx.clusters ? &ctx.clusters->top() : nullptr;
             descend(ctx, d, top ? top : &h.root(q.receiver.patch(), q.receiver.side()),
                     top ? top : &h.root(q.source.patch(), q.source.side()), index + first,

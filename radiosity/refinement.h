@@ -28,6 +28,9 @@ struct RefinementContext {
     bool fixed_mesh = false;     // deposit on the existing leaf at the hit, ask no oracle
     LinkWeight link_weight = LinkWeight::unshot;  // w_ij from the source's Delta B or B
     ClusterTree* clusters = nullptr;  // descents start at its top (docs/design.md §2.7); none
+    // Per side (SideRef::value), what a link's weight takes for the receiver's reflectance:
+    // rho I / mean(I) under view importance (§3.12); empty: the reflectance itself.
+    std::span<const Rgb> receiver_weights{};
 };
 
 struct RefinementCounters {

@@ -1,5 +1,6 @@
 #include "radiosity/solver.h"
 
+#include <fmt/format.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -21,6 +22,7 @@
 #include "radiosity/ray_schedule.h"
 #include "radiosity/shooting.h"
 #include "radiosity/solver_settings.h"
+#include "radiosity/view_importance.h"
 
 namespace hmcr {
 namespace {
@@ -136,10 +138,26 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     }
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
+    // Importance weighs the oracle's decisions, so a fixed mesh has no use for it (§3.12).
+    std::shared_ptr<const ViewImportance>& importance = sol.options.view_importance;
+    if (fixed_mesh || options.importance == Importance::none) {
+        importance.reset();
+    } else if (!importance) {
+        importance = std::make_shared<const ViewImportance>(
+            solve_view_importance(h.patch_set(), scene, options.views, options, ranks));
+        progress.note(fmt::format("view importance of {} view(s): {} rays, {:.2f} s",
+                                  options.views.size(), importance->rays, importance->seconds));
+    }
+    if (importance) {
+        st.importance_rays = importance->rays;
+        st.importance_seconds = importance->seconds;
+    }
+    const std::span<const Rgb> receiver_weights =
+        importance ? std::span<const Rgb>(importance->receiver_weights) : std::span<const Rgb>();
     // Fixed meshes deposit on the leaf at the hit: they have no use for clusters (§2.7).
     const std::unique_ptr<ClusterTree> clusters =
         !fixed_mesh && options.clustering == Clustering::isotropic
-            ? std::make_unique<ClusterTree>(h)
+            ? std::make_unique<ClusterTree>(h, receiver_weights)
             : nullptr;
     const RefinementContext ctx{.hierarchy = h,
                                 .oracle = oracle,
@@ -150,7 +168,8 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
                                 .cache = cache.get(),
                                 .fixed_mesh = fixed_mesh,
                                 .link_weight = options.link_weight,
-                                .clusters = clusters.get()};
+                                .clusters = clusters.get(),
+                                .receiver_weights = receiver_weights};
     st.setup_seconds = seconds_since(start);
 
     // The control variate needs every side that may receive light to exist from the start
@@ -272,7 +291,9 @@ Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& p
     o.rays = refining_rays(options);
     o.refine_share = 1;
     Solution sol = solve_with(std::move(patches), o, nullptr, progress, ranks);
+    auto importance = std::move(sol.options.view_importance);
     sol.options = options;
+    sol.options.view_importance = std::move(importance);
     return sol;
 }
 
@@ -288,6 +309,8 @@ Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     const SolveStats& r = refined.stats;
     st.rays += r.rays;
     st.refining_rays = r.rays;
+    st.importance_rays = r.importance_rays;
+    st.importance_seconds = r.importance_seconds;
     st.oracle_calls = r.oracle_calls;
     st.oracle_evaluations = r.oracle_evaluations;
     st.cache_hits = r.cache_hits;

@@ -27,6 +27,7 @@ struct SolveStats {
     std::vector<IterationRecord> iterations;
     std::uint64_t rays = 0;
     std::uint64_t refining_rays = 0;       // of them, those that refined the mesh
+    std::uint64_t importance_rays = 0;     // the view importance solve's, besides `rays`
     std::uint64_t oracle_calls = 0;        // link decisions
     std::uint64_t oracle_evaluations = 0;  // geometric factors computed
     std::uint64_t cache_hits = 0;
@@ -50,6 +51,7 @@ struct SolveStats {
     std::size_t elements = 0, leaves = 0, hierarchy_bytes = 0;
     double setup_seconds = 0, shooting_seconds = 0, push_pull_seconds = 0, total_seconds = 0;
     double refining_seconds = 0;  // the refining pass's part of total_seconds
+    double importance_seconds = 0;  // the view importance's part of refining_seconds
 
     // Fraction of the shot power that hit back faces (a sign of flipped normals if > 1%).
     double back_face_fraction() const;

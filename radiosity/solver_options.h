@@ -13,15 +13,20 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "meshes/view.h"
 #include "oracles/registry.h"
 
 namespace hmcr {
 
 enum class SettingScope { scene_file, command_line, internal };
+
+struct ViewImportance;  // radiosity/view_importance.h
 
 // The refinement oracle of a solve, resolved from its name where the name is read.
 using OracleRef = const Oracle*;
@@ -41,6 +46,11 @@ std::string_view name(ControlVariate cv);  // "none", "constant"
 // an isotropic cloud of surfaces (docs/design.md §2.7).
 enum class Clustering { none, isotropic };
 std::string_view name(Clustering c);  // "none", "isotropic"
+
+// What weighs a refining solve's link values besides the oracle: nothing, or the receiver's
+// importance for the scene's views (docs/design.md §3.12).
+enum class Importance { none, views };
+std::string_view name(Importance importance);  // "none", "views"
 
 // Settings whose values are names (flags, scene files and summaries spell them): parse gives
 // none for a name that is not one.
@@ -65,6 +75,11 @@ template <>
 struct SettingNames<Clustering> {
     static std::optional<Clustering> parse(std::string_view name);
     static std::string_view name(Clustering c) { return hmcr::name(c); }
+};
+template <>
+struct SettingNames<Importance> {
+    static std::optional<Importance> parse(std::string_view name);
+    static std::string_view name(Importance importance) { return hmcr::name(importance); }
 };
 template <class T>
 concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
@@ -100,6 +115,9 @@ concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
     X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \
+    X(Importance,    importance, Importance::none, true,             "none or views",             \
+      scene_file, "views: weigh a refining solve's link values by the receiver's importance "    \
+                  "for the scene's views, so that elements go where they look (none: do not)")  \
     X(double,        stop,      0.01,       v > 0 && v < 1,          "in (0, 1)",                 \
       scene_file, "stop when the unshot power is below stop x the emitted power")                \
     X(double,        cache_mb,  32,         v >= 0 && v <= 1 << 20,  "in [0, 1048576]",           \
@@ -126,6 +144,10 @@ struct SolverOptions {
 #define HMCR_FIELD(type, name, default_value, ...) type name = default_value;
     HMCR_SOLVER_SETTINGS(HMCR_FIELD)
 #undef HMCR_FIELD
+    // Not settings: the scene's views, which importance = views solves for, and that solve
+    // once made (a budget search's probes share it: it depends on the seed and rays alone).
+    std::vector<View> views;
+    std::shared_ptr<const ViewImportance> view_importance;
 };
 
 }  // namespace hmcr

@@ -93,6 +93,7 @@ template struct Setting<OracleRef>;
 template struct Setting<LinkWeight>;
 template struct Setting<ControlVariate>;
 template struct Setting<Clustering>;
+template struct Setting<Importance>;
 template struct Setting<double>;
 template struct Setting<int>;
 template struct Setting<std::uint64_t>;
@@ -106,6 +107,7 @@ template OracleRef parse_named(const Setting<OracleRef>&, std::string_view);
 template LinkWeight parse_named(const Setting<LinkWeight>&, std::string_view);
 template ControlVariate parse_named(const Setting<ControlVariate>&, std::string_view);
 template Clustering parse_named(const Setting<Clustering>&, std::string_view);
+template Importance parse_named(const Setting<Importance>&, std::string_view);
 
 const Oracle* default_oracle() { return oracle_registry().find("kl"); }
 
@@ -141,6 +143,16 @@ std::optional<Clustering> SettingNames<Clustering>::parse(std::string_view name)
 }
 
 std::string_view name(Clustering c) { return c == Clustering::isotropic ? "isotropic" : "none"; }
+
+std::optional<Importance> SettingNames<Importance>::parse(std::string_view name) {
+    if (name == "none") return Importance::none;
+    if (name == "views") return Importance::views;
+    return std::nullopt;
+}
+
+std::string_view name(Importance importance) {
+    return importance == Importance::views ? "views" : "none";
+}
 
 std::uint64_t default_max_elements() {
     const std::uint64_t memory = physical_memory_bytes();

@@ -98,7 +98,7 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
             ? fmt::format("{} with {} rays, the error of the mesh itself", frozen, *o.mesh_rays)
             : std::string("mesh: not measured (--mesh-rays 0)");
     return fmt::format(
-        "{}, N_s = {}, link weight {}, refine share {}{}, budget tolerance {}%, {} seeds from {}. "
+        "{}, N_s = {}, link weight {}, refine share {}{}{}, budget tolerance {}%, {} seeds from {}. "
         "Mean ± standard "
         "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
         "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
@@ -110,6 +110,9 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
         o.solver.control_variate == ControlVariate::none
             ? std::string()
             : fmt::format(", control variate {}", name(o.solver.control_variate)),
+        o.solver.importance == Importance::none
+            ? std::string()
+            : fmt::format(", importance {}", name(o.solver.importance)),
         100 * o.budget_tolerance, o.seeds,
         o.solver.seed, views.size(), fmt::join(views, ", "), mesh);
 }
@@ -264,6 +267,9 @@ void write_study_tables(OutputSet& out, const std::string& scene, const StudyOpt
     nlohmann::json& options = table["options"];
     if (o.solver.control_variate != ControlVariate::none) {
         options["control_variate"] = name(o.solver.control_variate);
+    }
+    if (o.solver.importance != Importance::none) {
+        options["importance"] = name(o.solver.importance);
     }
     write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
     write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "image/camera.h"
+#include "rays/camera.h"
 #include "trace/path_tracer.h"
 #include "trace/criteria/criterion.h"
 

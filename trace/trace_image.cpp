@@ -11,7 +11,7 @@
 #include "common/interrupt.h"
 #include "common/memory.h"
 #include "common/stopwatch.h"
-#include "image/camera.h"
+#include "rays/camera.h"
 #include "trace/map_allocation.h"
 #include "trace/pass_runs.h"
 #include "trace/pixel_runs.h"

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "image/camera.h"
+#include "rays/camera.h"
 #include "image/tone_map.h"
 #include "viz/mesh_colors.h"
 

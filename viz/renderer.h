@@ -1,7 +1,7 @@
 // hmcr's own image renderer (docs/design.md §6): Embree primary rays on a solution's Gouraud mesh,
 // barycentric interpolation of the vertex radiosity, radiance L = B / pi (Lambertian surfaces).
 //
-// Camera: the pinhole of image/camera.h; pixel (x, y), y counted from the top row, covers
+// Camera: the pinhole of rays/camera.h; pixel (x, y), y counted from the top row, covers
 // [x, x + 1] x [y, y + 1] on the image plane. With n = samples_per_axis, a pixel is the
 // mean of n x n rays through the fixed sub-pixel points ((i + 1/2) / n, (j + 1/2) / n): a
 // deterministic stratified box filter, so images are reproducible and identical for any number

@@ -89,6 +89,18 @@ TEST(MpiRuns, RefineThenFreezeIsTheSameBitsOnAnyRankCount) {
                         });
 }
 
+// View importance (docs/design.md §3.12): its adjoint solve and weights are the same on every
+// rank, so the refining pass's mesh is.
+TEST(MpiRuns, ViewImportanceIsTheSameBitsOnAnyRankCount) {
+    TempDir dir;
+    against_one_process(dir.path(),
+                        "solve cornell --oracle kl --refine-share 0.4 --importance views "
+                        "--rays 300000 -q -o ",
+                        ".vtp", {1, 2, 3}, [&](const std::string& name, int k) {
+                            expect_same_solve(dir.path(), name, k);
+                        });
+}
+
 // The frozen pass with the control variate (docs/design.md §3.11): its zero surfaces, pilot
 // and beta are the same on every rank.
 TEST(MpiRuns, TheControlVariateIsTheSameBitsOnAnyRankCount) {

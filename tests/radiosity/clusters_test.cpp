@@ -61,6 +61,22 @@ TEST(Clusters, TreeHoldsEverySideOnce) {
     expect_every_side_reachable(sided, sided_tree);
 }
 
+// A cluster receiver's weight is the area-weighted mean of its sides': their reflectances, or
+// the receiver weights view importance gives (docs/design.md §2.7).
+TEST(Clusters, ReceiverWeightIsTheAreaWeightedMeanOfItsSides) {
+    std::vector<TestPolygon> plates = {axis_rectangle(2, 0, {0, 0}, {1, 1}, true),
+                                       axis_rectangle(2, 1, {0, 0}, {3, 1}, false)};
+    plates[0].reflectance = Rgb::Constant(0.2);
+    plates[1].reflectance = Rgb::Constant(0.6);
+    Hierarchy h(build_patch_set(make_patch_mesh(plates)), {});
+    const ClusterTree plain(h);
+    EXPECT_NEAR(plain.receiver_weight(plain.top())[0], (0.2 * 1 + 0.6 * 3) / 4, 1e-15);
+    const std::vector<Rgb> weights = {Rgb::Constant(2), Rgb::Zero(), Rgb::Constant(0.5),
+                                      Rgb::Zero()};
+    const ClusterTree weighted(h, weights);
+    EXPECT_NEAR(weighted.receiver_weight(weighted.top())[0], (2 * 1 + 0.5 * 3) / 4.0, 1e-15);
+}
+
 // The tree depends on the patches alone: built twice, the same clusters.
 TEST(Clusters, TreeIsDeterministic) {
     const PatchSet ps = build_patch_set(load_scene("cornell").mesh);

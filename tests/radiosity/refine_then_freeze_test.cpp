@@ -92,6 +92,21 @@ TEST(RefineThenFreeze, OneAndTwoThreadsGiveTheSameBits) {
     EXPECT_EQ(leaf_values(*one.hierarchy), leaf_values(*two.hierarchy));
 }
 
+// View importance's adjoint solve and weights do not depend on the thread count either.
+TEST(RefineThenFreeze, ViewImportanceGivesTheSameBitsOnOneAndTwoThreads) {
+    const Scene scene = load_scene("cornell");
+    SolverOptions o = options("kl", 300'000, 0.5);
+    o.importance = Importance::views;
+    o.views = scene.views;
+    o.threads = 1;
+    const Solution one = solve(scene.mesh, o);
+    o.threads = 2;
+    const Solution two = solve(scene.mesh, o);
+    EXPECT_GT(one.stats.importance_rays, 0u);
+    EXPECT_EQ(leaf_ids(*one.hierarchy), leaf_ids(*two.hierarchy));
+    EXPECT_EQ(leaf_values(*one.hierarchy), leaf_values(*two.hierarchy));
+}
+
 // A reference's uniform mesh has nothing to refine: every ray solves it, whatever the share.
 TEST(RefineThenFreeze, AUniformMeshIgnoresTheShare) {
     const Scene scene = load_scene("cornell");
@@ -119,6 +134,22 @@ TEST(RefineThenFreeze, ABudgetSearchFreezesTheAcceptedProbe) {
     EXPECT_EQ(both.probes.size(), refined.probes.size());
     EXPECT_GT(frozen_iterations(s.stats), 0u);
     EXPECT_NEAR(double(s.stats.rays), 400'000.0, 0.02 * 400'000);
+}
+
+// The probes of a budget search share one importance solve: the accepted probe's mesh is the
+// one a solve at its epsilon makes with an importance solve of its own.
+TEST(RefineThenFreeze, ABudgetSearchSharesItsViewImportance) {
+    Scene scene = load_scene("cornell");
+    SolverOptions o = options("power", 200'000, 0.5);
+    o.importance = Importance::views;
+    o.views = scene.views;
+    const BudgetResult found = solve_for_budget(scene.mesh, o, {.leaves = 3000, .tolerance = 0.02});
+    ASSERT_GT(found.probes.size(), 1u);
+    o.epsilon = found.solution.stats.epsilon;
+    const Solution alone = solve(scene.mesh, o);
+    EXPECT_EQ(leaf_ids(*found.solution.hierarchy), leaf_ids(*alone.hierarchy));
+    EXPECT_EQ(leaf_values(*found.solution.hierarchy), leaf_values(*alone.hierarchy));
+    EXPECT_EQ(found.solution.stats.importance_rays, alone.stats.importance_rays);
 }
 
 }  // namespace

@@ -106,6 +106,31 @@ TEST_P(EveryOracle, FurnaceRefinedThenFrozen) {
     expect_furnace(o, 1, 100);
 }
 
+// View importance weighs the links, never the values: a view from inside the furnace looking at
+// one corner leaves every patch at the exact K-bounce value, refined and then frozen.
+TEST_P(EveryOracle, FurnaceWithViewImportance) {
+    SolverOptions o = options(30'000, 0);
+    o.epsilon = 1e-4;
+    o.refine_share = 0.4;
+    o.importance = Importance::views;
+    o.views = {test_view({0.5, 0.5, 0.5}, {0.1, 0.1, 0.1}, 60, 32)};
+    expect_furnace(o, 1, 100);
+}
+
+// The plates with view importance from a view of the receiver: its first iteration's binomial
+// mean rho F, as without.
+TEST_P(EveryOracle, PlatesWithViewImportance) {
+    SolverOptions o = options(400'000, 21);
+    o.importance = Importance::views;
+    o.views = {test_view({0.5, -1.5, 0.5}, {0.5, 0.5, 1}, 60, 32)};
+    const Solution sol = solve(unit_plates(0.5), o);
+    ASSERT_GT(sol.stats.importance_rays, 0u);
+    const double f = parallel_rectangles(1, 1, 1), n0 = double(sol.stats.iterations[0].rays);
+    const double se = 0.5 * std::sqrt(f * (1 - f) / n0);
+    EXPECT_TRUE(within_standard_errors("receiver B", sol.hierarchy->root(1).radiosity[1],
+                                       0.5 * f, se));
+}
+
 // The link weight changes where the mesh is refined, never the expected values: in the furnace
 // both weights give the exact K-bounce value.
 TEST_P(EveryOracle, FurnaceWithTheTotalLinkWeight) {

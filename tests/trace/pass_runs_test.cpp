@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "image/camera.h"
+#include "rays/camera.h"
 #include "meshes/scene.h"
 #include "trace/criteria/registry.h"
 #include "trace/trace_image.h"

@@ -12,7 +12,7 @@
 #include "tests/support/image_checks.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
-#include "image/camera.h"
+#include "rays/camera.h"
 #include "trace/criteria/registry.h"
 #include "trace/pixel_run.h"
 #include "trace/path_tracer.h"

@@ -1,4 +1,4 @@
-#include "image/camera.h"
+#include "rays/camera.h"
 
 #include <cmath>
 #include <numbers>

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "common/types.h"
-#include "meshes/scene.h"
+#include "meshes/view.h"
 
 namespace hmcr {
 
