@@ -19,16 +19,31 @@ ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights)
             ++two_sided;
         }
     }
-    // A binary tree over the patches has patches - 1 inner clusters; a two-sided patch is a
-    // cluster of its two sides.
+    // A binary tree over the fronts has patches - 1 inner clusters, one over the backs
+    // two_sided - 1, and the top joining them one more.
     m_elements = std::vector<Element>(patches - 1 + two_sided);
     m_nodes.resize(m_elements.size());
     m_position.assign(2 * std::size_t(patches), 0);
     m_side.reserve(patches + two_sided);
     m_cumulative.assign(1, 0.0);
-    std::vector<std::uint32_t> order(patches);
-    for (std::uint32_t p = 0; p < patches; ++p) order[p] = p;
-    m_top = build(order);
+    std::vector<std::uint32_t> fronts(patches), backs;
+    backs.reserve(two_sided);
+    for (std::uint32_t p = 0; p < patches; ++p) {
+        fronts[p] = p;
+        if (ps.two_sided(p)) backs.push_back(p);
+    }
+    if (backs.empty()) {
+        m_top = build(fronts, kFront);
+        return;
+    }
+    // docs/design.md §2.7: fronts and backs meet only in the top cluster, which never receives.
+    Element& top = new_cluster(0);
+    Node& n = m_nodes[top.id.patch];
+    n.child[0] = build(fronts, kFront);
+    n.mid = std::uint32_t(m_side.size());
+    n.child[1] = build(backs, kBack);
+    finish(top);
+    m_top = m_join = &top;
 }
 
 Element& ClusterTree::new_cluster(std::uint32_t first) {
@@ -39,29 +54,20 @@ Element& ClusterTree::new_cluster(std::uint32_t first) {
     return c;
 }
 
-// The sides of one patch: its front root, or a cluster of its front and back.
-Element* ClusterTree::leaf(std::uint32_t patch) {
-    const bool two = m_h.patch_set().two_sided(patch);
-    Element* c = two ? &new_cluster(std::uint32_t(m_side.size())) : nullptr;
-    for (std::uint8_t side = kFront; side <= (two ? kBack : kFront); ++side) {
-        const Element& root = m_h.root(patch, side);
-        const std::uint32_t value = 2 * patch + side;
-        m_position[value] = std::uint32_t(m_side.size());
-        m_side.push_back(value);
-        m_cumulative.push_back(m_cumulative.back() + root.area);
-    }
-    if (!c) return &m_h.root(patch);
-    Node& n = m_nodes[c->id.patch];
-    n.child = {&m_h.root(patch, kFront), &m_h.root(patch, kBack)};
-    n.mid = n.first + 1;
-    finish(*c);
-    return c;
+// The side of one patch: its root, and its place in the tree's order.
+Element* ClusterTree::leaf(std::uint32_t patch, std::uint8_t side) {
+    Element& root = m_h.root(patch, side);
+    const std::uint32_t value = 2 * patch + side;
+    m_position[value] = std::uint32_t(m_side.size());
+    m_side.push_back(value);
+    m_cumulative.push_back(m_cumulative.back() + root.area);
+    return &root;
 }
 
 // docs/design.md §2.7: the median of the centres along the longest side of their bounding box,
 // ordered by that coordinate, then by index, so that each half is one set whatever the sort.
-Element* ClusterTree::build(std::span<std::uint32_t> patches) {
-    if (patches.size() == 1) return leaf(patches[0]);
+Element* ClusterTree::build(std::span<std::uint32_t> patches, std::uint8_t side) {
+    if (patches.size() == 1) return leaf(patches[0], side);
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for (const std::uint32_t p : patches) {
         lo = lo.cwiseMin(m_h.root(p).centre);
@@ -80,9 +86,9 @@ Element* ClusterTree::build(std::span<std::uint32_t> patches) {
                      });
     Element& c = new_cluster(std::uint32_t(m_side.size()));
     const std::size_t index = c.id.patch;
-    Element* first = build(patches.first(half));
+    Element* first = build(patches.first(half), side);
     m_nodes[index].mid = std::uint32_t(m_side.size());
-    Element* second = build(patches.subspan(half));
+    Element* second = build(patches.subspan(half), side);
     m_nodes[index].child = {first, second};
     finish(c);
     return &c;

@@ -1,6 +1,6 @@
 // Clusters of patches above the patch roots, each receiving and emitting as an isotropic cloud of
-// surfaces (docs/design.md §2.7): a binary tree built once from the patches' centres, whose
-// nodes are elements the descent links like any other.
+// surfaces (docs/design.md §2.7): binary trees built once from the patches' centres, one over
+// the fronts and one over the backs, whose nodes are elements the descent links like any other.
 #pragma once
 
 #include <array>
@@ -20,7 +20,7 @@ inline bool is_cluster(const Element& e) { return e.id.side == kClusterSide; }
 
 class ClusterTree {
 public:
-    // The tree over h's patches. Makes every two-sided patch's back root, which the clusters
+    // The trees over h's sides. Makes every two-sided patch's back root, which the clusters
     // hold from the start. receiver_weights (per side value) are what a link's weight takes
     // for each side instead of its reflectance (view importance, docs/design.md §3.12); empty:
     // the reflectances.
@@ -31,6 +31,9 @@ public:
     // Where every descent starts: a cluster, or the only patch's front root.
     Element& top() const { return *m_top; }
     std::size_t size() const { return m_elements.size(); }
+    // Whether cluster c may take a ray's deposit: every cluster but the one joining the fronts'
+    // tree and the backs' (docs/design.md §2.7), which a descent always splits.
+    bool may_receive(const Element& c) const { return &c != m_join; }
 
     // The child of cluster c that holds the side `side_value` (2 * patch + side).
     Element& child_toward(const Element& c, std::uint32_t side_value) const {
@@ -65,8 +68,8 @@ private:
         Rgb weight = Rgb::Zero();  // receiver_weight()
     };
 
-    Element* build(std::span<std::uint32_t> patches);
-    Element* leaf(std::uint32_t patch);
+    Element* build(std::span<std::uint32_t> patches, std::uint8_t side);  // over these sides
+    Element* leaf(std::uint32_t patch, std::uint8_t side);
     Element& new_cluster(std::uint32_t first);
     void finish(Element& c);
     Rgb side_weight(const Element& root) const;  // a side root's receiver weight
@@ -83,6 +86,7 @@ private:
     std::vector<std::uint32_t> m_side;      // the side value at each position
     std::vector<double> m_cumulative;       // areas of the sides before each position
     Element* m_top = nullptr;
+    Element* m_join = nullptr;  // the top, when it joins the fronts' tree and the backs'; none
 };
 
 }  // namespace hmcr

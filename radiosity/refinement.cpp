@@ -156,6 +156,9 @@ Step next_step(const RefinementContext& ctx, const PatchPair& pp, const Element&
                const Element& j, RefinementCounters& counters, std::uint64_t rays) {
     const bool split_i = splittable(ctx, i), split_j = splittable(ctx, j);
     if (!split_i && !split_j) return Step::accept;
+    // The cluster joining fronts and backs never receives: it holds the two sides of a patch,
+    // which face apart (docs/design.md §2.7).
+    if (is_cluster(i) && !ctx.clusters->may_receive(i)) return Step::split_receiver;
     const double value = is_cluster(i) || is_cluster(j)
                              ? link_value(ctx, cluster_pair(ctx, pp, i, j), i, j, counters, rays)
                              : link_value(ctx, pp, i, j, counters, rays);

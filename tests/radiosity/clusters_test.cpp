@@ -51,7 +51,8 @@ TEST(Clusters, TreeHoldsEverySideOnce) {
     const ClusterTree tree(box);
     EXPECT_EQ(tree.size(), box.patch_count() - 1);
     expect_every_side_reachable(box, tree);
-    // Two-sided patches: each a cluster of its two sides.
+    // Two-sided patches: a tree over the fronts, one over the backs, and the top joining them,
+    // the only cluster holding a front and a back, which never receives.
     std::vector<TestPolygon> walls =
         inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(0.5), Rgb::Constant(1));
     for (std::size_t k = 0; k < walls.size(); k += 3) walls[k].two_sided = true;
@@ -59,6 +60,12 @@ TEST(Clusters, TreeHoldsEverySideOnce) {
     const ClusterTree sided_tree(sided);
     EXPECT_EQ(sided_tree.size(), sided.patch_count() - 1 + 8);
     expect_every_side_reachable(sided, sided_tree);
+    const Element& top = sided_tree.top();
+    EXPECT_FALSE(sided_tree.may_receive(top));
+    for (std::uint32_t p = 0; p < sided.patch_count(); p += 3) {
+        EXPECT_NE(&sided_tree.child_toward(top, 2 * p), &sided_tree.child_toward(top, 2 * p + 1));
+    }
+    EXPECT_TRUE(tree.may_receive(tree.top()));
 }
 
 // A cluster receiver's weight is the area-weighted mean of its sides': their reflectances, or
