@@ -163,8 +163,9 @@ Step next_step(const RefinementContext& ctx, const PatchPair& pp, const Element&
                              ? link_value(ctx, cluster_pair(ctx, pp, i, j), i, j, counters, rays)
                              : link_value(ctx, pp, i, j, counters, rays);
     if (value < ctx.threshold) return Step::accept;
-    // A receiver cluster is split before its source (the top cluster then): its decision is
-    // the same for every source, which keeps the furnace exact (docs/design.md §2.7).
+    // A receiver cluster is split before its source, the top cluster: its decision is the same
+    // for every source, which keeps the furnace exact. Once the receiver is a side's root the
+    // source is its side's root (docs/design.md §2.7).
     return is_cluster(i) || (split_i && (!split_j || i.area >= j.area)) ? Step::split_receiver
                                                                          : Step::split_source;
 }
@@ -188,8 +189,8 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
         // holding the ray's side.
         Element*& e = step == Step::split_receiver ? i : j;
         if (is_cluster(*e)) {
-            const SideRef side = &e == &i ? query.receiver : query.source;
-            e = &ctx.clusters->child_toward(*e, side.value);
+            i = &ctx.clusters->child_toward(*i, query.receiver.value);
+            if (!is_cluster(*i)) j = &h.root(query.source.patch(), query.source.side());
             continue;
         }
         h.subdivide(*e);
@@ -224,7 +225,8 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
         Element*& e = on_i ? i : j;
         if (is_cluster(*e)) {  // every ray of the group holds the same sides
             const LinkQuery& q = d.rays[index[0]];
-            e = &ctx.clusters->child_toward(*e, on_i ? q.receiver.value : q.source.value);
+            i = &ctx.clusters->child_toward(*i, q.receiver.value);
+            if (!is_cluster(*i)) j = &h.root(q.source.patch(), q.source.side());
             continue;
         }
         Element* const children = h.subdivide(*e);

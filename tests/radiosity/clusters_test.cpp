@@ -273,6 +273,27 @@ TEST(Clusters, PlatesOfManyPatchesKeepTheFormFactor) {
     EXPECT_LE(values.size(), 4u);
 }
 
+// Where the oracle refuses every cluster (kl's default epsilon on a furnace), a descent leaves
+// the clusters at its receiver side's root and goes on from its source side's root, as without
+// clusters: the same leaves and the same bits.
+TEST(Clusters, WhereEveryClusterIsRefusedTheSolveIsTheUnclusteredOne) {
+    const PatchMesh mesh = make_patch_mesh(
+        inward_box({0, 0, 0}, {1, 1, 1}, 6, Rgb::Constant(0.5), Rgb::Constant(1)));
+    SolverOptions o = clustered(40'000, 7);
+    const Solution with = solve(mesh, o);
+    o.clustering = Clustering::none;
+    const Solution without = solve(mesh, o);
+    std::vector<std::pair<ElementId, Rgb>> a, b;
+    with.hierarchy->for_each_leaf([&](const Element& l) { a.emplace_back(l.id, l.radiosity); });
+    without.hierarchy->for_each_leaf([&](const Element& l) { b.emplace_back(l.id, l.radiosity); });
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_GT(a.size(), mesh.n_faces());  // a guard: the patches refine
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        ASSERT_EQ(a[k].first, b[k].first) << k;
+        ASSERT_TRUE((a[k].second == b[k].second).all()) << "leaf " << k;
+    }
+}
+
 // The same seed gives the same hierarchy and values with one thread and with two.
 TEST(Clusters, OneAndTwoThreadsGiveTheSameBits) {
     const PatchMesh mesh = load_scene("cornell").mesh;
