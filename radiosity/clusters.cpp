@@ -23,6 +23,10 @@ ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights)
     // two_sided - 1, and the top joining them one more.
     m_elements = std::vector<Element>(patches - 1 + two_sided);
     m_nodes.resize(m_elements.size());
+    m_top_factor = std::make_unique<std::atomic<double>[]>(m_elements.size());
+    for (std::size_t k = 0; k < m_elements.size(); ++k) {
+        m_top_factor[k].store(std::numeric_limits<double>::quiet_NaN());
+    }
     m_position.assign(2 * std::size_t(patches), 0);
     m_side.reserve(patches + two_sided);
     m_cumulative.assign(1, 0.0);

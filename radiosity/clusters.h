@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <memory>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -43,6 +45,15 @@ public:
     // What a link's weight takes for cluster c as a receiver: the area-weighted mean of its
     // sides' reflectances (rho_C), or of their receiver weights.
     const Rgb& receiver_weight(const Element& c) const { return m_nodes[c.id.patch].weight; }
+    // The geometric factor of the link (c, top), kept once found: the geometry of a cluster
+    // and the top never changes, and a descent links a receiver cluster to the top alone
+    // (docs/design.md §2.7). NaN until set; any thread may set it, to the one value it has.
+    double top_factor(const Element& c) const {
+        return m_top_factor[c.id.patch].load(std::memory_order_relaxed);
+    }
+    void set_top_factor(const Element& c, double factor) const {
+        m_top_factor[c.id.patch].store(factor, std::memory_order_relaxed);
+    }
     // A point uniform by area on cluster c and the normal of the side it lies on, from two
     // uniform numbers.
     std::pair<Vec3, Vec3> point(const Element& c, double xu, double xv) const;
@@ -81,6 +92,7 @@ private:
     std::span<const Rgb> m_weights;  // per side value; empty: the reflectances
     std::vector<Element> m_elements;  // sized once: clusters never move
     std::vector<Node> m_nodes;
+    std::unique_ptr<std::atomic<double>[]> m_top_factor;  // top_factor(), per cluster
     std::size_t m_used = 0;
     std::vector<std::uint32_t> m_position;  // of each side value, in the tree's order
     std::vector<std::uint32_t> m_side;      // the side value at each position

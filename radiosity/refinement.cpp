@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <span>
 #include <vector>
@@ -105,6 +106,13 @@ double geometric_factor(const RefinementContext& ctx, const PatchPair& pp,
     if (!ctx.oracle.uses_lines()) {
         ++counters.oracle_evaluations;
         return ctx.oracle.geometric_factor(centre_geometry(ctx.hierarchy, pp, receiver, source));
+    }
+    if (is_cluster(receiver) && &source == &ctx.clusters->top()) {
+        const double kept = ctx.clusters->top_factor(receiver);
+        if (!std::isnan(kept)) return kept;
+        const double factor = line_factor(ctx, pp, receiver, source, counters);
+        ctx.clusters->set_top_factor(receiver, factor);
+        return factor;
     }
     if (!ctx.cache) return line_factor(ctx, pp, receiver, source, counters);
     if (const auto cached = ctx.cache->find(&receiver, &source)) {
