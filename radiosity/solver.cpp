@@ -100,6 +100,13 @@ double SolveStats::back_face_fraction() const {
     return shot > 0 ? channel_sum(back_face_power) / shot : 0;
 }
 
+std::span<const IterationRecord> SolveStats::value_iterations() const {
+    const auto first = std::find_if(iterations.begin(), iterations.end(),
+                                    [](const IterationRecord& it) { return it.frozen; });
+    const std::span<const IterationRecord> all(iterations);
+    return first == iterations.end() ? all : all.subspan(std::size_t(first - iterations.begin()));
+}
+
 namespace {
 
 // `shape`: a frozen mesh to solve on, or none (refine, or the uniform mesh of uniform_max_area).

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "common/progress.h"
@@ -55,6 +56,9 @@ struct SolveStats {
 
     // Fraction of the shot power that hit back faces (a sign of flipped normals if > 1%).
     double back_face_fraction() const;
+    // The iterations of the pass whose values the solution holds: the frozen pass's when the
+    // mesh was refined first (they come last), else all.
+    std::span<const IterationRecord> value_iterations() const;
 };
 
 struct Solution {
