@@ -218,9 +218,9 @@ TEST(Clusters, FurnaceOfManyPatchesIsExact) {
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
         const Solution sol = solve(mesh, options(seed));
         if (seed > 1) {
-            ASSERT_EQ(sol.stats.iterations.size(), iterations) << "seed " << seed;
+            ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
         }
-        iterations = sol.stats.iterations.size();
+        iterations = sol.stats.value_iterations().size();
         for (std::size_t p = 0; p < patches; ++p) {
             per_patch[p].push_back(sol.hierarchy->root(p).radiosity[1]);
         }

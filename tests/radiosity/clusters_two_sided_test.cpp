@@ -58,9 +58,9 @@ TEST(ClustersTwoSided, FurnaceOfTwoSidedWallsIsExactInsideAndOutside) {
     for (std::uint64_t seed = 1; seed <= 8; ++seed) {
         const Solution sol = solve(mesh, options(seed));
         if (seed > 1) {
-            ASSERT_EQ(sol.stats.iterations.size(), iterations) << "seed " << seed;
+            ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
         }
-        iterations = sol.stats.iterations.size();
+        iterations = sol.stats.value_iterations().size();
         for (std::size_t p = 0; p < patches; ++p) {
             inside[p].push_back(sol.hierarchy->root(p).radiosity[1]);
             const Element* out = sol.hierarchy->back_root(p);
