@@ -39,18 +39,6 @@ void IterationSources::finish() {
     }
 }
 
-void IterationSources::rebuild(const Hierarchy& h) {
-    clear();
-    const std::vector<Patch>& ps = h.patch_set().patches;
-    patches = &ps;
-    h.for_each_leaf([&](const Element& e) {
-        add({e.domain.u0, e.domain.v0, e.domain.s, e.id.patch, region_map(ps[e.id.patch]),
-             e.id.side},
-            e.area, e.unshot);
-    });
-    finish();
-}
-
 void IterationSources::rebuild(const Hierarchy& h, const Rgb& beta) {
     clear();
     const std::vector<Patch>& ps = h.patch_set().patches;

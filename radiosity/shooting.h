@@ -31,10 +31,9 @@ struct IterationSources {
     // The patches the regions name: the scene's, or with `zero` its patches and background.
     const std::vector<Patch>* patches = nullptr;
 
-    // The sources of h's unshot power now, in the storage of the previous iteration's.
-    void rebuild(const Hierarchy& h);
-    // The sources of h's unshot power minus beta.
-    void rebuild(const Hierarchy& h, const Rgb& beta);
+    // The sources of h's unshot power now minus beta (0: the plain iteration, bit for bit), in
+    // the storage of the previous iteration's.
+    void rebuild(const Hierarchy& h, const Rgb& beta = Rgb::Zero());
     // The zero surfaces, each shooting the radiosity `shot` (-beta) over its area.
     void rebuild(const ZeroSurfaces& zero, const Rgb& shot);
 

@@ -10,6 +10,7 @@
 //   internal:     set by hmcr itself (a reference's uniform mesh); shown in the summary
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -35,22 +36,46 @@ const Oracle* default_oracle();  // kl
 // The weight w_ij of a link: the receiver's reflectance times the source's unshot radiosity
 // (Delta B) or its total radiosity (B, RenderPark's), docs/design.md §4.4.
 enum class LinkWeight { unshot, total };
-std::string_view name(LinkWeight weight);  // "unshot", "total"
 
 // What the shooting subtracts from every surface's unshot radiosity and adds back exactly:
 // nothing, or a constant per channel (docs/design.md §3.11).
 enum class ControlVariate { none, constant };
-std::string_view name(ControlVariate cv);  // "none", "constant"
 
 // Clusters of patches above the patch roots, and how a cluster receives and emits: none, or as
 // an isotropic cloud of surfaces (docs/design.md §2.7).
 enum class Clustering { none, isotropic };
-std::string_view name(Clustering c);  // "none", "isotropic"
 
 // What weighs a refining solve's link values besides the oracle: nothing, or the receiver's
 // importance for the scene's views (docs/design.md §3.12).
 enum class Importance { none, views };
-std::string_view name(Importance importance);  // "none", "views"
+
+// An enumerated setting's names, in the order of its values.
+template <class E>
+struct EnumNames;
+template <>
+struct EnumNames<LinkWeight> {
+    static constexpr std::array<std::string_view, 2> names{"unshot", "total"};
+};
+template <>
+struct EnumNames<ControlVariate> {
+    static constexpr std::array<std::string_view, 2> names{"none", "constant"};
+};
+template <>
+struct EnumNames<Clustering> {
+    static constexpr std::array<std::string_view, 2> names{"none", "isotropic"};
+};
+template <>
+struct EnumNames<Importance> {
+    static constexpr std::array<std::string_view, 2> names{"none", "views"};
+};
+template <class E>
+concept NamedEnum = requires { EnumNames<E>::names; };
+
+// "total" for LinkWeight::total: how flags, scene files and summaries spell a value.
+template <NamedEnum E>
+std::string_view name(E value) {
+    return EnumNames<E>::names[std::size_t(value)];
+}
 
 // Settings whose values are names (flags, scene files and summaries spell them): parse gives
 // none for a name that is not one.
@@ -61,25 +86,16 @@ struct SettingNames<OracleRef> {
     static std::optional<OracleRef> parse(std::string_view name);
     static std::string_view name(OracleRef oracle) { return oracle->name(); }
 };
-template <>
-struct SettingNames<LinkWeight> {
-    static std::optional<LinkWeight> parse(std::string_view name);
-    static std::string_view name(LinkWeight weight) { return hmcr::name(weight); }
-};
-template <>
-struct SettingNames<ControlVariate> {
-    static std::optional<ControlVariate> parse(std::string_view name);
-    static std::string_view name(ControlVariate cv) { return hmcr::name(cv); }
-};
-template <>
-struct SettingNames<Clustering> {
-    static std::optional<Clustering> parse(std::string_view name);
-    static std::string_view name(Clustering c) { return hmcr::name(c); }
-};
-template <>
-struct SettingNames<Importance> {
-    static std::optional<Importance> parse(std::string_view name);
-    static std::string_view name(Importance importance) { return hmcr::name(importance); }
+template <NamedEnum E>
+struct SettingNames<E> {
+    static std::optional<E> parse(std::string_view text) {
+        const auto& names = EnumNames<E>::names;
+        for (std::size_t k = 0; k < names.size(); ++k) {
+            if (names[k] == text) return E(k);
+        }
+        return std::nullopt;
+    }
+    static std::string_view name(E value) { return hmcr::name(value); }
 };
 template <class T>
 concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };

@@ -116,44 +116,6 @@ std::optional<OracleRef> SettingNames<OracleRef>::parse(std::string_view name) {
     return std::nullopt;
 }
 
-std::optional<LinkWeight> SettingNames<LinkWeight>::parse(std::string_view name) {
-    if (name == "unshot") return LinkWeight::unshot;
-    if (name == "total") return LinkWeight::total;
-    return std::nullopt;
-}
-
-std::string_view name(LinkWeight weight) {
-    return weight == LinkWeight::total ? "total" : "unshot";
-}
-
-std::optional<ControlVariate> SettingNames<ControlVariate>::parse(std::string_view name) {
-    if (name == "none") return ControlVariate::none;
-    if (name == "constant") return ControlVariate::constant;
-    return std::nullopt;
-}
-
-std::string_view name(ControlVariate cv) {
-    return cv == ControlVariate::constant ? "constant" : "none";
-}
-
-std::optional<Clustering> SettingNames<Clustering>::parse(std::string_view name) {
-    if (name == "none") return Clustering::none;
-    if (name == "isotropic") return Clustering::isotropic;
-    return std::nullopt;
-}
-
-std::string_view name(Clustering c) { return c == Clustering::isotropic ? "isotropic" : "none"; }
-
-std::optional<Importance> SettingNames<Importance>::parse(std::string_view name) {
-    if (name == "none") return Importance::none;
-    if (name == "views") return Importance::views;
-    return std::nullopt;
-}
-
-std::string_view name(Importance importance) {
-    return importance == Importance::views ? "views" : "none";
-}
-
 std::uint64_t default_max_elements() {
     const std::uint64_t memory = physical_memory_bytes();
     return memory > 0 ? std::max<std::uint64_t>(1'000'000, memory / 4 / sizeof(Element))

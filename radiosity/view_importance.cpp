@@ -117,15 +117,15 @@ ViewImportance solve_view_importance(const PatchSet& patches, const EmbreeScene&
     Rgb weighted = Rgb::Zero(), area = Rgb::Zero();
     for (std::size_t p = 0; p < h.patch_count(); ++p) {
         for (std::uint8_t side : {kFront, kBack}) {
-            const Element* root = side == kFront ? &h.root(p) : h.back_root(p);
             if (side == kBack && !patches.two_sided(p)) continue;
+            const Element* root = side == kFront ? &h.root(p) : h.back_root(p);
             const Rgb rho = patches.material(p, side).reflectance;
             const Rgb k = root ? root->radiosity : Rgb::Zero();
             const double a = patches.patches[p].area;
             for (int c = 0; c < 3; ++c) {
                 if (rho[c] <= 0) continue;
                 out.importance[2 * p + side][c] = k[c] / rho[c];
-                weighted[c] += a * k[c] / rho[c];
+                weighted[c] += a * out.importance[2 * p + side][c];
                 area[c] += a;
             }
             out.receiver_weights[2 * p + side] = k;

@@ -69,6 +69,12 @@ bool is_space(char c) {
 }
 
 // A count attribute: NumberOfPoints, NumberOfTuples, NumberOfComponents, ...
+// An attribute's name as a message shows it: a damaged file's names may be of any length.
+std::string shown_name(std::string_view name) {
+    constexpr std::size_t kMax = 40;
+    return name.size() <= kMax ? std::string(name) : std::string(name.substr(0, kMax)) + "...";
+}
+
 bool is_count(std::string_view attribute) {
     constexpr std::string_view kPrefix = "NumberOf";
     return attribute.size() > kPrefix.size() && attribute.substr(0, kPrefix.size()) == kPrefix &&
@@ -191,8 +197,8 @@ private:
             const auto count = plain_number(name, value, 15);  // more digits: beyond any file
             if (!count) return false;
             if (double(*count) > m_limit) {
-                return refuse(fmt::format("{} is {} in a file of {} bytes", name, quote(value),
-                                          m_file_bytes));
+                return refuse(fmt::format("{} is {} in a file of {} bytes", shown_name(name),
+                                          quote(value), m_file_bytes));
             }
         } else if (name == "offset") {
             // Every offset, however written: VTK reads offset="19i" as 19, into another array's
@@ -226,7 +232,7 @@ private:
                                               std::size_t max_digits) {
         const std::string_view digits = plain_digits(value);
         if (digits.empty() || digits.size() > max_digits) {
-            refuse(fmt::format("{} is {}, not a plain number", name, quote(value)));
+            refuse(fmt::format("{} is {}, not a plain number", shown_name(name), quote(value)));
             return std::nullopt;
         }
         return std::stoull(std::string(digits));

@@ -144,6 +144,12 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
     // A count of 400 digits: std::stod would throw out_of_range (an internal error).
     expect_damaged("digits.vtp", replace(at, count, std::string(400, '9')),
                    "NumberOfPoints is '999");
+    // A count attribute of 3,000 characters and no number: the message shows its name cut
+    // short, one short line (fuzzer).
+    const std::size_t name = bytes.find("NumberOfPoints=\"");
+    expect_damaged("name.vtp",
+                   replace(name, 16 + count, "NumberOfP" + std::string(3000, '9') + "=\"x"),
+                   "NumberOfP" + std::string(31, '9') + "... is 'x', not a plain number");
     // No blocks but a last block of some bytes: another null dereference in VTK (fuzzer).
     expect_damaged("header.vtp",
                    replace(first_array(bytes), 12,

@@ -72,54 +72,40 @@ void expect_same_solve(const fs::path& dir, const std::string& name, int k) {
         << k << " ranks";
 }
 
-TEST(MpiRuns, RefinedSolvesAreTheSameBitsOnAnyRankCount) {
+// `hmcr solve cornell FLAGS -q -o NAME.vtp` alone and on each of `rank_counts` ranks: the same
+// solution.
+void expect_same_solve_on_ranks(const std::string& flags, std::initializer_list<int> rank_counts) {
     TempDir dir;
-    against_one_process(dir.path(), "solve cornell --oracle kl --rays 300000 -q -o ", ".vtp",
-                        {1, 2, 3}, [&](const std::string& name, int k) {
+    against_one_process(dir.path(), "solve cornell " + flags + " -q -o ", ".vtp", rank_counts,
+                        [&](const std::string& name, int k) {
                             expect_same_solve(dir.path(), name, k);
                         });
 }
 
+TEST(MpiRuns, RefinedSolvesAreTheSameBitsOnAnyRankCount) {
+    expect_same_solve_on_ranks("--oracle kl --refine-share 1 --rays 300000", {1, 2, 3});
+}
+
 TEST(MpiRuns, RefineThenFreezeIsTheSameBitsOnAnyRankCount) {
-    TempDir dir;
-    against_one_process(dir.path(),
-                        "solve cornell --oracle kl --refine-share 0.4 --rays 300000 -q -o ",
-                        ".vtp", {1, 2, 3}, [&](const std::string& name, int k) {
-                            expect_same_solve(dir.path(), name, k);
-                        });
+    expect_same_solve_on_ranks("--oracle kl --refine-share 0.4 --rays 300000", {1, 2, 3});
 }
 
 // View importance (docs/design.md §3.12): its adjoint solve and weights are the same on every
 // rank, so the refining pass's mesh is.
 TEST(MpiRuns, ViewImportanceIsTheSameBitsOnAnyRankCount) {
-    TempDir dir;
-    against_one_process(dir.path(),
-                        "solve cornell --oracle kl --refine-share 0.4 --importance views "
-                        "--rays 300000 -q -o ",
-                        ".vtp", {1, 2, 3}, [&](const std::string& name, int k) {
-                            expect_same_solve(dir.path(), name, k);
-                        });
+    expect_same_solve_on_ranks("--oracle kl --refine-share 0.4 --importance views --rays 300000",
+                               {1, 2, 3});
 }
 
 // The frozen pass with the control variate (docs/design.md §3.11): its zero surfaces, pilot
 // and beta are the same on every rank.
 TEST(MpiRuns, TheControlVariateIsTheSameBitsOnAnyRankCount) {
-    TempDir dir;
-    against_one_process(dir.path(),
-                        "solve cornell --oracle kl --refine-share 0.4 --control-variate constant "
-                        "--rays 300000 -q -o ",
-                        ".vtp", {1, 2, 3}, [&](const std::string& name, int k) {
-                            expect_same_solve(dir.path(), name, k);
-                        });
+    expect_same_solve_on_ranks(
+        "--oracle kl --refine-share 0.4 --control-variate constant --rays 300000", {1, 2, 3});
 }
 
 TEST(MpiRuns, BudgetSearchesAreTheSameBitsOnTwoRanks) {
-    TempDir dir;
-    against_one_process(dir.path(),
-                        "solve cornell --oracle power --budget 3000 --rays 300000 -q -o ", ".vtp",
-                        {2}, [&](const std::string& name, int k) {
-                            expect_same_solve(dir.path(), name, k);
-                        });
+    expect_same_solve_on_ranks("--oracle power --budget 3000 --rays 300000", {2});
 }
 
 TEST(MpiRuns, ReferencesAreTheSameBitsOnAnyRankCount) {

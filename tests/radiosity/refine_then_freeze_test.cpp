@@ -13,6 +13,7 @@
 #include "tests/support/plugins.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
+#include "tests/support/same_leaves.h"
 
 namespace hmcr::test::refine_then_freeze {
 namespace {
@@ -82,13 +83,7 @@ TEST(RefineThenFreeze, TheMeshIsTheRefiningSharesAndTheRaysAreBothPasses) {
 
 TEST(RefineThenFreeze, OneAndTwoThreadsGiveTheSameBits) {
     const Scene scene = load_scene("cornell");
-    SolverOptions o = options("power", 300'000, 0.5);
-    o.threads = 1;
-    const Solution one = solve(scene.mesh, o);
-    o.threads = 2;
-    const Solution two = solve(scene.mesh, o);
-    EXPECT_EQ(leaf_ids(*one.hierarchy), leaf_ids(*two.hierarchy));
-    EXPECT_EQ(leaf_values(*one.hierarchy), leaf_values(*two.hierarchy));
+    solve_on_one_and_two_threads(scene.mesh, options("power", 300'000, 0.5));
 }
 
 // View importance's adjoint solve and weights do not depend on the thread count either.
@@ -97,13 +92,7 @@ TEST(RefineThenFreeze, ViewImportanceGivesTheSameBitsOnOneAndTwoThreads) {
     SolverOptions o = options("kl", 300'000, 0.5);
     o.importance = Importance::views;
     o.views = scene.views;
-    o.threads = 1;
-    const Solution one = solve(scene.mesh, o);
-    o.threads = 2;
-    const Solution two = solve(scene.mesh, o);
-    EXPECT_GT(one.stats.importance_rays, 0u);
-    EXPECT_EQ(leaf_ids(*one.hierarchy), leaf_ids(*two.hierarchy));
-    EXPECT_EQ(leaf_values(*one.hierarchy), leaf_values(*two.hierarchy));
+    EXPECT_GT(solve_on_one_and_two_threads(scene.mesh, o).stats.importance_rays, 0u);
 }
 
 // A reference's uniform mesh has nothing to refine: every ray solves it, whatever the share.
@@ -116,7 +105,7 @@ TEST(RefineThenFreeze, AUniformMeshIgnoresTheShare) {
     const Solution whole = solve(scene.mesh, o);
     EXPECT_EQ(frozen_iterations(shared.stats), 0u);
     EXPECT_EQ(shared.stats.iterations.size(), whole.stats.iterations.size());
-    EXPECT_EQ(leaf_values(*shared.hierarchy), leaf_values(*whole.hierarchy));
+    expect_same_leaves(*shared.hierarchy, *whole.hierarchy);
 }
 
 // A budget search probes with the refining pass and freezes the accepted probe: its leaves are
@@ -146,8 +135,7 @@ TEST(RefineThenFreeze, ABudgetSearchSharesItsViewImportance) {
     ASSERT_GT(found.probes.size(), 1u);
     o.epsilon = found.solution.stats.epsilon;
     const Solution alone = solve(scene.mesh, o);
-    EXPECT_EQ(leaf_ids(*found.solution.hierarchy), leaf_ids(*alone.hierarchy));
-    EXPECT_EQ(leaf_values(*found.solution.hierarchy), leaf_values(*alone.hierarchy));
+    expect_same_leaves(*found.solution.hierarchy, *alone.hierarchy);
     EXPECT_EQ(found.solution.stats.importance_rays, alone.stats.importance_rays);
 }
 

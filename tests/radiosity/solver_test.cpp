@@ -14,6 +14,7 @@
 #include "tests/support/analytic.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
+#include "tests/support/same_leaves.h"
 
 namespace hmcr::test {
 namespace {
@@ -215,21 +216,7 @@ TEST(Solver, RunningOutOfRaysKeepsTheUnshotPower) {
 // order), the same radiosity for any thread count.
 TEST_P(EveryOracle, SameHierarchyAndValuesForOneAndTwoThreads) {
     const Scene scene = load_scene("cornell");
-    auto run = [&](int threads) {
-        SolverOptions o = options(200'000, 9);
-        o.threads = threads;
-        return solve(scene.mesh, o);
-    };
-    const Solution a = run(1), b = run(2);
-    std::vector<std::pair<ElementId, Rgb>> la, lb;
-    a.hierarchy->for_each_leaf([&](const Element& e) { la.emplace_back(e.id, e.radiosity); });
-    b.hierarchy->for_each_leaf([&](const Element& e) { lb.emplace_back(e.id, e.radiosity); });
-    ASSERT_EQ(la.size(), lb.size());
-    EXPECT_GT(la.size(), 100u);
-    for (std::size_t k = 0; k < la.size(); ++k) {
-        ASSERT_EQ(la[k].first, lb[k].first) << k;
-        ASSERT_TRUE((la[k].second == lb[k].second).all()) << la[k].first.to_string();
-    }
+    EXPECT_GT(solve_on_one_and_two_threads(scene.mesh, options(200'000, 9)).stats.leaves, 100u);
 }
 
 // docs/design.md §3: the iterations together shoot --rays within 2%, also where the light dies out

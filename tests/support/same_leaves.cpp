@@ -1,0 +1,33 @@
+#include "tests/support/same_leaves.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace hmcr::test {
+
+void expect_same_leaves(const Hierarchy& a, const Hierarchy& b) {
+    std::vector<std::pair<ElementId, Rgb>> la, lb;
+    a.for_each_leaf([&](const Element& e) { la.emplace_back(e.id, e.radiosity); });
+    b.for_each_leaf([&](const Element& e) { lb.emplace_back(e.id, e.radiosity); });
+    EXPECT_EQ(la.size(), lb.size());
+    for (std::size_t k = 0; k < std::min(la.size(), lb.size()); ++k) {
+        if (!(la[k].first == lb[k].first) || !(la[k].second == lb[k].second).all()) {
+            ADD_FAILURE() << "leaf " << k << " differs: " << la[k].first.to_string() << " vs "
+                          << lb[k].first.to_string();
+            return;
+        }
+    }
+}
+
+Solution solve_on_one_and_two_threads(const PatchMesh& mesh, SolverOptions options) {
+    options.threads = 1;
+    Solution one = solve(mesh, options);
+    options.threads = 2;
+    expect_same_leaves(*one.hierarchy, *solve(mesh, options).hierarchy);
+    return one;
+}
+
+}  // namespace hmcr::test

@@ -1,0 +1,18 @@
+// Solutions that must be the same bit for bit (docs/design.md §9): any thread count, a setting
+// that may not change them. One check, the leaves' ids and radiosity in order.
+#pragma once
+
+#include "meshes/patch_mesh.h"
+#include "radiosity/hierarchy.h"
+#include "radiosity/solver.h"
+
+namespace hmcr::test {
+
+// Expects the same leaves (ids, in order) with the same radiosity, bit for bit.
+void expect_same_leaves(const Hierarchy& a, const Hierarchy& b);
+
+// Solves `mesh` with `options` on 1 and on 2 threads and expects the same leaves. Returns the
+// one-thread solution.
+Solution solve_on_one_and_two_threads(const PatchMesh& mesh, SolverOptions options);
+
+}  // namespace hmcr::test
