@@ -24,10 +24,14 @@ ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights)
     m_elements = std::vector<Element>(patches - 1 + two_sided);
     m_nodes.resize(m_elements.size());
     m_top_factor = std::make_unique<std::atomic<double>[]>(m_elements.size());
+    m_open = std::make_unique<std::atomic<std::uint8_t>[]>(m_elements.size());
     for (std::size_t k = 0; k < m_elements.size(); ++k) {
         m_top_factor[k].store(std::numeric_limits<double>::quiet_NaN());
+        m_open[k].store(0);
     }
     m_position.assign(2 * std::size_t(patches), 0);
+    m_side_parent.assign(2 * std::size_t(patches), kNoParent);
+    m_leaf_of_side.assign(2 * std::size_t(patches), -1);
     m_side.reserve(patches + two_sided);
     m_cumulative.assign(1, 0.0);
     std::vector<std::uint32_t> fronts(patches), backs;
@@ -38,6 +42,7 @@ ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights)
     }
     if (backs.empty()) {
         m_top = build(fronts, kFront);
+        m_power_cumulative = m_cumulative;  // by area until an iteration begins
         return;
     }
     // docs/design.md §2.7: fronts and backs meet only in the top cluster, which never receives.
@@ -46,8 +51,10 @@ ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights)
     n.child[0] = build(fronts, kFront);
     n.mid = std::uint32_t(m_side.size());
     n.child[1] = build(backs, kBack);
+    adopt(top);
     finish(top);
     m_top = m_join = &top;
+    m_power_cumulative = m_cumulative;
 }
 
 Element& ClusterTree::new_cluster(std::uint32_t first) {
@@ -94,8 +101,20 @@ Element* ClusterTree::build(std::span<std::uint32_t> patches, std::uint8_t side)
     m_nodes[index].mid = std::uint32_t(m_side.size());
     Element* second = build(patches.subspan(half), side);
     m_nodes[index].child = {first, second};
+    adopt(c);
     finish(c);
     return &c;
+}
+
+// Records c as its children's parent.
+void ClusterTree::adopt(const Element& c) {
+    for (const Element* k : m_nodes[c.id.patch].child) {
+        if (is_cluster(*k)) {
+            m_nodes[k->id.patch].parent = c.id.patch;
+        } else {
+            m_side_parent[2 * std::size_t(k->id.patch) + k->id.side] = c.id.patch;
+        }
+    }
 }
 
 // Area, centre, receiver weight, B and Delta B from the finished children.
@@ -128,19 +147,34 @@ void ClusterTree::average(Element& c) const {
                c.area;
 }
 
-std::pair<Vec3, Vec3> ClusterTree::point(const Element& c, double xu, double xv) const {
+std::pair<Vec3, Vec3> ClusterTree::point_by(const std::vector<double>& cumulative,
+                                            const Element& c, double xu, double xv) const {
     const Node& n = m_nodes[c.id.patch];
-    const double base = m_cumulative[n.first], area = m_cumulative[n.end] - base;
-    const double a = base + xu * area;
-    // The side whose share of [base, base + area) holds a.
-    const auto it = std::upper_bound(m_cumulative.begin() + n.first + 1,
-                                     m_cumulative.begin() + n.end, a);
-    const auto pos = std::size_t(it - m_cumulative.begin()) - 1;
-    const double lo = m_cumulative[pos], width = m_cumulative[pos + 1] - lo;
+    const double base = cumulative[n.first], total = cumulative[n.end] - base;
+    const double a = base + xu * total;
+    // The side whose share of [base, base + total) holds a (none is empty: it is never chosen).
+    const auto it = std::upper_bound(cumulative.begin() + n.first + 1,
+                                     cumulative.begin() + n.end, a);
+    const auto pos = std::size_t(it - cumulative.begin()) - 1;
+    const double lo = cumulative[pos], width = cumulative[pos + 1] - lo;
     const double u = std::clamp((a - lo) / width, 0.0, std::nextafter(1.0, 0.0));
     const std::uint32_t side = m_side[pos];
     const Patch& p = m_h.patch_set().patches[side >> 1];
     return {p.point(sample_element(p, Domain{}, u, xv)), side_normal(p, std::uint8_t(side & 1))};
+}
+
+void ClusterTree::begin_iteration(LinkWeight weight) {
+    m_power_cumulative.assign(1, 0.0);
+    for (const std::uint32_t side : m_side) {
+        const Element& root = m_h.root(side >> 1, std::uint8_t(side & 1));
+        const Rgb& b = weight == LinkWeight::total ? root.radiosity : root.unshot;
+        m_power_cumulative.push_back(m_power_cumulative.back() + root.area * std::max(0.0, b.sum()));
+    }
+    // A scene that shoots nothing is never sampled; the areas keep point_by well defined.
+    if (!(m_power_cumulative.back() > 0)) m_power_cumulative = m_cumulative;
+    for (std::size_t k = 0; k < m_elements.size(); ++k) {
+        m_top_factor[k].store(std::numeric_limits<double>::quiet_NaN());
+    }
 }
 
 void ClusterTree::push(const PowerQuantum& quantum, std::vector<Rgb>& from_above) {
@@ -165,6 +199,44 @@ void ClusterTree::pull() {
     // Children have larger indices than their parent (depth-first numbering): the reverse
     // index order visits children first.
     for (std::size_t k = m_elements.size(); k-- > 0;) average(m_elements[k]);
+}
+
+void ClusterTree::open_above(std::uint32_t side_value) const {
+    // Opening is upward closed: above an open cluster every cluster is open.
+    for (std::uint32_t c = m_side_parent[side_value];
+         c != kNoParent && !m_open[c].load(std::memory_order_relaxed); c = m_nodes[c].parent) {
+        mark(c);
+    }
+}
+
+void ClusterTree::open_like(const ClusterTree& shape) { set_open_flags(shape.open_flags()); }
+
+std::vector<std::int64_t> ClusterTree::open_flags() const {
+    std::vector<std::int64_t> flags(m_elements.size());
+    for (std::size_t k = 0; k < flags.size(); ++k) flags[k] = m_open[k].load();
+    return flags;
+}
+
+void ClusterTree::set_open_flags(std::span<const std::int64_t> flags) {
+    for (std::size_t k = 0; k < m_elements.size(); ++k) m_open[k].store(flags[k] != 0 ? 1 : 0);
+}
+
+std::size_t ClusterTree::settle() {
+    std::fill(m_leaf_of_side.begin(), m_leaf_of_side.end(), -1);
+    m_cluster_leaves = 0;
+    std::size_t hidden = 0;  // sides under closed clusters, each a leaf of m_h
+    // Parents come before their children in index order.
+    for (std::size_t k = 0; k < m_elements.size(); ++k) {
+        const Node& n = m_nodes[k];
+        const bool parent_open = n.parent == kNoParent || m_open[n.parent].load() != 0;
+        if (m_open[k].load() != 0 || !parent_open) continue;
+        ++m_cluster_leaves;
+        hidden += n.end - n.first;
+        for (std::uint32_t pos = n.first; pos < n.end; ++pos) {
+            m_leaf_of_side[m_side[pos]] = std::int32_t(k);
+        }
+    }
+    return m_h.leaf_count() - hidden + m_cluster_leaves;
 }
 
 }  // namespace hmcr

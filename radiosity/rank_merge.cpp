@@ -86,6 +86,12 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
             }
         });
     }
+    // A cluster is open if it is on any rank (the union, as of the subdivisions).
+    if (refined && clusters) {
+        std::vector<std::int64_t> open = clusters->open_flags();
+        ranks.sum(open);
+        clusters->set_open_flags(open);
+    }
     // Every element's deposits, in the canonical order every rank now shares.
     std::vector<std::int64_t> quanta;
     quanta.reserve(3 * h.element_count() + 9);

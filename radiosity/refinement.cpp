@@ -178,6 +178,25 @@ Step next_step(const RefinementContext& ctx, const PatchPair& pp, const Element&
                                                                          : Step::split_source;
 }
 
+// A refused receiver cluster is split (and so opened, a part of the mesh no more): the receiver
+// becomes its child holding the ray's side, and once that is a side's root the source becomes
+// its own side's root (docs/design.md §2.7).
+void split_cluster(const RefinementContext& ctx, Element*& i, Element*& j, const LinkQuery& q) {
+    ctx.clusters->open(*i);
+    i = &ctx.clusters->child_toward(*i, q.receiver.value);
+    if (!is_cluster(*i)) j = &ctx.hierarchy.root(q.source.patch(), q.source.side());
+}
+
+// On a fixed mesh the receiver is the mesh's leaf at the hit: the cluster leaf holding the side
+// hit, or the side's leaf containing the hit point.
+Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& q) {
+    if (ctx.clusters) {
+        if (Element* c = ctx.clusters->closed_leaf(q.receiver.value)) return *c;
+    }
+    Hierarchy& h = ctx.hierarchy;
+    return h.locate(h.root(q.receiver.patch(), q.receiver.side()), q.y_uv.cast<double>());
+}
+
 }  // namespace
 
 Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
@@ -185,7 +204,7 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
     Hierarchy& h = ctx.hierarchy;
     const Vec2 y_uv = query.y_uv.cast<double>(), x_uv = query.x_uv.cast<double>();
     Element* i = &h.root(query.receiver.patch(), query.receiver.side());
-    if (ctx.fixed_mesh) return h.locate(*i, y_uv);
+    if (ctx.fixed_mesh) return fixed_receiver(ctx, query);
     Element* j = &h.root(query.source.patch(), query.source.side());
     if (ctx.clusters) i = j = &ctx.clusters->top();
     const PatchPair pp = patch_pair(ctx, query.receiver, query.source);
@@ -197,10 +216,10 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
         // holding the ray's side.
         Element*& e = step == Step::split_receiver ? i : j;
         if (is_cluster(*e)) {
-            i = &ctx.clusters->child_toward(*i, query.receiver.value);
-            if (!is_cluster(*i)) j = &h.root(query.source.patch(), query.source.side());
+            split_cluster(ctx, i, j, query);
             continue;
         }
+        if (ctx.clusters && &e == &j) ctx.clusters->open_above(query.source.value);
         h.subdivide(*e);
         e = &h.child_containing(*e, &e == &i ? y_uv : x_uv);
     }
@@ -232,11 +251,10 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
         const bool on_i = step == Step::split_receiver;
         Element*& e = on_i ? i : j;
         if (is_cluster(*e)) {  // every ray of the group holds the same sides
-            const LinkQuery& q = d.rays[index[0]];
-            i = &ctx.clusters->child_toward(*i, q.receiver.value);
-            if (!is_cluster(*i)) j = &h.root(q.source.patch(), q.source.side());
+            split_cluster(ctx, i, j, d.rays[index[0]]);
             continue;
         }
+        if (ctx.clusters && !on_i) ctx.clusters->open_above(d.rays[index[0]].source.value);
         Element* const children = h.subdivide(*e);
         const bool quad = h.patch(*e).is_quad();
         std::array<std::size_t, 4> count{};
@@ -288,10 +306,8 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
                   DescentScratch& buffers) {
     Hierarchy& h = ctx.hierarchy;
     if (ctx.fixed_mesh) {
-        tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
-            const SideRef r = queries[k].receiver;
-            receivers[k] = &h.locate(h.root(r.patch(), r.side()), queries[k].y_uv.cast<double>());
-        });
+        tbb::parallel_for(std::size_t(0), queries.size(),
+                          [&](std::size_t k) { receivers[k] = &fixed_receiver(ctx, queries[k]); });
         return;
     }
     // Grouped by (receiver side, source side), each group's queries copied together so that
