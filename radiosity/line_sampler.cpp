@@ -61,6 +61,14 @@ struct OnCluster {
     const Element& cluster;
 };
 
+// The top cluster as a source: its points where its light leaves it.
+struct FromTop {
+    std::pair<Vec3, Vec3> operator()(double u, double v) const {
+        return clusters.source_point(u, v);
+    }
+    const ClusterTree& clusters;
+};
+
 }  // namespace
 
 void sample_kernel(const EmbreeScene& scene, const Hierarchy& hierarchy, const Element& i,
@@ -69,6 +77,8 @@ void sample_kernel(const EmbreeScene& scene, const Hierarchy& hierarchy, const E
     const bool ci = is_cluster(i), cj = is_cluster(j);
     if (!ci && !cj) {
         kernel_lines(scene, rng, out, OnElement(hierarchy, i), OnElement(hierarchy, j));
+    } else if (ci && cj && &j == &clusters->top()) {
+        kernel_lines(scene, rng, out, OnCluster{*clusters, i}, FromTop{*clusters});
     } else if (ci && cj) {
         kernel_lines(scene, rng, out, OnCluster{*clusters, i}, OnCluster{*clusters, j});
     } else if (ci) {
