@@ -71,7 +71,7 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
     // The uniform mesh has no oracle and no limits; rays and seeds are the reference's own.
     a->flags = add_solver_flags(*cmd, o.solver,
                                 {"oracle", "epsilon", "lines", "min_area", "max_depth", "cache_mb",
-                                 "link_weight", "refine_share"},
+                                 "link_weight", "refine_share", "clustering"},
                                 {"rays", "seed"});
     cmd->add_option("--samples", o.samples_per_axis, "n x n rays per pixel of the view images")
         ->capture_default_str();

@@ -87,9 +87,12 @@ void Search::fail(const std::string& why) const {
 }
 
 BudgetResult Search::run() {
+    // Without clusters a mesh has at least a leaf per patch (docs/design.md §2.7).
     const std::size_t patches = m_mesh.n_faces();
-    if (m_budget.leaves < patches) {
-        fail(fmt::format("the scene has {} patches, the fewest leaves a solve can have", patches));
+    if (m_options.clustering == Clustering::none && m_budget.leaves < patches) {
+        fail(fmt::format("the scene has {} patches, the fewest leaves a solve can have without "
+                         "clustering (try --clustering isotropic)",
+                         patches));
     }
     const double start = std::isnan(m_options.epsilon)
                              ? m_options.oracle->default_epsilon()

@@ -15,7 +15,7 @@ namespace hmcr {
 struct ElementId {
     std::uint32_t patch = 0;
     std::uint8_t depth = 0;
-    std::uint8_t side = 0;   // kFront or kBack (rays/patch.h)
+    std::uint8_t side = 0;   // kFront or kBack (rays/patch.h), or a cluster's (clusters.h)
     std::uint64_t path = 0;  // 2 bits per level, the root's child index most significant
 
     ElementId child(int k) const {

@@ -154,12 +154,17 @@ void push_pull_element(Element& e, const Rgb& from_above, const PowerQuantum& qu
 
 }  // namespace
 
-void Hierarchy::push_pull(const PowerQuantum& quantum) {
+void Hierarchy::push_pull(const PowerQuantum& quantum) { push_pull(quantum, {}); }
+
+void Hierarchy::push_pull(const PowerQuantum& quantum, std::span<const Rgb> from_above) {
+    const auto above = [&](std::size_t side_value) -> Rgb {
+        return from_above.empty() ? Rgb::Zero() : from_above[side_value];
+    };
     tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
-        push_pull_element(m_roots[i], Rgb::Zero(), quantum);
+        push_pull_element(m_roots[i], above(2 * i), quantum);
         if (m_back_roots.empty()) return;
         if (Element* r = m_back_roots[i].load(std::memory_order_acquire)) {
-            push_pull_element(*r, Rgb::Zero(), quantum);
+            push_pull_element(*r, above(2 * i + 1), quantum);
         }
     });
 }

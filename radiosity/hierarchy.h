@@ -6,6 +6,7 @@
 #include <mutex>
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -83,6 +84,9 @@ public:
     // leaves (Delta B = received, B += received), then pulls B and Delta B up as area-weighted
     // averages. Parallel over patches.
     void push_pull(const PowerQuantum& quantum);
+    // The same, each side's root starting with the radiosity from_above[2 * patch + side]
+    // instead of 0: what its clusters received (docs/design.md §2.7).
+    void push_pull(const PowerQuantum& quantum, std::span<const Rgb> from_above);
     // Total unshot power sum_l A_l Delta B_l (per channel).
     Rgb unshot_power() const;
 

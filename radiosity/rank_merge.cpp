@@ -70,7 +70,8 @@ RaySlice slice_of(std::uint64_t rays, int rank, int ranks) {
     return {bound(rank), bound(rank + 1)};
 }
 
-void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bool refined) {
+void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bool refined,
+                     ClusterTree* clusters) {
     if (ranks.size() == 1) return;
     // Backs may appear on a fixed mesh too, where a ray first reaches one.
     if (refined || !h.patch_set().back_materials.empty()) {
@@ -85,10 +86,22 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
             }
         });
     }
+    // A cluster is open if it is on any rank (the union, as of the subdivisions).
+    if (refined && clusters) {
+        std::vector<std::int64_t> open = clusters->open_flags();
+        ranks.sum(open);
+        clusters->set_open_flags(open);
+    }
     // Every element's deposits, in the canonical order every rank now shares.
     std::vector<std::int64_t> quanta;
     quanta.reserve(3 * h.element_count() + 9);
     h.for_each_element([&](const Element& e) {
+        quanta.insert(quanta.end(), e.received.begin(), e.received.end());
+    });
+    const auto each_cluster = [&](auto&& f) {
+        if (clusters) clusters->for_each_cluster(f);
+    };
+    each_cluster([&](const Element& e) {
         quanta.insert(quanta.end(), e.received.begin(), e.received.end());
     });
     for (const Quanta* q : {&out.shot_power, &out.escaped_power, &out.back_face_power}) {
@@ -96,9 +109,11 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
     }
     ranks.sum(quanta);
     std::size_t k = 0;
-    h.for_each_element([&](Element& e) {
+    const auto take = [&](Element& e) {
         for (auto& c : e.received) c = quanta[k++];
-    });
+    };
+    h.for_each_element(take);
+    each_cluster(take);
     for (Quanta* q : {&out.shot_power, &out.escaped_power, &out.back_face_power}) {
         for (auto& c : *q) c = quanta[k++];
     }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "common/ranks.h"
+#include "radiosity/clusters.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/shooting.h"
 
@@ -20,7 +21,9 @@ namespace hmcr {
 RaySlice slice_of(std::uint64_t rays, int rank, int ranks);
 
 // Makes every rank's hierarchy and outcome the whole iteration's. `refined`: ranks may have
-// subdivided (else the mesh is fixed and only deposits are summed). A collective.
-void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bool refined);
+// subdivided (else the mesh is fixed and only deposits are summed). `clusters`' deposits are
+// summed too (the tree is the same on every rank), and their open flags united. A collective.
+void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bool refined,
+                     ClusterTree* clusters = nullptr);
 
 }  // namespace hmcr

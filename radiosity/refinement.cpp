@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include "radiosity/line_sampler.h"
@@ -44,6 +47,13 @@ std::uint64_t element_key(const ElementId& id) {
     return Rng(id.patch, id.path, id.depth + 256 * std::uint64_t(id.side)).next_u64();
 }
 
+// The cosine at one end of the centre line, along d of length `distance` (negating d is exact):
+// 0 where the side faces away; 1/4 at a cluster's end, which has no normal (docs/design.md §2.7).
+double end_cosine(const Vec3& normal, const Vec3& d, double distance) {
+    if (normal == Vec3::Zero()) return 0.25;
+    return std::max(0.0, normal.dot(d) / distance);
+}
+
 LinkGeometry centre_geometry(const Hierarchy& h, const PatchPair& pp, const Element& i,
                              const Element& j) {
     LinkGeometry g;
@@ -53,10 +63,19 @@ LinkGeometry centre_geometry(const Hierarchy& h, const PatchPair& pp, const Elem
     const Vec3 d = j.centre - i.centre;
     g.centre_distance = d.norm();
     if (g.centre_distance > 0) {
-        g.receiver_cos = std::max(0.0, pp.receiver_normal.dot(d) / g.centre_distance);
-        g.source_cos = std::max(0.0, -pp.source_normal.dot(d) / g.centre_distance);
+        g.receiver_cos = end_cosine(pp.receiver_normal, d, g.centre_distance);
+        g.source_cos = end_cosine(pp.source_normal, -d, g.centre_distance);
     }
     return g;
+}
+
+// A link with a cluster at an end none of whose lines carries light: a ray did, so the lines
+// are too few to say how the light spreads over the cluster, whose sides may face away from
+// it. Refused, so that the cluster is split (docs/design.md §2.7).
+bool unseen_cluster_link(const Element& receiver, const Element& source,
+                         std::span<const double> kernel) {
+    return (is_cluster(receiver) || is_cluster(source)) &&
+           std::all_of(kernel.begin(), kernel.end(), [](double f) { return f == 0; });
 }
 
 // The oracle's geometric factor from the pair's own N_s lines (docs/design.md §3, §4).
@@ -66,10 +85,12 @@ double line_factor(const RefinementContext& ctx, const PatchPair& pp, const Elem
     thread_local std::vector<double> kernel;
     kernel.resize(std::size_t(ctx.lines));
     Rng rng(ctx.seed, element_key(receiver.id), element_key(source.id));
-    sample_kernel(ctx.scene, ctx.hierarchy, receiver, source, rng, kernel);
+    sample_kernel(ctx.scene, ctx.hierarchy, receiver, source, rng, kernel, ctx.clusters);
     LinkGeometry g = centre_geometry(ctx.hierarchy, pp, receiver, source);
     g.kernel = kernel;
-    const double factor = ctx.oracle.geometric_factor(g);
+    const double factor = unseen_cluster_link(receiver, source, kernel)
+                              ? std::numeric_limits<double>::infinity()
+                              : ctx.oracle.geometric_factor(g);
     counters.lines_cast += kernel.size();
     ++counters.oracle_evaluations;
     counters.oracle_nanoseconds += std::uint64_t(
@@ -85,6 +106,13 @@ double geometric_factor(const RefinementContext& ctx, const PatchPair& pp,
     if (!ctx.oracle.uses_lines()) {
         ++counters.oracle_evaluations;
         return ctx.oracle.geometric_factor(centre_geometry(ctx.hierarchy, pp, receiver, source));
+    }
+    if (is_cluster(receiver) && &source == &ctx.clusters->top()) {
+        const double kept = ctx.clusters->top_factor(receiver);
+        if (!std::isnan(kept)) return kept;
+        const double factor = line_factor(ctx, pp, receiver, source, counters);
+        ctx.clusters->set_top_factor(receiver, factor);
+        return factor;
     }
     if (!ctx.cache) return line_factor(ctx, pp, receiver, source, counters);
     if (const auto cached = ctx.cache->find(&receiver, &source)) {
@@ -115,12 +143,58 @@ namespace {
 // the larger one that may still be split. Counted as `rays` decisions.
 enum class Step { accept, split_receiver, split_source };
 
+// A cluster may always be split, into its children; an element within the limits of §2.5.
+bool splittable(const RefinementContext& ctx, const Element& e) {
+    return is_cluster(e) || ctx.hierarchy.can_subdivide(e);
+}
+
+// The pair of a link with a cluster at an end (docs/design.md §2.7): that end has no normal
+// (isotropic), and a cluster receiver's weight is the area-weighted mean of its sides'.
+PatchPair cluster_pair(const RefinementContext& ctx, PatchPair pp, const Element& i,
+                       const Element& j) {
+    if (is_cluster(i)) {
+        pp.receiver_normal = Vec3::Zero();
+        pp.reflectance = ctx.clusters->receiver_weight(i);
+    }
+    if (is_cluster(j)) pp.source_normal = Vec3::Zero();
+    return pp;
+}
+
 Step next_step(const RefinementContext& ctx, const PatchPair& pp, const Element& i,
                const Element& j, RefinementCounters& counters, std::uint64_t rays) {
-    const bool split_i = ctx.hierarchy.can_subdivide(i), split_j = ctx.hierarchy.can_subdivide(j);
+    const bool split_i = splittable(ctx, i), split_j = splittable(ctx, j);
     if (!split_i && !split_j) return Step::accept;
-    if (link_value(ctx, pp, i, j, counters, rays) < ctx.threshold) return Step::accept;
-    return split_i && (!split_j || i.area >= j.area) ? Step::split_receiver : Step::split_source;
+    // The cluster joining fronts and backs never receives: it holds the two sides of a patch,
+    // which face apart (docs/design.md §2.7).
+    if (is_cluster(i) && !ctx.clusters->may_receive(i)) return Step::split_receiver;
+    const double value = is_cluster(i) || is_cluster(j)
+                             ? link_value(ctx, cluster_pair(ctx, pp, i, j), i, j, counters, rays)
+                             : link_value(ctx, pp, i, j, counters, rays);
+    if (value < ctx.threshold) return Step::accept;
+    // A receiver cluster is split before its source, the top cluster: its decision is the same
+    // for every source, which keeps the furnace exact. Once the receiver is a side's root the
+    // source is its side's root (docs/design.md §2.7).
+    return is_cluster(i) || (split_i && (!split_j || i.area >= j.area)) ? Step::split_receiver
+                                                                         : Step::split_source;
+}
+
+// A refused receiver cluster is split (and so opened, a part of the mesh no more): the receiver
+// becomes its child holding the ray's side, and once that is a side's root the source becomes
+// its own side's root (docs/design.md §2.7).
+void split_cluster(const RefinementContext& ctx, Element*& i, Element*& j, const LinkQuery& q) {
+    ctx.clusters->open(*i);
+    i = &ctx.clusters->child_toward(*i, q.receiver.value);
+    if (!is_cluster(*i)) j = &ctx.hierarchy.root(q.source.patch(), q.source.side());
+}
+
+// On a fixed mesh the receiver is the mesh's leaf at the hit: the cluster leaf holding the side
+// hit, or the side's leaf containing the hit point.
+Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& q) {
+    if (ctx.clusters) {
+        if (Element* c = ctx.clusters->closed_leaf(q.receiver.value)) return *c;
+    }
+    Hierarchy& h = ctx.hierarchy;
+    return h.locate(h.root(q.receiver.patch(), q.receiver.side()), q.y_uv.cast<double>());
 }
 
 }  // namespace
@@ -130,15 +204,22 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
     Hierarchy& h = ctx.hierarchy;
     const Vec2 y_uv = query.y_uv.cast<double>(), x_uv = query.x_uv.cast<double>();
     Element* i = &h.root(query.receiver.patch(), query.receiver.side());
-    if (ctx.fixed_mesh) return h.locate(*i, y_uv);
+    if (ctx.fixed_mesh) return fixed_receiver(ctx, query);
     Element* j = &h.root(query.source.patch(), query.source.side());
+    if (ctx.clusters) i = j = &ctx.clusters->top();
     const PatchPair pp = patch_pair(ctx, query.receiver, query.source);
     for (;;) {
         const Step step = next_step(ctx, pp, *i, *j, counters, 1);
         if (step == Step::accept) return *i;
         // Refused: the element split is replaced by its child holding the ray's point on it
-        // (the hit point y on the receiver, the origin x on the source).
+        // (the hit point y on the receiver, the origin x on the source), a cluster by its child
+        // holding the ray's side.
         Element*& e = step == Step::split_receiver ? i : j;
+        if (is_cluster(*e)) {
+            split_cluster(ctx, i, j, query);
+            continue;
+        }
+        if (ctx.clusters && &e == &j) ctx.clusters->open_above(query.source.value);
         h.subdivide(*e);
         e = &h.child_containing(*e, &e == &i ? y_uv : x_uv);
     }
@@ -169,6 +250,11 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
         if (step == Step::accept) break;
         const bool on_i = step == Step::split_receiver;
         Element*& e = on_i ? i : j;
+        if (is_cluster(*e)) {  // every ray of the group holds the same sides
+            split_cluster(ctx, i, j, d.rays[index[0]]);
+            continue;
+        }
+        if (ctx.clusters && !on_i) ctx.clusters->open_above(d.rays[index[0]].source.value);
         Element* const children = h.subdivide(*e);
         const bool quad = h.patch(*e).is_quad();
         std::array<std::size_t, 4> count{};
@@ -220,10 +306,8 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
                   DescentScratch& buffers) {
     Hierarchy& h = ctx.hierarchy;
     if (ctx.fixed_mesh) {
-        tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
-            const SideRef r = queries[k].receiver;
-            receivers[k] = &h.locate(h.root(r.patch(), r.side()), queries[k].y_uv.cast<double>());
-        });
+        tbb::parallel_for(std::size_t(0), queries.size(),
+                          [&](std::size_t k) { receivers[k] = &fixed_receiver(ctx, queries[k]); });
         return;
     }
     // Grouped by (receiver side, source side), each group's queries copied together so that
@@ -264,9 +348,10 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
             const LinkQuery& q = grouped[first];
             const Descent d{grouped, buffers.receivers.data(),
                             patch_pair(ctx, q.receiver, q.source)};
-            descend(ctx, d, &h.root(q.receiver.patch(), q.receiver.side()),
-                    &h.root(q.source.patch(), q.source.side()), index + first, scratch + first,
-                    child + first, n, c);
+            Element* const top = ctx.clusters ? &ctx.clusters->top() : nullptr;
+            descend(ctx, d, top ? top : &h.root(q.receiver.patch(), q.receiver.side()),
+                    top ? top : &h.root(q.source.patch(), q.source.side()), index + first,
+                    scratch + first, child + first, n, c);
         }
     });
     for (const RefinementCounters& c : local) counters += c;

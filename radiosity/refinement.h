@@ -9,6 +9,7 @@
 #include "common/radix_sort.h"
 #include "oracles/oracle.h"
 #include "rays/embree_scene.h"
+#include "radiosity/clusters.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/link_cache.h"
 #include "radiosity/solver_options.h"
@@ -26,6 +27,7 @@ struct RefinementContext {
     LinkCache* cache = nullptr;  // geometric factors of line-based oracles; none: recompute
     bool fixed_mesh = false;     // deposit on the existing leaf at the hit, ask no oracle
     LinkWeight link_weight = LinkWeight::unshot;  // w_ij from the source's Delta B or B
+    ClusterTree* clusters = nullptr;  // descents start at its top (docs/design.md §2.7); none
     // Per side (SideRef::value), what a link's weight takes for the receiver's reflectance:
     // rho I / mean(I) under view importance (§3.12); empty: the reflectance itself.
     std::span<const Rgb> receiver_weights{};

@@ -322,4 +322,13 @@ ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, double crease_degrees
     return finish_sides(std::move(taken));
 }
 
+void set_cluster_ids(ShadedMesh& mesh, std::span<const std::int32_t> cluster_of_side) {
+    mesh.cluster_id.clear();
+    if (cluster_of_side.empty()) return;
+    mesh.cluster_id.resize(mesh.cell_count());
+    for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
+        mesh.cluster_id[c] = cluster_of_side[2 * std::size_t(mesh.patch_id[c]) + mesh.side[c]];
+    }
+}
+
 }  // namespace hmcr

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "radiosity/hierarchy.h"
@@ -32,6 +33,9 @@ struct ShadedMesh {
     // The side of its patch each cell shows: kFront, or kBack for the reversed polygons of a
     // two-sided patch's back, which follow all the fronts.
     std::vector<std::uint8_t> side;
+    // The cluster leaf each cell's side belongs to, -1 where the side is in the mesh itself
+    // (docs/design.md §2.7); empty without clustering.
+    std::vector<std::int32_t> cluster_id;
 
     std::size_t cell_count() const { return offsets.size() - 1; }
 };
@@ -46,5 +50,8 @@ ShadedMesh build_shaded_mesh(const Hierarchy& h, double crease_degrees = kCrease
 // of the output are built. At 10^6 patches the tree and its patches are 400 MB.
 ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h,
                              double crease_degrees = kCreaseDegrees);
+// Fills mesh.cluster_id from each side value's cluster leaf (Solution::cluster_of_side); leaves
+// it empty when that is.
+void set_cluster_ids(ShadedMesh& mesh, std::span<const std::int32_t> cluster_of_side);
 
 }  // namespace hmcr

@@ -80,7 +80,8 @@ struct ShootingBuffers::Impl {
     // Each ray's deposit, added after the batch by one thread: atomic adds from both threads
     // onto the few hot elements of a small scene made 2 threads 20% slower.
     struct Deposit {
-        Quanta quanta{};
+        Quanta quanta{};    // rho * Phi, for an element
+        Quanta incident{};  // Phi, for a cluster (docs/design.md §2.7)
         bool lands = false;  // on a front face: the descent finds its element
     };
     // The batch's descents are made together, after its rays are traced, so that rays between
@@ -249,7 +250,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
                             Vec2f(b.rays.u[k], b.rays.v[k])};
             // docs/design.md §3: received += rho * Phi (over A when pushed).
             const Rgb& rho = ps.material(hit.patch, *side).reflectance;
-            b.deposits[k] = {out.quantum.count(rho * power, dither), true};
+            b.deposits[k] = {out.quantum.count(rho * power, dither), quanta, true};
         }
     };
     auto trace = [&](Batch& b, std::uint64_t first) {
@@ -273,7 +274,9 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
         out.counters += counters;
         for (std::uint64_t k = 0, q = 0; k < b.n; ++k) {
             if (!b.deposits[k].lands) continue;
-            add(b.receivers[q++]->received, b.deposits[k].quanta);
+            Element& receiver = *b.receivers[q++];
+            add(receiver.received,
+                is_cluster(receiver) ? b.deposits[k].incident : b.deposits[k].quanta);
         }
         for (const auto& c : b.chunks) {
             add(out.shot_power, c.shot);

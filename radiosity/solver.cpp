@@ -15,6 +15,7 @@
 #include "common/interrupt.h"
 #include "common/stopwatch.h"
 #include "rays/embree_scene.h"
+#include "radiosity/clusters.h"
 #include "radiosity/control_variate.h"
 #include "radiosity/link_cache.h"
 #include "radiosity/rank_merge.h"
@@ -83,6 +84,15 @@ IterationOutcome shoot_on_rank(const RefinementContext& ctx, const IterationSour
     return out;
 }
 
+// Push-pull through the clusters, if any, then the sides' trees (docs/design.md §2.7, §3.6).
+void push_pull(Hierarchy& h, ClusterTree* clusters, const PowerQuantum& quantum) {
+    if (!clusters) return h.push_pull(quantum);
+    std::vector<Rgb> from_above;
+    clusters->push(quantum, from_above);
+    h.push_pull(quantum, from_above);
+    clusters->pull();
+}
+
 }  // namespace
 
 double SolveStats::back_face_fraction() const {
@@ -99,10 +109,10 @@ std::span<const IterationRecord> SolveStats::value_iterations() const {
 
 namespace {
 
-// `shape`: a frozen mesh to solve on, or none (refine, or the uniform mesh of uniform_max_area).
+// `shape`: a solution whose mesh to solve on, frozen, or none (refine, or the uniform mesh of uniform_max_area).
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
 // refining pass's, so that its rays are not theirs again.
-Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierarchy* shape,
+Solution solve_with(PatchSet patches, const SolverOptions& options, const Solution* shape,
                     Progress& progress, const Ranks& ranks, std::uint32_t first_iteration = 0) {
     validate(options);
     const auto start = Clock::now();
@@ -129,7 +139,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     Hierarchy& h = *sol.hierarchy;
     const bool fixed_mesh = options.uniform_max_area > 0 || shape;
     if (shape) {
-        h.subdivide_like(*shape);
+        h.subdivide_like(*shape->hierarchy);
     } else if (fixed_mesh) {
         h.subdivide_uniformly(options.uniform_max_area);
     }
@@ -149,6 +159,18 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
         st.importance_rays = importance->rays;
         st.importance_seconds = importance->seconds;
     }
+    const std::span<const Rgb> receiver_weights =
+        importance ? std::span<const Rgb>(importance->receiver_weights) : std::span<const Rgb>();
+    // A fixed mesh has clusters only where its shape has cluster leaves (§2.7).
+    std::unique_ptr<ClusterTree>& clusters = sol.clusters;
+    if (shape && shape->clusters) {
+        clusters = std::make_unique<ClusterTree>(h);
+        clusters->open_like(*shape->clusters);
+    } else if (!fixed_mesh && options.clustering == Clustering::isotropic) {
+        clusters = std::make_unique<ClusterTree>(h, receiver_weights);
+    }
+    const auto leaves = [&] { return clusters ? clusters->settle() : h.leaf_count(); };
+    leaves();
     const RefinementContext ctx{.hierarchy = h,
                                 .oracle = oracle,
                                 .scene = scene,
@@ -158,10 +180,8 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
                                 .cache = cache.get(),
                                 .fixed_mesh = fixed_mesh,
                                 .link_weight = options.link_weight,
-                                .receiver_weights = importance
-                                                        ? std::span<const Rgb>(
-                                                              importance->receiver_weights)
-                                                        : std::span<const Rgb>()};
+                                .clusters = clusters.get(),
+                                .receiver_weights = receiver_weights};
     st.setup_seconds = seconds_since(start);
 
     // The control variate needs every side that may receive light to exist from the start
@@ -186,6 +206,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
         IterationRecord rec;
         rec.unshot_before = unshot;
         sources.rebuild(h);
+        if (clusters) clusters->begin_iteration(options.link_weight);
         // The schedule and its pilot rays follow the true unshot power, with or without the
         // control variate; the rays shoot it minus beta where beta is not 0.
         const double ratio = reflected_fraction(ctx, sources, it, kPilotRays);
@@ -216,15 +237,15 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
                 },
                 buffers);
         });
-        merge_iteration(h, out, ranks, !fixed_mesh);
+        merge_iteration(h, out, ranks, !fixed_mesh, clusters.get());
         st.shooting_seconds += seconds_since(t0);
         const auto t1 = Clock::now();
-        h.push_pull(out.quantum);
+        push_pull(h, clusters.get(), out.quantum);
         if (shift) add_constant(h, beta);
         st.push_pull_seconds += seconds_since(t1);
         unshot = rec.unshot_after = h.unshot_power();
         if (!unshot.isFinite().all()) throw std::runtime_error("the unshot power is not finite");
-        rec.leaves_after = h.leaf_count();
+        rec.leaves_after = leaves();
         rec.seconds = seconds_since(t0);
         schedule.record(rec.rays);
         add_iteration(st, out, shift);
@@ -233,7 +254,12 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Hierar
     st.unshot_power = unshot;
     progress.advance(1.0);
     st.elements = h.element_count();
-    st.leaves = h.leaf_count();
+    st.leaves = leaves();
+    st.faces = h.leaf_count();
+    if (clusters) {
+        st.cluster_leaves = clusters->cluster_leaves();
+        sol.cluster_of_side = clusters->leaf_of_side();
+    }
     st.hierarchy_bytes = h.bytes();
     if (cache) {
         st.cache_bytes = cache->bytes();
@@ -294,8 +320,8 @@ Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     if (!refines_then_freezes(options)) return refined;
     SolverOptions o = options;
     o.rays = options.rays - refining_rays(options);
-    Solution sol = solve_with(refined.hierarchy->patch_set(), o, refined.hierarchy.get(),
-                              progress, ranks, std::uint32_t(refined.stats.iterations.size()));
+    Solution sol = solve_with(refined.hierarchy->patch_set(), o, &refined, progress, ranks,
+                              std::uint32_t(refined.stats.iterations.size()));
     sol.options = options;
     SolveStats& st = sol.stats;
     const SolveStats& r = refined.stats;
@@ -338,7 +364,7 @@ Solution solve(PatchSet patches, const SolverOptions& options, Progress& progres
     return freeze_pass(refine_pass(std::move(patches), options, first, ranks), second, ranks);
 }
 
-Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy& shape,
+Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Solution& shape,
                        Progress& progress) {
     return solve_with(build_patch_set(mesh), options, &shape, progress, Ranks::single());
 }

@@ -9,6 +9,7 @@
 #include "common/progress.h"
 #include "common/ranks.h"
 #include "meshes/patch_mesh.h"
+#include "radiosity/clusters.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/solver_options.h"
 
@@ -49,7 +50,9 @@ struct SolveStats {
     Rgb escaped_power = Rgb::Zero();    // shot power that left the scene
     Rgb back_face_power = Rgb::Zero();  // shot power absorbed by back faces
     Rgb unshot_power = Rgb::Zero();     // left when the solve stopped
-    std::size_t elements = 0, leaves = 0, hierarchy_bytes = 0;
+    // leaves: the mesh's (what a budget counts), cluster_leaves of them clusters (§2.7);
+    // faces: the hierarchy's leaves, one output cell each.
+    std::size_t elements = 0, leaves = 0, cluster_leaves = 0, faces = 0, hierarchy_bytes = 0;
     double setup_seconds = 0, shooting_seconds = 0, push_pull_seconds = 0, total_seconds = 0;
     double refining_seconds = 0;  // the refining pass's part of total_seconds
     double importance_seconds = 0;  // the view importance's part of refining_seconds
@@ -63,6 +66,12 @@ struct SolveStats {
 
 struct Solution {
     std::unique_ptr<Hierarchy> hierarchy;
+    // The clusters over hierarchy's sides with the mesh's open ones, for solving this mesh
+    // again (none without clustering). Declared after `hierarchy`, which it points into.
+    std::unique_ptr<ClusterTree> clusters;
+    // Each side value's (2 * patch + side) cluster leaf, -1 where the side's own leaves are in
+    // the mesh; empty without clustering. What the output calls ClusterId.
+    std::vector<std::int32_t> cluster_of_side;
     SolverOptions options;
     SolveStats stats;
 };
@@ -87,9 +96,10 @@ Solution refine_pass(PatchSet patches, const SolverOptions& options,
 Solution freeze_pass(Solution refined, Progress& progress = no_progress(),
                      const Ranks& ranks = Ranks::single());
 
-// The same solve on a frozen mesh: the leaves of `shape` (a solution of the same mesh), no
-// refinement and no oracle. With many rays its error is the mesh's alone (studies' mesh error).
-Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Hierarchy& shape,
+// The same solve on a frozen mesh: the leaves of `shape` (a solution of the same mesh, its
+// cluster leaves too), no refinement and no oracle. With many rays its error is the mesh's
+// alone (studies' mesh error).
+Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Solution& shape,
                        Progress& progress = no_progress());
 
 }  // namespace hmcr

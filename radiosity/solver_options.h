@@ -41,6 +41,10 @@ enum class LinkWeight { unshot, total };
 // nothing, or a constant per channel (docs/design.md §3.11).
 enum class ControlVariate { none, constant };
 
+// Clusters of patches above the patch roots, and how a cluster receives and emits: none, or as
+// an isotropic cloud of surfaces (docs/design.md §2.7).
+enum class Clustering { none, isotropic };
+
 // What weighs a refining solve's link values besides the oracle: nothing, or the receiver's
 // importance for the scene's views (docs/design.md §3.12).
 enum class Importance { none, views };
@@ -55,6 +59,10 @@ struct EnumNames<LinkWeight> {
 template <>
 struct EnumNames<ControlVariate> {
     static constexpr std::array<std::string_view, 2> names{"none", "constant"};
+};
+template <>
+struct EnumNames<Clustering> {
+    static constexpr std::array<std::string_view, 2> names{"none", "isotropic"};
 };
 template <>
 struct EnumNames<Importance> {
@@ -117,6 +125,9 @@ concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
     X(ControlVariate, control_variate, ControlVariate::none, true,  "none or constant",          \
       scene_file, "on a fixed mesh, shoot the unshot radiosity minus a constant per channel and "\
                   "add the constant's share exactly (none: shoot it all)")                       \
+    X(Clustering,    clustering, Clustering::none, true,            "none or isotropic",         \
+      scene_file, "clusters of patches above the patch roots, each receiving and emitting as an "\
+                  "isotropic cloud of surfaces (none: the hierarchy starts at the patches)")    \
     X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \

@@ -6,8 +6,11 @@
 Colours are the solution's own RadiosityColor (tone-mapped sRGB bytes, not re-mapped through a
 colour table) with Gouraud interpolation and lighting off, as in ParaView with "Map Scalars"
 unchecked and the light kit off: what you see is the radiosity. --edges draws the element
-boundaries (the mesh the oracle made). Needs Debian's python3-vtk9 (`/usr/bin/python3`).
+boundaries (the mesh the oracle made). --clusters colours a clustered solution's cells by their
+ClusterId instead: each cluster leaf one colour, its faces shaded by their radiosity, and the
+cells outside cluster leaves grey by theirs. Needs Debian's python3-vtk9 (`/usr/bin/python3`).
 """
+import colorsys
 import json
 import sys
 
@@ -25,6 +28,35 @@ def load_view(scene_json, name):
     return {**VIEW_DEFAULTS, **views[name]}
 
 
+def cluster_colours(polydata):
+    """A cell array ClusterColor: a hue per cluster leaf, grey outside them, each cell's
+    brightness its radiosity's (the cell-averaged RadiosityColor)."""
+    cells = polydata.GetCellData()
+    ids = cells.GetArray("ClusterId")
+    if ids is None:
+        sys.exit("the solution has no ClusterId: it was solved without --clustering isotropic")
+    points = vtk.vtkPointDataToCellData()
+    points.SetInputData(polydata)
+    points.Update()
+    shade = points.GetOutput().GetCellData().GetArray("RadiosityColor")
+    colours = vtk.vtkUnsignedCharArray()
+    colours.SetName("ClusterColor")
+    colours.SetNumberOfComponents(3)
+    for c in range(polydata.GetNumberOfCells()):
+        k = int(ids.GetTuple1(c))
+        brightness = 0.35 + 0.65 * max(shade.GetTuple3(c)) / 255
+        if k < 0:
+            base = (0.8, 0.8, 0.8)
+        else:
+            golden = (k * 0.6180339887) % 1.0  # hues far apart for neighbouring indices
+            base = colorsys.hsv_to_rgb(golden, 0.65, 1.0)
+        colours.InsertNextTuple3(*(255 * brightness * x for x in base))
+    out = vtk.vtkPolyData()
+    out.ShallowCopy(polydata)
+    out.GetCellData().AddArray(colours)
+    return out
+
+
 def main(argv):
     args = [a for a in argv[1:] if not a.startswith("--")]
     if len(args) != 4:
@@ -36,9 +68,14 @@ def main(argv):
     reader.SetFileName(vtp)
     reader.Update()
     mapper = vtk.vtkPolyDataMapper()
-    mapper.SetInputConnection(reader.GetOutputPort())
-    mapper.SetScalarModeToUsePointFieldData()
-    mapper.SelectColorArray("RadiosityColor")
+    if "--clusters" in argv:
+        mapper.SetInputData(cluster_colours(reader.GetOutput()))
+        mapper.SetScalarModeToUseCellFieldData()
+        mapper.SelectColorArray("ClusterColor")
+    else:
+        mapper.SetInputConnection(reader.GetOutputPort())
+        mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectColorArray("RadiosityColor")
     mapper.SetColorModeToDirectScalars()
     mapper.ScalarVisibilityOn()
     actor = vtk.vtkActor()

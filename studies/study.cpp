@@ -242,7 +242,7 @@ CellResult StudyRunner::compute(std::size_t index) {
         if (cell.mesh_rays > 0) {
             notes.note(fmt::format("mesh error: the mesh frozen, {} rays", cell.mesh_rays));
             so.rays = cell.mesh_rays;
-            const Solution frozen = solve_on_mesh(m_scene.mesh, so, *r.solution.hierarchy);
+            const Solution frozen = solve_on_mesh(m_scene.mesh, so, r.solution);
             cell.mesh_object_error = measure(frozen, t, t.name + "-mesh", cell.mesh_views);
         }
     } catch (const BudgetNotReached& e) {

@@ -19,17 +19,21 @@ VtpMetadata vtp_metadata(const Solution& solution, const SceneIdentity& scene,
             uniform ? 0 : std::uint64_t(solution.options.lines),
             st.rays,
             solution.options.seed,
+            st.faces,
             st.leaves,
             st.iterations.size(),
             time_value,
             scene.name,
             scene.patches,
             scene.geometry_hash,
-            std::string(name(solution.options.link_weight))};
+            std::string(name(solution.options.link_weight)),
+            std::string(name(solution.options.clustering))};
 }
 
 ShadedMesh shade(const Solution& solution, double crease_degrees) {
-    return build_shaded_mesh(*solution.hierarchy, crease_degrees);
+    ShadedMesh mesh = build_shaded_mesh(*solution.hierarchy, crease_degrees);
+    set_cluster_ids(mesh, solution.cluster_of_side);
+    return mesh;
 }
 
 void write_solution(const std::filesystem::path& vtp, const ShadedMesh& shaded,

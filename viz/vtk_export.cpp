@@ -128,6 +128,9 @@ void set_attributes(vtkPolyData* pd, const ShadedMesh& mesh) {
     // scene's file is what it always was.
     const bool backs = std::find(mesh.side.begin(), mesh.side.end(), kBack) != mesh.side.end();
     if (backs) cd->AddArray(view_array<vtkUnsignedCharArray>("Side", mesh.side));
+    if (!mesh.cluster_id.empty()) {
+        cd->AddArray(view_array<vtkIntArray>("ClusterId", mesh.cluster_id));
+    }
 }
 
 void add_string(vtkFieldData* fd, const char* name, const std::string& value) {
@@ -157,6 +160,8 @@ void set_metadata(vtkPolyData* pd, const VtpMetadata& meta) {
     add_value<vtkTypeUInt64Array>(fd, "PatchCount", meta.patch_count);
     add_string(fd, "GeometryHash", meta.geometry_hash);
     add_string(fd, "LinkWeight", meta.link_weight);
+    add_string(fd, "Clustering", meta.clustering);
+    add_value<vtkTypeUInt64Array>(fd, "MeshLeaves", meta.mesh_leaves);
 }
 
 void write_polydata(vtkPolyData* pd, const std::filesystem::path& file,

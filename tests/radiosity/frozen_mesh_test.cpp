@@ -45,7 +45,7 @@ TEST(FrozenMesh, KeepsTheLeavesAndAsksNoOracle) {
     SolverOptions o = shape.options;
     o.rays = 50'000;
     o.seed = 9;
-    const Solution frozen = solve_on_mesh(plates(), o, *shape.hierarchy);
+    const Solution frozen = solve_on_mesh(plates(), o, shape);
     EXPECT_EQ(leaf_ids(*frozen.hierarchy), leaf_ids(*shape.hierarchy));
     EXPECT_EQ(frozen.stats.oracle_calls, 0u);
     EXPECT_EQ(frozen.stats.leaves, shape.stats.leaves);
@@ -100,7 +100,7 @@ TEST(FrozenMesh, ErrorFallsAsOneOverRootRaysToTheMeshError) {
         SolverOptions o = shape.options;
         o.rays = rays;
         o.seed = 5;
-        const Solution frozen = solve_on_mesh(plates(), o, *shape.hierarchy);
+        const Solution frozen = solve_on_mesh(plates(), o, shape);
         const double n0 = double(frozen.stats.iterations.at(0).rays);
         std::vector<double> b;
         Hierarchy::visit_leaves(frozen.hierarchy->root(1),

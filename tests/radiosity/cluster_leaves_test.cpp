@@ -1,0 +1,212 @@
+// Clusters as leaves of the mesh (docs/design.md §2.7): budgets below the patch count, the
+// frozen pass depositing on cluster leaves, what the mesh counts and what the output says of
+// each face's cluster, with results that stay exact: the furnace per patch, a shadow's umbra
+// dark, the same bits for one and two threads.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "radiosity/budget_search.h"
+#include "radiosity/clusters.h"
+#include "radiosity/shaded_mesh.h"
+#include "radiosity/solver.h"
+#include "tests/support/plugins.h"
+#include "tests/support/same_leaves.h"
+#include "tests/support/statistics.h"
+#include "tests/support/test_scenes.h"
+
+namespace hmcr::test {
+namespace {
+
+SolverOptions with_cluster_leaves(std::uint64_t rays, std::uint64_t seed) {
+    SolverOptions o;
+    o.clustering = Clustering::isotropic;
+    o.rays = rays;
+    o.seed = seed;
+    o.lines = 4;
+    return o;
+}
+
+PatchMesh furnace_of(int n) {
+    return make_patch_mesh(
+        inward_box({0, 0, 0}, {1, 1, 1}, n, Rgb::Constant(0.5), Rgb::Constant(1)));
+}
+
+// The mesh's leaf count is its cluster leaves and the faces outside them; every face under a
+// cluster leaf is a patch's unsplit side, and the faces of one cluster leaf are its own.
+void expect_consistent_mesh(const Solution& sol) {
+    ShadedMesh cells = build_shaded_mesh(*sol.hierarchy);
+    set_cluster_ids(cells, sol.cluster_of_side);
+    ASSERT_EQ(cells.cluster_id.size(), cells.cell_count());
+    std::set<std::int32_t> clusters;
+    std::size_t outside = 0;
+    for (std::size_t c = 0; c < cells.cell_count(); ++c) {
+        if (cells.cluster_id[c] < 0) {
+            ++outside;
+            continue;
+        }
+        clusters.insert(cells.cluster_id[c]);
+        EXPECT_EQ(cells.hierarchy_level[c], 0) << "cell " << c;
+    }
+    EXPECT_EQ(clusters.size(), sol.stats.cluster_leaves);
+    EXPECT_EQ(outside + clusters.size(), sol.stats.leaves);
+    EXPECT_EQ(cells.cell_count(), sol.stats.faces);
+}
+
+// A budget below the patch count is reached with clusters as leaves, and the search's solution
+// (refined, then frozen) has the mesh it counted.
+TEST(ClusterLeaves, BudgetBelowThePatchCountIsReached) {
+    const PatchMesh mesh = furnace_of(16);  // 1,536 patches
+    const BudgetResult r =
+        solve_for_budget(mesh, with_cluster_leaves(200'000, 5), BudgetOptions{.leaves = 400});
+    const SolveStats& st = r.solution.stats;
+    EXPECT_NEAR(double(st.leaves), 400, 4);
+    EXPECT_GT(st.cluster_leaves, 0u);
+    EXPECT_TRUE(st.iterations.back().frozen);  // a guard: the frozen pass ran on it
+    expect_consistent_mesh(r.solution);
+    // Without clusters the same budget is refused, saying why.
+    SolverOptions none = with_cluster_leaves(200'000, 5);
+    none.clustering = Clustering::none;
+    try {
+        solve_for_budget(mesh, none, BudgetOptions{.leaves = 400});
+        ADD_FAILURE() << "a budget below the patch count without clusters was not refused";
+    } catch (const BudgetNotReached& e) {
+        EXPECT_NE(std::string(e.what()).find("--clustering isotropic"), std::string::npos)
+            << e.what();
+    }
+}
+
+// The furnace refined to cluster leaves and frozen: every patch's B is the exact K-bounce value
+// E (1 - rho^(K+1)) / (1 - rho) (K the frozen pass's iterations), t-tested over 10 seeds with
+// Bonferroni over the patches: a deposit on a cluster leaf gives its patches the irradiance
+// it carries, which in the furnace is every patch's.
+TEST(ClusterLeaves, FurnaceFrozenOnClusterLeavesIsExact) {
+    const double rho = 0.5, e = 1;
+    const PatchMesh mesh = furnace_of(12);  // 864 patches
+    const std::size_t patches = mesh.n_faces();
+    std::vector<std::vector<double>> per_patch(patches);
+    std::size_t iterations = 0;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        SolverOptions o = with_cluster_leaves(40'000, seed);
+        o.epsilon = 3;  // accepts links at clusters (a guard below)
+        const Solution sol = solve(mesh, o);
+        ASSERT_GT(sol.stats.cluster_leaves, 0u) << "seed " << seed;
+        ASSERT_LT(sol.stats.leaves, patches) << "seed " << seed;
+        if (seed > 1) {
+            ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
+        }
+        iterations = sol.stats.value_iterations().size();
+        for (std::size_t p = 0; p < patches; ++p) {
+            per_patch[p].push_back(sol.hierarchy->root(p).radiosity[1]);
+        }
+    }
+    const double expected = e * (1 - std::pow(rho, double(iterations + 1))) / (1 - rho);
+    for (std::size_t p = 0; p < patches; ++p) {
+        EXPECT_TRUE(t_test("furnace patch " + std::to_string(p), per_patch[p], expected, 0,
+                           int(patches)));
+    }
+}
+
+// scenes/shadow with its floor cut into 40 x 40 patches of 0.05 m: the umbra is
+// max(|x|, |y|) <= 0.2667 m, so the 10 x 10 patches within 0.25 m of the axis never receive
+// light, and the floor beyond 0.4 m sees the whole emitter. A cluster leaf spreads what it
+// receives over all its sides (docs/design.md §2.7), so the clusters over the floor must split
+// where the shadow is: no cluster leaf may hold an umbra patch and a patch of the fully lit
+// floor or the occluder (whose top is lit), and an umbra patch whose cluster leaf holds umbra
+// patches alone (or that is in the mesh itself) stays exactly dark. Only a leaf shared with the
+// penumbra's weak light may light the umbra. Three seeds; guards: cluster leaves exist, fewer
+// leaves than patches, most umbra patches are checked, the lit floor is lit.
+TEST(ClusterLeaves, ShadowsSplitTheClusters) {
+    std::vector<TestPolygon> polygons;
+    const int n = 40;
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            const double s = 2.0 / n;
+            TestPolygon tile = axis_rectangle(2, 0, {-1 + i * s, -1 + j * s},
+                                              {-1 + (i + 1) * s, -1 + (j + 1) * s}, true);
+            tile.reflectance = Rgb::Constant(0.5);
+            polygons.push_back(tile);
+        }
+    }
+    TestPolygon emitter = axis_rectangle(2, 1.5, {-0.1, -0.1}, {0.1, 0.1}, false);
+    emitter.emission = Rgb::Constant(M_PI);
+    polygons.push_back(emitter);
+    polygons.push_back(axis_rectangle(2, 0.6, {-0.2, -0.2}, {0.2, 0.2}, true));
+    const std::size_t occluder = polygons.size() - 1;
+    const PatchMesh mesh = make_patch_mesh(polygons);
+    enum Kind { umbra, penumbra, lit, other };
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        SolverOptions o = with_cluster_leaves(400'000, seed);
+        o.lines = 10;
+        o.epsilon = 1e-5;
+        const Solution sol = solve(mesh, o);
+        EXPECT_GT(sol.stats.cluster_leaves, 0u) << "seed " << seed;
+        EXPECT_LT(sol.stats.leaves, polygons.size()) << "seed " << seed;
+        const auto kind = [&](std::size_t p) {
+            if (p >= std::size_t(n * n)) return p == occluder ? lit : other;
+            const Vec3& c = sol.hierarchy->root(p).centre;
+            const double r = std::max(std::abs(c.x()), std::abs(c.y()));
+            return r < 0.25 ? umbra : r > 0.425 ? lit : penumbra;
+        };
+        std::map<std::int32_t, std::set<Kind>> kinds;  // of each cluster leaf's patches
+        for (std::size_t p = 0; p < polygons.size(); ++p) {
+            kinds[sol.cluster_of_side[2 * p]].insert(kind(p));
+        }
+        std::size_t dark = 0;
+        double lit_power = 0;
+        for (std::size_t p = 0; p < std::size_t(n * n); ++p) {
+            const std::int32_t c = sol.cluster_of_side[2 * p];
+            const double b = sol.hierarchy->root(p).radiosity[1];
+            if (kind(p) == lit) lit_power += b;
+            if (kind(p) != umbra || c < 0) continue;
+            EXPECT_EQ(kinds[c].count(lit), 0u) << "seed " << seed << " cluster " << c;
+            if (kinds[c].size() == 1) {
+                EXPECT_EQ(b, 0.0) << "seed " << seed << " patch " << p;
+                ++dark;
+            }
+        }
+        for (std::size_t p = 0; p < std::size_t(n * n); ++p) {
+            if (kind(p) == umbra && sol.cluster_of_side[2 * p] < 0) {
+                EXPECT_EQ(sol.hierarchy->root(p).radiosity[1], 0.0) << "seed " << seed;
+                ++dark;
+            }
+        }
+        EXPECT_GE(dark, 50u) << "seed " << seed;
+        EXPECT_GT(lit_power, 0.0) << "seed " << seed;
+    }
+}
+
+// The same seed gives the same mesh, cluster leaves and values with one thread and with two.
+TEST(ClusterLeaves, OneAndTwoThreadsGiveTheSameBits) {
+    SolverOptions o = with_cluster_leaves(100'000, 3);
+    o.epsilon = 3;
+    o.threads = 1;
+    const Solution one = solve(furnace_of(8), o);
+    o.threads = 2;
+    const Solution two = solve(furnace_of(8), o);
+    EXPECT_GT(one.stats.cluster_leaves, 0u);
+    EXPECT_EQ(one.cluster_of_side, two.cluster_of_side);
+    expect_same_leaves(*one.hierarchy, *two.hierarchy);
+}
+
+// A mesh frozen from a clustered solve (a study's mesh error) keeps its cluster leaves.
+TEST(ClusterLeaves, SolveOnMeshKeepsTheClusterLeaves) {
+    const PatchMesh mesh = furnace_of(8);
+    SolverOptions o = with_cluster_leaves(60'000, 4);
+    o.epsilon = 3;
+    o.refine_share = 1;
+    const Solution shape = solve(mesh, o);
+    ASSERT_GT(shape.stats.cluster_leaves, 0u);
+    o.rays = 30'000;
+    const Solution frozen = solve_on_mesh(mesh, o, shape);
+    EXPECT_EQ(frozen.cluster_of_side, shape.cluster_of_side);
+    EXPECT_EQ(frozen.stats.leaves, shape.stats.leaves);
+    expect_consistent_mesh(frozen);
+}
+
+}  // namespace
+}  // namespace hmcr::test
