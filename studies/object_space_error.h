@@ -20,8 +20,11 @@
 // cell's normal, delta = ten times Embree's self-hit offset, 1e-5 of the scene's bounding-box
 // diagonal) back along minus the normal. The hit must be on a solution cell of the same
 // patch; if a surface closer than delta is hit instead (an object resting on the floor), the
-// ray is cast from behind the point instead. A point neither ray finds on its patch counts with
-// B_sol = 0 and is reported as unmatched: it means the meshes do not cover the same surfaces.
+// ray is cast from behind the point instead. A point neither ray finds on its patch (one within
+// the tracer's float precision of an edge to another patch, such as a light tile's in a
+// ceiling) takes the Gouraud value at the closest point of its patch side's solution cells
+// within delta, and is counted as `nearest`. A point with no such cell counts with B_sol = 0
+// and is reported as unmatched: it means the meshes do not cover the same surfaces.
 #pragma once
 
 #include <cstddef>
@@ -52,6 +55,7 @@ struct ObjectError {
     double relative_l2 = 0;     // e above; 0 when both fields are 0, +inf when only B_ref is 0
     std::size_t samples = 0;    // quadrature points
     std::size_t unmatched = 0;  // points where the solution shows no surface of the same patch
+    std::size_t nearest = 0;    // points the rays missed, found on their patch's nearest cell
 
     std::string to_string() const;
 };

@@ -168,6 +168,31 @@ TEST(ObjectSpaceError, PointsAreMatchedOnTheirOwnPatch) {
                 std::sqrt(plate_part / (integral_of_square(kReference) + plate_part)), kTol);
 }
 
+// Two coplanar patches meeting at x = 0.5, the second a light (B 100 against 1), the reference
+// holding a cell of each only 1e-8 wide along their shared edge: the tracer's float arithmetic
+// puts those cells' points on the edge, where a ray may meet the other patch. They are found on
+// their own patch's nearest cell: no point is unmatched, and equal fields give no error.
+TEST(ObjectSpaceError, PointsAtAnEdgeBetweenPatchesAreTheirOwnPatchs) {
+    const double s = 1e-8;
+    const auto strip = [](double x0, double x1, int patch, double b) {
+        ShadedMesh m = grid(1, 4, [&](const Vec3&) { return Rgb::Constant(b); }, false, 0, patch);
+        for (Vec3& x : m.points) x.x() = x0 + (x1 - x0) * x.x();
+        return m;
+    };
+    ShadedMesh reference = strip(0, 0.5 - s, 0, 1);
+    append(reference, strip(0.5 - s, 0.5, 0, 1));
+    append(reference, strip(0.5, 0.5 + s, 1, 100));
+    append(reference, strip(0.5 + s, 1, 1, 100));
+    ShadedMesh solution = strip(0, 0.5, 0, 1);
+    append(solution, strip(0.5, 1, 1, 100));
+    ObjectErrorOptions o;
+    o.emission = {Rgb::Zero(), Rgb::Constant(99)};
+    const ObjectError e = object_space_error(solution, reference, o);
+    EXPECT_EQ(e.unmatched, 0u) << e.to_string();
+    EXPECT_GT(e.nearest, 0u) << e.to_string();  // a guard: the rays did miss
+    EXPECT_LT(e.relative_l2, kTol) << e.to_string();
+}
+
 TEST(ObjectSpaceError, DoesNotDependOnThreads) {
     const ShadedMesh solution = grid(7, 5, linear(plus(kReference, kDifference)), true);
     const ShadedMesh reference = grid(40, 40, linear(kReference));
