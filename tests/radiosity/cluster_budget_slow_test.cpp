@@ -1,12 +1,15 @@
-// A budget of 5,000 leaves on a scene of 10^5 patches (docs/design.md §2.7): reached within
-// the default tolerance with clusters as leaves, and the furnace it meshes keeps its power
-// exactly. Slow: the budget search solves the 101,400-patch box a few times.
+// Clusters on scenes of 10^4 and 10^5 patches (docs/design.md §2.7): a budget of 5,000 leaves
+// on 101,400 patches reached with cluster leaves, the power it meshes kept exactly; a furnace of
+// 10,086 patches on cluster leaves exact on every patch. Slow: many patches, many solves.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "radiosity/budget_search.h"
 #include "radiosity/solver.h"
+#include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
 
 namespace hmcr::test {
@@ -37,6 +40,39 @@ TEST(ClusterBudget, FiveThousandLeavesOnAHundredThousandPatches) {
     const double landed = st.shot_power[1] - st.escaped_power[1] - st.back_face_power[1];
     EXPECT_NEAR(reflected, rho * landed, 1e-9 * rho * landed);
     EXPECT_LT(st.escaped_power[1], 1e-4 * st.shot_power[1]);  // a guard: the box is closed
+}
+
+// A furnace of 6 x 41 x 41 = 10,086 patches meshed with cluster leaves (at epsilon 30 nearly all
+// of its leaves are clusters) and frozen: every patch's B is the exact K-bounce value, t-tested over 10
+// seeds with Bonferroni over the patches.
+TEST(ClusterBudget, FurnaceOfTenThousandPatchesIsExactOnEveryPatch) {
+    const double rho = 0.5, e = 1;
+    const PatchMesh mesh = make_patch_mesh(
+        inward_box({0, 0, 0}, {1, 1, 1}, 41, Rgb::Constant(rho), Rgb::Constant(e)));
+    const std::size_t patches = mesh.n_faces();
+    std::vector<std::vector<double>> per_patch(patches);
+    std::size_t iterations = 0;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        SolverOptions o;
+        o.clustering = Clustering::isotropic;
+        o.rays = 400'000;
+        o.seed = seed;
+        o.epsilon = 30;
+        const Solution sol = solve(mesh, o);
+        ASSERT_GT(2 * sol.stats.cluster_leaves, sol.stats.leaves) << "seed " << seed;
+        if (seed > 1) {
+            ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
+        }
+        iterations = sol.stats.value_iterations().size();
+        for (std::size_t p = 0; p < patches; ++p) {
+            per_patch[p].push_back(sol.hierarchy->root(p).radiosity[1]);
+        }
+    }
+    const double expected = e * (1 - std::pow(rho, double(iterations + 1))) / (1 - rho);
+    for (std::size_t p = 0; p < patches; ++p) {
+        ASSERT_TRUE(t_test("furnace patch " + std::to_string(p), per_patch[p], expected, 0,
+                           int(patches)));
+    }
 }
 
 }  // namespace
