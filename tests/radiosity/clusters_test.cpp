@@ -126,8 +126,12 @@ TEST(Clusters, PointsAreUniformByArea) {
 TEST(Clusters, GroupedDescentEndsWhereOneRayDescentsEnd) {
     const PatchSet ps = build_patch_set(load_scene("cornell").mesh);
     std::size_t on_clusters = 0, on_patches = 0;
-    for (const auto& [name, scale] : {std::pair<std::string, double>{"kl", 1}, {"kl", 1e4},
-                                      {"power", 1}, {"power", 1e4}, {"kl", 1e6}}) {
+    for (const auto& [oracle_name, threshold_scale] :
+         {std::pair<std::string, double>{"kl", 1}, {"kl", 1e4}, {"power", 1}, {"power", 1e4},
+          {"kl", 1e6}}) {
+        // Named copies: clang before 16 does not let a lambda capture a structured binding.
+        const std::string name = oracle_name;
+        const double scale = threshold_scale;
         const Oracle& oracle = find_named(oracle_registry(), name);
         Hierarchy grouped(ps, {}), single(ps, {});
         for (Hierarchy* h : {&grouped, &single}) {
