@@ -180,6 +180,35 @@ TEST(ClusterLeaves, ShadowsSplitTheClusters) {
     }
 }
 
+// The control variate on a frozen mesh with cluster leaves (docs/design.md §3.11): a closed box
+// whose walls emit 1 or 2, solved with and without it on the same refined mesh (the seed's);
+// a uniform radiosity beta lights every point of a closed box with an irradiance beta, so a
+// cluster leaf's patches get rho beta from the shots it replaces, as the control variate adds:
+// the same expectation (paired t test of a patch's B over 16 seeds). Guards: cluster leaves
+// and a nonzero beta.
+TEST(ClusterLeaves, TheControlVariateKeepsTheExpectation) {
+    std::vector<TestPolygon> box =
+        inward_box({0, 0, 0}, {1, 1, 1}, 8, Rgb::Constant(0.5), Rgb::Constant(1));
+    for (std::size_t p = 0; p < box.size() / 2; ++p) box[p].emission = Rgb::Constant(2);
+    const PatchMesh mesh = make_patch_mesh(box);
+    std::vector<double> difference;
+    for (std::uint64_t seed = 1; seed <= 16; ++seed) {
+        SolverOptions o = with_cluster_leaves(20'000, seed);
+        o.epsilon = 3;
+        o.control_variate = ControlVariate::constant;
+        const Solution cv = solve(mesh, o);
+        o.control_variate = ControlVariate::none;
+        const Solution plain = solve(mesh, o);
+        ASSERT_GT(cv.stats.cluster_leaves, 0u) << "seed " << seed;
+        ASSERT_EQ(cv.cluster_of_side, plain.cluster_of_side) << "seed " << seed;
+        EXPECT_NE(cv.stats.value_iterations()[0].control_constant[0], 0.0);
+        const std::size_t patch = box.size() - 1;  // an emitter of 1
+        difference.push_back(cv.hierarchy->root(patch).radiosity[0] -
+                             plain.hierarchy->root(patch).radiosity[0]);
+    }
+    EXPECT_TRUE(t_test("B with minus B without", difference, 0));
+}
+
 // The same seed gives the same mesh, cluster leaves and values with one thread and with two.
 TEST(ClusterLeaves, OneAndTwoThreadsGiveTheSameBits) {
     SolverOptions o = with_cluster_leaves(100'000, 3);
