@@ -4,12 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <string>
-#include <vector>
 
 #include "radiosity/budget_search.h"
 #include "radiosity/solver.h"
-#include "tests/support/statistics.h"
+#include "tests/support/furnace.h"
 #include "tests/support/test_scenes.h"
 
 namespace hmcr::test {
@@ -46,33 +44,21 @@ TEST(ClusterBudget, FiveThousandLeavesOnAHundredThousandPatches) {
 // of its leaves are clusters) and frozen: every patch's B is the exact K-bounce value, t-tested over 10
 // seeds with Bonferroni over the patches.
 TEST(ClusterBudget, FurnaceOfTenThousandPatchesIsExactOnEveryPatch) {
-    const double rho = 0.5, e = 1;
     const PatchMesh mesh = make_patch_mesh(
-        inward_box({0, 0, 0}, {1, 1, 1}, 41, Rgb::Constant(rho), Rgb::Constant(e)));
-    const std::size_t patches = mesh.n_faces();
-    std::vector<std::vector<double>> per_patch(patches);
-    std::size_t iterations = 0;
-    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-        SolverOptions o;
-        o.clustering = Clustering::isotropic;
-        o.rays = 400'000;
-        o.seed = seed;
-        o.epsilon = 30;
-        const Solution sol = solve(mesh, o);
-        ASSERT_GT(2 * sol.stats.cluster_leaves, sol.stats.leaves) << "seed " << seed;
-        if (seed > 1) {
-            ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
-        }
-        iterations = sol.stats.value_iterations().size();
-        for (std::size_t p = 0; p < patches; ++p) {
-            per_patch[p].push_back(sol.hierarchy->root(p).radiosity[1]);
-        }
-    }
-    const double expected = e * (1 - std::pow(rho, double(iterations + 1))) / (1 - rho);
-    for (std::size_t p = 0; p < patches; ++p) {
-        ASSERT_TRUE(t_test("furnace patch " + std::to_string(p), per_patch[p], expected, 0,
-                           int(patches)));
-    }
+        inward_box({0, 0, 0}, {1, 1, 1}, 41, Rgb::Constant(0.5), Rgb::Constant(1)));
+    expect_furnace_per_patch(
+        mesh, 0.5, 1, 10,
+        [](std::uint64_t seed) {
+            SolverOptions o;
+            o.clustering = Clustering::isotropic;
+            o.rays = 400'000;
+            o.seed = seed;
+            o.epsilon = 30;
+            return o;
+        },
+        [](const Solution& sol) {
+            EXPECT_GT(2 * sol.stats.cluster_leaves, sol.stats.leaves) << sol.options.seed;
+        });
 }
 
 }  // namespace

@@ -17,7 +17,9 @@
 #include "rays/embree_scene.h"
 #include "rays/rng.h"
 #include "tests/support/analytic.h"
+#include "tests/support/furnace.h"
 #include "tests/support/plugins.h"
+#include "tests/support/same_leaves.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
 
@@ -187,7 +189,7 @@ SolverOptions clustered(std::uint64_t rays, std::uint64_t seed) {
     o.rays = rays;
     o.seed = seed;
     o.lines = 4;
-    o.refine_share = 1;  // the frozen pass ignores clusters
+    o.refine_share = 1;  // the refined solve alone: the descent and deposits through clusters
     return o;
 }
 
@@ -200,8 +202,6 @@ TEST(Clusters, FurnaceOfManyPatchesIsExact) {
     const auto mesh = make_patch_mesh(
         inward_box({0, 0, 0}, {1, 1, 1}, 16, Rgb::Constant(rho), Rgb::Constant(e)));
     const std::size_t patches = mesh.n_faces();
-    std::vector<std::vector<double>> per_patch(patches);
-    std::size_t iterations = 0;
     auto spread = [&](const Solution& sol) {
         double sum = 0, sum2 = 0;
         for (std::size_t p = 0; p < patches; ++p) {
@@ -219,22 +219,9 @@ TEST(Clusters, FurnaceOfManyPatchesIsExact) {
         return o;
     };
     double clustered_spread = 0;
-    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-        const Solution sol = solve(mesh, options(seed));
-        if (seed > 1) {
-            ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
-        }
-        iterations = sol.stats.value_iterations().size();
-        for (std::size_t p = 0; p < patches; ++p) {
-            per_patch[p].push_back(sol.hierarchy->root(p).radiosity[1]);
-        }
-        if (seed == 1) clustered_spread = spread(sol);
-    }
-    const double expected = e * (1 - std::pow(rho, double(iterations + 1))) / (1 - rho);
-    for (std::size_t p = 0; p < patches; ++p) {
-        EXPECT_TRUE(t_test("furnace patch " + std::to_string(p), per_patch[p], expected, 0,
-                           int(patches)));
-    }
+    expect_furnace_per_patch(mesh, rho, e, 10, options, [&](const Solution& sol) {
+        if (sol.options.seed == 1) clustered_spread = spread(sol);
+    });
     SolverOptions none = options(1);
     none.clustering = Clustering::none;
     EXPECT_LT(clustered_spread, 0.8 * spread(solve(mesh, none)));
@@ -287,15 +274,8 @@ TEST(Clusters, WhereEveryClusterIsRefusedTheSolveIsTheUnclusteredOne) {
     const Solution with = solve(mesh, o);
     o.clustering = Clustering::none;
     const Solution without = solve(mesh, o);
-    std::vector<std::pair<ElementId, Rgb>> a, b;
-    with.hierarchy->for_each_leaf([&](const Element& l) { a.emplace_back(l.id, l.radiosity); });
-    without.hierarchy->for_each_leaf([&](const Element& l) { b.emplace_back(l.id, l.radiosity); });
-    ASSERT_EQ(a.size(), b.size());
-    EXPECT_GT(a.size(), mesh.n_faces());  // a guard: the patches refine
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        ASSERT_EQ(a[k].first, b[k].first) << k;
-        ASSERT_TRUE((a[k].second == b[k].second).all()) << "leaf " << k;
-    }
+    EXPECT_GT(with.hierarchy->leaf_count(), mesh.n_faces());  // a guard: the patches refine
+    expect_same_leaves(*with.hierarchy, *without.hierarchy);
     // Without a link cache each cluster's link to the top casts its lines once an iteration, not
     // once a ray.
     o.cache_mb = 0;
@@ -311,20 +291,7 @@ TEST(Clusters, WhereEveryClusterIsRefusedTheSolveIsTheUnclusteredOne) {
 
 // The same seed gives the same hierarchy and values with one thread and with two.
 TEST(Clusters, OneAndTwoThreadsGiveTheSameBits) {
-    const PatchMesh mesh = load_scene("cornell").mesh;
-    SolverOptions o = clustered(100'000, 3);
-    o.threads = 1;
-    const Solution one = solve(mesh, o);
-    o.threads = 2;
-    const Solution two = solve(mesh, o);
-    std::vector<std::pair<ElementId, Rgb>> a, b;
-    one.hierarchy->for_each_leaf([&](const Element& l) { a.emplace_back(l.id, l.radiosity); });
-    two.hierarchy->for_each_leaf([&](const Element& l) { b.emplace_back(l.id, l.radiosity); });
-    ASSERT_EQ(a.size(), b.size());
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        ASSERT_EQ(a[k].first, b[k].first) << k;
-        ASSERT_TRUE((a[k].second == b[k].second).all()) << "leaf " << k;
-    }
+    solve_on_one_and_two_threads(load_scene("cornell").mesh, clustered(100'000, 3));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "radiosity/solver.h"
+#include "tests/support/same_leaves.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
 
@@ -88,20 +89,7 @@ TEST(ClustersTwoSided, FurnaceOfTwoSidedWallsIsExactInsideAndOutside) {
 // The same seed gives the same hierarchy and values with one thread and with two, through the
 // top cluster joining fronts and backs.
 TEST(ClustersTwoSided, OneAndTwoThreadsGiveTheSameBits) {
-    const PatchMesh mesh = two_sided_box(6, 0.5, 1, 0.3);
-    SolverOptions o = clustered(5);
-    o.threads = 1;
-    const Solution one = solve(mesh, o);
-    o.threads = 2;
-    const Solution two = solve(mesh, o);
-    std::vector<std::pair<ElementId, Rgb>> a, b;
-    one.hierarchy->for_each_leaf([&](const Element& l) { a.emplace_back(l.id, l.radiosity); });
-    two.hierarchy->for_each_leaf([&](const Element& l) { b.emplace_back(l.id, l.radiosity); });
-    ASSERT_EQ(a.size(), b.size());
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        ASSERT_EQ(a[k].first, b[k].first) << k;
-        ASSERT_TRUE((a[k].second == b[k].second).all()) << "leaf " << k;
-    }
+    solve_on_one_and_two_threads(two_sided_box(6, 0.5, 1, 0.3), clustered(5));
 }
 
 }  // namespace

@@ -26,7 +26,9 @@ Solution solve_on_one_and_two_threads(const PatchMesh& mesh, SolverOptions optio
     options.threads = 1;
     Solution one = solve(mesh, options);
     options.threads = 2;
-    expect_same_leaves(*one.hierarchy, *solve(mesh, options).hierarchy);
+    const Solution two = solve(mesh, options);
+    expect_same_leaves(*one.hierarchy, *two.hierarchy);
+    EXPECT_EQ(one.cluster_of_side(), two.cluster_of_side());
     return one;
 }
 

@@ -11,8 +11,8 @@ namespace hmcr::test {
 // Expects the same leaves (ids, in order) with the same radiosity, bit for bit.
 void expect_same_leaves(const Hierarchy& a, const Hierarchy& b);
 
-// Solves `mesh` with `options` on 1 and on 2 threads and expects the same leaves. Returns the
-// one-thread solution.
+// Solves `mesh` with `options` on 1 and on 2 threads and expects the same leaves and the same
+// cluster leaves. Returns the one-thread solution.
 Solution solve_on_one_and_two_threads(const PatchMesh& mesh, SolverOptions options);
 
 }  // namespace hmcr::test

@@ -1,0 +1,22 @@
+// The furnace's exact test (docs/design.md §8.2): every patch of a closed box that emits E and
+// reflects rho everywhere has B = E (1 - rho^(K+1)) / (1 - rho) after K iterations, whatever
+// the mesh.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "meshes/patch_mesh.h"
+#include "radiosity/solver.h"
+
+namespace hmcr::test {
+
+// Solves `mesh` (such a box) with options(seed) for the seeds 1..seeds, passing each solution
+// to `check` (a test's guards), expects the same K (the iterations the values hold) for every
+// seed, and t-tests every patch's B over the seeds against the K-bounce value, with Bonferroni
+// over the patches. Returns K.
+std::size_t expect_furnace_per_patch(const PatchMesh& mesh, double rho, double e, int seeds,
+                                     const std::function<SolverOptions(std::uint64_t)>& options,
+                                     const std::function<void(const Solution&)>& check = {});
+
+}  // namespace hmcr::test
