@@ -105,9 +105,10 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
 
     const auto t_out = std::chrono::steady_clock::now();
     // Nothing needs the tree after the output: the shading releases it as early as it can.
+    const std::vector<std::int32_t> cluster_ids = sol.cluster_of_side();
     sol.clusters.reset();  // it points into the tree
     ShadedMesh shaded = build_shaded_mesh(std::move(sol.hierarchy), args.crease_degrees);
-    set_cluster_ids(shaded, sol.cluster_of_side);
+    set_cluster_ids(shaded, cluster_ids);
     write_solution(out->temp(vtp), shaded, sol, identity, double(sol.stats.iterations.size()));
     write_paraview_state(out->temp(pvsm), vtp, find_view(scene, ""),
                          sol.stats.two_sided_patches > 0);

@@ -1,6 +1,7 @@
 #include "radiosity/rank_merge.h"
 
 #include <cstring>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -86,13 +87,8 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
             }
         });
     }
-    // A cluster is open if it is on any rank (the union, as of the subdivisions).
-    if (refined && clusters) {
-        std::vector<std::int64_t> open = clusters->open_flags();
-        ranks.sum(open);
-        clusters->set_open_flags(open);
-    }
-    // Every element's deposits, in the canonical order every rank now shares.
+    // Every element's deposits, in the canonical order every rank now shares, and the clusters'
+    // open flags (a cluster is open if it is on any rank: the sum is not 0).
     std::vector<std::int64_t> quanta;
     quanta.reserve(3 * h.element_count() + 9);
     h.for_each_element([&](const Element& e) {
@@ -107,6 +103,11 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
     for (const Quanta* q : {&out.shot_power, &out.escaped_power, &out.back_face_power}) {
         quanta.insert(quanta.end(), q->begin(), q->end());
     }
+    const bool opens = refined && clusters;
+    if (opens) {
+        const std::vector<std::int64_t> open = clusters->open_flags();
+        quanta.insert(quanta.end(), open.begin(), open.end());
+    }
     ranks.sum(quanta);
     std::size_t k = 0;
     const auto take = [&](Element& e) {
@@ -117,6 +118,7 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
     for (Quanta* q : {&out.shot_power, &out.escaped_power, &out.back_face_power}) {
         for (auto& c : *q) c = quanta[k++];
     }
+    if (opens) clusters->set_open_flags(std::span<const std::int64_t>(quanta).subspan(k));
     RefinementCounters& n = out.counters;
     std::vector<std::uint64_t> counts = {out.rays,           n.oracle_calls, n.oracle_evaluations,
                                          n.cache_hits,       n.lines_cast,   n.oracle_nanoseconds};

@@ -50,7 +50,7 @@ ShadedMesh build_shaded_mesh(const Hierarchy& h, double crease_degrees = kCrease
 // of the output are built. At 10^6 patches the tree and its patches are 400 MB.
 ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h,
                              double crease_degrees = kCreaseDegrees);
-// Fills mesh.cluster_id from each side value's cluster leaf (Solution::cluster_of_side); leaves
+// Fills mesh.cluster_id from each side value's cluster leaf (Solution::cluster_of_side()); leaves
 // it empty when that is.
 void set_cluster_ids(ShadedMesh& mesh, std::span<const std::int32_t> cluster_of_side);
 

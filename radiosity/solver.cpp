@@ -95,6 +95,11 @@ void push_pull(Hierarchy& h, ClusterTree* clusters, const PowerQuantum& quantum)
 
 }  // namespace
 
+const std::vector<std::int32_t>& Solution::cluster_of_side() const {
+    static const std::vector<std::int32_t> none;
+    return clusters ? clusters->leaf_of_side() : none;
+}
+
 double SolveStats::back_face_fraction() const {
     const double shot = channel_sum(shot_power);
     return shot > 0 ? channel_sum(back_face_power) / shot : 0;
@@ -256,10 +261,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Soluti
     st.elements = h.element_count();
     st.leaves = leaves();
     st.faces = h.leaf_count();
-    if (clusters) {
-        st.cluster_leaves = clusters->cluster_leaves();
-        sol.cluster_of_side = clusters->leaf_of_side();
-    }
+    if (clusters) st.cluster_leaves = clusters->cluster_leaves();
     st.hierarchy_bytes = h.bytes();
     if (cache) {
         st.cache_bytes = cache->bytes();

@@ -69,11 +69,12 @@ struct Solution {
     // The clusters over hierarchy's sides with the mesh's open ones, for solving this mesh
     // again (none without clustering). Declared after `hierarchy`, which it points into.
     std::unique_ptr<ClusterTree> clusters;
-    // Each side value's (2 * patch + side) cluster leaf, -1 where the side's own leaves are in
-    // the mesh; empty without clustering. What the output calls ClusterId.
-    std::vector<std::int32_t> cluster_of_side;
     SolverOptions options;
     SolveStats stats;
+
+    // Each side value's (2 * patch + side) cluster leaf, -1 where the side's own leaves are in
+    // the mesh; empty without clustering. What the output calls ClusterId.
+    const std::vector<std::int32_t>& cluster_of_side() const;
 };
 
 // Throws InputError on a bad option (unknown oracle, no rays, ...) or a scene without light.

@@ -32,7 +32,7 @@ VtpMetadata vtp_metadata(const Solution& solution, const SceneIdentity& scene,
 
 ShadedMesh shade(const Solution& solution, double crease_degrees) {
     ShadedMesh mesh = build_shaded_mesh(*solution.hierarchy, crease_degrees);
-    set_cluster_ids(mesh, solution.cluster_of_side);
+    set_cluster_ids(mesh, solution.cluster_of_side());
     return mesh;
 }
 

@@ -14,6 +14,7 @@
 #include "radiosity/clusters.h"
 #include "radiosity/shaded_mesh.h"
 #include "radiosity/solver.h"
+#include "tests/support/furnace.h"
 #include "tests/support/plugins.h"
 #include "tests/support/same_leaves.h"
 #include "tests/support/statistics.h"
@@ -40,7 +41,7 @@ PatchMesh furnace_of(int n) {
 // cluster leaf is a patch's unsplit side, and the faces of one cluster leaf are its own.
 void expect_consistent_mesh(const Solution& sol) {
     ShadedMesh cells = build_shaded_mesh(*sol.hierarchy);
-    set_cluster_ids(cells, sol.cluster_of_side);
+    set_cluster_ids(cells, sol.cluster_of_side());
     ASSERT_EQ(cells.cluster_id.size(), cells.cell_count());
     std::set<std::int32_t> clusters;
     std::size_t outside = 0;
@@ -85,30 +86,18 @@ TEST(ClusterLeaves, BudgetBelowThePatchCountIsReached) {
 // Bonferroni over the patches: a deposit on a cluster leaf gives its patches the irradiance
 // it carries, which in the furnace is every patch's.
 TEST(ClusterLeaves, FurnaceFrozenOnClusterLeavesIsExact) {
-    const double rho = 0.5, e = 1;
     const PatchMesh mesh = furnace_of(12);  // 864 patches
-    const std::size_t patches = mesh.n_faces();
-    std::vector<std::vector<double>> per_patch(patches);
-    std::size_t iterations = 0;
-    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-        SolverOptions o = with_cluster_leaves(40'000, seed);
-        o.epsilon = 3;  // accepts links at clusters (a guard below)
-        const Solution sol = solve(mesh, o);
-        ASSERT_GT(sol.stats.cluster_leaves, 0u) << "seed " << seed;
-        ASSERT_LT(sol.stats.leaves, patches) << "seed " << seed;
-        if (seed > 1) {
-            ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
-        }
-        iterations = sol.stats.value_iterations().size();
-        for (std::size_t p = 0; p < patches; ++p) {
-            per_patch[p].push_back(sol.hierarchy->root(p).radiosity[1]);
-        }
-    }
-    const double expected = e * (1 - std::pow(rho, double(iterations + 1))) / (1 - rho);
-    for (std::size_t p = 0; p < patches; ++p) {
-        EXPECT_TRUE(t_test("furnace patch " + std::to_string(p), per_patch[p], expected, 0,
-                           int(patches)));
-    }
+    expect_furnace_per_patch(
+        mesh, 0.5, 1, 10,
+        [](std::uint64_t seed) {
+            SolverOptions o = with_cluster_leaves(40'000, seed);
+            o.epsilon = 3;  // accepts links at clusters (a guard below)
+            return o;
+        },
+        [&](const Solution& sol) {
+            EXPECT_GT(sol.stats.cluster_leaves, 0u) << "seed " << sol.options.seed;
+            EXPECT_LT(sol.stats.leaves, mesh.n_faces()) << "seed " << sol.options.seed;
+        });
 }
 
 // scenes/shadow with its floor cut into 40 x 40 patches of 0.05 m: the umbra is
@@ -154,12 +143,12 @@ TEST(ClusterLeaves, ShadowsSplitTheClusters) {
         };
         std::map<std::int32_t, std::set<Kind>> kinds;  // of each cluster leaf's patches
         for (std::size_t p = 0; p < polygons.size(); ++p) {
-            kinds[sol.cluster_of_side[2 * p]].insert(kind(p));
+            kinds[sol.cluster_of_side()[2 * p]].insert(kind(p));
         }
         std::size_t dark = 0;
         double lit_power = 0;
         for (std::size_t p = 0; p < std::size_t(n * n); ++p) {
-            const std::int32_t c = sol.cluster_of_side[2 * p];
+            const std::int32_t c = sol.cluster_of_side()[2 * p];
             const double b = sol.hierarchy->root(p).radiosity[1];
             if (kind(p) == lit) lit_power += b;
             if (kind(p) != umbra || c < 0) continue;
@@ -170,7 +159,7 @@ TEST(ClusterLeaves, ShadowsSplitTheClusters) {
             }
         }
         for (std::size_t p = 0; p < std::size_t(n * n); ++p) {
-            if (kind(p) == umbra && sol.cluster_of_side[2 * p] < 0) {
+            if (kind(p) == umbra && sol.cluster_of_side()[2 * p] < 0) {
                 EXPECT_EQ(sol.hierarchy->root(p).radiosity[1], 0.0) << "seed " << seed;
                 ++dark;
             }
@@ -200,7 +189,7 @@ TEST(ClusterLeaves, TheControlVariateKeepsTheExpectation) {
         o.control_variate = ControlVariate::none;
         const Solution plain = solve(mesh, o);
         ASSERT_GT(cv.stats.cluster_leaves, 0u) << "seed " << seed;
-        ASSERT_EQ(cv.cluster_of_side, plain.cluster_of_side) << "seed " << seed;
+        ASSERT_EQ(cv.cluster_of_side(), plain.cluster_of_side()) << "seed " << seed;
         EXPECT_NE(cv.stats.value_iterations()[0].control_constant[0], 0.0);
         const std::size_t patch = box.size() - 1;  // an emitter of 1
         difference.push_back(cv.hierarchy->root(patch).radiosity[0] -
@@ -213,13 +202,7 @@ TEST(ClusterLeaves, TheControlVariateKeepsTheExpectation) {
 TEST(ClusterLeaves, OneAndTwoThreadsGiveTheSameBits) {
     SolverOptions o = with_cluster_leaves(100'000, 3);
     o.epsilon = 3;
-    o.threads = 1;
-    const Solution one = solve(furnace_of(8), o);
-    o.threads = 2;
-    const Solution two = solve(furnace_of(8), o);
-    EXPECT_GT(one.stats.cluster_leaves, 0u);
-    EXPECT_EQ(one.cluster_of_side, two.cluster_of_side);
-    expect_same_leaves(*one.hierarchy, *two.hierarchy);
+    EXPECT_GT(solve_on_one_and_two_threads(furnace_of(8), o).stats.cluster_leaves, 0u);
 }
 
 // A mesh frozen from a clustered solve (a study's mesh error) keeps its cluster leaves.
@@ -232,7 +215,7 @@ TEST(ClusterLeaves, SolveOnMeshKeepsTheClusterLeaves) {
     ASSERT_GT(shape.stats.cluster_leaves, 0u);
     o.rays = 30'000;
     const Solution frozen = solve_on_mesh(mesh, o, shape);
-    EXPECT_EQ(frozen.cluster_of_side, shape.cluster_of_side);
+    EXPECT_EQ(frozen.cluster_of_side(), shape.cluster_of_side());
     EXPECT_EQ(frozen.stats.leaves, shape.stats.leaves);
     expect_consistent_mesh(frozen);
 }
