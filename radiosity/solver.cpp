@@ -114,7 +114,8 @@ std::span<const IterationRecord> SolveStats::value_iterations() const {
 
 namespace {
 
-// `shape`: a solution whose mesh to solve on, frozen, or none (refine, or the uniform mesh of uniform_max_area).
+// `shape`: a solution whose mesh to solve on, frozen, or none (refine, or the uniform mesh of
+// uniform_max_area).
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
 // refining pass's, so that its rays are not theirs again.
 Solution solve_with(PatchSet patches, const SolverOptions& options, const Solution* shape,
@@ -211,7 +212,8 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Soluti
         IterationRecord rec;
         rec.unshot_before = unshot;
         sources.rebuild(h);
-        if (clusters) clusters->begin_iteration(options.link_weight);
+        // A fixed mesh's clusters take deposits only: no decision samples the top.
+        if (clusters && !fixed_mesh) clusters->begin_iteration(options.link_weight);
         // The schedule and its pilot rays follow the true unshot power, with or without the
         // control variate; the rays shoot it minus beta where beta is not 0.
         const double ratio = reflected_fraction(ctx, sources, it, kPilotRays);
