@@ -110,6 +110,23 @@ void Hierarchy::subdivide_like(const Hierarchy& shape) {
     });
 }
 
+void Hierarchy::reset_values() {
+    auto reset = [](auto& self, Element& e, const Rgb& emission) -> void {
+        e.radiosity = e.unshot = emission;
+        e.received = {};
+        if (Element* c = e.children()) {
+            for (int k = 0; k < 4; ++k) self(self, c[k], emission);
+        }
+    };
+    tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
+        reset(reset, m_roots[i], m_patches.material(i, kFront).emission);
+        if (m_back_roots.empty()) return;
+        if (Element* back = m_back_roots[i].load(std::memory_order_acquire)) {
+            reset(reset, *back, m_patches.material(i, kBack).emission);
+        }
+    });
+}
+
 Element& Hierarchy::child_containing(const Element& e, const Vec2& uv) const {
     const int k = e.domain.child_containing(patch(e).is_quad(), uv);
     return e.children()[k];

@@ -69,6 +69,10 @@ public:
     // Splits every element that `shape` (a hierarchy of the same patches) has split: the same
     // leaves, for re-solving a mesh frozen (a study's mesh error). Parallel over patches.
     void subdivide_like(const Hierarchy& shape);
+    // Every element back to what a new hierarchy split like this one holds: B and Delta B its
+    // side's emission, nothing received. A frozen pass solves its refining pass's mesh again
+    // in place, rather than in a copy (docs/design.md §3.10). Parallel over patches.
+    void reset_values();
     // The four children of e, created if they do not exist yet (thread-safe). New children
     // inherit B and Delta B (constant basis) and start with nothing received. Throws
     // ElementLimitReached when they would make more than max_elements elements.

@@ -114,11 +114,56 @@ std::span<const IterationRecord> SolveStats::value_iterations() const {
 
 namespace {
 
-// `shape`: a solution whose mesh to solve on, frozen, or none (refine, or the uniform mesh of
-// uniform_max_area).
+// The mesh a solve starts from: a refining solve's roots (or the uniform mesh of
+// uniform_max_area), or a solution's leaves to solve again, frozen, with the clusters its
+// shape had open.
+struct StartMesh {
+    std::unique_ptr<Hierarchy> hierarchy;
+    std::unique_ptr<ClusterTree> clusters;  // a frozen mesh's only
+    bool frozen = false;
+};
+
+// A refining solve's mesh (or the uniform one) over `patches`.
+StartMesh roots_of(PatchSet patches, const SolverOptions& o) {
+    StartMesh mesh{std::make_unique<Hierarchy>(
+                       std::move(patches), HierarchyLimits{o.min_area, o.max_depth, o.max_elements}),
+                   nullptr, o.uniform_max_area > 0};
+    if (mesh.frozen) mesh.hierarchy->subdivide_uniformly(o.uniform_max_area);
+    return mesh;
+}
+
+// Clusters over `h` open where `shape`'s are; none without clustering.
+std::unique_ptr<ClusterTree> clusters_like(Hierarchy& h, const ClusterTree* shape) {
+    if (!shape) return nullptr;
+    auto clusters = std::make_unique<ClusterTree>(h);
+    clusters->open_like(*shape);
+    return clusters;
+}
+
+// The frozen pass's mesh: the refining pass's own tree, reset, so that one tree and one copy
+// of the patches are alive at a time.
+StartMesh frozen_in_place(Solution& refined) {
+    StartMesh mesh{std::move(refined.hierarchy), nullptr, true};
+    mesh.hierarchy->reset_values();
+    mesh.clusters = clusters_like(*mesh.hierarchy, refined.clusters.get());
+    refined.clusters.reset();
+    return mesh;
+}
+
+// A solution's mesh on patches of its own, frozen.
+StartMesh frozen_like(PatchSet patches, const SolverOptions& o, const Solution& shape) {
+    StartMesh mesh{std::make_unique<Hierarchy>(
+                       std::move(patches), HierarchyLimits{o.min_area, o.max_depth, o.max_elements}),
+                   nullptr, true};
+    mesh.hierarchy->subdivide_like(*shape.hierarchy);
+    mesh.clusters = clusters_like(*mesh.hierarchy, shape.clusters.get());
+    return mesh;
+}
+
+// make_mesh() builds the mesh once the options are validated and the threads limited.
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
 // refining pass's, so that its rays are not theirs again.
-Solution solve_with(PatchSet patches, const SolverOptions& options, const Solution* shape,
+Solution solve_with(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
                     Progress& progress, const Ranks& ranks, std::uint32_t first_iteration = 0) {
     validate(options);
     const auto start = Clock::now();
@@ -133,6 +178,10 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Soluti
     st.threads = threads;
     st.ranks = ranks.size();
 
+    StartMesh mesh = make_mesh();
+    sol.hierarchy = std::move(mesh.hierarchy);
+    Hierarchy& h = *sol.hierarchy;
+    const PatchSet& patches = h.patch_set();
     if (patches.max_emitted_power <= 0) throw InputError("the scene emits no light");
     st.emitted_power = patches.emitted_power;
     st.total_area = patches.total_area;
@@ -140,15 +189,7 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Soluti
     st.patches = patches.patches.size();
     for (std::size_t i = 0; i < st.patches; ++i) st.two_sided_patches += patches.two_sided(i);
     const EmbreeScene scene(patches);
-    sol.hierarchy = std::make_unique<Hierarchy>(std::move(patches),
-                                                HierarchyLimits{options.min_area, options.max_depth, options.max_elements});
-    Hierarchy& h = *sol.hierarchy;
-    const bool fixed_mesh = options.uniform_max_area > 0 || shape;
-    if (shape) {
-        h.subdivide_like(*shape->hierarchy);
-    } else if (fixed_mesh) {
-        h.subdivide_uniformly(options.uniform_max_area);
-    }
+    const bool fixed_mesh = mesh.frozen;
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
     // Importance weighs the oracle's decisions, so a fixed mesh has no use for it (§3.12).
@@ -169,9 +210,8 @@ Solution solve_with(PatchSet patches, const SolverOptions& options, const Soluti
         importance ? std::span<const Rgb>(importance->receiver_weights) : std::span<const Rgb>();
     // A fixed mesh has clusters only where its shape has cluster leaves (§2.7).
     std::unique_ptr<ClusterTree>& clusters = sol.clusters;
-    if (shape && shape->clusters) {
-        clusters = std::make_unique<ClusterTree>(h);
-        clusters->open_like(*shape->clusters);
+    if (mesh.clusters) {
+        clusters = std::move(mesh.clusters);
     } else if (!fixed_mesh && options.clustering == Clustering::isotropic) {
         clusters = std::make_unique<ClusterTree>(h, receiver_weights);
     }
@@ -312,7 +352,8 @@ Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& p
     SolverOptions o = options;
     o.rays = refining_rays(options);
     o.refine_share = 1;
-    Solution sol = solve_with(std::move(patches), o, nullptr, progress, ranks);
+    Solution sol = solve_with(
+        o, [&] { return roots_of(std::move(patches), o); }, progress, ranks);
     auto importance = std::move(sol.options.view_importance);
     sol.options = options;
     sol.options.view_importance = std::move(importance);
@@ -324,8 +365,9 @@ Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     if (!refines_then_freezes(options)) return refined;
     SolverOptions o = options;
     o.rays = options.rays - refining_rays(options);
-    Solution sol = solve_with(refined.hierarchy->patch_set(), o, &refined, progress, ranks,
-                              std::uint32_t(refined.stats.iterations.size()));
+    Solution sol = solve_with(
+        o, [&] { return frozen_in_place(refined); }, progress, ranks,
+        std::uint32_t(refined.stats.iterations.size()));
     sol.options = options;
     SolveStats& st = sol.stats;
     const SolveStats& r = refined.stats;
@@ -360,7 +402,8 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
 Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress,
                const Ranks& ranks) {
     if (!refines_then_freezes(options)) {
-        return solve_with(std::move(patches), options, nullptr, progress, ranks);
+        return solve_with(
+            options, [&] { return roots_of(std::move(patches), options); }, progress, ranks);
     }
     validate(options);
     const double share = double(refining_rays(options)) / double(options.rays);
@@ -370,7 +413,9 @@ Solution solve(PatchSet patches, const SolverOptions& options, Progress& progres
 
 Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Solution& shape,
                        Progress& progress) {
-    return solve_with(build_patch_set(mesh), options, &shape, progress, Ranks::single());
+    return solve_with(
+        options, [&] { return frozen_like(build_patch_set(mesh), options, shape); }, progress,
+        Ranks::single());
 }
 
 }  // namespace hmcr

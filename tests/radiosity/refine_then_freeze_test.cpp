@@ -95,6 +95,33 @@ TEST(RefineThenFreeze, ViewImportanceGivesTheSameBitsOnOneAndTwoThreads) {
     EXPECT_GT(solve_on_one_and_two_threads(scene.mesh, o).stats.importance_rays, 0u);
 }
 
+// The frozen pass solves the refining pass's tree again in place: nothing the refining pass
+// left in it reaches the frozen values. Two identical refining passes, one of them scribbled
+// over in every element, freeze to the same bits, with clusters and without.
+TEST(RefineThenFreeze, TheFrozenPassForgetsTheRefiningPassValues) {
+    const Scene scene = load_scene("cornell");
+    for (const Clustering clustering : {Clustering::none, Clustering::isotropic}) {
+        SolverOptions o = options("kl", 200'000, 0.5);
+        o.clustering = clustering;
+        if (clustering == Clustering::isotropic) o.epsilon = 3;  // accepts links at clusters
+        Solution clean = refine_pass(build_patch_set(scene.mesh), o);
+        Solution scribbled = refine_pass(build_patch_set(scene.mesh), o);
+        scribbled.hierarchy->for_each_element([](Element& e) {
+            e.radiosity = Rgb(3, 5, 7);
+            e.unshot = Rgb(-1, 2, 0.5);
+            e.received = {11, 13, 17};
+        });
+        const Solution a = freeze_pass(std::move(clean));
+        const Solution b = freeze_pass(std::move(scribbled));
+        ASSERT_GT(frozen_iterations(a.stats), 0u);
+        expect_same_leaves(*a.hierarchy, *b.hierarchy);
+        EXPECT_EQ(a.cluster_of_side(), b.cluster_of_side());
+        if (clustering == Clustering::isotropic) {
+            EXPECT_GT(a.stats.cluster_leaves, 0u);
+        }
+    }
+}
+
 // A reference's uniform mesh has nothing to refine: every ray solves it, whatever the share.
 TEST(RefineThenFreeze, AUniformMeshIgnoresTheShare) {
     const Scene scene = load_scene("cornell");
