@@ -12,6 +12,7 @@
 // a microbenchmark library's repetitions and statistics have nothing to add (docs/decisions.md).
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -67,13 +68,6 @@ std::vector<nlohmann::json> run_oracle_rows() {
     return rows;
 }
 
-// The value after "--NAME" in argv, or "" when absent.
-std::string flag(int argc, char** argv, const char* name) {
-    for (int k = 1; k + 1 < argc; ++k)
-        if (std::strcmp(argv[k], name) == 0) return argv[k + 1];
-    return "";
-}
-
 }  // namespace
 }  // namespace hmcr::bench
 
@@ -81,10 +75,25 @@ int main(int argc, char** argv) {
     using namespace hmcr::bench;
     // A scaling point, run by the scaling study in a process of its own.
     if (argc == 7 && std::strcmp(argv[1], "--row") == 0) return run_row_process(argv + 2);
-    const std::string cv_seeds = flag(argc, argv, "--control-variate");
-    if (!cv_seeds.empty()) return run_control_variate_study(std::stoi(cv_seeds));
-    const std::string results = flag(argc, argv, "--results");
-    const std::string scaling = flag(argc, argv, "--scaling");
+    CLI::App app{"hmcr_bench: every oracle against the Embree floor, then the scaling study "
+                 "(docs/performance.md)"};
+    std::string results, scaling;
+    int cv_seeds = 0;
+    app.add_option("--results", results, "write every row here (JSON)");
+    app.add_option("--scaling", scaling,
+                   "run the scaling study on the generated office scenes in this folder");
+    app.add_option("--control-variate", cv_seeds,
+                   "run only the control variate's study over this many seeds")
+        ->check(CLI::PositiveNumber);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        fmt::print(stderr, "hmcr_bench: error: {} (see hmcr_bench --help)\n", e.what());
+        return 2;
+    }
+    if (cv_seeds > 0) return run_control_variate_study(cv_seeds);
     std::vector<nlohmann::json> rows = run_oracle_rows();
     if (!scaling.empty()) {
         const std::filesystem::path plot_data =
