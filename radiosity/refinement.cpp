@@ -231,65 +231,12 @@ namespace {
 constexpr std::size_t kParallelRays = 2048;
 
 // What every descent of one (receiver patch, source patch) group shares: the grouped queries,
-// their points in fixed point, where each one's receiver goes, and the pair's patch data.
+// where each one's receiver goes, and the pair's patch data.
 struct Descent {
     const LinkQuery* rays;
-    const std::array<QuadFixedPoint, 2>* fixed;
     Element** receivers;
     PatchPair patches;
 };
-
-// child[t] = the child of e holding the point of ray index[t] (its hit y on the receiver, its
-// origin x on the source), as Hierarchy::child_containing finds it; the children's counts.
-std::array<std::size_t, 4> children_of_rays(const Descent& d, const Element& e, bool quad,
-                                            bool on_receiver, const std::uint32_t* index,
-                                            std::uint8_t* child, std::size_t n) {
-    if (quad) {
-        const int end = on_receiver ? 0 : 1, depth = e.id.depth;
-        for (std::size_t t = 0; t < n; ++t) {
-            child[t] = std::uint8_t(d.fixed[index[t]][std::size_t(end)].child(depth));
-        }
-    } else {
-        const Domain& domain = e.domain;
-        const double inverse_s = 1.0 / double(domain.s);
-        for (std::size_t t = 0; t < n; ++t) {
-            const LinkQuery& q = d.rays[index[t]];
-            const Vec2f& uv = on_receiver ? q.y_uv : q.x_uv;
-            child[t] = std::uint8_t(domain.child_containing(false, double(uv.x()),
-                                                            double(uv.y()), inverse_s));
-        }
-    }
-    // Four running sums rather than count[child[t]]++, whose stores wait on each other.
-    std::array<std::size_t, 4> count{};
-    for (std::size_t t = 0; t < n; ++t) {
-        const unsigned k = child[t];
-        count[0] += k == 0;
-        count[1] += k == 1;
-        count[2] += k == 2;
-        count[3] += k == 3;
-    }
-    return count;
-}
-
-// scratch[start[k] ...] = the entries of index whose child is k, in their order. The entries
-// placed so far are counted in one register, 16 bits a child, rather than in next[k]++ in
-// memory, whose stores wait on each other; blocks of 2^16 - 1 entries keep each count in its
-// bits.
-void scatter_by_child(const std::uint32_t* index, const std::uint8_t* child, std::size_t n,
-                      const std::array<std::size_t, 5>& start, std::uint32_t* scratch) {
-    constexpr std::size_t kBlock = 0xffff;
-    std::array<std::size_t, 4> next{start[0], start[1], start[2], start[3]};
-    for (std::size_t first = 0; first < n; first += kBlock) {
-        const std::size_t last = std::min(n, first + kBlock);
-        std::uint64_t placed = 0;
-        for (std::size_t t = first; t < last; ++t) {
-            const unsigned shift = 16u * child[t];
-            scratch[next[child[t]] + ((placed >> shift) & 0xffff)] = index[t];
-            placed += std::uint64_t(1) << shift;
-        }
-        for (std::size_t k = 0; k < 4; ++k) next[k] += (placed >> (16 * k)) & 0xffff;
-    }
-}
 
 // refine_link's loop for the rays rays[index[0..n)], which all reach the link (i, j). A refused
 // link's rays are scattered by child into `scratch` (the same range of a second buffer), which
@@ -309,8 +256,14 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
         }
         if (ctx.clusters && !on_i) ctx.clusters->open_above(d.rays[index[0]].source.value);
         Element* const children = h.subdivide(*e);
-        const std::array<std::size_t, 4> count =
-            children_of_rays(d, *e, h.patch(*e).is_quad(), on_i, index, child, n);
+        const bool quad = h.patch(*e).is_quad();
+        std::array<std::size_t, 4> count{};
+        for (std::size_t t = 0; t < n; ++t) {
+            const LinkQuery& q = d.rays[index[t]];
+            const Vec2f& uv = on_i ? q.y_uv : q.x_uv;
+            child[t] = std::uint8_t(e->domain.child_containing(quad, uv.cast<double>()));
+            ++count[child[t]];
+        }
         const int first = child[0];
         if (count[std::size_t(first)] == n) {  // all in one child: the loop goes on
             e = &children[first];
@@ -318,7 +271,8 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
         }
         std::array<std::size_t, 5> start{};
         for (std::size_t k = 0; k < 4; ++k) start[k + 1] = start[k] + count[k];
-        scatter_by_child(index, child, n, start, scratch);
+        std::array<std::size_t, 4> next{start[0], start[1], start[2], start[3]};
+        for (std::size_t t = 0; t < n; ++t) scratch[next[child[t]]++] = index[t];
         // The children's links are decided one after another; their cache sets load meanwhile.
         if (ctx.cache && ctx.oracle.uses_lines()) {
             for (std::size_t k = 0; k < 4; ++k) {
@@ -367,22 +321,17 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
     });
     radix_sort(keyed, buffers.keyed_scratch);  // swaps the two vectors: `keys` may be stale
     buffers.grouped.resize(queries.size());
-    buffers.fixed.resize(queries.size());
     buffers.receivers.resize(queries.size());
     buffers.index.resize(queries.size());
     buffers.scratch.resize(queries.size());
     buffers.child.resize(queries.size());
     LinkQuery* const grouped = buffers.grouped.data();
-    std::array<QuadFixedPoint, 2>* const fixed = buffers.fixed.data();
     std::uint32_t* const index = buffers.index.data();
     std::uint32_t* const scratch = buffers.scratch.data();
     std::uint8_t* const child = buffers.child.data();
     const Keyed<std::uint32_t>* const sorted = keyed.data();
     tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t t) {
-        const LinkQuery& q = queries[sorted[t].value];
-        grouped[t] = q;
-        fixed[t] = {QuadFixedPoint::of(q.y_uv.x(), q.y_uv.y()),
-                    QuadFixedPoint::of(q.x_uv.x(), q.x_uv.y())};
+        grouped[t] = queries[sorted[t].value];
         index[t] = std::uint32_t(t);
     });
     auto& group_start = buffers.group_start;
@@ -397,7 +346,7 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
         for (std::size_t g = r.begin(); g < r.end(); ++g) {
             const std::size_t first = group_start[g], n = group_start[g + 1] - first;
             const LinkQuery& q = grouped[first];
-            const Descent d{grouped, fixed, buffers.receivers.data(),
+            const Descent d{grouped, buffers.receivers.data(),
                             patch_pair(ctx, q.receiver, q.source)};
             Element* const top = ctx.clusters ? &ctx.clusters->top() : nullptr;
             descend(ctx, d, top ? top : &h.root(q.receiver.patch(), q.receiver.side()),

@@ -2,14 +2,12 @@
 // the receiver element that takes the ray's power.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "common/radix_sort.h"
 #include "oracles/oracle.h"
-#include "rays/domain.h"
 #include "rays/embree_scene.h"
 #include "radiosity/clusters.h"
 #include "radiosity/hierarchy.h"
@@ -80,7 +78,6 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
 struct DescentScratch {
     std::vector<Keyed<std::uint32_t>> keyed, keyed_scratch;
     std::vector<LinkQuery> grouped;
-    std::vector<std::array<QuadFixedPoint, 2>> fixed;  // of the grouped queries: y, x
     std::vector<Element*> receivers;                 // of the grouped queries
     std::vector<std::uint32_t> index, scratch;
     std::vector<std::uint8_t> child;                 // of each index entry, at one level

@@ -7,9 +7,7 @@
 // down to depth 24.
 #pragma once
 
-#include <algorithm>
 #include <array>
-#include <cstdint>
 
 #include "common/types.h"
 
@@ -45,40 +43,11 @@ struct Domain {
 
     // The child containing (u, v) (a point of this domain).
     int child_containing(bool quad, const Vec2& uv) const {
-        return child_containing(quad, uv.x(), uv.y(), 1.0 / s);
-    }
-    // The same with 1 / s given: s is a power of two, so multiplying by 1 / s is the exact
-    // division, and a loop over many points of one domain divides once.
-    int child_containing(bool quad, double u, double v, double inverse_s) const {
-        const double a = (u - u0) * inverse_s, b = (v - v0) * inverse_s;
+        const double a = (uv.x() - u0) / s, b = (uv.y() - v0) / s;
         if (quad) return (a >= 0.5 ? 1 : 0) + (b >= 0.5 ? 2 : 0);
         if (a >= 0.5) return 1;
         if (b >= 0.5) return 2;
         return a + b < 0.5 ? 0 : 3;
-    }
-};
-
-// A point of a quad patch's domain in 24-bit fixed point, for descents that find its child at
-// every level. A quad element at depth d has corners on multiples of 2^-d, so the comparisons
-// of child_containing at depth d are bit 23 - d of each coordinate (d < 24, the deepest an
-// element may be split). Points outside [0, 1] (and NaN) clamp to the edge child_containing
-// would choose at every level.
-struct QuadFixedPoint {
-    std::uint32_t u = 0, v = 0;
-
-    static constexpr int kBits = 24;
-    static QuadFixedPoint of(float u, float v) { return {fixed(u), fixed(v)}; }
-    // child_containing(true, (u, v)) of the quad element at `depth` holding the point.
-    int child(int depth) const {
-        const int shift = kBits - 1 - depth;
-        return int((u >> shift) & 1u) + 2 * int((v >> shift) & 1u);
-    }
-
-private:
-    static std::uint32_t fixed(float x) {
-        constexpr float kScale = float(1u << kBits), kLast = float((1u << kBits) - 1);
-        // max(0, NaN) is 0, and the cast of what is left, non-negative, is its floor.
-        return std::uint32_t(std::min(std::max(0.0f, x * kScale), kLast));
     }
 };
 
