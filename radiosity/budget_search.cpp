@@ -19,7 +19,9 @@ class Search {
 public:
     Search(const PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
            Progress& progress, const Ranks& ranks)
-        : m_mesh(mesh), m_options(options), m_budget(budget), m_progress(progress), m_ranks(ranks) {}
+        : m_mesh(mesh), m_options(options), m_budget(budget), m_progress(progress), m_ranks(ranks) {
+        m_options.scene.reset();  // the probes share the first probe's
+    }
 
     BudgetResult run();
 
@@ -51,6 +53,7 @@ std::size_t Search::probe(double x) {
     m_progress.stage(fmt::format("budget probe {}", k));
     Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks);
     m_options.view_importance = sol.options.view_importance;  // the same for every probe
+    m_options.scene = sol.options.scene;                      // the same patches
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
     m_result.probes.push_back(p);
     m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves ({:.1f} s)", k,
@@ -105,6 +108,7 @@ BudgetResult Search::run() {
                 m_result.solution =
                     freeze_pass(std::move(m_result.solution), m_progress, m_ranks);
             }
+            m_result.solution.options.scene.reset();
             return std::move(m_result);
         }
         // The leaf count is a step function of epsilon: one decision flipping near the top of a

@@ -188,7 +188,8 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     st.max_emitted_power = patches.max_emitted_power;
     st.patches = patches.patches.size();
     for (std::size_t i = 0; i < st.patches; ++i) st.two_sided_patches += patches.two_sided(i);
-    const EmbreeScene scene(patches);
+    if (!sol.options.scene) sol.options.scene = std::make_shared<const EmbreeScene>(patches);
+    const EmbreeScene& scene = *sol.options.scene;
     const bool fixed_mesh = mesh.frozen;
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
@@ -355,20 +356,26 @@ Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& p
     Solution sol = solve_with(
         o, [&] { return roots_of(std::move(patches), o); }, progress, ranks);
     auto importance = std::move(sol.options.view_importance);
+    auto scene = std::move(sol.options.scene);
     sol.options = options;
     sol.options.view_importance = std::move(importance);
+    sol.options.scene = std::move(scene);
     return sol;
 }
 
 Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     const SolverOptions& options = refined.options;
-    if (!refines_then_freezes(options)) return refined;
+    if (!refines_then_freezes(options)) {
+        refined.options.scene.reset();
+        return refined;
+    }
     SolverOptions o = options;
     o.rays = options.rays - refining_rays(options);
     Solution sol = solve_with(
         o, [&] { return frozen_in_place(refined); }, progress, ranks,
         std::uint32_t(refined.stats.iterations.size()));
     sol.options = options;
+    sol.options.scene.reset();
     SolveStats& st = sol.stats;
     const SolveStats& r = refined.stats;
     st.rays += r.rays;
@@ -399,11 +406,15 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
     return solve(build_patch_set(mesh), options, progress, ranks);
 }
 
-Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress,
+Solution solve(PatchSet patches, const SolverOptions& given, Progress& progress,
                const Ranks& ranks) {
+    SolverOptions options = given;
+    options.scene.reset();  // another solve's scene is not these patches'
     if (!refines_then_freezes(options)) {
-        return solve_with(
+        Solution sol = solve_with(
             options, [&] { return roots_of(std::move(patches), options); }, progress, ranks);
+        sol.options.scene.reset();
+        return sol;
     }
     validate(options);
     const double share = double(refining_rays(options)) / double(options.rays);
@@ -413,9 +424,13 @@ Solution solve(PatchSet patches, const SolverOptions& options, Progress& progres
 
 Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Solution& shape,
                        Progress& progress) {
-    return solve_with(
-        options, [&] { return frozen_like(build_patch_set(mesh), options, shape); }, progress,
+    SolverOptions o = options;
+    o.scene.reset();  // another solve's scene is not these patches'
+    Solution sol = solve_with(
+        o, [&] { return frozen_like(build_patch_set(mesh), o, shape); }, progress,
         Ranks::single());
+    sol.options.scene.reset();
+    return sol;
 }
 
 }  // namespace hmcr

@@ -91,7 +91,9 @@ Solution solve(PatchSet patches, const SolverOptions& options,
 // Refine-then-freeze (docs/design.md §3.10). refine_pass is the refined solve with the refining
 // share of the rays, what a budget search probes; freeze_pass solves its leaves again from
 // scratch with the rest and returns that solution, with the refining pass's mesh statistics and
-// both passes' iterations. With refine_share 1 they are solve() and the identity.
+// both passes' iterations. With refine_share 1 they are solve() and the identity. refine_pass
+// uses options.scene when given (it must be these patches' scene: a budget search's earlier
+// probe's) and its solution keeps the scene for freeze_pass, which lets it go.
 Solution refine_pass(PatchSet patches, const SolverOptions& options,
                      Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 Solution freeze_pass(Solution refined, Progress& progress = no_progress(),

@@ -9,6 +9,7 @@
 #include "meshes/scene.h"
 #include "radiosity/budget_search.h"
 #include "radiosity/solver.h"
+#include "rays/embree_scene.h"
 #include "tests/support/analytic.h"
 #include "tests/support/plugins.h"
 #include "tests/support/statistics.h"
@@ -119,6 +120,28 @@ TEST(RefineThenFreeze, TheFrozenPassForgetsTheRefiningPassValues) {
         if (clustering == Clustering::isotropic) {
             EXPECT_GT(a.stats.cluster_leaves, 0u);
         }
+    }
+}
+
+// Embree's scene is built once for both passes, and for every probe of a budget search: the
+// refining pass keeps it for the frozen pass, and no finished solve holds on to it (it is most
+// of a large scene's memory after the patches).
+TEST(RefineThenFreeze, ThePassesShareOneSceneAndAFinishedSolveLetsItGo) {
+    const Scene scene = load_scene("cornell");
+    const SolverOptions o = options("kl", 100'000, 0.5);
+    Solution refined = refine_pass(build_patch_set(scene.mesh), o);
+    ASSERT_TRUE(refined.options.scene);
+    const std::weak_ptr<const EmbreeScene> kept = refined.options.scene;
+    const Solution frozen = freeze_pass(std::move(refined));
+    EXPECT_FALSE(frozen.options.scene);
+    EXPECT_TRUE(kept.expired());
+    EXPECT_FALSE(solve(scene.mesh, o).options.scene);
+    EXPECT_FALSE(solve(scene.mesh, options("kl", 100'000, 1)).options.scene);
+    EXPECT_FALSE(solve_on_mesh(scene.mesh, o, frozen).options.scene);
+    const BudgetOptions budget{.leaves = 1000, .tolerance = 0.05};
+    for (const double share : {0.5, 1.0}) {
+        EXPECT_FALSE(solve_for_budget(scene.mesh, options("power", 100'000, share), budget)
+                         .solution.options.scene);
     }
 }
 
