@@ -141,12 +141,16 @@ std::unique_ptr<ClusterTree> clusters_like(Hierarchy& h, const ClusterTree* shap
 }
 
 // The frozen pass's mesh: the refining pass's own tree, reset, so that one tree and one copy
-// of the patches are alive at a time.
+// of the patches are alive at a time; of its clusters only the open flags outlive it.
 StartMesh frozen_in_place(Solution& refined) {
     StartMesh mesh{std::move(refined.hierarchy), nullptr, true};
     mesh.hierarchy->reset_values();
-    mesh.clusters = clusters_like(*mesh.hierarchy, refined.clusters.get());
-    refined.clusters.reset();
+    if (refined.clusters) {
+        const std::vector<std::int64_t> open = refined.clusters->open_flags();
+        refined.clusters.reset();
+        mesh.clusters = std::make_unique<ClusterTree>(*mesh.hierarchy);
+        mesh.clusters->set_open_flags(open);
+    }
     return mesh;
 }
 
