@@ -19,9 +19,7 @@ class Search {
 public:
     Search(const PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
            Progress& progress, const Ranks& ranks)
-        : m_mesh(mesh), m_options(options), m_budget(budget), m_progress(progress), m_ranks(ranks) {
-        m_options.scene.reset();  // the probes share the first probe's
-    }
+        : m_mesh(mesh), m_options(options), m_budget(budget), m_progress(progress), m_ranks(ranks) {}
 
     BudgetResult run();
 
@@ -37,6 +35,7 @@ private:
 
     const PatchMesh& m_mesh;
     SolverOptions m_options;
+    std::shared_ptr<const EmbreeScene> m_scene;  // the probes' (they solve the same patches)
     BudgetOptions m_budget;
     Progress& m_progress;
     const Ranks& m_ranks;
@@ -51,9 +50,9 @@ std::size_t Search::probe(double x) {
     o.epsilon = std::exp(x);
     const std::size_t k = m_result.probes.size() + 1;
     m_progress.stage(fmt::format("budget probe {}", k));
-    Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks);
+    Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks, m_scene);
     m_options.view_importance = sol.options.view_importance;  // the same for every probe
-    m_options.scene = sol.options.scene;                      // the same patches
+    m_scene = sol.scene;                                      // and the same scene
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
     m_result.probes.push_back(p);
     m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves ({:.1f} s)", k,
@@ -103,12 +102,8 @@ BudgetResult Search::run() {
     double x = std::log(start);
     for (int k = 0; k < m_budget.max_probes; ++k) {
         if (within(probe(x))) {
-            if (m_options.refine_share < 1) {
-                m_progress.stage("the mesh frozen");
-                m_result.solution =
-                    freeze_pass(std::move(m_result.solution), m_progress, m_ranks);
-            }
-            m_result.solution.options.scene.reset();
+            if (m_options.refine_share < 1) m_progress.stage("the mesh frozen");
+            m_result.solution = freeze_pass(std::move(m_result.solution), m_progress, m_ranks);
             return std::move(m_result);
         }
         // The leaf count is a step function of epsilon: one decision flipping near the top of a

@@ -209,8 +209,6 @@ void ClusterTree::open_above(std::uint32_t side_value) const {
     }
 }
 
-void ClusterTree::open_like(const ClusterTree& shape) { set_open_flags(shape.open_flags()); }
-
 std::vector<std::int64_t> ClusterTree::open_flags() const {
     std::vector<std::int64_t> flags(m_elements.size());
     for (std::size_t k = 0; k < flags.size(); ++k) flags[k] = m_open[k].load();

@@ -95,9 +95,8 @@ public:
     bool is_open(const Element& c) const {
         return m_open[c.id.patch].load(std::memory_order_relaxed) != 0;
     }
-    // Opens what `shape` (the tree of the same patches) has open: a frozen mesh's clusters.
-    void open_like(const ClusterTree& shape);
-    // The open flags as integers, for the ranks' union (rank_merge.h), and back.
+    // The open flags as integers, for the ranks' union (rank_merge.h) and a frozen mesh's
+    // clusters (opened as its shape's were), and back.
     std::vector<std::int64_t> open_flags() const;
     void set_open_flags(std::span<const std::int64_t> flags);
     // After the subdivisions of an iteration: finds the clusters that are leaves of the mesh and

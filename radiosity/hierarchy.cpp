@@ -111,19 +111,14 @@ void Hierarchy::subdivide_like(const Hierarchy& shape) {
 }
 
 void Hierarchy::reset_values() {
-    auto reset = [](auto& self, Element& e, const Rgb& emission) -> void {
-        e.radiosity = e.unshot = emission;
+    const auto reset = [this](Element& e) {
+        e.radiosity = e.unshot = material(e).emission;
         e.received = {};
-        if (Element* c = e.children()) {
-            for (int k = 0; k < 4; ++k) self(self, c[k], emission);
-        }
     };
     tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
-        reset(reset, m_roots[i], m_patches.material(i, kFront).emission);
+        visit_all(m_roots[i], reset);
         if (m_back_roots.empty()) return;
-        if (Element* back = m_back_roots[i].load(std::memory_order_acquire)) {
-            reset(reset, *back, m_patches.material(i, kBack).emission);
-        }
+        if (Element* back = m_back_roots[i].load(std::memory_order_acquire)) visit_all(*back, reset);
     });
 }
 

@@ -123,20 +123,22 @@ struct StartMesh {
     bool frozen = false;
 };
 
+std::unique_ptr<Hierarchy> roots(PatchSet patches, const SolverOptions& o) {
+    return std::make_unique<Hierarchy>(std::move(patches),
+                                       HierarchyLimits{o.min_area, o.max_depth, o.max_elements});
+}
+
 // A refining solve's mesh (or the uniform one) over `patches`.
 StartMesh roots_of(PatchSet patches, const SolverOptions& o) {
-    StartMesh mesh{std::make_unique<Hierarchy>(
-                       std::move(patches), HierarchyLimits{o.min_area, o.max_depth, o.max_elements}),
-                   nullptr, o.uniform_max_area > 0};
+    StartMesh mesh{roots(std::move(patches), o), nullptr, o.uniform_max_area > 0};
     if (mesh.frozen) mesh.hierarchy->subdivide_uniformly(o.uniform_max_area);
     return mesh;
 }
 
-// Clusters over `h` open where `shape`'s are; none without clustering.
-std::unique_ptr<ClusterTree> clusters_like(Hierarchy& h, const ClusterTree* shape) {
-    if (!shape) return nullptr;
+// Clusters over `h` open where a shape's tree was (its ClusterTree::open_flags).
+std::unique_ptr<ClusterTree> clusters_opened(Hierarchy& h, std::span<const std::int64_t> open) {
     auto clusters = std::make_unique<ClusterTree>(h);
-    clusters->open_like(*shape);
+    clusters->set_open_flags(open);
     return clusters;
 }
 
@@ -148,27 +150,26 @@ StartMesh frozen_in_place(Solution& refined) {
     if (refined.clusters) {
         const std::vector<std::int64_t> open = refined.clusters->open_flags();
         refined.clusters.reset();
-        mesh.clusters = std::make_unique<ClusterTree>(*mesh.hierarchy);
-        mesh.clusters->set_open_flags(open);
+        mesh.clusters = clusters_opened(*mesh.hierarchy, open);
     }
     return mesh;
 }
 
 // A solution's mesh on patches of its own, frozen.
 StartMesh frozen_like(PatchSet patches, const SolverOptions& o, const Solution& shape) {
-    StartMesh mesh{std::make_unique<Hierarchy>(
-                       std::move(patches), HierarchyLimits{o.min_area, o.max_depth, o.max_elements}),
-                   nullptr, true};
+    StartMesh mesh{roots(std::move(patches), o), nullptr, true};
     mesh.hierarchy->subdivide_like(*shape.hierarchy);
-    mesh.clusters = clusters_like(*mesh.hierarchy, shape.clusters.get());
+    if (shape.clusters) mesh.clusters = clusters_opened(*mesh.hierarchy, shape.clusters->open_flags());
     return mesh;
 }
 
-// make_mesh() builds the mesh once the options are validated and the threads limited.
+// make_mesh() builds the mesh once the options are validated and the threads limited; the
+// solve shoots in `scene`, which it builds (as part of its setup) when it is none.
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
 // refining pass's, so that its rays are not theirs again.
 Solution solve_with(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
-                    Progress& progress, const Ranks& ranks, std::uint32_t first_iteration = 0) {
+                    std::shared_ptr<const EmbreeScene>& scene_slot, Progress& progress,
+                    const Ranks& ranks, std::uint32_t first_iteration = 0) {
     validate(options);
     const auto start = Clock::now();
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
@@ -192,8 +193,8 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     st.max_emitted_power = patches.max_emitted_power;
     st.patches = patches.patches.size();
     for (std::size_t i = 0; i < st.patches; ++i) st.two_sided_patches += patches.two_sided(i);
-    if (!sol.options.scene) sol.options.scene = std::make_shared<const EmbreeScene>(patches);
-    const EmbreeScene& scene = *sol.options.scene;
+    if (!scene_slot) scene_slot = std::make_shared<const EmbreeScene>(patches);
+    const EmbreeScene& scene = *scene_slot;
     const bool fixed_mesh = mesh.frozen;
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
@@ -353,33 +354,29 @@ private:
 }  // namespace
 
 Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& progress,
-                     const Ranks& ranks) {
+                     const Ranks& ranks, std::shared_ptr<const EmbreeScene> scene) {
     SolverOptions o = options;
     o.rays = refining_rays(options);
     o.refine_share = 1;
     Solution sol = solve_with(
-        o, [&] { return roots_of(std::move(patches), o); }, progress, ranks);
+        o, [&] { return roots_of(std::move(patches), o); }, scene, progress, ranks);
     auto importance = std::move(sol.options.view_importance);
-    auto scene = std::move(sol.options.scene);
     sol.options = options;
     sol.options.view_importance = std::move(importance);
-    sol.options.scene = std::move(scene);
+    sol.scene = std::move(scene);
     return sol;
 }
 
 Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     const SolverOptions& options = refined.options;
-    if (!refines_then_freezes(options)) {
-        refined.options.scene.reset();
-        return refined;
-    }
+    std::shared_ptr<const EmbreeScene> scene = std::move(refined.scene);
+    if (!refines_then_freezes(options)) return refined;
     SolverOptions o = options;
     o.rays = options.rays - refining_rays(options);
     Solution sol = solve_with(
-        o, [&] { return frozen_in_place(refined); }, progress, ranks,
+        o, [&] { return frozen_in_place(refined); }, scene, progress, ranks,
         std::uint32_t(refined.stats.iterations.size()));
     sol.options = options;
-    sol.options.scene.reset();
     SolveStats& st = sol.stats;
     const SolveStats& r = refined.stats;
     st.rays += r.rays;
@@ -410,15 +407,13 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
     return solve(build_patch_set(mesh), options, progress, ranks);
 }
 
-Solution solve(PatchSet patches, const SolverOptions& given, Progress& progress,
+Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress,
                const Ranks& ranks) {
-    SolverOptions options = given;
-    options.scene.reset();  // another solve's scene is not these patches'
     if (!refines_then_freezes(options)) {
-        Solution sol = solve_with(
-            options, [&] { return roots_of(std::move(patches), options); }, progress, ranks);
-        sol.options.scene.reset();
-        return sol;
+        std::shared_ptr<const EmbreeScene> scene;
+        return solve_with(
+            options, [&] { return roots_of(std::move(patches), options); }, scene, progress,
+            ranks);
     }
     validate(options);
     const double share = double(refining_rays(options)) / double(options.rays);
@@ -428,13 +423,10 @@ Solution solve(PatchSet patches, const SolverOptions& given, Progress& progress,
 
 Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Solution& shape,
                        Progress& progress) {
-    SolverOptions o = options;
-    o.scene.reset();  // another solve's scene is not these patches'
-    Solution sol = solve_with(
-        o, [&] { return frozen_like(build_patch_set(mesh), o, shape); }, progress,
-        Ranks::single());
-    sol.options.scene.reset();
-    return sol;
+    std::shared_ptr<const EmbreeScene> scene;
+    return solve_with(
+        options, [&] { return frozen_like(build_patch_set(mesh), options, shape); }, scene,
+        progress, Ranks::single());
 }
 
 }  // namespace hmcr

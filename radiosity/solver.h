@@ -15,6 +15,8 @@
 
 namespace hmcr {
 
+class EmbreeScene;  // rays/embree_scene.h
+
 struct IterationRecord {
     std::uint64_t rays = 0;
     Rgb unshot_before = Rgb::Zero();  // unshot power at the start of the iteration, W
@@ -71,6 +73,9 @@ struct Solution {
     std::unique_ptr<ClusterTree> clusters;
     SolverOptions options;
     SolveStats stats;
+    // The Embree scene a refining pass (refine_pass) shot in, kept for its frozen pass and a
+    // budget search's next probe; a finished solve holds none.
+    std::shared_ptr<const EmbreeScene> scene;
 
     // Each side value's (2 * patch + side) cluster leaf, -1 where the side's own leaves are in
     // the mesh; empty without clustering. What the output calls ClusterId.
@@ -92,10 +97,11 @@ Solution solve(PatchSet patches, const SolverOptions& options,
 // share of the rays, what a budget search probes; freeze_pass solves its leaves again from
 // scratch with the rest and returns that solution, with the refining pass's mesh statistics and
 // both passes' iterations. With refine_share 1 they are solve() and the identity. refine_pass
-// uses options.scene when given (it must be these patches' scene: a budget search's earlier
-// probe's) and its solution keeps the scene for freeze_pass, which lets it go.
+// shoots in `scene` when given (these patches' scene: a budget search's earlier probe's) and
+// keeps its scene in the solution; freeze_pass shoots in that and lets it go.
 Solution refine_pass(PatchSet patches, const SolverOptions& options,
-                     Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
+                     Progress& progress = no_progress(), const Ranks& ranks = Ranks::single(),
+                     std::shared_ptr<const EmbreeScene> scene = nullptr);
 Solution freeze_pass(Solution refined, Progress& progress = no_progress(),
                      const Ranks& ranks = Ranks::single());
 

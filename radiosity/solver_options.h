@@ -28,7 +28,6 @@ namespace hmcr {
 enum class SettingScope { scene_file, command_line, internal };
 
 struct ViewImportance;  // radiosity/view_importance.h
-class EmbreeScene;      // rays/embree_scene.h
 
 // The refinement oracle of a solve, resolved from its name where the name is read.
 using OracleRef = const Oracle*;
@@ -165,9 +164,6 @@ struct SolverOptions {
     // once made (a budget search's probes share it: it depends on the seed and rays alone).
     std::vector<View> views;
     std::shared_ptr<const ViewImportance> view_importance;
-    // Embree's scene of the patches, built by the first pass and kept for the passes after it
-    // on the same patches (a frozen pass, a budget search's probes); a finished solve lets go.
-    std::shared_ptr<const EmbreeScene> scene;
 };
 
 }  // namespace hmcr

@@ -130,18 +130,22 @@ TEST(RefineThenFreeze, ThePassesShareOneSceneAndAFinishedSolveLetsItGo) {
     const Scene scene = load_scene("cornell");
     const SolverOptions o = options("kl", 100'000, 0.5);
     Solution refined = refine_pass(build_patch_set(scene.mesh), o);
-    ASSERT_TRUE(refined.options.scene);
-    const std::weak_ptr<const EmbreeScene> kept = refined.options.scene;
+    ASSERT_TRUE(refined.scene);
+    const std::weak_ptr<const EmbreeScene> kept = refined.scene;
+    // A probe given the scene shoots in it and hands it on.
+    const Solution probe = refine_pass(build_patch_set(scene.mesh), o, no_progress(),
+                                       Ranks::single(), refined.scene);
+    EXPECT_EQ(probe.scene, refined.scene);
     const Solution frozen = freeze_pass(std::move(refined));
-    EXPECT_FALSE(frozen.options.scene);
-    EXPECT_TRUE(kept.expired());
-    EXPECT_FALSE(solve(scene.mesh, o).options.scene);
-    EXPECT_FALSE(solve(scene.mesh, options("kl", 100'000, 1)).options.scene);
-    EXPECT_FALSE(solve_on_mesh(scene.mesh, o, frozen).options.scene);
+    EXPECT_FALSE(frozen.scene);
+    EXPECT_EQ(kept.use_count(), 1);  // the probe's alone
+    EXPECT_FALSE(solve(scene.mesh, o).scene);
+    EXPECT_FALSE(solve(scene.mesh, options("kl", 100'000, 1)).scene);
+    EXPECT_FALSE(solve_on_mesh(scene.mesh, o, frozen).scene);
     const BudgetOptions budget{.leaves = 1000, .tolerance = 0.05};
     for (const double share : {0.5, 1.0}) {
-        EXPECT_FALSE(solve_for_budget(scene.mesh, options("power", 100'000, share), budget)
-                         .solution.options.scene);
+        EXPECT_FALSE(
+            solve_for_budget(scene.mesh, options("power", 100'000, share), budget).solution.scene);
     }
 }
 
