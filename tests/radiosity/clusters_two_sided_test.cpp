@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "radiosity/solver.h"
+#include "tests/support/furnace.h"
 #include "tests/support/same_leaves.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
@@ -76,7 +77,7 @@ TEST(ClustersTwoSided, FurnaceOfTwoSidedWallsIsExactInsideAndOutside) {
         }
         if (seed == 1) clustered_spread = spread(sol);
     }
-    const double expected = e * (1 - std::pow(rho, double(iterations + 1))) / (1 - rho);
+    const double expected = furnace_value(rho, e, iterations);
     for (std::size_t p = 0; p < patches; ++p) {
         EXPECT_TRUE(t_test("inner side of patch " + std::to_string(p), inside[p], expected, 0,
                            int(patches)));

@@ -64,7 +64,7 @@ void expect_furnace(const SolverOptions& base, int split, std::size_t min_leaves
         [&](const Solution& sol) { leaves = std::max(leaves, sol.stats.leaves); });
     EXPECT_GE(leaves, min_leaves);
     // The stop criterion (1%) is what separates the K-bounce value from E / (1 - rho).
-    const double expected = e * (1 - std::pow(rho, double(iterations + 1))) / (1 - rho);
+    const double expected = furnace_value(rho, e, iterations);
     EXPECT_NEAR(expected, e / (1 - rho), base.stop * e / (1 - rho));
 }
 

@@ -8,6 +8,7 @@
 #include "radiosity/solver.h"
 #include "radiosity/view_importance.h"
 #include "rays/embree_scene.h"
+#include "tests/support/furnace.h"
 #include "tests/support/plugins.h"
 #include "tests/support/test_scenes.h"
 
@@ -56,7 +57,7 @@ TEST(ViewImportance, TheAdjointTotalIsExactInAClosedBox) {
     for (std::size_t p = 0; p < ps.patches.size(); ++p) {
         total += ps.patches[p].area * vi.importance[2 * p][1];
     }
-    const double expected = (1 - std::pow(rho, double(vi.iterations + 1))) / (1 - rho);
+    const double expected = furnace_value(rho, 1, vi.iterations);
     EXPECT_NEAR(total, expected, 1e-9 * expected);
     EXPECT_GT(vi.iterations, 3u);
 }

@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <string>
 #include <vector>
 
@@ -31,7 +30,7 @@ std::size_t expect_furnace_per_patch(const PatchMesh& mesh, double rho, double e
             per_patch[p].push_back(sol.hierarchy->root(p).radiosity[1]);
         }
     }
-    const double expected = e * (1 - std::pow(rho, double(iterations + 1))) / (1 - rho);
+    const double expected = furnace_value(rho, e, iterations);
     for (std::size_t p = 0; p < patches; ++p) {
         EXPECT_TRUE(t_test("furnace patch " + std::to_string(p), per_patch[p], expected, 0,
                            int(patches)));

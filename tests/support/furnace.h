@@ -3,6 +3,8 @@
 // the mesh.
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 
@@ -10,6 +12,11 @@
 #include "radiosity/solver.h"
 
 namespace hmcr::test {
+
+// E (1 - rho^(K+1)) / (1 - rho): the furnace's B after K iterations.
+inline double furnace_value(double rho, double e, std::size_t iterations) {
+    return e * (1 - std::pow(rho, double(iterations + 1))) / (1 - rho);
+}
 
 // Solves `mesh` (such a box) with options(seed) for the seeds 1..seeds, passing each solution
 // to `check` (a test's guards), expects the same K (the iterations the values hold) for every
