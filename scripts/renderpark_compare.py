@@ -18,6 +18,7 @@ Standard library only.  Usage:
 """
 
 import argparse
+import ctypes
 import json
 import math
 import os
@@ -241,19 +242,32 @@ def rpk_counts(stderr, patches):
             "emitted_flux": [float(v) for v in flux[0].split()] if flux else None}
 
 
+def lz4_block(data, size):
+    """One LZ4 block of VTK's LZ4 compressor, by the liblz4 that VTK links."""
+    lz4 = ctypes.CDLL("liblz4.so.1")
+    out = ctypes.create_string_buffer(size)
+    n = lz4.LZ4_decompress_safe(data, out, len(data), size)
+    if n != size:
+        raise ValueError(f"an LZ4 block of {len(data)} bytes gives {n} bytes, not {size}")
+    return out.raw
+
+
 def vtp_array(path, name):
-    """One appended, zlib-compressed array of hmcr's .vtp (docs/design.md §11.4) as a flat list."""
+    """One appended, compressed array of hmcr's .vtp (docs/design.md §11.4) as a flat list."""
     with open(path, "rb") as f:
         data = f.read()
     head = data[:data.index(b"<AppendedData")].decode()
+    lz4 = 'compressor="vtkLZ4DataCompressor"' in head  # zlib in files of older versions
     tag = re.search(r'<DataArray type="(\w+)" Name="%s"[^>]*offset="(\d+)"' % name, head)
     kind, offset = {"Float32": "f", "Float64": "d"}[tag.group(1)], int(tag.group(2))
     start = data.index(b"_", data.index(b"<AppendedData")) + 1 + offset
-    blocks = struct.unpack_from("<I", data, start)[0]
+    blocks, block_size, last_size = struct.unpack_from("<3I", data, start)
     sizes = struct.unpack_from(f"<{3 + blocks}I", data, start)[3:]
     pos, raw = start + 4 * (3 + blocks), b""
-    for size in sizes:
-        raw += zlib.decompress(data[pos:pos + size])
+    for k, size in enumerate(sizes):
+        whole = last_size if k == blocks - 1 and last_size else block_size
+        block = data[pos:pos + size]
+        raw += lz4_block(block, whole) if lz4 else zlib.decompress(block)
         pos += size
     return struct.unpack(f"<{len(raw) // struct.calcsize(kind)}{kind}", raw)
 

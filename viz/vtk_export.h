@@ -1,4 +1,4 @@
-// The solution as VTK XML PolyData (.vtp, appended raw, zlib), with the arrays of
+// The solution as VTK XML PolyData (.vtp, appended raw, LZ4), with the arrays of
 // docs/design.md §5, for ParaView.
 #pragma once
 
