@@ -123,14 +123,20 @@ struct StartMesh {
     bool frozen = false;
 };
 
-std::unique_ptr<Hierarchy> roots(PatchSet patches, const SolverOptions& o) {
+// The element roots of `patches`, after their Embree scene (built here if `scene` is none):
+// the BVH build's working memory is let go before the roots take theirs, which lowers the
+// peak of a scene of many patches (docs/performance.md).
+std::unique_ptr<Hierarchy> roots(PatchSet patches, const SolverOptions& o,
+                                 std::shared_ptr<const EmbreeScene>& scene) {
+    if (!scene) scene = std::make_shared<const EmbreeScene>(patches);
     return std::make_unique<Hierarchy>(std::move(patches),
                                        HierarchyLimits{o.min_area, o.max_depth, o.max_elements});
 }
 
 // A refining solve's mesh (or the uniform one) over `patches`.
-StartMesh roots_of(PatchSet patches, const SolverOptions& o) {
-    StartMesh mesh{roots(std::move(patches), o), nullptr, o.uniform_max_area > 0};
+StartMesh roots_of(PatchSet patches, const SolverOptions& o,
+                   std::shared_ptr<const EmbreeScene>& scene) {
+    StartMesh mesh{roots(std::move(patches), o, scene), nullptr, o.uniform_max_area > 0};
     if (mesh.frozen) mesh.hierarchy->subdivide_uniformly(o.uniform_max_area);
     return mesh;
 }
@@ -156,15 +162,17 @@ StartMesh frozen_in_place(Solution& refined) {
 }
 
 // A solution's mesh on patches of its own, frozen.
-StartMesh frozen_like(PatchSet patches, const SolverOptions& o, const Solution& shape) {
-    StartMesh mesh{roots(std::move(patches), o), nullptr, true};
+StartMesh frozen_like(PatchSet patches, const SolverOptions& o, const Solution& shape,
+                      std::shared_ptr<const EmbreeScene>& scene) {
+    StartMesh mesh{roots(std::move(patches), o, scene), nullptr, true};
     mesh.hierarchy->subdivide_like(*shape.hierarchy);
     if (shape.clusters) mesh.clusters = clusters_opened(*mesh.hierarchy, shape.clusters->open_flags());
     return mesh;
 }
 
-// make_mesh() builds the mesh once the options are validated and the threads limited; the
-// solve shoots in `scene`, which it builds (as part of its setup) when it is none.
+// make_mesh() builds the mesh once the options are validated and the threads limited, and the
+// scene before its roots when `scene` is none; the solve shoots in `scene` (building it, as
+// part of its setup, if make_mesh did not).
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
 // refining pass's, so that its rays are not theirs again.
 Solution solve_with(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
@@ -359,7 +367,7 @@ Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& p
     o.rays = refining_rays(options);
     o.refine_share = 1;
     Solution sol = solve_with(
-        o, [&] { return roots_of(std::move(patches), o); }, scene, progress, ranks);
+        o, [&] { return roots_of(std::move(patches), o, scene); }, scene, progress, ranks);
     auto importance = std::move(sol.options.view_importance);
     sol.options = options;
     sol.options.view_importance = std::move(importance);
@@ -412,7 +420,7 @@ Solution solve(PatchSet patches, const SolverOptions& options, Progress& progres
     if (!refines_then_freezes(options)) {
         std::shared_ptr<const EmbreeScene> scene;
         return solve_with(
-            options, [&] { return roots_of(std::move(patches), options); }, scene, progress,
+            options, [&] { return roots_of(std::move(patches), options, scene); }, scene, progress,
             ranks);
     }
     validate(options);
@@ -425,7 +433,7 @@ Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, cons
                        Progress& progress) {
     std::shared_ptr<const EmbreeScene> scene;
     return solve_with(
-        options, [&] { return frozen_like(build_patch_set(mesh), options, shape); }, scene,
+        options, [&] { return frozen_like(build_patch_set(mesh), options, shape, scene); }, scene,
         progress, Ranks::single());
 }
 
