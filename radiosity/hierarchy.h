@@ -79,7 +79,8 @@ public:
     Element* subdivide(Element& e);
     // The existing child of e that contains the parameter point uv.
     Element& child_containing(const Element& e, const Vec2& uv) const;
-    // The leaf below e containing uv (existing elements only).
+    // The leaf below e containing uv (existing elements only). A fixed mesh's rays ask a
+    // LeafIndex, which finds the same leaf without reading the elements on the way.
     Element& locate(Element& e, const Vec2& uv) const;
 
     std::array<Vec3, 4> corners(const Element& e) const;

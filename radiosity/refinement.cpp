@@ -193,8 +193,7 @@ Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& q) {
     if (ctx.clusters) {
         if (Element* c = ctx.clusters->closed_leaf(q.receiver.value)) return *c;
     }
-    Hierarchy& h = ctx.hierarchy;
-    return h.locate(h.root(q.receiver.patch(), q.receiver.side()), q.y_uv.cast<double>());
+    return ctx.fixed_leaves->locate(q.receiver.patch(), q.receiver.side(), q.y_uv.cast<double>());
 }
 
 }  // namespace
@@ -204,7 +203,7 @@ Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
     Hierarchy& h = ctx.hierarchy;
     const Vec2 y_uv = query.y_uv.cast<double>(), x_uv = query.x_uv.cast<double>();
     Element* i = &h.root(query.receiver.patch(), query.receiver.side());
-    if (ctx.fixed_mesh) return fixed_receiver(ctx, query);
+    if (ctx.fixed_leaves) return fixed_receiver(ctx, query);
     Element* j = &h.root(query.source.patch(), query.source.side());
     if (ctx.clusters) i = j = &ctx.clusters->top();
     const PatchPair pp = patch_pair(ctx, query.receiver, query.source);
@@ -305,7 +304,7 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
                   std::span<Element*> receivers, RefinementCounters& counters,
                   DescentScratch& buffers) {
     Hierarchy& h = ctx.hierarchy;
-    if (ctx.fixed_mesh) {
+    if (ctx.fixed_leaves) {
         tbb::parallel_for(std::size_t(0), queries.size(),
                           [&](std::size_t k) { receivers[k] = &fixed_receiver(ctx, queries[k]); });
         return;

@@ -11,6 +11,7 @@
 #include "rays/embree_scene.h"
 #include "radiosity/clusters.h"
 #include "radiosity/hierarchy.h"
+#include "radiosity/leaf_index.h"
 #include "radiosity/link_cache.h"
 #include "radiosity/solver_options.h"
 
@@ -25,7 +26,8 @@ struct RefinementContext {
     int lines = 10;        // N_s
     std::uint64_t seed = 0;
     LinkCache* cache = nullptr;  // geometric factors of line-based oracles; none: recompute
-    bool fixed_mesh = false;     // deposit on the existing leaf at the hit, ask no oracle
+    // A fixed mesh's leaves: deposit on the leaf at the hit, ask no oracle; none: refine.
+    const LeafIndex* fixed_leaves = nullptr;
     LinkWeight link_weight = LinkWeight::unshot;  // w_ij from the source's Delta B or B
     ClusterTree* clusters = nullptr;  // descents start at its top (docs/design.md §2.7); none
     // Per side (SideRef::value), what a link's weight takes for the receiver's reflectance:

@@ -231,6 +231,9 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     }
     const auto leaves = [&] { return clusters ? clusters->settle() : h.leaf_count(); };
     leaves();
+    // A fixed mesh's leaves by parameter point, where its rays deposit.
+    const std::unique_ptr<const LeafIndex> leaf_index =
+        fixed_mesh ? std::make_unique<const LeafIndex>(h) : nullptr;
     const RefinementContext ctx{.hierarchy = h,
                                 .oracle = oracle,
                                 .scene = scene,
@@ -238,7 +241,7 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
                                 .lines = options.lines,
                                 .seed = options.seed,
                                 .cache = cache.get(),
-                                .fixed_mesh = fixed_mesh,
+                                .fixed_leaves = leaf_index.get(),
                                 .link_weight = options.link_weight,
                                 .clusters = clusters.get(),
                                 .receiver_weights = receiver_weights};

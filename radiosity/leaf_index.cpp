@@ -1,0 +1,81 @@
+#include "radiosity/leaf_index.h"
+
+#include <stdexcept>
+
+namespace hmcr {
+
+LeafIndex::LeafIndex(Hierarchy& h) : m_h(h) {
+    const std::size_t patches = h.patch_count();
+    const bool backs = !h.patch_set().back_materials.empty();
+    for (std::uint8_t side : {kFront, kBack}) {
+        if (side == kBack && !backs) break;
+        std::vector<std::uint32_t>& roots = m_roots[side];
+        roots.assign(patches, kUnsplit);
+        for (std::size_t p = 0; p < patches; ++p) {
+            if (side == kBack && !h.back_root(p)) continue;  // asking root() would make it
+            Element& root = h.root(p, side);
+            if (root.is_leaf()) continue;
+            roots[p] = add(root) | (h.patch_set().patches[p].is_quad() ? kQuad : 0);
+        }
+    }
+}
+
+// Depth first, so that a subtree's nodes are near one another.
+std::uint32_t LeafIndex::add(Element& e) {
+    Element* c = e.children();
+    if (!c) {
+        if (m_leaves.size() >= kLeaf) throw std::length_error("too many leaves to index");
+        m_leaves.push_back(&e);
+        return kLeaf | std::uint32_t(m_leaves.size() - 1);
+    }
+    if (m_nodes.size() >= kQuad) throw std::length_error("too many split elements to index");
+    const auto node = std::uint32_t(m_nodes.size());
+    m_nodes.emplace_back();
+    for (int k = 0; k < 4; ++k) {
+        const std::uint32_t entry = add(c[k]);
+        m_nodes[node][k] = entry;
+    }
+    return node;
+}
+
+Element& LeafIndex::locate(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const {
+    const std::vector<std::uint32_t>& roots = m_roots[side];
+    const std::uint32_t root = roots.empty() ? kUnsplit : roots[patch];
+    if (root == kUnsplit) return m_h.root(patch, side);
+    std::uint32_t entry = root & ~kQuad;
+    // Domain::child_containing and Domain::child, in doubles, dividing by the side s as
+    // multiplying by 1 / s: s is a power of two (its sign aside) at every depth, so both are
+    // exact and each child is the one child_containing picks.
+    double u0 = 0, v0 = 0, s = 1, inverse = 1;
+    const double u = uv.x(), v = uv.y();
+    if (root & kQuad) {
+        while (!(entry & kLeaf)) {
+            const double a = (u - u0) * inverse, b = (v - v0) * inverse;
+            const int k = (a >= 0.5 ? 1 : 0) + (b >= 0.5 ? 2 : 0);
+            s *= 0.5;
+            inverse *= 2;
+            u0 += (k & 1) * s;
+            v0 += (k >> 1) * s;
+            entry = m_nodes[entry][k];
+        }
+    } else {
+        while (!(entry & kLeaf)) {
+            const double a = (u - u0) * inverse, b = (v - v0) * inverse;
+            const int k = a >= 0.5 ? 1 : b >= 0.5 ? 2 : a + b < 0.5 ? 0 : 3;
+            const double h = 0.5 * s;
+            if (k == 1 || k == 3) u0 += h;
+            if (k == 2 || k == 3) v0 += h;
+            s = k == 3 ? -h : h;
+            inverse *= k == 3 ? -2 : 2;
+            entry = m_nodes[entry][k];
+        }
+    }
+    return *m_leaves[entry & ~kLeaf];
+}
+
+std::size_t LeafIndex::bytes() const {
+    return m_nodes.size() * sizeof(m_nodes[0]) + m_leaves.size() * sizeof(Element*) +
+           (m_roots[0].size() + m_roots[1].size()) * sizeof(std::uint32_t);
+}
+
+}  // namespace hmcr

@@ -1,0 +1,45 @@
+// The leaves of a fixed mesh by parameter point, for the rays of a frozen pass (docs/design.md
+// §3.10). Finding the leaf at a hit walks the side's quadtree from its root; through the
+// elements that reads a cache line or two of a different element at every level, which made
+// the walk about a fifth of a frozen pass. Here each split element is a node of four 4-byte
+// entries in one small array, and the domains are recomputed on the way down, so a walk reads
+// a few nodes and touches only the leaf it finds.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "radiosity/hierarchy.h"
+
+namespace hmcr {
+
+class LeafIndex {
+public:
+    // The leaves `h` has now. `h` must not be split while the index is used; a side whose root
+    // does not exist yet (the back of a two-sided patch no light reached) is its own leaf.
+    explicit LeafIndex(Hierarchy& h);
+
+    // The leaf of the side (patch, side) containing uv: the element h.locate(h.root(patch,
+    // side), uv) finds.
+    Element& locate(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const;
+
+    std::size_t bytes() const;
+
+private:
+    // An entry is a node's index, or kLeaf plus a leaf's index. A side's root entry also says
+    // whether the patch is a quad (kQuad), so that a walk does not read the patch.
+    static constexpr std::uint32_t kLeaf = 1u << 31, kQuad = 1u << 30, kUnsplit = ~0u;
+
+    std::uint32_t add(Element& e);
+
+    Hierarchy& m_h;
+    std::vector<std::array<std::uint32_t, 4>> m_nodes;
+    std::vector<Element*> m_leaves;
+    // Per side (kFront, kBack), per patch: the root's node with kQuad, or kUnsplit for a root
+    // that is a leaf. The back's is empty when no patch is two-sided.
+    std::array<std::vector<std::uint32_t>, 2> m_roots;
+};
+
+}  // namespace hmcr
