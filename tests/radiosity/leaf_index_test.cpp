@@ -40,7 +40,9 @@ double pick(const std::vector<double>& values, Rng& rng) {
 // Points of a patch's domain that a walk must decide exactly: dyadic boundaries of the depths
 // the trees reach, the floats on either side of them, the domain's edges, and random points.
 std::vector<Vec2> hard_points(bool quad, Rng& rng) {
-    std::vector<double> coordinates = {0, 1, std::nextafter(1.0f, 0.0f), 1e-30, 1e-7};
+    // Beyond the domain too (-1e-7, 1 + 1e-7): the walks must agree there as well.
+    std::vector<double> coordinates = {0, 1, std::nextafter(1.0f, 0.0f), 1e-30, 1e-7, -1e-7,
+                                       std::nextafter(1.0f, 2.0f)};
     for (int depth = 1; depth <= 10; ++depth) {
         const double step = std::ldexp(1.0, -depth);
         for (double x = step; x < 1; x += 2 * step) {
