@@ -200,10 +200,10 @@ Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& q) {
 
 Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
                      RefinementCounters& counters) {
+    if (ctx.fixed_leaves) return fixed_receiver(ctx, query);
     Hierarchy& h = ctx.hierarchy;
     const Vec2 y_uv = query.y_uv.cast<double>(), x_uv = query.x_uv.cast<double>();
     Element* i = &h.root(query.receiver.patch(), query.receiver.side());
-    if (ctx.fixed_leaves) return fixed_receiver(ctx, query);
     Element* j = &h.root(query.source.patch(), query.source.side());
     if (ctx.clusters) i = j = &ctx.clusters->top();
     const PatchPair pp = patch_pair(ctx, query.receiver, query.source);
