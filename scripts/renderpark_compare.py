@@ -19,6 +19,7 @@ Standard library only.  Usage:
 
 import argparse
 import ctypes
+import functools
 import json
 import math
 import os
@@ -242,11 +243,16 @@ def rpk_counts(stderr, patches):
             "emitted_flux": [float(v) for v in flux[0].split()] if flux else None}
 
 
+@functools.cache
+def liblz4():
+    """The liblz4 that VTK links, loaded once."""
+    return ctypes.CDLL("liblz4.so.1")
+
+
 def lz4_block(data, size):
-    """One LZ4 block of VTK's LZ4 compressor, by the liblz4 that VTK links."""
-    lz4 = ctypes.CDLL("liblz4.so.1")
+    """One LZ4 block of VTK's LZ4 compressor."""
     out = ctypes.create_string_buffer(size)
-    n = lz4.LZ4_decompress_safe(data, out, len(data), size)
+    n = liblz4().LZ4_decompress_safe(data, out, len(data), size)
     if n != size:
         raise ValueError(f"an LZ4 block of {len(data)} bytes gives {n} bytes, not {size}")
     return out.raw
