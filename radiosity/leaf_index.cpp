@@ -42,34 +42,9 @@ Element& LeafIndex::locate(std::uint32_t patch, std::uint8_t side, const Vec2& u
     const std::vector<std::uint32_t>& roots = m_roots[side];
     const std::uint32_t root = roots.empty() ? kUnsplit : roots[patch];
     if (root == kUnsplit) return m_h.root(patch, side);
+    DomainWalk walk(root & kQuad, uv);
     std::uint32_t entry = root & ~kQuad;
-    // Domain::child_containing and Domain::child, in doubles, dividing by the side s as
-    // multiplying by 1 / s: s is a power of two (its sign aside) at every depth, so both are
-    // exact and each child is the one child_containing picks.
-    double u0 = 0, v0 = 0, s = 1, inverse = 1;
-    const double u = uv.x(), v = uv.y();
-    if (root & kQuad) {
-        while (!(entry & kLeaf)) {
-            const double a = (u - u0) * inverse, b = (v - v0) * inverse;
-            const int k = (a >= 0.5 ? 1 : 0) + (b >= 0.5 ? 2 : 0);
-            s *= 0.5;
-            inverse *= 2;
-            u0 += (k & 1) * s;
-            v0 += (k >> 1) * s;
-            entry = m_nodes[entry][k];
-        }
-    } else {
-        while (!(entry & kLeaf)) {
-            const double a = (u - u0) * inverse, b = (v - v0) * inverse;
-            const int k = a >= 0.5 ? 1 : b >= 0.5 ? 2 : a + b < 0.5 ? 0 : 3;
-            const double h = 0.5 * s;
-            if (k == 1 || k == 3) u0 += h;
-            if (k == 2 || k == 3) v0 += h;
-            s = k == 3 ? -h : h;
-            inverse *= k == 3 ? -2 : 2;
-            entry = m_nodes[entry][k];
-        }
-    }
+    while (!(entry & kLeaf)) entry = m_nodes[entry][walk.step()];
     return *m_leaves[entry & ~kLeaf];
 }
 

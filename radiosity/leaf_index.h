@@ -2,8 +2,8 @@
 // §3.10). Finding the leaf at a hit walks the side's quadtree from its root; through the
 // elements that reads a cache line or two of a different element at every level, which made
 // the walk about a fifth of a frozen pass. Here each split element is a node of four 4-byte
-// entries in one small array, and the domains are recomputed on the way down, so a walk reads
-// a few nodes and touches only the leaf it finds.
+// entries in one small array, and the domains are recomputed on the way down (a DomainWalk,
+// rays/domain.h), so a walk reads a few nodes and touches only the leaf it finds.
 #pragma once
 
 #include <array>
