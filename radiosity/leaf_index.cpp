@@ -48,9 +48,4 @@ Element& LeafIndex::locate(std::uint32_t patch, std::uint8_t side, const Vec2& u
     return *m_leaves[entry & ~kLeaf];
 }
 
-std::size_t LeafIndex::bytes() const {
-    return m_nodes.size() * sizeof(m_nodes[0]) + m_leaves.size() * sizeof(Element*) +
-           (m_roots[0].size() + m_roots[1].size()) * sizeof(std::uint32_t);
-}
-
 }  // namespace hmcr

@@ -25,8 +25,6 @@ public:
     // side), uv) finds.
     Element& locate(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const;
 
-    std::size_t bytes() const;
-
 private:
     // An entry is a node's index, or kLeaf plus a leaf's index. A side's root entry also says
     // whether the patch is a quad (kQuad), so that a walk does not read the patch.

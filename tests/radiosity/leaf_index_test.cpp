@@ -105,17 +105,20 @@ TEST(LeafIndex, AnUnsplitOrUnmadeSideIsItsOwnLeaf) {
     EXPECT_EQ(&index.locate(0, kFront, Vec2(0.75, 0.25)), &h.root(0).children()[1]);
 }
 
-// Without two-sided patches the index has no back roots to ask about and holds only the
-// front's: a node per split element, a leaf pointer per leaf below one, a word per patch.
-TEST(LeafIndex, HoldsANodePerSplitElement) {
+// Without two-sided patches the index holds the fronts alone, and finds a leaf below a middle
+// triangle, whose domain is inverted.
+TEST(LeafIndex, IndexesTheFrontsOfOneSidedPatches) {
     std::vector<TestPolygon> polygons = two_sided_polygons();
     for (TestPolygon& p : polygons) p.two_sided = false;
     Hierarchy h(build_patch_set(make_patch_mesh(polygons)), {});
     Element* c = h.subdivide(h.root(2));
     h.subdivide(c[3]);
     const LeafIndex index(h);
-    EXPECT_EQ(index.bytes(), 2 * 16 + 7 * sizeof(Element*) + 3 * 4);
     EXPECT_EQ(&index.locate(2, kFront, Vec2(0.3, 0.3)), &c[3].children()[3]);
+    EXPECT_EQ(&index.locate(2, kFront, Vec2(0.4, 0.4)), &c[3].children()[0]);
+    EXPECT_EQ(&index.locate(2, kFront, Vec2(0.1, 0.45)), &c[3].children()[1]);
+    EXPECT_EQ(&index.locate(2, kFront, Vec2(0.1, 0.1)), &c[0]);
+    EXPECT_EQ(&index.locate(0, kFront, Vec2(0.1, 0.1)), &h.root(0));
 }
 
 }  // namespace
