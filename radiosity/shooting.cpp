@@ -224,8 +224,10 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     const PatchSet& ps = h.patch_set();
     // One chunk of rays through the stages: generated, traced, then each ray's power and fate
     // (steps 3 and 4) and, for a ray that lands, its deposit and the query of its descent.
+    const bool fixed = ctx.fixed_leaves != nullptr;
     auto trace_chunk = [&](Batch& b, std::uint64_t begin, std::uint64_t end,
                            ShootingBuffers::Impl::Chunk& chunk) {
+        RefinementCounters no_counters;  // a fixed mesh's lookups decide nothing
         generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration,
                       part.first_key + b.first + begin, end - begin, b.rays, begin);
         ctx.scene.first_hits(b.rays, begin, end, b.hits);
@@ -245,9 +247,17 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             const Patch& rcv = ps.patches[hit.patch];
             const Vec3 y = hit_point(b.rays, k, hit.distance);
             const RayRegion& source = sources.regions[leaf];
-            b.queries[k] = {SideRef(hit.patch, *side), SideRef(source.patch, std::uint8_t(source.side)),
-                            rcv.param_of_hit(hit.second_triangle != 0, hit.b1, hit.b2, y),
-                            Vec2f(b.rays.u[k], b.rays.v[k])};
+            const LinkQuery query{SideRef(hit.patch, *side),
+                                  SideRef(source.patch, std::uint8_t(source.side)),
+                                  rcv.param_of_hit(hit.second_triangle != 0, hit.b1, hit.b2, y),
+                                  Vec2f(b.rays.u[k], b.rays.v[k])};
+            // A fixed mesh's receiver is a lookup that reads nothing a deposit writes: it is
+            // found here, with the ray, instead of in the batch's descent.
+            if (fixed) {
+                b.receivers[k] = &refine_link(ctx, query, no_counters);
+            } else {
+                b.queries[k] = query;
+            }
             // docs/design.md §3: received += rho * Phi (over A when pushed).
             const Rgb& rho = ps.material(hit.patch, *side).reflectance;
             b.deposits[k] = {out.quantum.count(rho * power, dither), quanta, true};
@@ -265,16 +275,19 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     DescentScratch& scratch = buffers->impl().descent;
     auto finish = [&](Batch& b) {
         std::size_t landed = 0;
-        for (std::uint64_t k = 0; k < b.n; ++k) {
-            if (b.deposits[k].lands) b.queries[landed++] = b.queries[k];
+        if (!fixed) {
+            for (std::uint64_t k = 0; k < b.n; ++k) {
+                if (b.deposits[k].lands) b.queries[landed++] = b.queries[k];
+            }
+            RefinementCounters counters;
+            refine_links(ctx, {b.queries.data(), landed}, {b.receivers.data(), landed}, counters,
+                         scratch);
+            out.counters += counters;
         }
-        RefinementCounters counters;
-        refine_links(ctx, {b.queries.data(), landed}, {b.receivers.data(), landed}, counters,
-                     scratch);
-        out.counters += counters;
+        // In ray order, whichever thread traced the ray: the same bits for any thread count.
         for (std::uint64_t k = 0, q = 0; k < b.n; ++k) {
             if (!b.deposits[k].lands) continue;
-            Element& receiver = *b.receivers[q++];
+            Element& receiver = *b.receivers[fixed ? k : q++];
             add(receiver.received,
                 is_cluster(receiver) ? b.deposits[k].incident : b.deposits[k].quanta);
         }
@@ -286,7 +299,8 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
         out.rays += b.n;
         if (on_batch) on_batch(out.rays);
     };
-    // Tracing reads only the patches, the sources and the Embree scene, never the hierarchy, so
+    // Tracing reads only the patches, the sources and the Embree scene (and a fixed mesh's leaf
+    // lookup, which reads no element's power), never what a descent or a deposit writes, so
     // the next batch is traced while this one descends and deposits: the batch's sequential
     // steps (compaction, sort, deposits) then overlap the next batch's rays on other threads.
     // The batches still descend and deposit in order, so the bits are the same.
