@@ -15,7 +15,11 @@ LeafIndex::LeafIndex(Hierarchy& h) : m_h(h) {
             if (side == kBack && !h.back_root(p)) continue;  // asking root() would make it
             Element& root = h.root(p, side);
             if (root.is_leaf()) continue;
-            roots[p] = add(root) | (h.patch_set().patches[p].is_quad() ? kQuad : 0);
+            const std::size_t leaves = m_leaves.size();
+            const std::uint32_t node = add(root);
+            roots[p] = h.patch_set().patches[p].is_quad()
+                           ? kQuad | add_grid(node, m_leaves.size() - leaves)
+                           : node;
         }
     }
 }
@@ -38,13 +42,47 @@ std::uint32_t LeafIndex::add(Element& e) {
     return node;
 }
 
+// The grid of the quad whose root is node `root`, at the deepest depth with no more cells
+// than the quad has leaves (at least 1, as a split quad has 4): at most 4 bytes a leaf.
+std::uint32_t LeafIndex::add_grid(std::uint32_t root, std::size_t leaves) {
+    int depth = 1;
+    while (std::size_t(4) << (2 * depth) <= leaves) ++depth;
+    const std::uint32_t n = 1u << depth;
+    if (m_cells.size() + std::size_t(n) * n >= kLeaf || m_grids.size() >= kQuad) {
+        throw std::length_error("too many leaves to index");
+    }
+    const auto grid = std::uint32_t(m_grids.size());
+    m_grids.push_back({std::uint32_t(m_cells.size()), depth});
+    for (std::uint32_t j = 0; j < n; ++j) {
+        for (std::uint32_t i = 0; i < n; ++i) {
+            std::uint32_t entry = root;
+            for (int l = depth - 1; l >= 0 && !(entry & kLeaf); --l) {
+                entry = m_nodes[entry][((i >> l) & 1) + 2 * ((j >> l) & 1)];
+            }
+            m_cells.push_back(entry);
+        }
+    }
+    return grid;
+}
+
 Element& LeafIndex::locate(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const {
     const std::vector<std::uint32_t>& roots = m_roots[side];
     const std::uint32_t root = roots.empty() ? kUnsplit : roots[patch];
     if (root == kUnsplit) return m_h.root(patch, side);
-    DomainWalk walk(root & kQuad, uv);
-    std::uint32_t entry = root & ~kQuad;
-    while (!(entry & kLeaf)) entry = m_nodes[entry][walk.step()];
+    if (!(root & kQuad)) {
+        DomainWalk walk(false, uv);
+        std::uint32_t entry = root;
+        while (!(entry & kLeaf)) entry = m_nodes[entry][walk.step()];
+        return *m_leaves[entry & ~kLeaf];
+    }
+    const Grid& g = m_grids[root & ~kQuad];
+    const std::uint32_t i = Domain::quad_cell(uv.x(), g.depth), j = Domain::quad_cell(uv.y(), g.depth);
+    std::uint32_t entry = m_cells[g.first + (std::size_t(j) << g.depth) + i];
+    if (!(entry & kLeaf)) {
+        DomainWalk walk(true, uv, Domain::quad_cell_domain(i, j, g.depth));
+        do entry = m_nodes[entry][walk.step()];
+        while (!(entry & kLeaf));
+    }
     return *m_leaves[entry & ~kLeaf];
 }
 

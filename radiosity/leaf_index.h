@@ -3,7 +3,10 @@
 // elements that reads a cache line or two of a different element at every level, which made
 // the walk about a fifth of a frozen pass. Here each split element is a node of four 4-byte
 // entries in one small array, and the domains are recomputed on the way down (a DomainWalk,
-// rays/domain.h), so a walk reads a few nodes and touches only the leaf it finds.
+// rays/domain.h), so a walk reads a few nodes and touches only the leaf it finds. A split quad
+// starts lower: its cells at a depth where there are about as many cells as leaves are a grid
+// indexed by the point's binary digits, each cell holding the leaf over it or the node under
+// it, so that a walk is a lookup and the few levels below the grid.
 #pragma once
 
 #include <array>
@@ -30,13 +33,22 @@ private:
     // whether the patch is a quad (kQuad), so that a walk does not read the patch.
     static constexpr std::uint32_t kLeaf = 1u << 31, kQuad = 1u << 30, kUnsplit = ~0u;
 
+    // A split quad's cells at `depth` (Domain::quad_cell), row by row from m_cells[first].
+    struct Grid {
+        std::uint32_t first = 0;
+        int depth = 0;
+    };
+
     std::uint32_t add(Element& e);
+    std::uint32_t add_grid(std::uint32_t root, std::size_t leaves);
 
     Hierarchy& m_h;
     std::vector<std::array<std::uint32_t, 4>> m_nodes;
     std::vector<Element*> m_leaves;
-    // Per side (kFront, kBack), per patch: the root's node with kQuad, or kUnsplit for a root
-    // that is a leaf. The back's is empty when no patch is two-sided.
+    std::vector<Grid> m_grids;
+    std::vector<std::uint32_t> m_cells;  // entries, as a node's
+    // Per side (kFront, kBack), per patch: a triangle's root node, a quad's grid with kQuad, or
+    // kUnsplit for a root that is a leaf. The back's is empty when no patch is two-sided.
     std::array<std::vector<std::uint32_t>, 2> m_roots;
 };
 

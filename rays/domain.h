@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "common/types.h"
 
@@ -42,6 +43,22 @@ struct Domain {
         }
     }
 
+    // On a quad, the column (for u) or row (for v) of the 2^depth x 2^depth cells of the
+    // subdivision at `depth` that child_containing leads to from the root: the leading binary
+    // digits of x (x * 2^depth is exact), the first below the domain, the last from its far edge
+    // on, and the first for NaN, where every comparison fails. Cell (i, j) is reached by the
+    // children (bit l of i) + 2 (bit l of j), from l = depth - 1 down to 0.
+    static std::uint32_t quad_cell(double x, int depth) {
+        const double n = double(std::uint32_t(1) << depth), c = x * n;
+        if (!(c >= 0)) return 0;
+        return c >= n ? std::uint32_t(n) - 1 : std::uint32_t(c);  // truncation is floor here
+    }
+    // The quad's domain of cell (i, j) at `depth`.
+    static Domain quad_cell_domain(std::uint32_t i, std::uint32_t j, int depth) {
+        const float s = 1.0f / float(std::uint32_t(1) << depth);  // exact
+        return {float(i) * s, float(j) * s, s};
+    }
+
     // The child containing (u, v) (a point of this domain).
     int child_containing(bool quad, const Vec2& uv) const {
         return child_at(quad, (uv.x() - u0) / s, (uv.y() - v0) / s);
@@ -62,6 +79,9 @@ struct Domain {
 class DomainWalk {
 public:
     DomainWalk(bool quad, const Vec2& uv) : m_quad(quad), m_uv(uv) {}
+    // The walk from `start`, a domain of the subdivision, as if it had come down to it.
+    DomainWalk(bool quad, const Vec2& uv, const Domain& start)
+        : m_quad(quad), m_uv(uv), m_domain(start), m_inverse(1 / double(start.s)) {}
 
     // The child of the current domain that holds the point; the walk goes into it.
     int step() {

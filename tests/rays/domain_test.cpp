@@ -1,8 +1,10 @@
 // A walk down the subdivision without dividing (rays/domain.h) picks, level by level down to
 // the deepest split, the child that child_containing's division picks, for any float point:
-// dyadic boundaries, their neighbours, the edges and points beyond them.
+// dyadic boundaries, their neighbours, the edges and points beyond them; and a quad's cell at a
+// depth, found from the point's binary digits, is the domain that walk reaches there.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -57,6 +59,36 @@ TEST(Domain, AWalkPicksTheChildrenChildContainingPicksAtEveryDepth) {
         }
     }
     EXPECT_EQ(compared, 2 * points.size() * kDeepest);
+}
+
+// A quad's cell at a depth, looked up from the point's digits, is the domain the walk from the
+// root reaches at that depth, and a walk started there goes on as the walk from the root does.
+TEST(Domain, AQuadCellIsWhereTheWalkFromTheRootArrives) {
+    const std::vector<Vec2f> points = hostile_points();
+    std::size_t compared = 0;
+    for (const Vec2f& p : points) {
+        const Vec2 uv = p.cast<double>();
+        Domain d = Domain::root();
+        for (int depth = 1; depth < kDeepest; ++depth) {
+            d = d.child(true, d.child_containing(true, uv));
+            const Domain cell = Domain::quad_cell_domain(Domain::quad_cell(uv.x(), depth),
+                                                         Domain::quad_cell(uv.y(), depth), depth);
+            ASSERT_TRUE(cell.u0 == d.u0 && cell.v0 == d.v0 && cell.s == d.s)
+                << "point (" << p.x() << ", " << p.y() << ") at depth " << depth;
+            DomainWalk from_cell(true, uv, cell);
+            Domain below = d;
+            for (int k = depth; k < std::min(depth + 3, kDeepest); ++k) {
+                const int child = below.child_containing(true, uv);
+                ASSERT_EQ(from_cell.step(), child) << "point (" << p.x() << ", " << p.y()
+                                                   << ") from depth " << depth;
+                below = below.child(true, child);
+            }
+            ++compared;
+        }
+    }
+    EXPECT_EQ(compared, points.size() * (kDeepest - 1));
+    // Every comparison of a walk fails for NaN: the first cell.
+    EXPECT_EQ(Domain::quad_cell(std::nan(""), 5), 0u);
 }
 
 }  // namespace
