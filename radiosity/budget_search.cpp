@@ -18,14 +18,21 @@ namespace {
 class Search {
 public:
     Search(const PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-           Progress& progress, const Ranks& ranks)
-        : m_mesh(mesh), m_options(options), m_budget(budget), m_progress(progress), m_ranks(ranks) {}
+           Progress& progress, const Ranks& ranks, KnownProbes* known)
+        : m_mesh(mesh),
+          m_options(options),
+          m_budget(budget),
+          m_progress(progress),
+          m_ranks(ranks),
+          m_known(known) {}
 
     BudgetResult run();
 
 private:
-    // Solves at log epsilon x; returns the leaf count. Keeps the solve if it is the best yet.
+    // Solves at log epsilon x, or finds its leaf count known; returns the leaf count. Keeps the
+    // solve if it is within the tolerance (the search then ends).
     std::size_t probe(double x);
+    void record(double x, const BudgetProbe& p);
     bool within(std::size_t leaves) const {
         return std::abs(double(leaves) - double(m_budget.leaves)) <=
                m_budget.tolerance * double(m_budget.leaves);
@@ -39,29 +46,45 @@ private:
     BudgetOptions m_budget;
     Progress& m_progress;
     const Ranks& m_ranks;
+    KnownProbes* m_known;
     BudgetResult m_result;
     std::optional<double> m_lo, m_hi;           // log epsilon bounds
     std::size_t m_lo_leaves = 0, m_hi_leaves = 0;
-    double m_best_distance = INFINITY;
+    std::optional<BudgetProbe> m_closest;       // to the target, for a failure's message
 };
 
 std::size_t Search::probe(double x) {
     SolverOptions o = m_options;
     o.epsilon = std::exp(x);
     const std::size_t k = m_result.probes.size() + 1;
+    if (m_known) {
+        const auto it = m_known->find(o.epsilon);
+        if (it != m_known->end() && !within(it->second)) {
+            record(x, {o.epsilon, it->second, 0, true});
+            m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves (known)", k,
+                                        o.epsilon, it->second));
+            return it->second;
+        }
+    }
     m_progress.stage(fmt::format("budget probe {}", k));
     Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks, m_scene);
     m_options.view_importance = sol.options.view_importance;  // the same for every probe
     m_scene = sol.scene;                                      // and the same scene
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
-    m_result.probes.push_back(p);
+    if (m_known) (*m_known)[o.epsilon] = p.leaves;
+    record(x, p);
     m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves ({:.1f} s)", k,
                                 p.epsilon, p.leaves, p.seconds));
-    const double distance = std::abs(double(p.leaves) - double(m_budget.leaves));
-    if (distance < m_best_distance) {
-        m_best_distance = distance;
-        m_result.solution = std::move(sol);
-    }
+    if (within(p.leaves)) m_result.solution = std::move(sol);
+    return p.leaves;
+}
+
+void Search::record(double x, const BudgetProbe& p) {
+    m_result.probes.push_back(p);
+    const auto distance = [&](const BudgetProbe& q) {
+        return std::abs(double(q.leaves) - double(m_budget.leaves));
+    };
+    if (!m_closest || distance(p) < distance(*m_closest)) m_closest = p;
     if (p.leaves > m_budget.leaves) {
         m_lo = x;
         m_lo_leaves = p.leaves;
@@ -69,7 +92,6 @@ std::size_t Search::probe(double x) {
         m_hi = x;
         m_hi_leaves = p.leaves;
     }
-    return p.leaves;
 }
 
 // Inside a bracket: the log-log interpolation of the two ends (leaf counts follow a power of
@@ -127,19 +149,18 @@ BudgetResult Search::run() {
         x = next_point();
     }
     fail(fmt::format("closest after {} probes: {} leaves at epsilon {:.4g}",
-                     m_result.probes.size(), m_result.solution.stats.leaves,
-                     m_result.solution.stats.epsilon));
+                     m_result.probes.size(), m_closest->leaves, m_closest->epsilon));
 }
 
 }  // namespace
 
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
                               const BudgetOptions& budget, Progress& progress,
-                              const Ranks& ranks) {
+                              const Ranks& ranks, KnownProbes* known) {
     if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
     validate(budget);
     validate(options);
-    return Search(mesh, options, budget, progress, ranks).run();
+    return Search(mesh, options, budget, progress, ranks, known).run();
 }
 
 void validate(const BudgetOptions& budget) {
@@ -164,7 +185,7 @@ BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const Bud
 }
 
 void to_json(nlohmann::json& j, const BudgetProbe& p) {
-    j = {{"epsilon", p.epsilon}, {"leaves", p.leaves}, {"seconds", p.seconds}};
+    j = {{"epsilon", p.epsilon}, {"leaves", p.leaves}, {"seconds", p.seconds}, {"known", p.known}};
 }
 
 }  // namespace hmcr

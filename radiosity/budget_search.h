@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
@@ -22,15 +23,23 @@ struct BudgetOptions {
 struct BudgetProbe {
     double epsilon = 0;
     std::size_t leaves = 0;
-    double seconds = 0;
+    double seconds = 0;   // 0 for a known probe
+    bool known = false;   // its leaf count was known (KnownProbes), not solved again
 };
-// {"epsilon", "leaves", "seconds"}: how run summaries and study cells store a probe.
+// {"epsilon", "leaves", "seconds", "known"}: how run summaries and study cells store a probe.
 void to_json(nlohmann::json& j, const BudgetProbe& p);
 
 struct BudgetResult {
     Solution solution;  // the accepted probe's solve
     std::vector<BudgetProbe> probes;
 };
+
+// The leaf counts of the probes solved so far with the same options (the same seed, rays and
+// oracle among them) for other budgets, by epsilon: a study's searches for one oracle and seed
+// at several budgets start alike. A solve gives the same bits every time, so a search that
+// comes to a known epsilon takes its leaf count instead of solving again, unless that probe is
+// the one it accepts, whose solve it needs.
+using KnownProbes = std::map<double, std::size_t>;
 
 // The budget cannot be reached with these settings: a result of a study cell, an error of a
 // solve.
@@ -43,10 +52,11 @@ public:
 // and its result a note. Throws BudgetNotReached with a one-line explanation when the budget
 // cannot be reached: below the patch count, above what the area/depth limits and the rays
 // allow, or not within the tolerance after max_probes; InputError on bad options. `ranks`
-// share each probe's solve (solver.h).
+// share each probe's solve (solver.h). With `known`, the search reads it and adds the probes it
+// solves to it.
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
                               const BudgetOptions& budget, Progress& progress = no_progress(),
-                              const Ranks& ranks = Ranks::single());
+                              const Ranks& ranks = Ranks::single(), KnownProbes* known = nullptr);
 
 // Throws InputError on a tolerance outside (0, 1); a budget of 0 leaves means none.
 void validate(const BudgetOptions& budget);

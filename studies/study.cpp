@@ -145,6 +145,10 @@ private:
     nlohmann::json m_settings;
     StudyReference m_reference;
     std::optional<OutputSet> m_tables;  // rank 0's
+    // This rank's probes by oracle, seed and rays: the cells of the other budgets search from
+    // the same start (radiosity/budget_search.h). Only what this rank solved or read is here,
+    // which changes how long a cell takes, never its result.
+    std::map<std::tuple<std::string, std::uint64_t, std::uint64_t>, KnownProbes> m_known;
 };
 
 std::string StudyRunner::where(std::size_t index) const {
@@ -162,7 +166,12 @@ std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
     rule.settings = m_settings;
     rule.redo_other_settings = m_options.redo_other_settings;
     CellNotes notes(m_progress, where(index) + ": ");
-    return read_previous_cell<CellResult>(cell_file(t), rule, notes);
+    std::optional<CellResult> cell = read_previous_cell<CellResult>(cell_file(t), rule, notes);
+    if (cell) {
+        KnownProbes& known = m_known[{cell->oracle, cell->seed, cell->rays}];
+        for (const BudgetProbe& p : cell->probes) known[p.epsilon] = p.leaves;
+    }
+    return cell;
 }
 
 // Every file a cell writes, for the checks before any cell is computed.
@@ -231,7 +240,8 @@ CellResult StudyRunner::compute(std::size_t index) {
     const auto start = Clock::now();
     try {
         const BudgetResult r =
-            solve_for_budget(m_scene.mesh, so, {t.budget, m_options.budget_tolerance}, notes);
+            solve_for_budget(m_scene.mesh, so, {t.budget, m_options.budget_tolerance}, notes,
+                             Ranks::single(), &m_known[{cell.oracle, cell.seed, cell.rays}]);
         cell.seconds = seconds_since(start);
         cell.probes = r.probes;
         cell.epsilon = r.solution.stats.epsilon;

@@ -1,10 +1,12 @@
 // Budget search (docs/design.md §6): epsilon by bisection on log epsilon until the leaf count is
-// within the tolerance, for every oracle; clean failures when the budget cannot be reached.
+// within the tolerance, for every oracle; clean failures when the budget cannot be reached;
+// probes known from another budget's search taken without changing the result.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "common/error.h"
 #include "meshes/scene.h"
@@ -86,6 +88,63 @@ TEST(BudgetSearch, FailsCleanlyWhenTheLimitsCapTheLeafCount) {
 TEST(BudgetSearch, FailsCleanlyBelowThePatchCount) {
     const std::string why = failure(SolverOptions{}, 10);
     EXPECT_NE(why.find("24 patches"), std::string::npos) << why;
+}
+
+// Every leaf's radiosity, in the hierarchy's order: two solves with the same bits agree here.
+std::vector<double> leaf_radiosities(const Solution& s) {
+    std::vector<double> out;
+    s.hierarchy->for_each_leaf([&](const Element& e) {
+        for (int c = 0; c < 3; ++c) out.push_back(e.radiosity[c]);
+    });
+    return out;
+}
+
+// A study's searches at two budgets for one oracle and seed start alike: the second takes the
+// leaf counts the first solved instead of solving them again, and reaches the same probes and
+// the same solution, bit for bit, as a search on its own.
+TEST(BudgetSearch, KnownProbesAreNotSolvedAgainAndChangeNothing) {
+    const Scene scene = load_scene("cornell");
+    SolverOptions o;
+    o.oracle = &find_named(oracle_registry(), "power");
+    o.rays = 300'000;
+    const BudgetResult alone = solve_for_budget(scene.mesh, o, {2000, 0.01});
+    KnownProbes known;
+    const BudgetResult first = solve_for_budget(scene.mesh, o, {1000, 0.01}, no_progress(),
+                                                Ranks::single(), &known);
+    ASSERT_EQ(known.size(), first.probes.size());
+    const BudgetResult second = solve_for_budget(scene.mesh, o, {2000, 0.01}, no_progress(),
+                                                 Ranks::single(), &known);
+    ASSERT_EQ(second.probes.size(), alone.probes.size());
+    std::size_t taken = 0;
+    for (std::size_t k = 0; k < alone.probes.size(); ++k) {
+        EXPECT_EQ(second.probes[k].epsilon, alone.probes[k].epsilon) << "probe " << k;
+        EXPECT_EQ(second.probes[k].leaves, alone.probes[k].leaves) << "probe " << k;
+        EXPECT_FALSE(alone.probes[k].known);
+        if (second.probes[k].known) {
+            ++taken;
+            EXPECT_EQ(second.probes[k].seconds, 0);
+        }
+    }
+    EXPECT_GE(taken, 1u);  // the start, at least
+    EXPECT_FALSE(second.probes.back().known);  // the accepted probe is solved
+    EXPECT_EQ(leaf_radiosities(second.solution), leaf_radiosities(alone.solution));
+}
+
+// A known probe that the search would accept is solved all the same: its solution is the
+// result. (Here the known count is made up, so the solve gives another.)
+TEST(BudgetSearch, AKnownProbeWithinTheToleranceIsSolved) {
+    const Scene scene = load_scene("cornell");
+    SolverOptions o;
+    o.oracle = &find_named(oracle_registry(), "power");
+    o.rays = 50'000;
+    const BudgetProbe start = solve_for_budget(scene.mesh, o, {2000, 0.01}).probes.front();
+    KnownProbes known{{start.epsilon, 2000}};
+    const BudgetResult r =
+        solve_for_budget(scene.mesh, o, {2000, 0.01}, no_progress(), Ranks::single(), &known);
+    ASSERT_NE(start.leaves, 2000u);
+    EXPECT_FALSE(r.probes.front().known);
+    EXPECT_EQ(r.probes.front().leaves, start.leaves);
+    EXPECT_EQ(known.at(start.epsilon), start.leaves);
 }
 
 }  // namespace
