@@ -29,8 +29,9 @@ public:
     Element& locate(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const;
 
 private:
-    // An entry is a node's index, or kLeaf plus a leaf's index. A side's root entry also says
-    // whether the patch is a quad (kQuad), so that a walk does not read the patch.
+    // An entry is a node's index, or kLeaf plus a leaf's index. A side's root entry says
+    // whether the patch is a quad (kQuad, then it is the quad's grid), so that a walk does not
+    // read the patch.
     static constexpr std::uint32_t kLeaf = 1u << 31, kQuad = 1u << 30, kUnsplit = ~0u;
 
     // A split quad's cells at `depth` (Domain::quad_cell), row by row from m_cells[first].
