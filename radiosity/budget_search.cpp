@@ -185,7 +185,7 @@ BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const Bud
 }
 
 void to_json(nlohmann::json& j, const BudgetProbe& p) {
-    j = {{"epsilon", p.epsilon}, {"leaves", p.leaves}, {"seconds", p.seconds}, {"known", p.known}};
+    j = {{"epsilon", p.epsilon}, {"leaves", p.leaves}, {"seconds", p.seconds}};
 }
 
 }  // namespace hmcr

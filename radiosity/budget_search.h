@@ -26,7 +26,10 @@ struct BudgetProbe {
     double seconds = 0;   // 0 for a known probe
     bool known = false;   // its leaf count was known (KnownProbes), not solved again
 };
-// {"epsilon", "leaves", "seconds", "known"}: how run summaries and study cells store a probe.
+// {"epsilon", "leaves", "seconds"}: how run summaries and study cells store a probe. Whether it
+// was known is not stored: that depends on which cells a rank solved before, and like the
+// seconds it is how the work was done, where everything else a study stores is the same for
+// any rank count.
 void to_json(nlohmann::json& j, const BudgetProbe& p);
 
 struct BudgetResult {

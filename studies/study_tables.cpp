@@ -230,7 +230,7 @@ CellResult cell_from_json(const nlohmann::json& j) {
     c.leaves = json_count(j, "leaves");
     for (const auto& p : j.at("probe_history"))
         c.probes.push_back({json_non_negative(p, "epsilon", kNaN), json_count(p, "leaves"),
-                            json_non_negative(p, "seconds", kNaN), p.value("known", false)});
+                            json_non_negative(p, "seconds", kNaN)});
     c.seconds = json_non_negative(j, "seconds", kNaN);
     c.views = views_from_json(j.at("views"));
     c.object_error = object_error_from_json(j.at("object_error"));
