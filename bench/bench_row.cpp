@@ -32,8 +32,7 @@ RowResult run_row(const RowSpec& spec) {
     o.rays = spec.rays;
     o.lines = kLines;
     o.threads = spec.threads;
-    // The refining shooter is what the floor bounds: every ray descends and deposits.
-    o.refine_share = 1;
+    o.refine_share = spec.refine_share;
     double first_shooting = 0;
     {
         const Solution sol = solve(scene.mesh, o);
@@ -72,6 +71,7 @@ nlohmann::json to_json(const RowResult& r) {
             {"oracle", r.spec.oracle},
             {"epsilon", std::isnan(r.spec.epsilon) ? nlohmann::json() : nlohmann::json(r.spec.epsilon)},
             {"threads", r.spec.threads},
+            {"refine_share", r.spec.refine_share},
             {"patches", r.patches},
             {"leaves", r.leaves},
             {"elements", r.elements},

@@ -18,6 +18,9 @@ struct RowSpec {
     double epsilon;     // NaN: the oracle's default
     std::uint64_t rays;
     int threads;
+    // 1: every ray refines (what the oracle rows bound); below 1, the solve users run: a
+    // refining pass, then the frozen pass (docs/design.md §3.10).
+    double refine_share = 1;
 };
 
 struct RowResult {

@@ -3,7 +3,10 @@
 // work measured in the same run: the same number of incoherent first-hit rays plus, for the
 // line-based oracles, the same number of occlusion lines, cast N_s at a time between random
 // leaf pairs of the solution (bench/embree_floor.h). floor_x = hmcr shooting time / floor time;
-// 1 would mean refinement, sampling and deposits cost nothing.
+// 1 would mean refinement, sampling and deposits cost nothing. Every ray of those rows refines;
+// then `power` and `kl` on both scenes at the default refine share, the solve users run (a
+// refining pass, then the frozen pass), against the floor of all its rays (--default-share runs
+// those rows alone and prints their table only).
 //
 // Then the scaling study (bench/scaling.h), each point in a process of its own so that its peak
 // memory is its own. Every row, both kinds, goes to --results (bench/results.json), and the
@@ -25,6 +28,7 @@
 #include "bench/scaling.h"
 #include "common/atomic_file.h"
 #include "oracles/registry.h"
+#include "radiosity/solver_options.h"
 
 namespace hmcr::bench {
 namespace {
@@ -40,28 +44,57 @@ const std::map<std::pair<std::string, std::string>, double> kEpsilon = {
     {{"cube-room", "hl"}, 1.14e-05},    {{"cube-room", "vt"}, 1.19e-04},
 };
 
-// Every oracle on both scenes, 1 and 2 threads: a line of the table each, and its JSON row.
-std::vector<nlohmann::json> run_oracle_rows() {
+void print_header() {
     fmt::print("{:>9} {:>6} {:>7} {:>7} {:>9} {:>9} {:>9} {:>7} {:>10} {:>9} {:>9} {:>8}\n",
                "scene", "oracle", "threads", "leaves", "shoot s", "rays/s", "floor s", "x floor",
                "evals", "lines", "hit rate", "MiB");
+}
+
+// Runs a row, prints its line of the table and returns its JSON row, labelled `study`.
+nlohmann::json run_and_print(const RowSpec& spec, const char* study) {
+    const RowResult r = run_row(spec);
+    fmt::print("{:>9} {:>6} {:>7} {:>7} {:>9.2f} {:>9.3g} {:>9.3f} {:>7.2f} {:>10} "
+               "{:>9} {:>9.3f} {:>8.0f}\n",
+               spec.scene, spec.oracle, spec.threads, r.leaves, r.shooting_seconds,
+               double(r.rays) / r.shooting_seconds, r.floor_seconds, r.floor_x(),
+               r.oracle_evaluations, r.lines_cast, r.cache_hit_rate,
+               double(r.solver_bytes) / (1 << 20));
+    nlohmann::json row = to_json(r);
+    row["study"] = study;
+    return row;
+}
+
+// Every oracle on both scenes, 1 and 2 threads, every ray refining: a line of the table each,
+// and its JSON row.
+std::vector<nlohmann::json> run_oracle_rows() {
+    print_header();
     std::vector<nlohmann::json> rows;
     for (const char* scene : {"cornell", "cube-room"}) {
         for (const Oracle* o : oracle_registry().all()) {
             const std::string oracle(o->name());
             if (!kEpsilon.count({scene, oracle})) continue;
             for (int threads : {1, 2}) {
-                const RowResult r =
-                    run_row({scene, oracle, kEpsilon.at({scene, oracle}), kBenchRays, threads});
-                fmt::print("{:>9} {:>6} {:>7} {:>7} {:>9.2f} {:>9.3g} {:>9.3f} {:>7.2f} {:>10} "
-                           "{:>9} {:>9.3f} {:>8.0f}\n",
-                           scene, oracle, threads, r.leaves, r.shooting_seconds,
-                           double(r.rays) / r.shooting_seconds, r.floor_seconds, r.floor_x(),
-                           r.oracle_evaluations, r.lines_cast, r.cache_hit_rate,
-                           double(r.solver_bytes) / (1 << 20));
-                nlohmann::json row = to_json(r);
-                row["study"] = "oracles";
-                rows.push_back(row);
+                rows.push_back(run_and_print(
+                    {scene, oracle, kEpsilon.at({scene, oracle}), kBenchRays, threads}, "oracles"));
+            }
+        }
+    }
+    return rows;
+}
+
+// The solve users run, at the default refine share: `power` and `kl` on both scenes at the
+// same epsilon, a tenth of the rays refining and the rest frozen, against the floor of all its
+// rays (and the refining pass's lines).
+std::vector<nlohmann::json> run_default_share_rows() {
+    fmt::print("default refine share {}\n", SolverOptions{}.refine_share);
+    print_header();
+    std::vector<nlohmann::json> rows;
+    for (const char* scene : {"cornell", "cube-room"}) {
+        for (const char* oracle : {"power", "kl"}) {
+            for (int threads : {1, 2}) {
+                rows.push_back(run_and_print({scene, oracle, kEpsilon.at({scene, oracle}),
+                                              kBenchRays, threads, SolverOptions{}.refine_share},
+                                             "default-share"));
             }
         }
     }
@@ -79,12 +112,15 @@ int main(int argc, char** argv) {
                  "(docs/performance.md)"};
     std::string results, scaling;
     int cv_seeds = 0;
+    bool default_share_only = false;
     app.add_option("--results", results, "write every row here (JSON)");
     app.add_option("--scaling", scaling,
                    "run the scaling study on the generated office scenes in this folder");
     app.add_option("--control-variate", cv_seeds,
                    "run only the control variate's study over this many seeds")
         ->check(CLI::PositiveNumber);
+    app.add_flag("--default-share", default_share_only,
+                 "run only the rows of the default refine share (refine, then freeze)");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -94,7 +130,10 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (cv_seeds > 0) return run_control_variate_study(cv_seeds);
-    std::vector<nlohmann::json> rows = run_oracle_rows();
+    std::vector<nlohmann::json> rows;
+    if (!default_share_only) rows = run_oracle_rows();
+    for (nlohmann::json& row : run_default_share_rows()) rows.push_back(row);
+    if (default_share_only) return 0;  // the table only
     if (!scaling.empty()) {
         const std::filesystem::path plot_data =
             std::filesystem::path(results.empty() ? "." : results).parent_path() /
