@@ -64,8 +64,9 @@ test-sanitize: deps
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -L fuzz
 
-# The oracle table, then the scaling study on office instances of 10^2 ... 10^6 patches:
-# bench/results.json (every row) and bench/scaling.pdf and .png (the curves).
+# The oracle table, the default solve's rows, then the scaling study on office instances of
+# 10^2 ... 10^6 patches: bench/results.json (every row) and bench/scaling.pdf and .png (the
+# curves).
 BENCH_SCENES := $(BUILD)/bench-scenes
 bench: build scenes $(BENCH_SCENES)/office-100k.obj
 	$(BUILD)/hmcr_bench --results bench/results.json --scaling $(BENCH_SCENES)
