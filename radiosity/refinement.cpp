@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "radiosity/line_sampler.h"
@@ -187,16 +188,14 @@ void split_cluster(const RefinementContext& ctx, Element*& i, Element*& j, const
     if (!is_cluster(*i)) j = &ctx.hierarchy.root(q.source.patch(), q.source.side());
 }
 
-// On a fixed mesh the receiver is the mesh's leaf at the hit: the cluster leaf holding the side
-// hit, or the side's leaf containing the hit point.
+}  // namespace
+
 Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& q) {
     if (ctx.clusters) {
         if (Element* c = ctx.clusters->closed_leaf(q.receiver.value)) return *c;
     }
     return ctx.fixed_leaves->locate(q.receiver.patch(), q.receiver.side(), q.y_uv.cast<double>());
 }
-
-}  // namespace
 
 Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
                      RefinementCounters& counters) {
@@ -303,12 +302,10 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
 void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queries,
                   std::span<Element*> receivers, RefinementCounters& counters,
                   DescentScratch& buffers) {
-    Hierarchy& h = ctx.hierarchy;
     if (ctx.fixed_leaves) {
-        tbb::parallel_for(std::size_t(0), queries.size(),
-                          [&](std::size_t k) { receivers[k] = &fixed_receiver(ctx, queries[k]); });
-        return;
+        throw std::logic_error("refine_links on a fixed mesh: its receivers are fixed_receiver's");
     }
+    Hierarchy& h = ctx.hierarchy;
     // Grouped by (receiver side, source side), each group's queries copied together so that
     // its descent reads a compact block.
     const std::uint64_t sides = 2 * std::uint64_t(h.patch_count());

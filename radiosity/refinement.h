@@ -76,6 +76,12 @@ struct LinkQuery {
 Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
                      RefinementCounters& counters);
 
+// On a fixed mesh (ctx.fixed_leaves) the receiver is the mesh's leaf at the hit: the cluster
+// leaf holding the side hit, or the side's leaf containing the hit point. It decides nothing and
+// reads no element's power, so a frozen pass calls it as each ray is traced; refine_link answers
+// with it on a fixed mesh.
+Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& query);
+
 // refine_links' buffers, kept by the caller between calls.
 struct DescentScratch {
     std::vector<Keyed<std::uint32_t>> keyed, keyed_scratch;
@@ -91,7 +97,7 @@ struct DescentScratch {
 // upper levels of their descents, so each link on their shared paths is decided once for all
 // of them, and the rays split between a refused link's children as their points do. Parallel;
 // oracle_calls counts every ray's decisions, as refine_link does, so it does not depend on how
-// rays are grouped.
+// rays are grouped. For a refining mesh only (std::logic_error on a fixed one).
 void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queries,
                   std::span<Element*> receivers, RefinementCounters& counters,
                   DescentScratch& scratch);

@@ -212,22 +212,22 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     if (!buffers) buffers = &own.emplace();
     using Batch = ShootingBuffers::Impl::Batch;
     std::array<Batch, 2>& batches = buffers->impl().batches;
+    const bool fixed = ctx.fixed_leaves != nullptr;  // no descents: no queries
     for (Batch& b : batches) {
         b.rays.resize(batch_rays);
         b.hits.resize(batch_rays);
         b.deposits.resize(batch_rays);
-        b.queries.resize(batch_rays);
+        b.queries.resize(fixed ? 0 : batch_rays);
         b.receivers.resize(batch_rays);
         if (!overlap) break;
     }
     const Hierarchy& h = ctx.hierarchy;
     const PatchSet& ps = h.patch_set();
     // One chunk of rays through the stages: generated, traced, then each ray's power and fate
-    // (steps 3 and 4) and, for a ray that lands, its deposit and the query of its descent.
-    const bool fixed = ctx.fixed_leaves != nullptr;
+    // (steps 3 and 4) and, for a ray that lands, its deposit and the query of its descent (on a
+    // fixed mesh, its receiver).
     auto trace_chunk = [&](Batch& b, std::uint64_t begin, std::uint64_t end,
                            ShootingBuffers::Impl::Chunk& chunk) {
-        RefinementCounters no_counters;  // a fixed mesh's lookups decide nothing
         generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration,
                       part.first_key + b.first + begin, end - begin, b.rays, begin);
         ctx.scene.first_hits(b.rays, begin, end, b.hits);
@@ -251,10 +251,8 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
                                   SideRef(source.patch, std::uint8_t(source.side)),
                                   rcv.param_of_hit(hit.second_triangle != 0, hit.b1, hit.b2, y),
                                   Vec2f(b.rays.u[k], b.rays.v[k])};
-            // A fixed mesh's receiver is a lookup that reads nothing a deposit writes: it is
-            // found here, with the ray, instead of in the batch's descent.
             if (fixed) {
-                b.receivers[k] = &refine_link(ctx, query, no_counters);
+                b.receivers[k] = &fixed_receiver(ctx, query);
             } else {
                 b.queries[k] = query;
             }
