@@ -57,7 +57,7 @@ std::uint32_t LeafIndex::add_grid(std::uint32_t root, std::size_t leaves) {
         for (std::uint32_t i = 0; i < n; ++i) {
             std::uint32_t entry = root;
             for (int l = depth - 1; l >= 0 && !(entry & kLeaf); --l) {
-                entry = m_nodes[entry][((i >> l) & 1) + 2 * ((j >> l) & 1)];
+                entry = m_nodes[entry][Domain::quad_cell_child(i, j, l)];
             }
             m_cells.push_back(entry);
         }

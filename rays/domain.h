@@ -46,12 +46,16 @@ struct Domain {
     // On a quad, the column (for u) or row (for v) of the 2^depth x 2^depth cells of the
     // subdivision at `depth` that child_containing leads to from the root: the leading binary
     // digits of x (x * 2^depth is exact), the first below the domain, the last from its far edge
-    // on, and the first for NaN, where every comparison fails. Cell (i, j) is reached by the
-    // children (bit l of i) + 2 (bit l of j), from l = depth - 1 down to 0.
+    // on, and the first for NaN, where every comparison fails.
     static std::uint32_t quad_cell(double x, int depth) {
         const double n = double(std::uint32_t(1) << depth), c = x * n;
         if (!(c >= 0)) return 0;
         return c >= n ? std::uint32_t(n) - 1 : std::uint32_t(c);  // truncation is floor here
+    }
+    // The child taken at `level` levels above the cells on the way from the root to cell (i, j):
+    // bit `level` of i says the u half, of j the v half (child's numbering).
+    static int quad_cell_child(std::uint32_t i, std::uint32_t j, int level) {
+        return int((i >> level) & 1) + 2 * int((j >> level) & 1);
     }
     // The quad's domain of cell (i, j) at `depth`.
     static Domain quad_cell_domain(std::uint32_t i, std::uint32_t j, int depth) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "rays/domain.h"
@@ -62,19 +63,27 @@ TEST(Domain, AWalkPicksTheChildrenChildContainingPicksAtEveryDepth) {
 }
 
 // A quad's cell at a depth, looked up from the point's digits, is the domain the walk from the
-// root reaches at that depth, and a walk started there goes on as the walk from the root does.
+// root reaches at that depth, by the children quad_cell_child names, and a walk started there
+// goes on as the walk from the root does.
 TEST(Domain, AQuadCellIsWhereTheWalkFromTheRootArrives) {
     const std::vector<Vec2f> points = hostile_points();
     std::size_t compared = 0;
     for (const Vec2f& p : points) {
         const Vec2 uv = p.cast<double>();
         Domain d = Domain::root();
+        std::vector<int> path;  // the children from the root
         for (int depth = 1; depth < kDeepest; ++depth) {
-            d = d.child(true, d.child_containing(true, uv));
-            const Domain cell = Domain::quad_cell_domain(Domain::quad_cell(uv.x(), depth),
-                                                         Domain::quad_cell(uv.y(), depth), depth);
+            path.push_back(d.child_containing(true, uv));
+            d = d.child(true, path.back());
+            const std::uint32_t i = Domain::quad_cell(uv.x(), depth),
+                                j = Domain::quad_cell(uv.y(), depth);
+            const Domain cell = Domain::quad_cell_domain(i, j, depth);
             ASSERT_TRUE(cell.u0 == d.u0 && cell.v0 == d.v0 && cell.s == d.s)
                 << "point (" << p.x() << ", " << p.y() << ") at depth " << depth;
+            for (int level = 0; level < depth; ++level) {
+                ASSERT_EQ(Domain::quad_cell_child(i, j, level), path[depth - 1 - level])
+                    << "point (" << p.x() << ", " << p.y() << ") at depth " << depth;
+            }
             DomainWalk from_cell(true, uv, cell);
             Domain below = d;
             for (int k = depth; k < std::min(depth + 3, kDeepest); ++k) {
@@ -87,7 +96,10 @@ TEST(Domain, AQuadCellIsWhereTheWalkFromTheRootArrives) {
         }
     }
     EXPECT_EQ(compared, points.size() * (kDeepest - 1));
-    // Every comparison of a walk fails for NaN: the first cell.
+    // Every comparison of a walk fails for NaN, which so goes to the first child at every
+    // level: the first cell.
+    DomainWalk nan_walk(true, Vec2(std::nan(""), std::nan("")));
+    for (int depth = 0; depth < 5; ++depth) ASSERT_EQ(nan_walk.step(), 0);
     EXPECT_EQ(Domain::quad_cell(std::nan(""), 5), 0u);
 }
 
