@@ -145,9 +145,10 @@ private:
     nlohmann::json m_settings;
     StudyReference m_reference;
     std::optional<OutputSet> m_tables;  // rank 0's
-    // This rank's probes by oracle, seed and rays: the cells of the other budgets search from
-    // the same start (radiosity/budget_search.h). Only what this rank solved or read is here,
-    // which changes how long a cell takes, never its result.
+    // The probes this rank has solved, by oracle, seed and rays: the cells of the other budgets
+    // search from the same start (radiosity/budget_search.h). Which cells a rank solved changes
+    // how long a cell takes, never its result. Not filled from the cells a resumed study reads
+    // back: those may come from another build, whose solves need not give these bits.
     std::map<std::tuple<std::string, std::uint64_t, std::uint64_t>, KnownProbes> m_known;
 };
 
@@ -166,12 +167,7 @@ std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
     rule.settings = m_settings;
     rule.redo_other_settings = m_options.redo_other_settings;
     CellNotes notes(m_progress, where(index) + ": ");
-    std::optional<CellResult> cell = read_previous_cell<CellResult>(cell_file(t), rule, notes);
-    if (cell) {
-        KnownProbes& known = m_known[{cell->oracle, cell->seed, cell->rays}];
-        for (const BudgetProbe& p : cell->probes) known[p.epsilon] = p.leaves;
-    }
-    return cell;
+    return read_previous_cell<CellResult>(cell_file(t), rule, notes);
 }
 
 // Every file a cell writes, for the checks before any cell is computed.
