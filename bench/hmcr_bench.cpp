@@ -6,7 +6,7 @@
 // 1 would mean refinement, sampling and deposits cost nothing. Every ray of those rows refines;
 // then `power` and `kl` on both scenes at the default refine share, the solve users run (a
 // refining pass, then the frozen pass), against the floor of all its rays (--default-share runs
-// those rows alone and prints their table only).
+// those rows alone).
 //
 // Then the scaling study (bench/scaling.h), each point in a process of its own so that its peak
 // memory is its own. Every row, both kinds, goes to --results (bench/results.json), and the
@@ -133,8 +133,7 @@ int main(int argc, char** argv) {
     std::vector<nlohmann::json> rows;
     if (!default_share_only) rows = run_oracle_rows();
     for (nlohmann::json& row : run_default_share_rows()) rows.push_back(row);
-    if (default_share_only) return 0;  // the table only
-    if (!scaling.empty()) {
+    if (!scaling.empty() && !default_share_only) {
         const std::filesystem::path plot_data =
             std::filesystem::path(results.empty() ? "." : results).parent_path() /
             "scaling_plot_data.json";
