@@ -227,6 +227,8 @@ namespace {
 
 // A group this large splits its children's descents between threads.
 constexpr std::size_t kParallelRays = 2048;
+// How many groups ahead refine_links loads a group's first link from the link cache.
+constexpr std::size_t kAhead = 4;
 
 // What every descent of one (receiver patch, source patch) group shares: the grouped queries,
 // where each one's receiver goes, and the pair's patch data.
@@ -336,10 +338,26 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
         if (t == 0 || keyed[t].key != keyed[t - 1].key) group_start.push_back(t);
     }
     group_start.push_back(keyed.size());
+    // The link cache's set of a group's first link, (receiver root, source root), loaded a few
+    // groups before that link is decided: with more patch pairs than a thread's front table
+    // holds, a batch's groups are mostly pairs whose sets are far in memory.
+    const bool prefetch = ctx.cache && ctx.oracle.uses_lines() && !ctx.clusters;
+    auto made_root = [&](SideRef s) {  // a back's root is not made here, only looked for
+        return s.side() == kFront ? &h.root(s.patch()) : h.back_root(s.patch());
+    };
+    auto prefetch_group = [&](std::size_t g) {
+        const LinkQuery& q = grouped[group_start[g]];
+        const Element *i = made_root(q.receiver), *j = made_root(q.source);
+        if (i && j) ctx.cache->prefetch(i, j);
+    };
     tbb::enumerable_thread_specific<RefinementCounters> local;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, group_start.size() - 1, 1), [&](auto r) {
         RefinementCounters& c = local.local();
+        for (std::size_t g = r.begin(); prefetch && g < std::min(r.end(), r.begin() + kAhead); ++g) {
+            prefetch_group(g);
+        }
         for (std::size_t g = r.begin(); g < r.end(); ++g) {
+            if (prefetch && g + kAhead < r.end()) prefetch_group(g + kAhead);
             const std::size_t first = group_start[g], n = group_start[g + 1] - first;
             const LinkQuery& q = grouped[first];
             const Descent d{grouped, buffers.receivers.data(),
