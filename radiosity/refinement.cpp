@@ -338,10 +338,11 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
         if (t == 0 || keyed[t].key != keyed[t - 1].key) group_start.push_back(t);
     }
     group_start.push_back(keyed.size());
-    // The link cache's set of a group's first link, (receiver root, source root), loaded a few
-    // groups before that link is decided: with more patch pairs than a thread's front table
-    // holds, a batch's groups are mostly pairs whose sets are far in memory.
-    const bool prefetch = ctx.cache && ctx.oracle.uses_lines() && !ctx.clusters;
+    // The link cache's set of a group's first link between patches, (receiver root, source
+    // root), loaded a few groups before that link is decided (with clusters, after the cluster
+    // links above it): with more patch pairs than a thread's front table holds, a batch's
+    // groups are mostly pairs whose sets are far in memory.
+    const bool prefetch = ctx.cache && ctx.oracle.uses_lines();
     auto made_root = [&](SideRef s) {  // a back's root is not made here, only looked for
         return s.side() == kFront ? &h.root(s.patch()) : h.back_root(s.patch());
     };
