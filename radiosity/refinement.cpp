@@ -256,6 +256,13 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
         }
         if (ctx.clusters && !on_i) ctx.clusters->open_above(d.rays[index[0]].source.value);
         Element* const children = h.subdivide(*e);
+        // The children's links come next: their cache sets load while the rays are sorted among
+        // the children (all four, whose counts are not known yet).
+        if (ctx.cache && ctx.oracle.uses_lines()) {
+            for (std::size_t k = 0; k < 4; ++k) {
+                ctx.cache->prefetch(on_i ? &children[k] : i, on_i ? j : &children[k]);
+            }
+        }
         const bool quad = h.patch(*e).is_quad();
         std::array<std::size_t, 4> count{};
         for (std::size_t t = 0; t < n; ++t) {
@@ -273,13 +280,6 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
         for (std::size_t k = 0; k < 4; ++k) start[k + 1] = start[k] + count[k];
         std::array<std::size_t, 4> next{start[0], start[1], start[2], start[3]};
         for (std::size_t t = 0; t < n; ++t) scratch[next[child[t]]++] = index[t];
-        // The children's links are decided one after another; their cache sets load meanwhile.
-        if (ctx.cache && ctx.oracle.uses_lines()) {
-            for (std::size_t k = 0; k < 4; ++k) {
-                if (count[k] == 0) continue;
-                ctx.cache->prefetch(on_i ? &children[k] : i, on_i ? j : &children[k]);
-            }
-        }
         auto child_descent = [&](std::size_t k, RefinementCounters& c) {
             if (count[k] == 0) return;
             Element* ck = &children[k];
