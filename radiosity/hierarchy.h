@@ -58,6 +58,10 @@ public:
         return m_back_roots.empty() ? nullptr
                                     : m_back_roots[patch].load(std::memory_order_acquire);
     }
+    // A side's root if it exists yet: looked for, never made.
+    const Element* made_root(std::size_t patch, std::uint8_t side) const {
+        return side == kFront ? &m_roots[patch] : back_root(patch);
+    }
 
     bool can_subdivide(const Element& e) const {
         return e.area > m_min_area && e.id.depth < m_limits.max_depth;

@@ -258,7 +258,7 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
         Element* const children = h.subdivide(*e);
         // The children's links come next: their cache sets load while the rays are sorted among
         // the children (all four, whose counts are not known yet).
-        if (ctx.cache && ctx.oracle.uses_lines()) {
+        if (ctx.cache) {
             for (std::size_t k = 0; k < 4; ++k) {
                 ctx.cache->prefetch(on_i ? &children[k] : i, on_i ? j : &children[k]);
             }
@@ -342,23 +342,22 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
     // root), loaded a few groups before that link is decided (with clusters, after the cluster
     // links above it): with more patch pairs than a thread's front table holds, a batch's
     // groups are mostly pairs whose sets are far in memory.
-    const bool prefetch = ctx.cache && ctx.oracle.uses_lines();
-    auto made_root = [&](SideRef s) {  // a back's root is not made here, only looked for
-        return s.side() == kFront ? &h.root(s.patch()) : h.back_root(s.patch());
-    };
     auto prefetch_group = [&](std::size_t g) {
         const LinkQuery& q = grouped[group_start[g]];
-        const Element *i = made_root(q.receiver), *j = made_root(q.source);
+        const Element* i = h.made_root(q.receiver.patch(), q.receiver.side());
+        const Element* j = h.made_root(q.source.patch(), q.source.side());
         if (i && j) ctx.cache->prefetch(i, j);
     };
     tbb::enumerable_thread_specific<RefinementCounters> local;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, group_start.size() - 1, 1), [&](auto r) {
         RefinementCounters& c = local.local();
-        for (std::size_t g = r.begin(); prefetch && g < std::min(r.end(), r.begin() + kAhead); ++g) {
-            prefetch_group(g);
+        if (ctx.cache) {
+            for (std::size_t g = r.begin(); g < std::min(r.end(), r.begin() + kAhead); ++g) {
+                prefetch_group(g);
+            }
         }
         for (std::size_t g = r.begin(); g < r.end(); ++g) {
-            if (prefetch && g + kAhead < r.end()) prefetch_group(g + kAhead);
+            if (ctx.cache && g + kAhead < r.end()) prefetch_group(g + kAhead);
             const std::size_t first = group_start[g], n = group_start[g + 1] - first;
             const LinkQuery& q = grouped[first];
             const Descent d{grouped, buffers.receivers.data(),

@@ -25,7 +25,8 @@ struct RefinementContext {
     double threshold = 0;  // epsilon * Phi_max: a link is accepted when its value is below
     int lines = 10;        // N_s
     std::uint64_t seed = 0;
-    LinkCache* cache = nullptr;  // geometric factors of line-based oracles; none: recompute
+    // The line-based oracles' geometric factors (never power's); none: recomputed every time.
+    LinkCache* cache = nullptr;
     // A fixed mesh's leaves: deposit on the leaf at the hit, ask no oracle; none: refine.
     const LeafIndex* fixed_leaves = nullptr;
     LinkWeight link_weight = LinkWeight::unshot;  // w_ij from the source's Delta B or B

@@ -118,7 +118,7 @@ ViewImportance solve_view_importance(const PatchSet& patches, const EmbreeScene&
     for (std::size_t p = 0; p < h.patch_count(); ++p) {
         for (std::uint8_t side : {kFront, kBack}) {
             if (side == kBack && !patches.two_sided(p)) continue;
-            const Element* root = side == kFront ? &h.root(p) : h.back_root(p);
+            const Element* root = h.made_root(p, side);
             const Rgb rho = patches.material(p, side).reflectance;
             const Rgb k = root ? root->radiosity : Rgb::Zero();
             const double a = patches.patches[p].area;
