@@ -11,6 +11,7 @@
 #include <limits>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "radiosity/line_sampler.h"
@@ -188,6 +189,14 @@ void split_cluster(const RefinementContext& ctx, Element*& i, Element*& j, const
     if (!is_cluster(*i)) j = &ctx.hierarchy.root(q.source.patch(), q.source.side());
 }
 
+// The descents refine a mesh; a fixed mesh's receivers are fixed_receiver's.
+void require_refining(const RefinementContext& ctx, const char* caller) {
+    if (ctx.fixed_leaves) {
+        throw std::logic_error(std::string(caller) + " on a fixed mesh: its receivers are "
+                                                     "fixed_receiver's");
+    }
+}
+
 }  // namespace
 
 Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& q) {
@@ -199,7 +208,7 @@ Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& q) {
 
 Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
                      RefinementCounters& counters) {
-    if (ctx.fixed_leaves) return fixed_receiver(ctx, query);
+    require_refining(ctx, "refine_link");
     Hierarchy& h = ctx.hierarchy;
     const Vec2 y_uv = query.y_uv.cast<double>(), x_uv = query.x_uv.cast<double>();
     Element* i = &h.root(query.receiver.patch(), query.receiver.side());
@@ -304,9 +313,7 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
 void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queries,
                   std::span<Element*> receivers, RefinementCounters& counters,
                   DescentScratch& buffers) {
-    if (ctx.fixed_leaves) {
-        throw std::logic_error("refine_links on a fixed mesh: its receivers are fixed_receiver's");
-    }
+    require_refining(ctx, "refine_links");
     Hierarchy& h = ctx.hierarchy;
     // Grouped by (receiver side, source side), each group's queries copied together so that
     // its descent reads a compact block.

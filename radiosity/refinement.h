@@ -73,14 +73,13 @@ struct LinkQuery {
 // Descends from (root of the receiver side, root of the source side), subdividing the larger
 // element of a refused link towards the hit point y (receiver) or the ray origin x (source). One ray at
 // a time from the roots, as docs/design.md §3 states it: the reference refine_links is tested
-// against.
+// against. For a refining mesh only, as refine_links (std::logic_error on a fixed one).
 Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
                      RefinementCounters& counters);
 
 // On a fixed mesh (ctx.fixed_leaves) the receiver is the mesh's leaf at the hit: the cluster
 // leaf holding the side hit, or the side's leaf containing the hit point. It decides nothing and
-// reads no element's power, so a frozen pass calls it as each ray is traced; refine_link answers
-// with it on a fixed mesh.
+// reads no element's power, so a frozen pass calls it as each ray is traced.
 Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& query);
 
 // refine_links' buffers, kept by the caller between calls.

@@ -8,12 +8,14 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "common/error.h"
 #include "meshes/scene.h"
 #include "oracles/registry.h"
 #include "rays/embree_scene.h"
+#include "radiosity/leaf_index.h"
 #include "radiosity/refinement.h"
 #include "rays/rng.h"
 #include "tests/support/plugins.h"
@@ -122,6 +124,30 @@ TEST_P(GroupedDescent, TrianglesEndWhereOneRayDescentsEnd) {
     std::vector<TestPolygon> sphere = inward_icosphere(1, 1.0, Rgb::Constant(0.5));
     sphere.front().emission = Rgb::Constant(1);
     expect_same_as_one_ray_descents(make_patch_mesh(sphere));
+}
+
+// A fixed mesh's receivers are fixed_receiver's: a descent asked on one is a programming
+// error, not a silent refinement of a frozen mesh (with threshold 0 every link would be refused).
+TEST(Descents, RefuseAFixedMesh) {
+    const auto h = lit_hierarchy(load_scene("cornell").mesh);
+    const EmbreeScene scene(h->patch_set().patches);
+    const LeafIndex leaves(*h);
+    const RefinementContext ctx{.hierarchy = *h,
+                                .oracle = find_named(oracle_registry(), "power"),
+                                .scene = scene,
+                                .threshold = 0,
+                                .fixed_leaves = &leaves};
+    const std::vector<ElementId> before = element_ids(*h);
+    const std::vector<LinkQuery> queries = queries_for(*h, 100);
+    std::vector<Element*> receivers(queries.size(), nullptr);
+    RefinementCounters counters;
+    DescentScratch scratch;
+    EXPECT_THROW(refine_link(ctx, queries.front(), counters), std::logic_error);
+    EXPECT_THROW(refine_links(ctx, queries, receivers, counters, scratch), std::logic_error);
+    EXPECT_EQ(element_ids(*h), before);
+    for (const LinkQuery& q : queries) {
+        EXPECT_EQ(&fixed_receiver(ctx, q), &h->root(q.receiver.patch()));  // unsplit: the root
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Oracles, GroupedDescent, testing::ValuesIn(test::oracle_name_list()),
