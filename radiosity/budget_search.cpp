@@ -42,7 +42,7 @@ private:
 
     const PatchMesh& m_mesh;
     SolverOptions m_options;
-    std::shared_ptr<const EmbreeScene> m_scene;  // the probes' (they solve the same patches)
+    ShootingSetup m_shooting;  // the probes' (they solve the same patches)
     BudgetOptions m_budget;
     Progress& m_progress;
     const Ranks& m_ranks;
@@ -67,9 +67,9 @@ std::size_t Search::probe(double x) {
         }
     }
     m_progress.stage(fmt::format("budget probe {}", k));
-    Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks, m_scene);
+    Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks, m_shooting);
     m_options.view_importance = sol.options.view_importance;  // the same for every probe
-    m_scene = sol.scene;                                      // and the same scene
+    m_shooting = sol.shooting;                                // and the same scene and buffers
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
     if (m_known) (*m_known)[o.epsilon] = p.leaves;
     record(x, p);

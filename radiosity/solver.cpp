@@ -171,13 +171,14 @@ StartMesh frozen_like(PatchSet patches, const SolverOptions& o, const Solution& 
 }
 
 // make_mesh() builds the mesh once the options are validated and the threads limited, and the
-// scene before its roots when `scene` is none; the solve shoots in `scene` (building it, as
-// part of its setup, if make_mesh did not).
+// scene before its roots when shooting.scene is none; the solve shoots in shooting.scene
+// (building it, as part of its setup, if make_mesh did not) through shooting.buffers (made
+// here if none).
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
 // refining pass's, so that its rays are not theirs again.
 Solution solve_with(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
-                    std::shared_ptr<const EmbreeScene>& scene_slot, Progress& progress,
-                    const Ranks& ranks, std::uint32_t first_iteration = 0) {
+                    ShootingSetup& shooting, Progress& progress, const Ranks& ranks,
+                    std::uint32_t first_iteration = 0) {
     validate(options);
     const auto start = Clock::now();
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
@@ -201,8 +202,8 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     st.max_emitted_power = patches.max_emitted_power;
     st.patches = patches.patches.size();
     for (std::size_t i = 0; i < st.patches; ++i) st.two_sided_patches += patches.two_sided(i);
-    if (!scene_slot) scene_slot = std::make_shared<const EmbreeScene>(patches);
-    const EmbreeScene& scene = *scene_slot;
+    if (!shooting.scene) shooting.scene = std::make_shared<const EmbreeScene>(patches);
+    const EmbreeScene& scene = *shooting.scene;
     const bool fixed_mesh = mesh.frozen;
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
@@ -261,7 +262,8 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     RaySchedule schedule(options.rays, options.stop * emitted);
     Rgb unshot = h.unshot_power();
     // The cap only guards against a scene that never converges; stop ends real solves.
-    ShootingBuffers buffers;
+    if (!shooting.buffers) shooting.buffers = std::make_shared<ShootingBuffers>();
+    ShootingBuffers& buffers = *shooting.buffers;
     IterationSources sources, shifted, zero_sources;
     for (std::uint32_t k = 0; channel_sum(unshot) >= options.stop * emitted && k < 10'000; ++k) {
         const std::uint32_t it = first_iteration + k;
@@ -365,27 +367,28 @@ private:
 }  // namespace
 
 Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& progress,
-                     const Ranks& ranks, std::shared_ptr<const EmbreeScene> scene) {
+                     const Ranks& ranks, ShootingSetup shooting) {
     SolverOptions o = options;
     o.rays = refining_rays(options);
     o.refine_share = 1;
     Solution sol = solve_with(
-        o, [&] { return roots_of(std::move(patches), o, scene); }, scene, progress, ranks);
+        o, [&] { return roots_of(std::move(patches), o, shooting.scene); }, shooting, progress,
+        ranks);
     auto importance = std::move(sol.options.view_importance);
     sol.options = options;
     sol.options.view_importance = std::move(importance);
-    sol.scene = std::move(scene);
+    sol.shooting = std::move(shooting);
     return sol;
 }
 
 Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     const SolverOptions& options = refined.options;
-    std::shared_ptr<const EmbreeScene> scene = std::move(refined.scene);
+    ShootingSetup shooting = std::move(refined.shooting);
     if (!refines_then_freezes(options)) return refined;
     SolverOptions o = options;
     o.rays = options.rays - refining_rays(options);
     Solution sol = solve_with(
-        o, [&] { return frozen_in_place(refined); }, scene, progress, ranks,
+        o, [&] { return frozen_in_place(refined); }, shooting, progress, ranks,
         std::uint32_t(refined.stats.iterations.size()));
     sol.options = options;
     SolveStats& st = sol.stats;
@@ -421,10 +424,10 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& pr
 Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress,
                const Ranks& ranks) {
     if (!refines_then_freezes(options)) {
-        std::shared_ptr<const EmbreeScene> scene;
+        ShootingSetup shooting;
         return solve_with(
-            options, [&] { return roots_of(std::move(patches), options, scene); }, scene, progress,
-            ranks);
+            options, [&] { return roots_of(std::move(patches), options, shooting.scene); },
+            shooting, progress, ranks);
     }
     validate(options);
     const double share = double(refining_rays(options)) / double(options.rays);
@@ -434,10 +437,10 @@ Solution solve(PatchSet patches, const SolverOptions& options, Progress& progres
 
 Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Solution& shape,
                        Progress& progress) {
-    std::shared_ptr<const EmbreeScene> scene;
+    ShootingSetup shooting;
     return solve_with(
-        options, [&] { return frozen_like(build_patch_set(mesh), options, shape, scene); }, scene,
-        progress, Ranks::single());
+        options, [&] { return frozen_like(build_patch_set(mesh), options, shape, shooting.scene); },
+        shooting, progress, Ranks::single());
 }
 
 }  // namespace hmcr

@@ -15,7 +15,17 @@
 
 namespace hmcr {
 
-class EmbreeScene;  // rays/embree_scene.h
+class EmbreeScene;      // rays/embree_scene.h
+class ShootingBuffers;  // radiosity/shooting.h
+
+// What a refining pass (refine_pass) leaves for its frozen pass and for a budget search's next
+// probe, which shoot in the same patches: the Embree scene, and the buffers the rays' batches
+// pass through, whose pages are then faulted in once (each pass allocating its own took a
+// quarter of the page faults of a Cornell box solve).
+struct ShootingSetup {
+    std::shared_ptr<const EmbreeScene> scene;
+    std::shared_ptr<ShootingBuffers> buffers;
+};
 
 struct IterationRecord {
     std::uint64_t rays = 0;
@@ -73,9 +83,9 @@ struct Solution {
     std::unique_ptr<ClusterTree> clusters;
     SolverOptions options;
     SolveStats stats;
-    // The Embree scene a refining pass (refine_pass) shot in, kept for its frozen pass and a
-    // budget search's next probe; a finished solve holds none.
-    std::shared_ptr<const EmbreeScene> scene;
+    // A refining pass's, kept for its frozen pass and a budget search's next probe; a finished
+    // solve holds none.
+    ShootingSetup shooting;
 
     // Each side value's (2 * patch + side) cluster leaf, -1 where the side's own leaves are in
     // the mesh; empty without clustering. What the output calls ClusterId.
@@ -97,11 +107,11 @@ Solution solve(PatchSet patches, const SolverOptions& options,
 // share of the rays, what a budget search probes; freeze_pass solves its leaves again from
 // scratch with the rest and returns that solution, with the refining pass's mesh statistics and
 // both passes' iterations. With refine_share 1 they are solve() and the identity. refine_pass
-// shoots in `scene` when given (these patches' scene: a budget search's earlier probe's) and
-// keeps its scene in the solution; freeze_pass shoots in that and lets it go.
+// shoots with `shooting` where given (a budget search's earlier probe's, of these patches) and
+// keeps its own in the solution; freeze_pass shoots with that and lets it go.
 Solution refine_pass(PatchSet patches, const SolverOptions& options,
                      Progress& progress = no_progress(), const Ranks& ranks = Ranks::single(),
-                     std::shared_ptr<const EmbreeScene> scene = nullptr);
+                     ShootingSetup shooting = {});
 Solution freeze_pass(Solution refined, Progress& progress = no_progress(),
                      const Ranks& ranks = Ranks::single());
 

@@ -123,29 +123,36 @@ TEST(RefineThenFreeze, TheFrozenPassForgetsTheRefiningPassValues) {
     }
 }
 
-// Embree's scene is built once for both passes, and for every probe of a budget search: the
-// refining pass keeps it for the frozen pass, and no finished solve holds on to it (it is most
-// of a large scene's memory after the patches).
+// Embree's scene and the shooting buffers are made once for both passes, and for every probe of
+// a budget search: the refining pass keeps them for the frozen pass, and no finished solve holds
+// on to them (the scene is most of a large scene's memory after the patches).
 TEST(RefineThenFreeze, ThePassesShareOneSceneAndAFinishedSolveLetsItGo) {
     const Scene scene = load_scene("cornell");
     const SolverOptions o = options("kl", 100'000, 0.5);
     Solution refined = refine_pass(build_patch_set(scene.mesh), o);
-    ASSERT_TRUE(refined.scene);
-    const std::weak_ptr<const EmbreeScene> kept = refined.scene;
-    // A probe given the scene shoots in it and hands it on.
+    ASSERT_TRUE(refined.shooting.scene);
+    ASSERT_TRUE(refined.shooting.buffers);
+    const std::weak_ptr<const EmbreeScene> kept = refined.shooting.scene;
+    const std::weak_ptr<ShootingBuffers> kept_buffers = refined.shooting.buffers;
+    // A probe given them shoots with them and hands them on.
     const Solution probe = refine_pass(build_patch_set(scene.mesh), o, no_progress(),
-                                       Ranks::single(), refined.scene);
-    EXPECT_EQ(probe.scene, refined.scene);
+                                       Ranks::single(), refined.shooting);
+    EXPECT_EQ(probe.shooting.scene, refined.shooting.scene);
+    EXPECT_EQ(probe.shooting.buffers, refined.shooting.buffers);
     const Solution frozen = freeze_pass(std::move(refined));
-    EXPECT_FALSE(frozen.scene);
+    const auto holds_none = [](const Solution& s) {
+        return !s.shooting.scene && !s.shooting.buffers;
+    };
+    EXPECT_TRUE(holds_none(frozen));
     EXPECT_EQ(kept.use_count(), 1);  // the probe's alone
-    EXPECT_FALSE(solve(scene.mesh, o).scene);
-    EXPECT_FALSE(solve(scene.mesh, options("kl", 100'000, 1)).scene);
-    EXPECT_FALSE(solve_on_mesh(scene.mesh, o, frozen).scene);
+    EXPECT_EQ(kept_buffers.use_count(), 1);
+    EXPECT_TRUE(holds_none(solve(scene.mesh, o)));
+    EXPECT_TRUE(holds_none(solve(scene.mesh, options("kl", 100'000, 1))));
+    EXPECT_TRUE(holds_none(solve_on_mesh(scene.mesh, o, frozen)));
     const BudgetOptions budget{.leaves = 1000, .tolerance = 0.05};
     for (const double share : {0.5, 1.0}) {
-        EXPECT_FALSE(
-            solve_for_budget(scene.mesh, options("power", 100'000, share), budget).solution.scene);
+        EXPECT_TRUE(holds_none(
+            solve_for_budget(scene.mesh, options("power", 100'000, share), budget).solution));
     }
 }
 
