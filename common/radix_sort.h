@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/populated.h"
+
 namespace hmcr {
 
 template <class Value>
@@ -21,7 +23,7 @@ template <class Value>
 void radix_sort(std::vector<Keyed<Value>>& records, std::vector<Keyed<Value>>& scratch) {
     std::uint64_t max_key = 0;
     for (const auto& r : records) max_key = std::max(max_key, r.key);
-    scratch.resize(records.size());
+    resize_populated(scratch, records.size());
     for (std::uint64_t shift = 0; shift < std::uint64_t(std::bit_width(max_key)); shift += 8) {
         std::array<std::size_t, 257> start{};
         for (const auto& r : records) ++start[((r.key >> shift) & 0xff) + 1];

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "common/populated.h"
 #include "radiosity/line_sampler.h"
 #include "rays/rng.h"
 
@@ -319,17 +320,17 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
     // its descent reads a compact block.
     const std::uint64_t sides = 2 * std::uint64_t(h.patch_count());
     auto& keyed = buffers.keyed;
-    keyed.resize(queries.size());
+    resize_populated(keyed, queries.size());
     Keyed<std::uint32_t>* const keys = keyed.data();
     tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t k) {
         keys[k] = {queries[k].receiver.value * sides + queries[k].source.value, std::uint32_t(k)};
     });
     radix_sort(keyed, buffers.keyed_scratch);  // swaps the two vectors: `keys` may be stale
-    buffers.grouped.resize(queries.size());
-    buffers.receivers.resize(queries.size());
-    buffers.index.resize(queries.size());
-    buffers.scratch.resize(queries.size());
-    buffers.child.resize(queries.size());
+    resize_populated(buffers.grouped, queries.size());
+    resize_populated(buffers.receivers, queries.size());
+    resize_populated(buffers.index, queries.size());
+    resize_populated(buffers.scratch, queries.size());
+    resize_populated(buffers.child, queries.size());
     LinkQuery* const grouped = buffers.grouped.data();
     std::uint32_t* const index = buffers.index.data();
     std::uint32_t* const scratch = buffers.scratch.data();

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/populated.h"
 #include "radiosity/control_variate.h"
 #include "rays/element_sampler.h"
 #include "rays/rng.h"
@@ -215,10 +216,10 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     const bool fixed = ctx.fixed_leaves != nullptr;  // no descents: no queries
     for (Batch& b : batches) {
         b.rays.resize(batch_rays);
-        b.hits.resize(batch_rays);
-        b.deposits.resize(batch_rays);
-        b.queries.resize(fixed ? 0 : batch_rays);
-        b.receivers.resize(batch_rays);
+        resize_populated(b.hits, batch_rays);
+        resize_populated(b.deposits, batch_rays);
+        resize_populated(b.queries, fixed ? 0 : batch_rays);
+        resize_populated(b.receivers, batch_rays);
         if (!overlap) break;
     }
     const Hierarchy& h = ctx.hierarchy;

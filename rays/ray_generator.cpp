@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "common/populated.h"
 #include "rays/ray_generator.h"
 #include "rays/rng.h"
 #include "rays/sampling.h"
@@ -286,13 +287,13 @@ RegionMap region_map(const Patch& patch) {
 
 void GeneratedRays::resize(std::size_t n) {
     for (int k = 0; k < 3; ++k) {
-        origin[k].resize(n);
-        direction[k].resize(n);
+        resize_populated(origin[k], n);
+        resize_populated(direction[k], n);
     }
-    region.resize(n);
-    u.resize(n);
-    v.resize(n);
-    dither.resize(n);
+    resize_populated(region, n);
+    resize_populated(u, n);
+    resize_populated(v, n);
+    resize_populated(dither, n);
 }
 
 RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
