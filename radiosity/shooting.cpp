@@ -41,7 +41,7 @@ void IterationSources::finish() {
 }
 
 void IterationSources::rebuild(const Hierarchy& h, const Rgb& beta) {
-    clear();
+    clear(h.leaf_count());
     const std::vector<Patch>& ps = h.patch_set().patches;
     patches = &ps;
     h.for_each_leaf([&](const Element& e) {
@@ -54,8 +54,8 @@ void IterationSources::rebuild(const Hierarchy& h, const Rgb& beta) {
 
 // The backs of one-sided patches and the background's faces, whole, at radiosity 0.
 void IterationSources::rebuild(const ZeroSurfaces& zero, const Rgb& shot) {
-    clear();
     const std::vector<Patch>& ps = zero.patches;
+    clear(zero.backs.size() + (ps.size() - zero.scene_patches));
     patches = &ps;
     for (const std::uint32_t p : zero.backs) {
         add({0, 0, 1, p, region_map(ps[p]), kBack}, ps[p].area, shot);
@@ -66,10 +66,15 @@ void IterationSources::rebuild(const ZeroSurfaces& zero, const Rgb& shot) {
     finish();
 }
 
-void IterationSources::clear() {
+void IterationSources::clear(std::size_t most) {
     regions.clear();
     share.clear();
     m_weights.clear();
+    // Room for every leaf at once: grown a leaf at a time, a vector doubles and holds its old
+    // block and the new one together while it copies (at a million leaves, tens of MB).
+    regions.reserve(most);
+    share.reserve(most);
+    m_weights.reserve(most);
     total = 0;
     max_share = Rgb::Zero();
 }

@@ -38,7 +38,7 @@ struct IterationSources {
     void rebuild(const ZeroSurfaces& zero, const Rgb& shot);
 
 private:
-    void clear();
+    void clear(std::size_t most);  // and makes room for `most` sources
     void add(const RayRegion& region, double area, const Rgb& shot);
     void finish();
 
