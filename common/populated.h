@@ -1,7 +1,7 @@
 // Growing a buffer whose every element is about to be written, with its new pages faulted in by
-// one system call instead of one page fault a page as the elements are written. On the virtual
-// machine hmcr is measured on, a page fault costs about 11 µs a 4 KiB page and populating a
-// block about 5.5 µs a page (docs/performance.md): the batch buffers of a solve are a few MB.
+// one system call instead of one page fault a page as the elements are written: on the virtual
+// machine hmcr is measured on, that halves what the kernel spends on them (docs/performance.md,
+// "Where the time goes").
 #pragma once
 
 #include <cstddef>

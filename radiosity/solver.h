@@ -20,8 +20,7 @@ class ShootingBuffers;  // radiosity/shooting.h
 
 // What a refining pass (refine_pass) leaves for its frozen pass and for a budget search's next
 // probe, which shoot in the same patches: the Embree scene, and the buffers the rays' batches
-// pass through, whose pages are then faulted in once (each pass allocating its own took a
-// quarter of the page faults of a Cornell box solve).
+// pass through, whose pages are then faulted in once a solve instead of once a pass.
 struct ShootingSetup {
     std::shared_ptr<const EmbreeScene> scene;
     std::shared_ptr<ShootingBuffers> buffers;
