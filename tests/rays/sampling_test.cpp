@@ -138,6 +138,34 @@ TEST(Sampling, AliasTablePicksEachIndexWithItsWeightsShare) {
     }
 }
 
+// Exactly, from the bins: index i is drawn with probability (keep_i + the sum over the bins j
+// aliased to i of 1 - keep_j) / n, which must be its weight's share up to rounding. Tables of
+// several sizes, each built in the storage of the one before (larger, then smaller).
+TEST(Sampling, AliasTableBinsHoldEachIndexsShareExactly) {
+    Rng rng(9, 0);
+    AliasTable table(std::vector<double>{1.0});
+    for (const std::size_t n : {1, 2, 7, 1000, 33, 4096, 5}) {
+        std::vector<double> weights(n);
+        for (double& w : weights) w = rng.uniform() < 0.2 ? 0.0 : std::pow(10.0, 4 * rng.uniform());
+        weights[n / 2] += 1;  // at least one positive weight
+        table.assign(weights);
+        ASSERT_EQ(table.size(), n);
+        const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
+        std::vector<double> mass(n, 0.0);
+        for (std::size_t j = 0; j < n; ++j) {
+            const AliasTable::Bin& b = table.bins()[j];
+            ASSERT_GE(b.keep, 0.0);
+            ASSERT_LE(b.keep, 1.0);
+            ASSERT_LT(b.alias, n);
+            mass[j] += b.keep;
+            mass[b.alias] += 1 - b.keep;
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            EXPECT_NEAR(mass[i] / double(n), weights[i] / total, 1e-12) << "n " << n << " index " << i;
+        }
+    }
+}
+
 // cos_sin_turn against the library's cos and sin, over the whole turn and at its quarter
 // boundaries.
 TEST(Sampling, CosSinTurnIsAccurateToTheLastPlaces) {
