@@ -4,7 +4,6 @@
 #pragma once
 
 #include <array>
-#include <cmath>
 #include <cstdint>
 
 #include "common/types.h"
@@ -12,6 +11,14 @@
 namespace hmcr {
 
 using Quanta = std::array<std::int64_t, 3>;  // per channel
+
+// std::int64_t(std::floor(x)) for |x| < 2^63, without a call into the maths library (hmcr is
+// built for the baseline x86-64, which has no rounding instruction): truncated toward zero, then
+// one down if that is above x. At |x| >= 2^52 x is an integer and the truncation exact.
+inline std::int64_t floor_to_int(double x) {
+    const auto t = std::int64_t(x);
+    return double(t) > x ? t - 1 : t;
+}
 
 // The quantum of one iteration, per channel, sized so that the iteration's whole power fits in
 // 2^61 quanta: no sum can overflow (rounding adds less than a quantum per ray), and a ray
@@ -30,7 +37,7 @@ struct PowerQuantum {
     Quanta count(const Rgb& power, double dither) const {
         Quanta q{};
         for (int c = 0; c < 3; ++c) {
-            q[c] = watts[c] > 0 ? std::int64_t(std::floor(power[c] / watts[c] + dither)) : 0;
+            q[c] = watts[c] > 0 ? floor_to_int(power[c] / watts[c] + dither) : 0;
         }
         return q;
     }

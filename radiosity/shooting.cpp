@@ -243,10 +243,13 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             const double dither = b.rays.dither[k];
             const Quanta quanta = out.quantum.count(power, dither);
             add(chunk.shot, quanta);
-            b.deposits[k] = {};
+            // Written field by field, once: a deposit built whole and copied in was read back
+            // from the stack before its halves were stored there, a stall on every ray.
+            ShootingBuffers::Impl::Deposit& deposit = b.deposits[k];
             const BatchHit& hit = b.hits[k];
             const std::optional<std::uint8_t> side = hit_side(ps, hit, b.rays, k);
             if (!side) {
+                deposit.lands = false;  // all that is read of it
                 add(hit.patch == BatchHit::kNoHit ? chunk.escaped : chunk.back_face, quanta);
                 continue;
             }
@@ -264,7 +267,9 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             }
             // docs/design.md §3: received += rho * Phi (over A when pushed).
             const Rgb& rho = ps.material(hit.patch, *side).reflectance;
-            b.deposits[k] = {out.quantum.count(rho * power, dither), quanta, true};
+            deposit.quanta = out.quantum.count(rho * power, dither);
+            deposit.incident = quanta;
+            deposit.lands = true;
         }
     };
     auto trace = [&](Batch& b, std::uint64_t first) {
