@@ -249,7 +249,22 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
                               hn::Mul(z, out_normal[k3]));
         }
 
-        const std::size_t count = std::min(lanes, n - k);
+        const std::size_t o = offset + k;
+        if (n - k >= lanes) {  // a whole vector: stored as it is, the doubles rounded to floats
+            const hn::Rebind<float, D> df;
+            const hn::Rebind<std::uint32_t, DU> du32;
+            for (int k3 = 0; k3 < 3; ++k3) {
+                hn::StoreU(hn::DemoteTo(df, origin[k3]), df, out->origin[k3].data() + o);
+                hn::StoreU(hn::DemoteTo(df, dir[k3]), df, out->direction[k3].data() + o);
+            }
+            hn::StoreU(hn::DemoteTo(df, u), df, out->u.data() + o);
+            hn::StoreU(hn::DemoteTo(df, v), df, out->v.data() + o);
+            hn::StoreU(dither, d, out->dither.data() + o);
+            hn::StoreU(hn::TruncateTo(du32, hn::BitCast(du, region)), du32, out->region.data() + o);
+            continue;
+        }
+        // The last rays, fewer than a vector: lane by lane.
+        const std::size_t count = n - k;
         for (int k3 = 0; k3 < 3; ++k3) {
             hn::Store(origin[k3], d, lane_doubles[k3]);
             hn::Store(dir[k3], d, lane_doubles[3 + k3]);
@@ -258,7 +273,6 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
         hn::Store(v, d, lane_doubles[7]);
         hn::Store(dither, d, lane_doubles[8]);
         hn::Store(hn::BitCast(du, region), du, lane_region);
-        const std::size_t o = offset + k;
         for (std::size_t l = 0; l < count; ++l) {
             for (int k3 = 0; k3 < 3; ++k3) {
                 out->origin[k3][o + l] = float(lane_doubles[k3][l]);
