@@ -71,7 +71,7 @@ void IterationSources::clear(std::size_t most) {
     share.clear();
     m_weights.clear();
     // Room for every leaf at once: grown a leaf at a time, a vector doubles and holds its old
-    // block and the new one together while it copies (at a million leaves, tens of MB).
+    // block and the new one together while it copies, which raised a large scene's peak.
     regions.reserve(most);
     share.reserve(most);
     m_weights.reserve(most);
