@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <iterator>
 #include <vector>
 
 namespace hmcr {
@@ -13,13 +14,22 @@ namespace hmcr {
 // advice only: a kernel without it leaves them to be faulted in as before.
 void populate_pages(void* p, std::size_t bytes);
 
+// v.reserve(n), the new block (if it needs one) populated before v's elements move into it.
+template <class T>
+void reserve_populated(std::vector<T>& v, std::size_t n) {
+    if (n <= v.capacity()) return;
+    std::vector<T> grown;
+    grown.reserve(n);
+    populate_pages(grown.data(), n * sizeof(T));
+    grown.insert(grown.end(), std::make_move_iterator(v.begin()),
+                 std::make_move_iterator(v.end()));
+    v.swap(grown);
+}
+
 // v.resize(n), its new block (if it needs one) populated first.
 template <class T>
 void resize_populated(std::vector<T>& v, std::size_t n) {
-    if (n > v.capacity()) {
-        v.reserve(n);
-        populate_pages(v.data(), n * sizeof(T));
-    }
+    reserve_populated(v, n);
     v.resize(n);
 }
 

@@ -311,6 +311,16 @@ void descend(const RefinementContext& ctx, const Descent& d, Element* i, Element
 
 }  // namespace
 
+void DescentScratch::reserve(std::size_t queries) {
+    reserve_populated(keyed, queries);
+    reserve_populated(keyed_scratch, queries);
+    reserve_populated(grouped, queries);
+    reserve_populated(receivers, queries);
+    reserve_populated(index, queries);
+    reserve_populated(scratch, queries);
+    reserve_populated(child, queries);
+}
+
 void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queries,
                   std::span<Element*> receivers, RefinementCounters& counters,
                   DescentScratch& buffers) {

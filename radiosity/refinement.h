@@ -90,6 +90,10 @@ struct DescentScratch {
     std::vector<std::uint32_t> index, scratch;
     std::vector<std::uint8_t> child;                 // of each index entry, at one level
     std::vector<std::size_t> group_start;  // where each (receiver, source) group begins
+
+    // Room for `queries` at once: the rays that land vary from batch to batch, and buffers
+    // sized to each batch would be moved to a larger block whenever one landed more.
+    void reserve(std::size_t queries);
 };
 
 // The same descent for many rays at once, each ending on the element refine_link would give

@@ -227,6 +227,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
         resize_populated(b.receivers, batch_rays);
         if (!overlap) break;
     }
+    if (!fixed) buffers->impl().descent.reserve(batch_rays);
     const Hierarchy& h = ctx.hierarchy;
     const PatchSet& ps = h.patch_set();
     // One chunk of rays through the stages: generated, traced, then each ray's power and fate

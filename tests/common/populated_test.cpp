@@ -30,6 +30,23 @@ TEST(Populated, ResizeKeepsTheElementsAndZeroesTheNewOnes) {
     EXPECT_TRUE(empty.empty());
 }
 
+// Reserving keeps the elements in a block of at least the room asked for, and a reserve within
+// the capacity keeps the block.
+TEST(Populated, ReserveKeepsTheElements) {
+    std::vector<std::uint32_t> v(777);
+    std::iota(v.begin(), v.end(), 3);
+    reserve_populated(v, 100'000);
+    ASSERT_EQ(v.size(), 777u);
+    EXPECT_GE(v.capacity(), 100'000u);
+    for (std::size_t k = 0; k < v.size(); ++k) ASSERT_EQ(v[k], k + 3) << k;
+    const std::uint32_t* block = v.data();
+    reserve_populated(v, 50'000);
+    resize_populated(v, 100'000);
+    EXPECT_EQ(v.data(), block);
+    EXPECT_EQ(v[776], 779u);
+    EXPECT_EQ(v[777], 0u);
+}
+
 // Populating is advice: any range, page-aligned or not, empty or within one page, leaves the
 // memory's contents as they were.
 TEST(Populated, PopulatingLeavesTheContents) {

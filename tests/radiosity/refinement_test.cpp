@@ -150,6 +150,40 @@ TEST(Descents, RefuseAFixedMesh) {
     }
 }
 
+// Scratch reserved for a batch keeps its blocks while the batches' landed rays grow up to it
+// (the radix sort swaps its two blocks, so they are compared as a set); without the reserve
+// each larger batch moves them.
+TEST(Descents, ReservedScratchKeepsItsBlocks) {
+    const auto h = lit_hierarchy(load_scene("cornell").mesh);
+    const EmbreeScene scene(h->patch_set().patches);
+    const Oracle& oracle = find_named(oracle_registry(), "power");
+    const RefinementContext ctx{.hierarchy = *h,
+                                .oracle = oracle,
+                                .scene = scene,
+                                .threshold = kEpsilonScale * oracle.default_epsilon() *
+                                             h->patch_set().max_emitted_power};
+    const std::vector<LinkQuery> queries = queries_for(*h, 3000);
+    DescentScratch scratch;
+    auto blocks = [&] {
+        std::vector<const void*> b{scratch.keyed.data(), scratch.keyed_scratch.data(),
+                                   scratch.grouped.data(), scratch.receivers.data(),
+                                   scratch.index.data(),   scratch.scratch.data(),
+                                   scratch.child.data()};
+        std::sort(b.begin(), b.end());
+        return b;
+    };
+    scratch.reserve(queries.size());
+    const std::vector<const void*> reserved = blocks();
+    EXPECT_EQ(std::count(reserved.begin(), reserved.end(), nullptr), 0);
+    for (const std::size_t n : {1000, 2000, 2999, 3000}) {
+        std::vector<Element*> receivers(n, nullptr);
+        RefinementCounters counters;
+        refine_links(ctx, {queries.data(), n}, receivers, counters, scratch);
+        EXPECT_EQ(std::count(receivers.begin(), receivers.end(), nullptr), 0) << n;
+        EXPECT_EQ(blocks(), reserved) << n;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Oracles, GroupedDescent, testing::ValuesIn(test::oracle_name_list()),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
