@@ -24,7 +24,8 @@ void note_exposure_given(const CLI::App& cmd, ExposureChoice& choice) {
 
 void check_exposure(const ExposureChoice& choice) {
     if (choice.given && !(choice.exposure > 0 && std::isfinite(choice.exposure))) {
-        throw InputError(fmt::format("exposure must be a positive number, got {}", choice.exposure));
+        throw InputError(
+            fmt::format("exposure must be a positive number, got {}", choice.exposure));
     }
 }
 

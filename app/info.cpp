@@ -5,9 +5,9 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "app/scene_input.h"
 #include "app/command.h"
 #include "app/count.h"
+#include "app/scene_input.h"
 #include "app/terminal_progress.h"
 #include "common/stopwatch.h"
 #include "information/back_sides.h"
@@ -59,13 +59,16 @@ std::string state_count(const InfoTarget& t) {
 }
 
 void print_table(const InfoTarget& t, const InformationMeasures& m, double seconds) {
-    fmt::print("{}: {}, {} {} lines, {} rays ({} open), {:.1f} s; bits, +- one standard "
-               "error, bias to subtract (1/n extrapolation)\n",
-               t.label, state_count(t), m.lines, line_method_name(m.method), m.samples,
-               m.samples_open, seconds);
+    fmt::print(
+        "{}: {}, {} {} lines, {} rays ({} open), {:.1f} s; bits, +- one standard "
+        "error, bias to subtract (1/n extrapolation)\n",
+        t.label, state_count(t), m.lines, line_method_name(m.method), m.samples, m.samples_open,
+        seconds);
     const std::pair<const char*, InformationMeasures::Value> rows[] = {
-        {"H_P   positional entropy", m.h_p},     {"H_S   visibility entropy", m.h_s},
-        {"I_S   mutual information", m.i_s},     {"H_J   joint entropy", m.h_j},
+        {"H_P   positional entropy", m.h_p},
+        {"H_S   visibility entropy", m.h_s},
+        {"I_S   mutual information", m.i_s},
+        {"H_J   joint entropy", m.h_j},
         {"I^c_S continuous mutual information", m.i_cs},
         {"I^c_S - I_S discretisation error", m.discretisation_error}};
     for (const auto& [name, v] : rows) {
@@ -89,10 +92,11 @@ void warn_assumptions(const InformationMeasures& m, double open, const InfoTarge
     const std::size_t states = t.states.states.patches.size();
     const char* noun = t.states.backs ? "sides" : "patches";
     if (open > 0.01) {
-        fmt::print(stderr,
-                   "hmcr: warning: {:.1f}% of the rays leave the scene or hit a one-sided back; the "
-                   "measures assume a closed scene (rows of F summing to 1)\n",
-                   100 * open);
+        fmt::print(
+            stderr,
+            "hmcr: warning: {:.1f}% of the rays leave the scene or hit a one-sided back; the "
+            "measures assume a closed scene (rows of F summing to 1)\n",
+            100 * open);
     }
     if (std::abs(m.i_s.bias) > m.i_s.standard_error) {
         fmt::print(stderr,

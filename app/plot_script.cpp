@@ -1,11 +1,10 @@
 #include "app/plot_script.h"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <fmt/format.h>
 
 #include <cerrno>
 #include <cstdlib>
@@ -73,15 +72,17 @@ std::string why_no_plots(const std::optional<std::string>& python, const fs::pat
         const std::string tried = chosen != nullptr && *chosen != '\0'
                                       ? fmt::format("${} ({})", kPythonVariable, chosen)
                                       : std::string("python3, /usr/bin/python3");
-        return fmt::format("no Python with matplotlib ({}): install it (Debian: "
-                           "python3-matplotlib), {}",
-                           tried, then);
+        return fmt::format(
+            "no Python with matplotlib ({}): install it (Debian: "
+            "python3-matplotlib), {}",
+            tried, then);
     }
     std::error_code ec;
     if (!fs::is_regular_file(plot_script(), ec)) {
-        return fmt::format("no plotting script {}: set {} to the folder holding scripts/ and "
-                           "scenes/ (an install's share/hmcr), {}",
-                           plot_script().string(), kDataDirVariable, then);
+        return fmt::format(
+            "no plotting script {}: set {} to the folder holding scripts/ and "
+            "scenes/ (an install's share/hmcr), {}",
+            plot_script().string(), kDataDirVariable, then);
     }
     return "";
 }

@@ -1,17 +1,18 @@
 // `hmcr reference SCENE -o DIR`: a converged reference (studies/reference.h).
+#include "studies/reference.h"
+
 #include <fmt/core.h>
 
 #include <memory>
 #include <optional>
 
-#include "app/scene_input.h"
 #include "app/command.h"
 #include "app/run_summary.h"
+#include "app/scene_input.h"
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
 #include "common/output_paths.h"
 #include "common/output_set.h"
-#include "studies/reference.h"
 
 namespace hmcr {
 namespace {
@@ -42,17 +43,18 @@ int run_reference(ReferenceArgs& a, const std::string& command_line) {
     if (!Ranks::world().root()) return 0;  // every rank holds the reference; rank 0 writes it
     RunTimings timings;
     timings.total_seconds = ref.seconds;
-    write_reference(*out, dir, scene, ref, a.options,
-                    run_summary(scene, ref.solution, timings, command_line,
-                                (dir / "reference.vtp").string()));
+    write_reference(
+        *out, dir, scene, ref, a.options,
+        run_summary(scene, ref.solution, timings, command_line, (dir / "reference.vtp").string()));
     out->commit();
     if (!a.quiet) {
         const Rgb& bias = ref.truncation.relative;
-        fmt::print("{}: reference of {} elements, 2 x {} rays, {:.1f} s; seeds differ by {:.4f} "
-                   "(object-space relative L2); stopping left out {:.2g}/{:.2g}/{:.2g} of the "
-                   "reflected light (R/G/B) -> {}\n",
-                   scene.name, ref.solution.stats.leaves, a.options.solver.rays, ref.seconds,
-                   ref.object_error.relative_l2, bias[0], bias[1], bias[2], dir.string());
+        fmt::print(
+            "{}: reference of {} elements, 2 x {} rays, {:.1f} s; seeds differ by {:.4f} "
+            "(object-space relative L2); stopping left out {:.2g}/{:.2g}/{:.2g} of the "
+            "reflected light (R/G/B) -> {}\n",
+            scene.name, ref.solution.stats.leaves, a.options.solver.rays, ref.seconds,
+            ref.object_error.relative_l2, bias[0], bias[1], bias[2], dir.string());
     }
     return 0;
 }

@@ -57,7 +57,6 @@ nlohmann::json budget_json(const BudgetOptions& budget, const std::vector<Budget
             {"probes", nlohmann::json(probes)}};
 }
 
-
 nlohmann::json run_summary(const Scene& scene, const Solution& solution, const RunTimings& timings,
                            const std::string& command_line, const std::string& output) {
     const SolveStats& st = solution.stats;

@@ -21,5 +21,4 @@ nlohmann::json run_summary(const Scene& scene, const Solution& solution, const R
 // The summary's "budget": the target, the tolerance and every probe of the search.
 nlohmann::json budget_json(const BudgetOptions& budget, const std::vector<BudgetProbe>& probes);
 
-
 }  // namespace hmcr

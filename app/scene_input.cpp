@@ -29,8 +29,10 @@ void add_view_flag(CLI::App& command, std::string& view) {
     command.add_option_function<std::string>(
         "--view",
         [&view](const std::string& name) {
-            if (name.empty()) throw InputError("view: the name is empty (without --view: the "
-                                               "scene's first view)");
+            if (name.empty())
+                throw InputError(
+                    "view: the name is empty (without --view: the "
+                    "scene's first view)");
             view = name;
         },
         "view name (default: the scene's first)");

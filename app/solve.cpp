@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
-#include "app/scene_input.h"
 #include "app/command.h"
 #include "app/count.h"
 #include "app/run_summary.h"
+#include "app/scene_input.h"
 #include "app/solver_flags.h"
 #include "app/terminal_progress.h"
 #include "common/atomic_file.h"
@@ -47,20 +47,21 @@ fs::path output_path(const SolveArgs& args, const Scene& scene) {
     return vtp;
 }
 
-void report(const Scene& scene, const Solution& sol, const RunTimings& timings,
-            const fs::path& vtp, const fs::path& json, const fs::path& pvsm) {
+void report(const Scene& scene, const Solution& sol, const RunTimings& timings, const fs::path& vtp,
+            const fs::path& json, const fs::path& pvsm) {
     if (sol.stats.back_face_fraction() > 0.01) {
-        fmt::print(stderr, "hmcr: warning: {:.1f}% of the shot power hit back faces "
-                           "(flipped normals?)\n", 100 * sol.stats.back_face_fraction());
+        fmt::print(stderr,
+                   "hmcr: warning: {:.1f}% of the shot power hit back faces "
+                   "(flipped normals?)\n",
+                   100 * sol.stats.back_face_fraction());
     }
     const std::string refining =
         sol.stats.refining_rays > 0 && sol.stats.refining_rays < sol.stats.rays
             ? fmt::format(" ({} refining the mesh, the rest frozen)", sol.stats.refining_rays)
             : "";
-    fmt::print("{}: {} leaves, {} rays{} in {} iterations, {:.2f} s -> {}, {} and {}\n",
-               scene.name, sol.stats.leaves, sol.stats.rays, refining,
-               sol.stats.iterations.size(), timings.total_seconds, vtp.string(), json.string(),
-               pvsm.string());
+    fmt::print("{}: {} leaves, {} rays{} in {} iterations, {:.2f} s -> {}, {} and {}\n", scene.name,
+               sol.stats.leaves, sol.stats.rays, refining, sol.stats.iterations.size(),
+               timings.total_seconds, vtp.string(), json.string(), pvsm.string());
 }
 
 // The budget options are checked whether or not a budget is given: a bad value is a mistake
@@ -76,8 +77,8 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     const auto start = std::chrono::steady_clock::now();
     check_budget(args, *args.flags.command);
     if (!(args.crease_degrees >= 0 && args.crease_degrees <= 180)) {
-        throw InputError(fmt::format("crease-angle must be in [0, 180] degrees, got {}",
-                                     args.crease_degrees));
+        throw InputError(
+            fmt::format("crease-angle must be in [0, 180] degrees, got {}", args.crease_degrees));
     }
     const ProgressMode mode = progress_mode_for(args.progress, args.quiet);
     Scene scene = load_scene_reporting(args.scene, args.quiet, SceneUse::solve, args.scene_flags);
@@ -126,7 +127,8 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
 
 Command solve_command(CLI::App& app, const std::string& command_line) {
     auto args = std::make_shared<SolveArgs>();
-    auto* cmd = app.add_subcommand("solve", "solve a scene and write its Gouraud mesh (.vtp + .json + .pvsm)");
+    auto* cmd = app.add_subcommand(
+        "solve", "solve a scene and write its Gouraud mesh (.vtp + .json + .pvsm)");
     cmd->add_option("scene", args->scene, "bundled scene name, scene .json, or .obj or .mgf file")
         ->required();
     cmd->add_option("-o,--output", args->output,
@@ -134,16 +136,19 @@ Command solve_command(CLI::App& app, const std::string& command_line) {
                     "(.pvsm) go beside it");
     args->flags = add_solver_flags(*cmd, args->options);
     add_scene_flags(*cmd, args->scene_flags);
-    cmd->add_option("--budget", args->budget.leaves,
-                    "target leaf count: epsilon is searched for on a log scale (each probe a full solve)")
+    cmd->add_option(
+           "--budget", args->budget.leaves,
+           "target leaf count: epsilon is searched for on a log scale (each probe a full solve)")
         ->transform(count_notation());
     cmd->add_option("--budget-tolerance", args->budget.tolerance,
                     "accepted relative distance to the budget")
         ->capture_default_str();
-    cmd->add_option("--crease-angle", args->crease_degrees,
-                    "patches meeting at a smaller angle are blended in the Gouraud values (degrees)")
+    cmd->add_option(
+           "--crease-angle", args->crease_degrees,
+           "patches meeting at a smaller angle are blended in the Gouraud values (degrees)")
         ->capture_default_str();
-    cmd->add_option("--progress", args->progress, "auto, bar, lines or none")->capture_default_str();
+    cmd->add_option("--progress", args->progress, "auto, bar, lines or none")
+        ->capture_default_str();
     cmd->add_flag("-q,--quiet", args->quiet, "print only errors");
     return {cmd, [args, command_line] { return run_solve(*args, command_line); }, true};
 }

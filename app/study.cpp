@@ -1,8 +1,11 @@
 // `hmcr study SCENE --reference DIR -o OUT` and one of
-//   --budgets N,N [--oracles LIST]   a meshing study: every oracle x budget x seed (studies/study.h)
+//   --budgets N,N [--oracles LIST]   a meshing study: every oracle x budget x seed
+//   (studies/study.h)
 //   --samplers LIST [--spp N,N]      a sampling study: every pixel sampler x seed at each mean spp
 //                                    (studies/sampling_study.h)
 // Either takes a radiosity reference (`hmcr reference`) or a traced one (`hmcr trace-reference`).
+#include "studies/study.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -22,7 +25,6 @@
 #include "common/output_paths.h"
 #include "common/ranks.h"
 #include "studies/sampling_study.h"
-#include "studies/study.h"
 #include "trace/criteria/registry.h"
 
 namespace hmcr {
@@ -34,8 +36,8 @@ struct StudyArgs {
     SolverFlags flags;
     std::string budgets;  // "2000,5000,19000"
     std::string oracles = "all";
-    std::string mesh_rays;  // empty: the default, kMeshRaysPerCellRay x the cell's rays
-    std::string samplers;   // "all" or "uniform,srhe"; given: a sampling study
+    std::string mesh_rays;    // empty: the default, kMeshRaysPerCellRay x the cell's rays
+    std::string samplers;     // "all" or "uniform,srhe"; given: a sampling study
     std::string spps = "60";  // "16,32,60,128"
     SamplingStudyOptions sampling;
     TraceFlags trace_flags;
@@ -123,8 +125,9 @@ int run_sampling_study_command(StudyArgs& a) {
 
 int run_meshing_study(StudyArgs& a) {
     if (a.options.rays_per_leaf > 0 && a.flags.command->count("--rays") > 0) {
-        throw InputError("give --rays-per-leaf or --rays, not both: --rays-per-leaf sets every "
-                         "cell's rays (R x its budget)");
+        throw InputError(
+            "give --rays-per-leaf or --rays, not both: --rays-per-leaf sets every "
+            "cell's rays (R x its budget)");
     }
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
     a.options.oracles = named_list(oracle_registry(), split_commas(a.oracles));
@@ -150,8 +153,9 @@ int run_meshing_study(StudyArgs& a) {
 int run_study_command(StudyArgs& a) {
     const bool sampling = !a.samplers.empty();
     if (sampling == !a.budgets.empty()) {
-        throw InputError("study: give --budgets (a meshing study) or --samplers (a sampling study)" +
-                         std::string(sampling ? ", not both" : ""));
+        throw InputError(
+            "study: give --budgets (a meshing study) or --samplers (a sampling study)" +
+            std::string(sampling ? ", not both" : ""));
     }
     refuse_mixed_flags(a, sampling);
     return sampling ? run_sampling_study_command(a) : run_meshing_study(a);
@@ -194,9 +198,9 @@ void add_sampling_flags(CLI::App& cmd, StudyArgs& a) {
                    "mean samples per pixel of every image, or several, comma-separated: a cell "
                    "per spp value")
         ->capture_default_str();
-    add_trace_flags(cmd, a.sampling.trace, a.trace_flags,
-                    {"sampler", "spp", "seed", "threshold", "width", "threads",
-                     "criterion-exposure"});
+    add_trace_flags(
+        cmd, a.sampling.trace, a.trace_flags,
+        {"sampler", "spp", "seed", "threshold", "width", "threads", "criterion-exposure"});
     cmd.add_flag("--display-criteria", a.sampling.display_criteria,
                  "adaptive samplers judge display values: radiance at the reference's exposure "
                  "of the view, clamped to [0, 1]");
@@ -222,8 +226,9 @@ Command study_command(CLI::App& app) {
         ->transform(count_notation())
         ->capture_default_str();
     add_scene_flags(*cmd, a->scene_flags);
-    cmd->add_option("--threads", o.solver.threads, "worker threads, 0 = all cores; results do "
-                                                   "not depend on it")
+    cmd->add_option("--threads", o.solver.threads,
+                    "worker threads, 0 = all cores; results do "
+                    "not depend on it")
         ->capture_default_str();
     cmd->add_option("-o,--output", o.output, "output folder (rerunning resumes)")->required();
     cmd->add_flag("--redo", o.redo_other_settings,

@@ -9,9 +9,9 @@
 #include "app/command.h"
 #include "app/exposure.h"
 #include "app/run_summary.h"
+#include "app/scene_input.h"
 #include "app/terminal_progress.h"
 #include "app/trace_flags.h"
-#include "app/scene_input.h"
 #include "common/atomic_file.h"
 #include "common/memory.h"
 #include "common/output_paths.h"
@@ -134,7 +134,8 @@ int run_trace(TraceArgs& a, const std::string& command_line) {
 Command trace_command(CLI::App& app, const std::string& command_line) {
     auto a = std::make_shared<TraceArgs>();
     auto* cmd = app.add_subcommand("trace", "path-trace a view, with adaptive supersampling");
-    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj or .mgf file")->required();
+    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj or .mgf file")
+        ->required();
     add_view_flag(*cmd, a->view);
     cmd->add_option("-o,--output", a->output,
                     "8-bit sRGB .png; IMAGE-density.png and IMAGE.json go beside it")

@@ -23,7 +23,9 @@ void add_sampling_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
         // Resolved here, where the name is read.
         cmd.add_option_function<std::string>(
                "--sampler",
-               [&o](const std::string& name) { o.sampler = &find_named(criterion_registry(), name); },
+               [&o](const std::string& name) {
+                   o.sampler = &find_named(criterion_registry(), name);
+               },
                "pixel sampling criterion (`hmcr samplers`)")
             ->default_str(std::string(o.sampler->name()));
     }
@@ -76,8 +78,7 @@ void add_trace_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
                        "worker threads, 0 = all cores; images do not depend on it")
             ->capture_default_str();
     }
-    cmd.add_option("--bounces", o.path.max_depth, "most bounces of a path")
-        ->capture_default_str();
+    cmd.add_option("--bounces", o.path.max_depth, "most bounces of a path")->capture_default_str();
     cmd.add_option("--estimator", flags.estimator,
                    "mis (next-event + BSDF sampling), nee or bsdf alone")
         ->capture_default_str();

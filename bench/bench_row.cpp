@@ -1,8 +1,7 @@
 #include "bench/bench_row.h"
 
-#include <tbb/global_control.h>
-
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <exception>
@@ -67,27 +66,28 @@ RowResult run_row(const RowSpec& spec) {
 }
 
 nlohmann::json to_json(const RowResult& r) {
-    return {{"scene", r.spec.scene},
-            {"oracle", r.spec.oracle},
-            {"epsilon", std::isnan(r.spec.epsilon) ? nlohmann::json() : nlohmann::json(r.spec.epsilon)},
-            {"threads", r.spec.threads},
-            {"refine_share", r.spec.refine_share},
-            {"patches", r.patches},
-            {"leaves", r.leaves},
-            {"elements", r.elements},
-            {"rays", r.rays},
-            {"oracle_evaluations", r.oracle_evaluations},
-            {"lines_cast", r.lines_cast},
-            {"cache_hit_rate", r.cache_hit_rate},
-            {"oracle_cpu_seconds", r.oracle_seconds},
-            {"load_seconds", r.load_seconds},
-            {"setup_seconds", r.setup_seconds},
-            {"seconds", r.shooting_seconds},
-            {"floor_seconds", r.floor_seconds},
-            {"x_floor", r.floor_x()},
-            {"rays_per_second", double(r.rays) / r.shooting_seconds},
-            {"solver_bytes", r.solver_bytes},
-            {"peak_bytes", r.peak_bytes}};
+    return {
+        {"scene", r.spec.scene},
+        {"oracle", r.spec.oracle},
+        {"epsilon", std::isnan(r.spec.epsilon) ? nlohmann::json() : nlohmann::json(r.spec.epsilon)},
+        {"threads", r.spec.threads},
+        {"refine_share", r.spec.refine_share},
+        {"patches", r.patches},
+        {"leaves", r.leaves},
+        {"elements", r.elements},
+        {"rays", r.rays},
+        {"oracle_evaluations", r.oracle_evaluations},
+        {"lines_cast", r.lines_cast},
+        {"cache_hit_rate", r.cache_hit_rate},
+        {"oracle_cpu_seconds", r.oracle_seconds},
+        {"load_seconds", r.load_seconds},
+        {"setup_seconds", r.setup_seconds},
+        {"seconds", r.shooting_seconds},
+        {"floor_seconds", r.floor_seconds},
+        {"x_floor", r.floor_x()},
+        {"rays_per_second", double(r.rays) / r.shooting_seconds},
+        {"solver_bytes", r.solver_bytes},
+        {"peak_bytes", r.peak_bytes}};
 }
 
 int run_row_process(char** args) {

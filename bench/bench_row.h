@@ -3,9 +3,8 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace hmcr::bench {
 
@@ -15,7 +14,7 @@ inline constexpr std::uint64_t kBenchRays = 2'684'000;
 struct RowSpec {
     std::string scene;  // a bundled name or a mesh/scene file
     std::string oracle;
-    double epsilon;     // NaN: the oracle's default
+    double epsilon;  // NaN: the oracle's default
     std::uint64_t rays;
     int threads;
     // 1: every ray refines (what the oracle rows bound); below 1, the solve users run: a

@@ -4,11 +4,11 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <vector>
 #include <chrono>
 #include <functional>
 #include <memory>
 #include <utility>
+#include <vector>
 
 #include "rays/element_sampler.h"
 #include "rays/rng.h"
@@ -75,9 +75,10 @@ std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint
     std::vector<Ray> rays(n);
     Rng rng(1234, stream);
     for (Ray& r : rays) {
-        const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), rng.uniform() * total);
-        const Patch& p = set.patches[std::min<std::size_t>(it - cumulative.begin(),
-                                                           set.patches.size() - 1)];
+        const auto it =
+            std::upper_bound(cumulative.begin(), cumulative.end(), rng.uniform() * total);
+        const Patch& p =
+            set.patches[std::min<std::size_t>(it - cumulative.begin(), set.patches.size() - 1)];
         r.origin = p.point(sample_element(p, Domain::root(), rng.uniform(), rng.uniform()));
         r.direction = sample_cosine_hemisphere(p.normal, rng.uniform(), rng.uniform());
     }

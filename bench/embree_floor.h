@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "rays/embree_scene.h"
 #include "radiosity/hierarchy.h"
+#include "rays/embree_scene.h"
 
 namespace hmcr::bench {
 

@@ -35,13 +35,13 @@ namespace {
 
 // Epsilon for about 19,000 leaves at kBenchRays, N_s = 10, seed 1 (bisection on log eps).
 const std::map<std::pair<std::string, std::string>, double> kEpsilon = {
-    {{"cornell", "power"}, 1.18e-06},   {{"cornell", "ks"}, 5.9e-03},
-    {{"cornell", "mi"}, 3.57e-08},      {{"cornell", "kl"}, 6.6e-07},
-    {{"cornell", "cs"}, 1.4e-06},       {{"cornell", "hl"}, 2.23e-07},
-    {{"cornell", "vt"}, 8.2e-05},       {{"cube-room", "power"}, 4.92e-05},
-    {{"cube-room", "ks"}, 5.38e-03},    {{"cube-room", "mi"}, 3.25e-08},
-    {{"cube-room", "kl"}, 4.08e-05},    {{"cube-room", "cs"}, 8.64e-05},
-    {{"cube-room", "hl"}, 1.14e-05},    {{"cube-room", "vt"}, 1.19e-04},
+    {{"cornell", "power"}, 1.18e-06}, {{"cornell", "ks"}, 5.9e-03},
+    {{"cornell", "mi"}, 3.57e-08},    {{"cornell", "kl"}, 6.6e-07},
+    {{"cornell", "cs"}, 1.4e-06},     {{"cornell", "hl"}, 2.23e-07},
+    {{"cornell", "vt"}, 8.2e-05},     {{"cube-room", "power"}, 4.92e-05},
+    {{"cube-room", "ks"}, 5.38e-03},  {{"cube-room", "mi"}, 3.25e-08},
+    {{"cube-room", "kl"}, 4.08e-05},  {{"cube-room", "cs"}, 8.64e-05},
+    {{"cube-room", "hl"}, 1.14e-05},  {{"cube-room", "vt"}, 1.19e-04},
 };
 
 void print_header() {
@@ -53,12 +53,12 @@ void print_header() {
 // Runs a row, prints its line of the table and returns its JSON row, labelled `study`.
 nlohmann::json run_and_print(const RowSpec& spec, const char* study) {
     const RowResult r = run_row(spec);
-    fmt::print("{:>9} {:>6} {:>7} {:>7} {:>9.2f} {:>9.3g} {:>9.3f} {:>7.2f} {:>10} "
-               "{:>9} {:>9.3f} {:>8.0f}\n",
-               spec.scene, spec.oracle, spec.threads, r.leaves, r.shooting_seconds,
-               double(r.rays) / r.shooting_seconds, r.floor_seconds, r.floor_x(),
-               r.oracle_evaluations, r.lines_cast, r.cache_hit_rate,
-               double(r.solver_bytes) / (1 << 20));
+    fmt::print(
+        "{:>9} {:>6} {:>7} {:>7} {:>9.2f} {:>9.3g} {:>9.3f} {:>7.2f} {:>10} "
+        "{:>9} {:>9.3f} {:>8.0f}\n",
+        spec.scene, spec.oracle, spec.threads, r.leaves, r.shooting_seconds,
+        double(r.rays) / r.shooting_seconds, r.floor_seconds, r.floor_x(), r.oracle_evaluations,
+        r.lines_cast, r.cache_hit_rate, double(r.solver_bytes) / (1 << 20));
     nlohmann::json row = to_json(r);
     row["study"] = study;
     return row;
@@ -108,8 +108,9 @@ int main(int argc, char** argv) {
     using namespace hmcr::bench;
     // A scaling point, run by the scaling study in a process of its own.
     if (argc == 7 && std::strcmp(argv[1], "--row") == 0) return run_row_process(argv + 2);
-    CLI::App app{"hmcr_bench: every oracle against the Embree floor, then the scaling study "
-                 "(docs/performance.md)"};
+    CLI::App app{
+        "hmcr_bench: every oracle against the Embree floor, then the scaling study "
+        "(docs/performance.md)"};
     std::string results, scaling;
     int cv_seeds = 0;
     bool default_share_only = false;
@@ -137,7 +138,8 @@ int main(int argc, char** argv) {
         const std::filesystem::path plot_data =
             std::filesystem::path(results.empty() ? "." : results).parent_path() /
             "scaling_plot_data.json";
-        for (nlohmann::json& row : run_scaling_study(argv[0], scaling, plot_data)) rows.push_back(row);
+        for (nlohmann::json& row : run_scaling_study(argv[0], scaling, plot_data))
+            rows.push_back(row);
     }
     if (!results.empty()) {
         hmcr::write_text_atomically(results, nlohmann::json{{"rows", rows}}.dump(2) + "\n");

@@ -1,10 +1,9 @@
 #include "bench/scaling.h"
 
+#include <fmt/format.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <fmt/format.h>
 
 #include <cmath>
 #include <functional>
@@ -47,7 +46,8 @@ nlohmann::json run_point(const std::string& self, const Point& p) {
     if (spawned != 0) throw std::runtime_error("cannot run " + self);
     std::string text;
     char buffer[4096];
-    for (ssize_t n; (n = read(out[0], buffer, sizeof buffer)) > 0;) text.append(buffer, std::size_t(n));
+    for (ssize_t n; (n = read(out[0], buffer, sizeof buffer)) > 0;)
+        text.append(buffer, std::size_t(n));
     close(out[0]);
     int status = 0;
     waitpid(pid, &status, 0);
@@ -71,16 +71,19 @@ nlohmann::json series(const std::vector<nlohmann::json>& rows, const std::string
                       const char* x, const std::function<double(const nlohmann::json&)>& y) {
     nlohmann::json points = nlohmann::json::array();
     for (const auto& r : rows) {
-        points.push_back({{"x", double(r[x])}, {"x_se", nullptr}, {"y", y(r)}, {"y_se", nullptr},
-                          {"n", 1}});
+        points.push_back(
+            {{"x", double(r[x])}, {"x_se", nullptr}, {"y", y(r)}, {"y_se", nullptr}, {"n", 1}});
     }
     return {{"name", name}, {"points", points}};
 }
 
 nlohmann::json panel(const std::string& title, const std::string& x_label,
                      const std::string& y_label, nlohmann::json series) {
-    return {{"type", "lines"}, {"title", title},   {"x_label", x_label},
-            {"y_label", y_label}, {"series", series}};
+    return {{"type", "lines"},
+            {"title", title},
+            {"x_label", x_label},
+            {"y_label", y_label},
+            {"series", series}};
 }
 
 }  // namespace
@@ -94,8 +97,8 @@ std::vector<nlohmann::json> run_scaling_study(const std::string& self,
         points.push_back({"patches", scene, kBenchRays, 2});
     }
     points.push_back({"patches", "office", kBenchRays, 2});
-    for (std::uint64_t rays : {std::uint64_t(1'000'000), std::uint64_t(10'000'000),
-                               std::uint64_t(100'000'000)}) {
+    for (std::uint64_t rays :
+         {std::uint64_t(1'000'000), std::uint64_t(10'000'000), std::uint64_t(100'000'000)}) {
         points.push_back({"rays", "office", rays, 2});
     }
     for (int threads : {1, 2}) {
@@ -108,11 +111,12 @@ std::vector<nlohmann::json> run_scaling_study(const std::string& self,
     std::vector<nlohmann::json> rows;
     for (const Point& p : points) {
         const nlohmann::json r = run_point(self, p);
-        fmt::print("{:>8} {:>9} {:>10} {:>7} {:>9} {:>8.2f} {:>8.2f} {:>9.2f} {:>9.3f} {:>7.2f} {:>8.0f}\n",
-                   p.study, int(r["patches"]), std::uint64_t(r["rays"]), p.threads, int(r["leaves"]),
-                   double(r["load_seconds"]), double(r["setup_seconds"]), double(r["seconds"]),
-                   double(r["floor_seconds"]), double(r["x_floor"]),
-                   double(r["peak_bytes"]) / 1e6);
+        fmt::print(
+            "{:>8} {:>9} {:>10} {:>7} {:>9} {:>8.2f} {:>8.2f} {:>9.2f} {:>9.3f} {:>7.2f} "
+            "{:>8.0f}\n",
+            p.study, int(r["patches"]), std::uint64_t(r["rays"]), p.threads, int(r["leaves"]),
+            double(r["load_seconds"]), double(r["setup_seconds"]), double(r["seconds"]),
+            double(r["floor_seconds"]), double(r["x_floor"]), double(r["peak_bytes"]) / 1e6);
         rows.push_back(r);
     }
     auto of = [&](const std::string& study) {
@@ -123,12 +127,12 @@ std::vector<nlohmann::json> run_scaling_study(const std::string& self,
         return out;
     };
     const auto by_patches = of("patches"), by_rays = of("rays"), by_threads = of("threads");
-    fmt::print("growth: rays/s ~ patches^{:.2f}, x floor ~ patches^{:.2f}; shooting s ~ rays^{:.2f}; "
-               "peak memory ~ elements^{:.2f} (patches study); 2-thread speed-up {:.2f}\n",
-               growth(by_patches, "patches", "rays_per_second"),
-               growth(by_patches, "patches", "x_floor"), growth(by_rays, "rays", "seconds"),
-               growth(by_patches, "elements", "peak_bytes"),
-               double(by_threads[0]["seconds"]) / double(by_threads[1]["seconds"]));
+    fmt::print(
+        "growth: rays/s ~ patches^{:.2f}, x floor ~ patches^{:.2f}; shooting s ~ rays^{:.2f}; "
+        "peak memory ~ elements^{:.2f} (patches study); 2-thread speed-up {:.2f}\n",
+        growth(by_patches, "patches", "rays_per_second"), growth(by_patches, "patches", "x_floor"),
+        growth(by_rays, "rays", "seconds"), growth(by_patches, "elements", "peak_bytes"),
+        double(by_threads[0]["seconds"]) / double(by_threads[1]["seconds"]));
     auto floor_rate = [](const nlohmann::json& r) {
         return double(r["rays"]) / double(r["floor_seconds"]);
     };
@@ -141,10 +145,11 @@ std::vector<nlohmann::json> run_scaling_study(const std::string& self,
         panel("against the floor", "patches", "x floor",
               {series(by_patches, "hmcr kl", "patches",
                       [](const auto& r) { return double(r["x_floor"]); })}),
-        panel("rays", "rays", "seconds",
-              {series(by_rays, "hmcr kl", "rays", [](const auto& r) { return double(r["seconds"]); }),
-               series(by_rays, "floor", "rays",
-                      [](const auto& r) { return double(r["floor_seconds"]); })}),
+        panel(
+            "rays", "rays", "seconds",
+            {series(by_rays, "hmcr kl", "rays", [](const auto& r) { return double(r["seconds"]); }),
+             series(by_rays, "floor", "rays",
+                    [](const auto& r) { return double(r["floor_seconds"]); })}),
         panel("memory", "leaves", "peak memory (MB)",
               {series(by_patches, "patches study", "leaves", peak_mb),
                series(by_rays, "rays study", "leaves", peak_mb)})};

@@ -37,8 +37,8 @@ std::string quote(std::string_view token);
 template <class Registry>
 const auto& find_named(const Registry& registry, std::string_view name) {
     if (const auto* plugin = registry.find(name)) return *plugin;
-    throw InputError("unknown " + registry.kind() + " " + quote(name) + " (valid: " +
-                     registry.names() + ")");
+    throw InputError("unknown " + registry.kind() + " " + quote(name) +
+                     " (valid: " + registry.names() + ")");
 }
 
 }  // namespace hmcr

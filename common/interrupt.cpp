@@ -21,7 +21,8 @@ extern "C" void on_signal(int signal) {
 }  // namespace
 
 Interrupted::Interrupted(int signal)
-    : std::runtime_error(std::string("interrupted by ") + (signal == SIGTERM ? "SIGTERM" : "SIGINT")),
+    : std::runtime_error(std::string("interrupted by ") +
+                         (signal == SIGTERM ? "SIGTERM" : "SIGINT")),
       m_signal(signal) {}
 
 void install_interrupt_handlers() {

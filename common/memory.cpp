@@ -45,10 +45,9 @@ std::string human_bytes(double bytes) {
 void require_memory(double bytes, const std::string& what, const std::string& remedy) {
     const double available = 0.75 * double(physical_memory_bytes());
     if (available > 0 && bytes > available) {
-        throw InputError(fmt::format("{} would need about {} of memory; this machine has {}{}{}",
-                                     what, human_bytes(bytes),
-                                     human_bytes(double(physical_memory_bytes())),
-                                     remedy.empty() ? "" : ": ", remedy));
+        throw InputError(fmt::format(
+            "{} would need about {} of memory; this machine has {}{}{}", what, human_bytes(bytes),
+            human_bytes(double(physical_memory_bytes())), remedy.empty() ? "" : ": ", remedy));
     }
 }
 

@@ -23,7 +23,8 @@ namespace fs = std::filesystem;
 // The file at `path` is the one open as `fd`: nobody removed it (and released it) between our
 // open and our lock.
 bool still_there(int fd, const fs::path& path) {
-    struct stat open_file {}, named {};
+    struct stat open_file {
+    }, named{};
     return ::fstat(fd, &open_file) == 0 && ::stat(path.c_str(), &named) == 0 &&
            open_file.st_dev == named.st_dev && open_file.st_ino == named.st_ino;
 }
@@ -49,7 +50,7 @@ OutputLock::OutputLock(const fs::path& output, bool is_folder)
             ::close(m_fd);
             m_fd = -1;
             lock_failed(output, "another hmcr run is writing it (its lock is " + m_file.string() +
-                                     "; wait for that run to end)");
+                                    "; wait for that run to end)");
         }
         if (still_there(m_fd, m_file)) return;
         ::close(m_fd);  // the holder released and removed it as we opened it: again

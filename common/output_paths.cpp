@@ -2,9 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <climits>
-
 #include <algorithm>
+#include <climits>
 
 #include "common/error.h"
 #include "common/file_names.h"
@@ -45,8 +44,8 @@ void check_output_file(const fs::path& file) {
         cannot_write(file, "it names a folder, not a file");
     }
     if (name > kMaxFileNameBytes) {
-        cannot_write(file, fmt::format("its name is {} bytes long, more than {}", name,
-                                       kMaxFileNameBytes));
+        cannot_write(
+            file, fmt::format("its name is {} bytes long, more than {}", name, kMaxFileNameBytes));
     }
     if (file.native().size() >= PATH_MAX) {
         cannot_write(file, fmt::format("its path is longer than {} bytes", PATH_MAX - 1));
@@ -72,8 +71,9 @@ void refuse_overwriting(const std::vector<fs::path>& outputs, const std::vector<
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         for (const fs::path& in : inputs) {
             if (same_file(outputs[i], in)) {
-                throw InputError(outputs[i].string(), "is an input of this command (" +
-                                                          in.string() + "); refusing to write over it");
+                throw InputError(
+                    outputs[i].string(),
+                    "is an input of this command (" + in.string() + "); refusing to write over it");
             }
         }
         for (std::size_t j = 0; j < i; ++j) {
@@ -86,8 +86,8 @@ void refuse_overwriting(const std::vector<fs::path>& outputs, const std::vector<
 
 void refuse_nested_dirs(const fs::path& output, const fs::path& input) {
     if (within(output, input) || within(input, output)) {
-        throw InputError(output.string(), "output folder is, holds or lies in the input folder " +
-                                              input.string());
+        throw InputError(output.string(),
+                         "output folder is, holds or lies in the input folder " + input.string());
     }
 }
 

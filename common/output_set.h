@@ -39,7 +39,7 @@ private:
     void abandon() noexcept;
 
     std::vector<std::filesystem::path> m_files, m_temps;  // a temp is empty until temp()
-    std::vector<std::filesystem::path> m_made_folders;  // outermost first
+    std::vector<std::filesystem::path> m_made_folders;    // outermost first
     std::vector<std::unique_ptr<OutputLock>> m_locks;
     bool m_committed = false;
 };

@@ -21,8 +21,7 @@ void reserve_populated(std::vector<T>& v, std::size_t n) {
     std::vector<T> grown;
     grown.reserve(n);
     populate_pages(grown.data(), n * sizeof(T));
-    grown.insert(grown.end(), std::make_move_iterator(v.begin()),
-                 std::make_move_iterator(v.end()));
+    grown.insert(grown.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
     v.swap(grown);
 }
 

@@ -52,8 +52,8 @@ void Ranks::sum(std::span<std::int64_t> values) const {
 
 void Ranks::sum(std::span<std::uint64_t> values) const {
     if (!m_mpi || values.empty()) return;
-    check(MPI_Allreduce(MPI_IN_PLACE, values.data(), count_of(values.size()), MPI_UINT64_T,
-                        MPI_SUM, MPI_COMM_WORLD),
+    check(MPI_Allreduce(MPI_IN_PLACE, values.data(), count_of(values.size()), MPI_UINT64_T, MPI_SUM,
+                        MPI_COMM_WORLD),
           "a sum");
 }
 
@@ -113,8 +113,7 @@ std::string Ranks::receive(int from, int tag) const {
     return bytes;
 }
 
-std::pair<int, std::string> Ranks::receive_any(int tag,
-                                               const std::function<void()>& idle) const {
+std::pair<int, std::string> Ranks::receive_any(int tag, const std::function<void()>& idle) const {
     for (;;) {
         int ready = 0;
         MPI_Status status;

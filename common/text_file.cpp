@@ -33,7 +33,8 @@ std::string plain_message(const std::exception& e) {
     constexpr std::string_view kLastRead = "last read: '";
     const std::size_t token = out.find(kLastRead);
     if (token == std::string::npos) return out;
-    return out.substr(0, token) + "last read: " + quote(std::string_view(out).substr(token + kLastRead.size()));
+    return out.substr(0, token) +
+           "last read: " + quote(std::string_view(out).substr(token + kLastRead.size()));
 }
 
 // The text as nlohmann's parser reads it, one character at a time, telling how far it has read:
@@ -123,8 +124,8 @@ std::string read_text_file(const fs::path& path, std::uint64_t max_bytes) {
     while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
         text.append(chunk, std::size_t(in.gcount()));
         if (text.size() > max_bytes) {
-            throw InputError(path.string(), "grew past the limit of " +
-                                                std::to_string(max_bytes) + " bytes while read");
+            throw InputError(path.string(), "grew past the limit of " + std::to_string(max_bytes) +
+                                                " bytes while read");
         }
     }
     if (in.bad()) throw InputError(path.string(), "cannot be read");

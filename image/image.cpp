@@ -3,10 +3,9 @@
 #include <fmt/format.h>
 #include <png.h>
 
-#include <csetjmp>
-
 #include <bit>
 #include <cmath>
+#include <csetjmp>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -51,7 +50,6 @@ float float_at(const std::string& bytes, std::size_t at, bool little_endian) {
     }
     return std::bit_cast<float>(bits);
 }
-
 
 // libpng reports an error by a longjmp back to the setjmp of the function that called it. The
 // functions below hold only plain values and libpng's own structures across those calls, and
@@ -181,7 +179,8 @@ Image read_pfm(const std::filesystem::path& path) {
                 const float v = float_at(bytes, at + 4 * k, scale < 0);
                 // Radiance is finite and not negative; anything else is a broken file.
                 if (!(v >= 0 && std::isfinite(v))) {
-                    throw file_error(path, fmt::format("pixel ({}, {}) has radiance {}", x, row, v));
+                    throw file_error(path,
+                                     fmt::format("pixel ({}, {}) has radiance {}", x, row, v));
                 }
                 out.at(x, row)[k] = v;
             }

@@ -40,7 +40,7 @@ private:
 
 // The states of a discretisation and, when it has backs, how to find them.
 struct ChannelStates {
-    PatchSet states;  // patches and total_area: fronts, then backs
+    PatchSet states;                         // patches and total_area: fronts, then backs
     std::shared_ptr<const BackSides> backs;  // null without backs
     std::size_t fronts() const { return backs ? backs->fronts() : states.patches.size(); }
 };

@@ -1,8 +1,9 @@
 #include "information/channel_samples.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
-#include <tbb/parallel_for.h>
 
 #include "common/error.h"
 #include "common/interrupt.h"

@@ -1,8 +1,8 @@
 // Samples of a scene's visibility channel (docs/design.md §7): rays leaving a state (a patch's
 // front, or the back of a two-sided one, §7.7) from an area-uniform point in a
 // cosine-distributed direction, each with the state it meets first. F_ij is the share of i's
-// rays that land on j; misses and hits on the back of a one-sided patch land on no state. Two ways to draw them (Sbert, "The use of global random directions to
-// compute radiosity", 1997):
+// rays that land on j; misses and hits on the back of a one-sided patch land on no state. Two ways
+// to draw them (Sbert, "The use of global random directions to compute radiosity", 1997):
 // - local lines: from each patch i, n_i rays with n_i proportional to A_i;
 // - global lines: uniformly distributed lines through the scene's bounding sphere. Along a
 //   line, every surface hit starts a ray on the patch's front side, ending at the neighbouring

@@ -9,10 +9,10 @@
 #include <stdexcept>
 
 #include "common/memory.h"
-#include "rays/rng.h"
-#include "rays/sampling.h"
 #include "information/back_sides.h"
 #include "information/channel_samples.h"
+#include "rays/rng.h"
+#include "rays/sampling.h"
 
 namespace hmcr {
 namespace {

@@ -2,8 +2,8 @@
 // discretisation can be taken ... for the leaves of a solution").
 #pragma once
 
-#include "rays/patch.h"
 #include "radiosity/shaded_mesh.h"
+#include "rays/patch.h"
 
 namespace hmcr {
 

@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "common/memory.h"
+#include "information/back_sides.h"
+#include "information/channel_samples.h"
 #include "rays/element_sampler.h"
 #include "rays/rng.h"
 #include "rays/sampling.h"
-#include "information/back_sides.h"
-#include "information/channel_samples.h"
 
 namespace hmcr {
 namespace {
@@ -83,7 +83,8 @@ ChannelSamples trace_local_lines(const PatchSet& patches, const EmbreeScene& sce
         set_tracing_float_mode();
         const std::uint64_t g0 = block * kRaysPerTask;
         const std::uint64_t g1 = std::min(out.lines, g0 + kRaysPerTask);
-        auto i = std::uint32_t(std::upper_bound(start.begin(), start.end(), g0) - start.begin() - 1);
+        auto i =
+            std::uint32_t(std::upper_bound(start.begin(), start.end(), g0) - start.begin() - 1);
         for (std::uint64_t g = g0; g < g1; ++g) {
             while (g >= start[i + 1]) ++i;
             const std::uint64_t k = g - start[i];

@@ -38,8 +38,8 @@ std::vector<RowTerms> channel_terms(const ChannelSamples& samples, const std::ve
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
         for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
             for (std::size_t s = 0; s < slots; ++s) {
-                const auto targets = s == 0 ? samples.targets(i)
-                                            : samples.targets(i, std::uint32_t(s - 1));
+                const auto targets =
+                    s == 0 ? samples.targets(i) : samples.targets(i, std::uint32_t(s - 1));
                 if (targets.empty()) continue;
                 const RowTerms t = row_terms(form_factor_row(targets), double(targets.size()), a);
                 partial[c * slots + s].entropy += a[i] * t.entropy;
@@ -111,8 +111,8 @@ InformationMeasures scene_information(const PatchSet& patches, const ChannelSamp
     m.method = method;
     m.lines = samples.lines;
     m.samples = samples.samples();
-    m.samples_open = std::size_t(std::count(samples.target.begin(), samples.target.end(),
-                                            ChannelSamples::kNoPatch));
+    m.samples_open = std::size_t(
+        std::count(samples.target.begin(), samples.target.end(), ChannelSamples::kNoPatch));
     for (std::size_t i = 0; i < a.size(); ++i) m.patches_unsampled += samples.targets(i).empty();
     const double i_cs_all = hits > 0 ? sum / double(hits) : 0.0;
     m.h_p = {h_p, 0.0};
@@ -126,9 +126,8 @@ InformationMeasures scene_information(const PatchSet& patches, const ChannelSamp
 
 nlohmann::json to_json(const InformationMeasures& m) {
     const auto value = [](const InformationMeasures::Value& v) {
-        return nlohmann::json{{"estimate", v.estimate},
-                              {"standard_error", v.standard_error},
-                              {"bias", v.bias}};
+        return nlohmann::json{
+            {"estimate", v.estimate}, {"standard_error", v.standard_error}, {"bias", v.bias}};
     };
     return {{"units", "bits"},
             {"h_p", value(m.h_p)},

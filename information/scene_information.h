@@ -22,10 +22,10 @@
 #include <cstddef>
 #include <nlohmann/json_fwd.hpp>
 
-#include "rays/embree_scene.h"
-#include "rays/patch.h"
 #include "information/back_sides.h"
 #include "information/channel_samples.h"
+#include "rays/embree_scene.h"
+#include "rays/patch.h"
 
 namespace hmcr {
 

@@ -204,8 +204,7 @@ private:
         if (e == "m" || e == "rd" || e == "ed" || e == "sides") return material(w);
         if (e == "rs") return specular(w);
         if (e == "v" || e == "p" || e == "n") return vertex(w);
-        if (e == "ts" || e == "td" || e == "ir" || e == "ies")
-            return m_ignored.add(e, m_where);
+        if (e == "ts" || e == "td" || e == "ir" || e == "ies") return m_ignored.add(e, m_where);
         if (e == "fh")
             throw InputError(m_where,
                              "fh (a face with holes) is not read: give the hole as a seam in an f");
@@ -331,10 +330,12 @@ private:
     void specular(const std::vector<std::string>& w) {
         need(w, 2, 2);
         const double v = number(w, 1), roughness = number(w, 2);
-        if (!(v >= 0 && v <= 1)) throw InputError(m_where, fmt::format("rs {} is not in [0, 1]", w[1]));
+        if (!(v >= 0 && v <= 1))
+            throw InputError(m_where, fmt::format("rs {} is not in [0, 1]", w[1]));
         if (!(roughness >= 0 && roughness <= kMaxRoughness)) {
-            throw InputError(m_where, fmt::format("rs roughness {} is not in [0, {:g}] (0: a mirror)",
-                                                  w[2], kMaxRoughness));
+            throw InputError(m_where,
+                             fmt::format("rs roughness {} is not in [0, {:g}] (0: a mirror)", w[2],
+                                         kMaxRoughness));
         }
         MgfMaterial& m = m_materials.current();
         m.soup = -1;

@@ -15,8 +15,8 @@ namespace {
 // The MTL statements of the common readers that hmcr has no use for.
 bool is_ignored_mtl_statement(std::string_view key) {
     static constexpr std::string_view kIgnored[] = {
-        "Ka",   "Kt",    "Tf",   "Ns",   "Ni", "d",  "Tr", "sharpness", "bump",  "disp",
-        "decal", "refl", "norm", "Pr",   "Pm", "Ps", "Pc", "Pcr",       "aniso", "anisor"};
+        "Ka",    "Kt",   "Tf",   "Ns", "Ni", "d",  "Tr", "sharpness", "bump",  "disp",
+        "decal", "refl", "norm", "Pr", "Pm", "Ps", "Pc", "Pcr",       "aniso", "anisor"};
     if (key.rfind("map_", 0) == 0) return true;
     return std::find(std::begin(kIgnored), std::end(kIgnored), key) != std::end(kIgnored);
 }
@@ -111,7 +111,8 @@ private:
 
     void illum(int line, Statement& s) {
         const std::string_view token = s.next();
-        if (token.empty() || !s.next().empty()) fail_at_line(m_path, line, "'illum' needs one number");
+        if (token.empty() || !s.next().empty())
+            fail_at_line(m_path, line, "'illum' needs one number");
         const double model = parse_obj_number(token, m_path, line);
         if (!(model == 0 || model == 1 || model == 2 || model == kMirrorIllum)) {
             fail_at_line(m_path, line,
@@ -151,7 +152,7 @@ private:
     std::string m_path;
     PolygonSoup& m_soup;
     MaterialNames& m_names;
-    std::int32_t m_current = -1;  // index in m_soup.materials
+    std::int32_t m_current = -1;                            // index in m_soup.materials
     std::map<std::int32_t, SpecularStatements> m_specular;  // by index in m_soup.materials
     UnknownStatements m_unknown;
 };

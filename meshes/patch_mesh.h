@@ -6,7 +6,6 @@
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Utils/PropertyManager.hh>
-
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,7 +13,7 @@
 namespace hmcr {
 
 struct PatchMeshTraits : public OpenMesh::DefaultTraits {
-    using Point = OpenMesh::Vec3d;   // metres
+    using Point = OpenMesh::Vec3d;  // metres
     using Normal = OpenMesh::Vec3d;
 };
 using PatchMesh = OpenMesh::PolyMesh_ArrayKernelT<PatchMeshTraits>;
@@ -27,8 +26,8 @@ struct FaceMaterial {
 };
 
 // Names of the properties every loaded PatchMesh carries.
-inline constexpr const char* kMaterialsProp = "hmcr:materials";    // mesh: vector<FaceMaterial>
-inline constexpr const char* kMaterialProp = "hmcr:material";      // face: index into the table
+inline constexpr const char* kMaterialsProp = "hmcr:materials";     // mesh: vector<FaceMaterial>
+inline constexpr const char* kMaterialProp = "hmcr:material";       // face: index into the table
 inline constexpr const char* kSourceLineProp = "hmcr:source_line";  // face: 1-based, 0 = none
 // face: the material of the face's back side, or kOneSided (the back is black and absorbing)
 inline constexpr const char* kBackMaterialProp = "hmcr:back_material";
@@ -50,7 +49,7 @@ inline auto source_line_prop(PatchMesh& m) {
 
 // The faces' materials of a mesh, read through its table (both properties looked up once).
 class FaceMaterials {
-  public:
+public:
     // Throws std::invalid_argument when the mesh lacks the properties.
     explicit FaceMaterials(const PatchMesh& mesh);
     // Throws std::invalid_argument when the face's index is not in the table.
@@ -60,7 +59,7 @@ class FaceMaterials {
     const FaceMaterial& operator[](OpenMesh::FaceHandle f) const { return (*m_table)[index(f)]; }
     const std::vector<FaceMaterial>& table() const { return *m_table; }
 
-  private:
+private:
     const PatchMesh& m_mesh;
     const std::vector<FaceMaterial>* m_table = nullptr;
     OpenMesh::FPropHandleT<std::uint32_t> m_index, m_back;

@@ -70,8 +70,8 @@ void check_default_material(const LoadOptions& options, const std::string& path)
 }
 
 // Why a duplicate has no safe repair (the repairs drop one in the same order and material).
-std::string duplicate_detail(const PolygonSoup& soup, const std::vector<int>& id,
-                             std::size_t later, std::size_t earlier) {
+std::string duplicate_detail(const PolygonSoup& soup, const std::vector<int>& id, std::size_t later,
+                             std::size_t earlier) {
     const auto cyclic = [&](std::size_t k) {
         std::vector<int> ids;
         for (std::uint32_t c : soup.corners(k)) ids.push_back(id[c]);
@@ -90,9 +90,9 @@ void check_duplicates(const PolygonSoup& soup, const std::vector<int>& id,
         const SourcePlace a = soup.place[later], b = soup.place[earlier];
         const std::string earlier_at =
             a.file == b.file ? fmt::format("on line {}", b.line) : "at " + soup.where(b);
-        throw InputError(soup.where(a), fmt::format("duplicate face: same vertices as the face {}{}",
-                                                    earlier_at,
-                                                    duplicate_detail(soup, id, later, earlier)));
+        throw InputError(soup.where(a),
+                         fmt::format("duplicate face: same vertices as the face {}{}", earlier_at,
+                                     duplicate_detail(soup, id, later, earlier)));
     }
 }
 
@@ -179,8 +179,8 @@ void make_mesh(const PolygonSoup& soup, const std::vector<int>& id,
     for (const Material& m : materials) {
         const Eigen::Vector3d e = std::numbers::pi * m.ke;
         table.push_back({OpenMesh::Vec3d(m.kd.x(), m.kd.y(), m.kd.z()),
-                          OpenMesh::Vec3d(e.x(), e.y(), e.z()),
-                          OpenMesh::Vec3d(m.ks.x(), m.ks.y(), m.ks.z()), m.roughness});
+                         OpenMesh::Vec3d(e.x(), e.y(), e.z()),
+                         OpenMesh::Vec3d(m.ks.x(), m.ks.y(), m.ks.z()), m.roughness});
     }
     auto material = material_prop(mesh);
     auto source_line = source_line_prop(mesh);

@@ -39,7 +39,7 @@ struct PolygonSoup {
     std::vector<std::filesystem::path> files;  // every file read, in order
     std::vector<Eigen::Vector3d> positions;    // finite
     std::vector<SoupMaterial> materials;
-    std::vector<std::string> warnings;         // "file:line: what", one line each
+    std::vector<std::string> warnings;  // "file:line: what", one line each
 
     // Polygon k: corners (indices into positions, counter-clockwise seen from the front),
     // material (index into materials, or kNoMaterial), the material of its back (the same, or

@@ -17,9 +17,9 @@ std::size_t RepairReport::total() const {
 
 const char* repair_key(RepairKind kind) {
     static constexpr const char* kKeys[kRepairKinds] = {
-        "triangulated",       "quads_split",     "corners_removed", "degenerate_dropped",
-        "duplicates_dropped", "reflectance_one", "sides_joined",    "coincident_dropped",
-        "specular_reduced"};
+        "triangulated",       "quads_split",        "corners_removed",
+        "degenerate_dropped", "duplicates_dropped", "reflectance_one",
+        "sides_joined",       "coincident_dropped", "specular_reduced"};
     return kKeys[std::size_t(kind)];
 }
 

@@ -133,7 +133,8 @@ Outcome repair_polygon(Corners& c, const Where& where, RepairReport& report,
     if (c.size() == 3 || (c.size() == 4 && !check_face_geometry(c.p, c.ids))) return Outcome::whole;
     if (c.size() == 4 && !quad_is_planar(c.p)) {
         std::optional<std::vector<Corners>> halves = split_quad(c);
-        if (!halves) throw InputError(std::string(where), "self-intersecting quad: its edges cross");
+        if (!halves)
+            throw InputError(std::string(where), "self-intersecting quad: its edges cross");
         report.add(RepairKind::quad_split, where);
         pieces = std::move(*halves);
         return Outcome::pieces;

@@ -1,5 +1,5 @@
-// Repairs of a polygon soup that have one safe meaning (docs/usage.md#repairs), made between a reader
-// and the patch-mesh builder unless the load is strict.
+// Repairs of a polygon soup that have one safe meaning (docs/usage.md#repairs), made between a
+// reader and the patch-mesh builder unless the load is strict.
 #pragma once
 
 #include "meshes/polygon_soup.h"

@@ -57,8 +57,8 @@ struct MaterialSides {
 struct LoadOptions {
     std::optional<Material> default_material;  // used by faces without a material
     SceneUse use = SceneUse::solve;
-    WarningFn warn;                             // optional
-    bool strict = false;          // refuse what the repairs would fix (docs/usage.md#repairs)
+    WarningFn warn;                     // optional
+    bool strict = false;                // refuse what the repairs would fix (docs/usage.md#repairs)
     std::optional<int> curve_segments;  // MGF tessellation; a scene file's value, else the default
     // Every material's sides (1 or 2): the command line's, else a scene file's; unset: each
     // material's own (MGF's `sides`), else kDefaultSides. material_sides is over both.
@@ -80,15 +80,15 @@ struct MeshFile : MeshReport {
 };
 
 struct Scene {
-    std::string name;                   // bundled name, or the file's stem
-    std::filesystem::path source;       // the file given by the user (JSON or mesh)
-    std::filesystem::path mesh_path;    // the mesh file actually read
+    std::string name;                           // bundled name, or the file's stem
+    std::filesystem::path source;               // the file given by the user (JSON or mesh)
+    std::filesystem::path mesh_path;            // the mesh file actually read
     std::vector<std::filesystem::path> inputs;  // every file read: no output may replace one
-    std::vector<std::string> warnings;  // the loaders' warnings ("file:line: what")
-    RepairReport repairs;               // what the load repaired (docs/usage.md#repairs)
-    bool strict = false;                // loaded with --strict or a scene file's "strict": true
+    std::vector<std::string> warnings;          // the loaders' warnings ("file:line: what")
+    RepairReport repairs;                       // what the load repaired (docs/usage.md#repairs)
+    bool strict = false;  // loaded with --strict or a scene file's "strict": true
     int curve_segments = kDefaultCurveSegments;  // MGF tessellation used
-    PatchMesh mesh;                     // validated, with the hmcr:* face properties
+    PatchMesh mesh;                              // validated, with the hmcr:* face properties
     std::vector<View> views;
     nlohmann::json solver_defaults = nlohmann::json::object();  // "solver" object of the file
 };

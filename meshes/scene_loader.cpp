@@ -73,7 +73,8 @@ void check_keys(const json& object, const std::set<std::string>& known, const st
     if (!object.is_object()) fail(where, "must be a JSON object");
     for (const auto& [key, value] : object.items()) {
         if (known.count(key) == 0) {
-            fail(where, fmt::format("unknown key {} (known: {})", quote(key), fmt::join(known, ", ")));
+            fail(where,
+                 fmt::format("unknown key {} (known: {})", quote(key), fmt::join(known, ", ")));
         }
     }
 }
@@ -220,8 +221,9 @@ void apply_load_keys(const json& j, const std::string& file, LoadOptions& option
 Scene load_json_scene(const fs::path& path, const std::string& name, LoadOptions options) {
     const std::string file = path.string();
     const json j = read_json_file(path);
-    check_keys(j, {"mesh", "description", "views", "solver", "default_material", "strict",
-                   "mgf_segments", "sides", "material_sides", "generator"},
+    check_keys(j,
+               {"mesh", "description", "views", "solver", "default_material", "strict",
+                "mgf_segments", "sides", "material_sides", "generator"},
                file);
     if (!j.contains("mesh") || !j["mesh"].is_string()) fail(file, "needs a \"mesh\" string");
     if (j.contains("description") && !j["description"].is_string()) {
@@ -319,8 +321,8 @@ const View& find_view(const Scene& scene, const std::string& name) {
         if (v.name == name) return v;
         names += (names.empty() ? "" : ", ") + v.name;
     }
-    throw InputError(fmt::format("scene {} has no view {} (views: {})", scene.name,
-                                 quote(name), names));
+    throw InputError(
+        fmt::format("scene {} has no view {} (views: {})", scene.name, quote(name), names));
 }
 
 MeshReport load_mesh(const fs::path& path, const LoadOptions& options, PatchMesh& mesh) {

@@ -6,10 +6,10 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <limits>
-#include <numeric>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <numeric>
 
 namespace hmcr {
 namespace {
@@ -132,9 +132,10 @@ bool quad_is_planar(const std::vector<Eigen::Vector3d>& corners) {
 std::optional<std::string> check_face_geometry(const std::vector<Eigen::Vector3d>& corners,
                                                const std::vector<int>& ids) {
     if (corners.size() > 4) {
-        return fmt::format("polygon with {} vertices: --strict reads triangles and convex quads "
-                           "only (without it hmcr triangulates the polygon)",
-                           corners.size());
+        return fmt::format(
+            "polygon with {} vertices: --strict reads triangles and convex quads "
+            "only (without it hmcr triangulates the polygon)",
+            corners.size());
     }
     if (auto error = check_repeated(ids)) return error;
     if (auto error = check_area(corners)) return error;
@@ -178,16 +179,18 @@ std::optional<std::string> check_reflectance(const Material& m, bool allow_one) 
 }
 
 std::optional<std::string> check_specular(const Material& m, bool allow_one) {
-    if (auto error = check_channels(m, m.ks, "specular reflectance", INFINITY, "not finite")) return error;
+    if (auto error = check_channels(m, m.ks, "specular reflectance", INFINITY, "not finite"))
+        return error;
     if (!(m.roughness >= 0 && m.roughness <= kMaxRoughness)) {
-        return fmt::format("roughness {} of material {} is out of range: hmcr reads 0 (a mirror) "
-                           "to {:g}",
-                           m.roughness, quote(m.name), kMaxRoughness);
+        return fmt::format(
+            "roughness {} of material {} is out of range: hmcr reads 0 (a mirror) "
+            "to {:g}",
+            m.roughness, quote(m.name), kMaxRoughness);
     }
     const Eigen::Vector3d total = m.kd + m.ks;
     if (allow_one) {
-        return check_channels(m, total, "diffuse + specular reflectance",
-                              std::nextafter(1.0, 2.0), "above 1");
+        return check_channels(m, total, "diffuse + specular reflectance", std::nextafter(1.0, 2.0),
+                              "above 1");
     }
     return check_channels(m, total, "diffuse + specular reflectance", 1.0, "not below 1");
 }

@@ -11,7 +11,6 @@
 #include <span>
 #include <string_view>
 
-
 namespace hmcr {
 
 struct LinkGeometry {

@@ -17,7 +17,8 @@ namespace {
 class VarianceOracle final : public NamedOracle {
 public:
     VarianceOracle()
-        : NamedOracle("vt", "variance of the normalised sampled kernel (Rigau 2003)", 4.5e-4, true) {}
+        : NamedOracle("vt", "variance of the normalised sampled kernel (Rigau 2003)", 4.5e-4,
+                      true) {}
 
     double geometric_factor(const LinkGeometry& g) const override {
         const KernelStats s = kernel_stats(g.kernel);

@@ -48,9 +48,9 @@ private:
     const Ranks& m_ranks;
     KnownProbes* m_known;
     BudgetResult m_result;
-    std::optional<double> m_lo, m_hi;           // log epsilon bounds
+    std::optional<double> m_lo, m_hi;  // log epsilon bounds
     std::size_t m_lo_leaves = 0, m_hi_leaves = 0;
-    std::optional<BudgetProbe> m_closest;       // to the target, for a failure's message
+    std::optional<BudgetProbe> m_closest;  // to the target, for a failure's message
 };
 
 std::size_t Search::probe(double x) {
@@ -100,7 +100,8 @@ void Search::record(double x, const BudgetProbe& p) {
 double Search::next_point() const {
     if (!m_lo) return *m_hi - std::log(10.0);
     if (!m_hi) return *m_lo + std::log(10.0);
-    const double a = std::log(double(m_lo_leaves)), b = std::log(double(std::max<std::size_t>(1, m_hi_leaves)));
+    const double a = std::log(double(m_lo_leaves)),
+                 b = std::log(double(std::max<std::size_t>(1, m_hi_leaves)));
     const double t = (a - std::log(double(m_budget.leaves))) / (a - b);
     return *m_lo + std::clamp(t, 0.1, 0.9) * (*m_hi - *m_lo);
 }
@@ -114,13 +115,13 @@ BudgetResult Search::run() {
     // Without clusters a mesh has at least a leaf per patch (docs/design.md §2.7).
     const std::size_t patches = m_mesh.n_faces();
     if (m_options.clustering == Clustering::none && m_budget.leaves < patches) {
-        fail(fmt::format("the scene has {} patches, the fewest leaves a solve can have without "
-                         "clustering (try --clustering isotropic)",
-                         patches));
+        fail(
+            fmt::format("the scene has {} patches, the fewest leaves a solve can have without "
+                        "clustering (try --clustering isotropic)",
+                        patches));
     }
-    const double start = std::isnan(m_options.epsilon)
-                             ? m_options.oracle->default_epsilon()
-                             : m_options.epsilon;
+    const double start =
+        std::isnan(m_options.epsilon) ? m_options.oracle->default_epsilon() : m_options.epsilon;
     double x = std::log(start);
     for (int k = 0; k < m_budget.max_probes; ++k) {
         if (within(probe(x))) {
@@ -132,31 +133,31 @@ BudgetResult Search::run() {
         // tree changes every ray's descent below it (and, through the noise, the rest of the
         // solve), so it can jump across the whole tolerance at one epsilon.
         if (m_lo && m_hi && *m_hi - *m_lo < 1e-6) {
-            fail(fmt::format("with seed {} the leaf count jumps from {} to {} between epsilon "
-                             "{:.8g} and {:.8g}; try another seed or a wider budget-tolerance",
-                             m_options.seed, m_lo_leaves, m_hi_leaves, std::exp(*m_lo),
-                             std::exp(*m_hi)));
+            fail(fmt::format(
+                "with seed {} the leaf count jumps from {} to {} between epsilon "
+                "{:.8g} and {:.8g}; try another seed or a wider budget-tolerance",
+                m_options.seed, m_lo_leaves, m_hi_leaves, std::exp(*m_lo), std::exp(*m_hi)));
         }
         // Ten decades below the start without reaching the target: limits or rays bind.
         if (!m_hi && *m_lo > std::log(start) + std::log(1e10)) break;
         if (!m_lo && *m_hi < std::log(start) - std::log(1e10)) {
-            fail(fmt::format("even at epsilon {:.3g} the solve stops at {} leaves (limits: "
-                             "min-area {} of the total area, max-depth {}; more rays or looser "
-                             "limits may help)",
-                             std::exp(*m_hi), m_hi_leaves, m_options.min_area,
-                             m_options.max_depth));
+            fail(
+                fmt::format("even at epsilon {:.3g} the solve stops at {} leaves (limits: "
+                            "min-area {} of the total area, max-depth {}; more rays or looser "
+                            "limits may help)",
+                            std::exp(*m_hi), m_hi_leaves, m_options.min_area, m_options.max_depth));
         }
         x = next_point();
     }
-    fail(fmt::format("closest after {} probes: {} leaves at epsilon {:.4g}",
-                     m_result.probes.size(), m_closest->leaves, m_closest->epsilon));
+    fail(fmt::format("closest after {} probes: {} leaves at epsilon {:.4g}", m_result.probes.size(),
+                     m_closest->leaves, m_closest->epsilon));
 }
 
 }  // namespace
 
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
-                              const BudgetOptions& budget, Progress& progress,
-                              const Ranks& ranks, KnownProbes* known) {
+                              const BudgetOptions& budget, Progress& progress, const Ranks& ranks,
+                              KnownProbes* known) {
     if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
     validate(budget);
     validate(options);

@@ -23,8 +23,8 @@ struct BudgetOptions {
 struct BudgetProbe {
     double epsilon = 0;
     std::size_t leaves = 0;
-    double seconds = 0;   // 0 for a known probe
-    bool known = false;   // its leaf count was known (KnownProbes), not solved again
+    double seconds = 0;  // 0 for a known probe
+    bool known = false;  // its leaf count was known (KnownProbes), not solved again
 };
 // {"epsilon", "leaves", "seconds"}: how run summaries and study cells store a probe. Whether it
 // was known is not stored: that depends on which cells a rank solved before, and like the

@@ -141,20 +141,21 @@ Rgb ClusterTree::side_weight(const Element& root) const {
 
 void ClusterTree::average(Element& c) const {
     const Node& n = m_nodes[c.id.patch];
-    c.radiosity = (n.child[0]->area * n.child[0]->radiosity +
-                   n.child[1]->area * n.child[1]->radiosity) / c.area;
-    c.unshot = (n.child[0]->area * n.child[0]->unshot + n.child[1]->area * n.child[1]->unshot) /
-               c.area;
+    c.radiosity =
+        (n.child[0]->area * n.child[0]->radiosity + n.child[1]->area * n.child[1]->radiosity) /
+        c.area;
+    c.unshot =
+        (n.child[0]->area * n.child[0]->unshot + n.child[1]->area * n.child[1]->unshot) / c.area;
 }
 
-std::pair<Vec3, Vec3> ClusterTree::point_by(const std::vector<double>& cumulative,
-                                            const Element& c, double xu, double xv) const {
+std::pair<Vec3, Vec3> ClusterTree::point_by(const std::vector<double>& cumulative, const Element& c,
+                                            double xu, double xv) const {
     const Node& n = m_nodes[c.id.patch];
     const double base = cumulative[n.first], total = cumulative[n.end] - base;
     const double a = base + xu * total;
     // The side whose share of [base, base + total) holds a (none is empty: it is never chosen).
-    const auto it = std::upper_bound(cumulative.begin() + n.first + 1,
-                                     cumulative.begin() + n.end, a);
+    const auto it =
+        std::upper_bound(cumulative.begin() + n.first + 1, cumulative.begin() + n.end, a);
     const auto pos = std::size_t(it - cumulative.begin()) - 1;
     const double lo = cumulative[pos], width = cumulative[pos + 1] - lo;
     const double u = std::clamp((a - lo) / width, 0.0, std::nextafter(1.0, 0.0));
@@ -168,7 +169,8 @@ void ClusterTree::begin_iteration(LinkWeight weight) {
     for (const std::uint32_t side : m_side) {
         const Element& root = m_h.root(side >> 1, std::uint8_t(side & 1));
         const Rgb& b = weight == LinkWeight::total ? root.radiosity : root.unshot;
-        m_power_cumulative.push_back(m_power_cumulative.back() + root.area * std::max(0.0, b.sum()));
+        m_power_cumulative.push_back(m_power_cumulative.back() +
+                                     root.area * std::max(0.0, b.sum()));
     }
     // A scene that shoots nothing is never sampled; the areas keep point_by well defined.
     if (!(m_power_cumulative.back() > 0)) m_power_cumulative = m_cumulative;
@@ -190,7 +192,8 @@ void ClusterTree::push_node(Element& c, const Rgb& above, const PowerQuantum& qu
         if (is_cluster(*k)) {
             push_node(*k, h, quantum, from_above);
         } else {
-            from_above[2 * std::size_t(k->id.patch) + k->id.side] = m_h.material(*k).reflectance * h;
+            from_above[2 * std::size_t(k->id.patch) + k->id.side] =
+                m_h.material(*k).reflectance * h;
         }
     }
 }

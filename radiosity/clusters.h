@@ -138,7 +138,7 @@ private:
                    std::vector<Rgb>& from_above);
 
     Hierarchy& m_h;
-    std::span<const Rgb> m_weights;  // per side value; empty: the reflectances
+    std::span<const Rgb> m_weights;   // per side value; empty: the reflectances
     std::vector<Element> m_elements;  // sized once: clusters never move
     std::vector<Node> m_nodes;
     std::unique_ptr<std::atomic<double>[]> m_top_factor;  // top_factor(), per cluster
@@ -147,9 +147,9 @@ private:
     std::vector<std::uint32_t> m_side_parent;  // the cluster holding each side value's root
     std::vector<std::int32_t> m_leaf_of_side;  // closed_leaf(), per side value
     std::size_t m_cluster_leaves = 0;
-    std::vector<std::uint32_t> m_position;  // of each side value, in the tree's order
-    std::vector<std::uint32_t> m_side;      // the side value at each position
-    std::vector<double> m_cumulative;       // areas of the sides before each position
+    std::vector<std::uint32_t> m_position;   // of each side value, in the tree's order
+    std::vector<std::uint32_t> m_side;       // the side value at each position
+    std::vector<double> m_cumulative;        // areas of the sides before each position
     std::vector<double> m_power_cumulative;  // their shot power, as of begin_iteration
     Element* m_top = nullptr;
     Element* m_join = nullptr;  // the top, when it joins the fronts' tree and the backs'; none

@@ -26,14 +26,13 @@ struct PatchTopology {
 
 // The patches' mesh vertices and edges, checked against the patches once.
 class MeshTopology {
-  public:
+public:
     MeshTopology(const PatchSet& set, const FaceEdges& edges)
         : m_vertices(set.vertices), m_edges(edges) {
         if (m_vertices.faces.size() != set.patches.size()) {
             throw std::invalid_argument("shaded mesh: the patch set has the mesh vertices of " +
-                                        std::to_string(m_vertices.faces.size()) +
-                                        " faces for " + std::to_string(set.patches.size()) +
-                                        " patches");
+                                        std::to_string(m_vertices.faces.size()) + " faces for " +
+                                        std::to_string(set.patches.size()) + " patches");
         }
         for (std::size_t f = 0; f < set.patches.size(); ++f) {
             if (m_vertices.corner_count(f) != set.patches[f].corner_count) {
@@ -56,7 +55,7 @@ class MeshTopology {
         return t;
     }
 
-  private:
+private:
     const FaceVertices& m_vertices;
     const FaceEdges& m_edges;
 };
@@ -216,9 +215,11 @@ Leaf leaf_corners(const Element& e, bool quad) {
 // whole mesh first; interior lines and points belong to one patch and are built patch by patch,
 // in the output's leaf order, so vertex numbers follow first use as before.
 class Builder {
-  public:
+public:
     Builder(const Hierarchy& h, const FaceEdges& edges, std::uint8_t side)
-        : m_h(h), m_side(side), m_topo(h.patch_set(), edges),
+        : m_h(h),
+          m_side(side),
+          m_topo(h.patch_set(), edges),
           m_mesh_vertex(m_topo.vertex_count(), kNone) {}
 
     ConformingPolygons build() {
@@ -239,7 +240,7 @@ class Builder {
         return std::move(m_out);
     }
 
-  private:
+private:
     // Every leaf corner strictly inside a mesh edge. Such a corner is also an end of a leaf
     // edge along the mesh edge, since the leaves tile the patch, so these are the points that
     // leaf edges on the mesh edge must list.

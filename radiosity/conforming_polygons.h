@@ -20,9 +20,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/types.h"
 #include "meshes/connectivity.h"
 #include "radiosity/hierarchy.h"
-#include "common/types.h"
 
 namespace hmcr {
 

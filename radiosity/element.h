@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <string>
 
-#include "rays/domain.h"
-#include "radiosity/power_quanta.h"
 #include "common/types.h"
+#include "radiosity/power_quanta.h"
+#include "rays/domain.h"
 
 namespace hmcr {
 

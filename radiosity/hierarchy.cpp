@@ -1,8 +1,7 @@
 #include "radiosity/hierarchy.h"
 
-#include <tbb/parallel_for.h>
-
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <stdexcept>
 
@@ -118,7 +117,8 @@ void Hierarchy::reset_values() {
     tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
         visit_all(m_roots[i], reset);
         if (m_back_roots.empty()) return;
-        if (Element* back = m_back_roots[i].load(std::memory_order_acquire)) visit_all(*back, reset);
+        if (Element* back = m_back_roots[i].load(std::memory_order_acquire))
+            visit_all(*back, reset);
     });
 }
 

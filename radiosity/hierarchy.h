@@ -1,15 +1,15 @@
 // The element hierarchy: one quadtree per patch, created lazily and safely from many threads.
 #pragma once
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <atomic>
-#include <deque>
-#include <mutex>
 #include <cstddef>
+#include <deque>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <vector>
-
-#include <tbb/enumerable_thread_specific.h>
 
 #include "common/error.h"
 #include "radiosity/element.h"
@@ -55,8 +55,7 @@ public:
     }
     // The back side's root if it exists yet.
     const Element* back_root(std::size_t patch) const {
-        return m_back_roots.empty() ? nullptr
-                                    : m_back_roots[patch].load(std::memory_order_acquire);
+        return m_back_roots.empty() ? nullptr : m_back_roots[patch].load(std::memory_order_acquire);
     }
     // A side's root if it exists yet: looked for, never made.
     const Element* made_root(std::size_t patch, std::uint8_t side) const {

@@ -76,7 +76,8 @@ Element& LeafIndex::locate(std::uint32_t patch, std::uint8_t side, const Vec2& u
         return *m_leaves[entry & ~kLeaf];
     }
     const Grid& g = m_grids[root & ~kQuad];
-    const std::uint32_t i = Domain::quad_cell(uv.x(), g.depth), j = Domain::quad_cell(uv.y(), g.depth);
+    const std::uint32_t i = Domain::quad_cell(uv.x(), g.depth),
+                        j = Domain::quad_cell(uv.y(), g.depth);
     std::uint32_t entry = m_cells[g.first + (std::size_t(j) << g.depth) + i];
     if (!(entry & kLeaf)) {
         DomainWalk walk(true, uv, Domain::quad_cell_domain(i, j, g.depth));

@@ -72,8 +72,7 @@ struct FromTop {
 }  // namespace
 
 void sample_kernel(const EmbreeScene& scene, const Hierarchy& hierarchy, const Element& i,
-                   const Element& j, Rng& rng, std::span<double> out,
-                   const ClusterTree* clusters) {
+                   const Element& j, Rng& rng, std::span<double> out, const ClusterTree* clusters) {
     const bool ci = is_cluster(i), cj = is_cluster(j);
     if (!ci && !cj) {
         kernel_lines(scene, rng, out, OnElement(hierarchy, i), OnElement(hierarchy, j));

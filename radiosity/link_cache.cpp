@@ -1,7 +1,6 @@
 #include "radiosity/link_cache.h"
 
 #include <immintrin.h>
-
 #include <sys/mman.h>
 
 #include <array>
@@ -48,8 +47,7 @@ void LinkCache::FreeSets::operator()(Set* sets) const {
 LinkCache::LinkCache(std::size_t max_bytes)
     : m_generation(++g_generations),
       m_set_count(std::bit_floor(std::max<std::size_t>(1, max_bytes / sizeof(Set)))),
-      m_sets(static_cast<Set*>(allocate_table(m_set_count * sizeof(Set))),
-             FreeSets{m_set_count}) {
+      m_sets(static_cast<Set*>(allocate_table(m_set_count * sizeof(Set))), FreeSets{m_set_count}) {
     std::uninitialized_default_construct_n(m_sets.get(), m_set_count);
 }
 

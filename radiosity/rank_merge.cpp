@@ -120,8 +120,8 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
     }
     if (opens) clusters->set_open_flags(std::span<const std::int64_t>(quanta).subspan(k));
     RefinementCounters& n = out.counters;
-    std::vector<std::uint64_t> counts = {out.rays,           n.oracle_calls, n.oracle_evaluations,
-                                         n.cache_hits,       n.lines_cast,   n.oracle_nanoseconds};
+    std::vector<std::uint64_t> counts = {out.rays,     n.oracle_calls, n.oracle_evaluations,
+                                         n.cache_hits, n.lines_cast,   n.oracle_nanoseconds};
     ranks.sum(counts);
     out.rays = counts[0];
     n = {counts[1], counts[2], counts[3], counts[4], counts[5]};

@@ -33,8 +33,9 @@ PatchPair patch_pair(const RefinementContext& ctx, SideRef receiver, SideRef sou
     const PatchSet& ps = ctx.hierarchy.patch_set();
     return {side_normal(ps.patches[receiver.patch()], receiver.side()),
             side_normal(ps.patches[source.patch()], source.side()),
-            ctx.receiver_weights.empty() ? ps.material(receiver.patch(), receiver.side()).reflectance
-                                         : ctx.receiver_weights[receiver.value]};
+            ctx.receiver_weights.empty()
+                ? ps.material(receiver.patch(), receiver.side()).reflectance
+                : ctx.receiver_weights[receiver.value]};
 }
 
 // w_ij of docs/design.md §4: the largest share of the source's radiosity the receiver reflects.
@@ -96,16 +97,15 @@ double line_factor(const RefinementContext& ctx, const PatchPair& pp, const Elem
                               : ctx.oracle.geometric_factor(g);
     counters.lines_cast += kernel.size();
     ++counters.oracle_evaluations;
-    counters.oracle_nanoseconds += std::uint64_t(
-        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() -
-                                                             start)
-            .count());
+    counters.oracle_nanoseconds +=
+        std::uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                          std::chrono::steady_clock::now() - start)
+                          .count());
     return factor;
 }
 
-double geometric_factor(const RefinementContext& ctx, const PatchPair& pp,
-                        const Element& receiver, const Element& source,
-                        RefinementCounters& counters) {
+double geometric_factor(const RefinementContext& ctx, const PatchPair& pp, const Element& receiver,
+                        const Element& source, RefinementCounters& counters) {
     if (!ctx.oracle.uses_lines()) {
         ++counters.oracle_evaluations;
         return ctx.oracle.geometric_factor(centre_geometry(ctx.hierarchy, pp, receiver, source));
@@ -178,7 +178,7 @@ Step next_step(const RefinementContext& ctx, const PatchPair& pp, const Element&
     // for every source, which keeps the furnace exact. Once the receiver is a side's root the
     // source is its side's root (docs/design.md §2.7).
     return is_cluster(i) || (split_i && (!split_j || i.area >= j.area)) ? Step::split_receiver
-                                                                         : Step::split_source;
+                                                                        : Step::split_source;
 }
 
 // A refused receiver cluster is split (and so opened, a part of the mesh no more): the receiver
@@ -193,8 +193,9 @@ void split_cluster(const RefinementContext& ctx, Element*& i, Element*& j, const
 // The descents refine a mesh; a fixed mesh's receivers are fixed_receiver's.
 void require_refining(const RefinementContext& ctx, const char* caller) {
     if (ctx.fixed_leaves) {
-        throw std::logic_error(std::string(caller) + " on a fixed mesh: its receivers are "
-                                                     "fixed_receiver's");
+        throw std::logic_error(std::string(caller) +
+                               " on a fixed mesh: its receivers are "
+                               "fixed_receiver's");
     }
 }
 
@@ -388,9 +389,8 @@ void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queri
     });
     for (const RefinementCounters& c : local) counters += c;
     Element* const* const grouped_receivers = buffers.receivers.data();
-    tbb::parallel_for(std::size_t(0), queries.size(), [&](std::size_t t) {
-        receivers[sorted[t].value] = grouped_receivers[t];
-    });
+    tbb::parallel_for(std::size_t(0), queries.size(),
+                      [&](std::size_t t) { receivers[sorted[t].value] = grouped_receivers[t]; });
 }
 
 }  // namespace hmcr

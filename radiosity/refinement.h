@@ -8,12 +8,12 @@
 
 #include "common/radix_sort.h"
 #include "oracles/oracle.h"
-#include "rays/embree_scene.h"
 #include "radiosity/clusters.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/leaf_index.h"
 #include "radiosity/link_cache.h"
 #include "radiosity/solver_options.h"
+#include "rays/embree_scene.h"
 
 namespace hmcr {
 
@@ -71,9 +71,9 @@ struct LinkQuery {
 };
 
 // Descends from (root of the receiver side, root of the source side), subdividing the larger
-// element of a refused link towards the hit point y (receiver) or the ray origin x (source). One ray at
-// a time from the roots, as docs/design.md §3 states it: the reference refine_links is tested
-// against. For a refining mesh only, as refine_links (std::logic_error on a fixed one).
+// element of a refused link towards the hit point y (receiver) or the ray origin x (source). One
+// ray at a time from the roots, as docs/design.md §3 states it: the reference refine_links is
+// tested against. For a refining mesh only, as refine_links (std::logic_error on a fixed one).
 Element& refine_link(const RefinementContext& ctx, const LinkQuery& query,
                      RefinementCounters& counters);
 
@@ -86,9 +86,9 @@ Element& fixed_receiver(const RefinementContext& ctx, const LinkQuery& query);
 struct DescentScratch {
     std::vector<Keyed<std::uint32_t>> keyed, keyed_scratch;
     std::vector<LinkQuery> grouped;
-    std::vector<Element*> receivers;                 // of the grouped queries
+    std::vector<Element*> receivers;  // of the grouped queries
     std::vector<std::uint32_t> index, scratch;
-    std::vector<std::uint8_t> child;                 // of each index entry, at one level
+    std::vector<std::uint8_t> child;       // of each index entry, at one level
     std::vector<std::size_t> group_start;  // where each (receiver, source) group begins
 
     // Room for `queries` at once: the rays that land vary from batch to batch, and buffers

@@ -53,7 +53,7 @@ VertexIncidences incidences(const ConformingPolygons& polys) {
 // Radiosity B = E + rho H jumps where E or rho jumps, even where H is smooth: blending there
 // would smear a light's edge into the ceiling around it, or one colour into the next.
 class CreaseGrouping {
-  public:
+public:
     // Whether the faces across each mesh edge blend is decided once per edge: the grouping runs
     // twice at every vertex that patches share (to count the points, then to emit them), and
     // asks about each edge from both of its ends. Deciding it there, from two patches anywhere
@@ -77,10 +77,10 @@ class CreaseGrouping {
                 const std::uint32_t f0 = first_face[e];
                 if (side == kBack && !(set.two_sided(f0) && set.two_sided(f))) continue;
                 const PatchMaterial &m0 = set.material(f0, side), &m1 = set.material(f, side);
-                const bool same_material = (m0.reflectance == m1.reflectance).all() &&
-                                           (m0.emission == m1.emission).all();
-                m_blends[e] = same_material &&
-                              set.patches[f0].normal.dot(set.patches[f].normal) > cos_crease;
+                const bool same_material =
+                    (m0.reflectance == m1.reflectance).all() && (m0.emission == m1.emission).all();
+                m_blends[e] =
+                    same_material && set.patches[f0].normal.dot(set.patches[f].normal) > cos_crease;
             }
         }
     }
@@ -97,7 +97,7 @@ class CreaseGrouping {
         for (std::size_t i = 0; i < patches.size(); ++i) group[i] = find(int(i));
     }
 
-  private:
+private:
     // Two of the patches join when they have a side on the same blending mesh edge through v
     // (a mesh edge, or an edge with v at one end).
     void join_across_sides(const LatticeVertex& v, const std::vector<std::uint32_t>& patches) {
@@ -273,13 +273,11 @@ ShadedMesh finish(FromTree t) {
                     });
     out.points.reserve(points);
     out.point_radiosity.reserve(points);
-    for_each_vertex(
-        [&](const Incidence* first, const Incidence* last, const LatticeVertex& v) {
-            emit_point(first, last, v.position, out);
-        },
-        [&](const Incidence* first, const Incidence* last, const LatticeVertex& v) {
-            emit_points(first, last, v, grouping, scratch, out);
-        });
+    for_each_vertex([&](const Incidence* first, const Incidence* last,
+                        const LatticeVertex& v) { emit_point(first, last, v.position, out); },
+                    [&](const Incidence* first, const Incidence* last, const LatticeVertex& v) {
+                        emit_points(first, last, v, grouping, scratch, out);
+                    });
     return std::move(out);
 }
 

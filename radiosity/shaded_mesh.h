@@ -7,8 +7,8 @@
 #include <span>
 #include <vector>
 
-#include "radiosity/hierarchy.h"
 #include "common/types.h"
+#include "radiosity/hierarchy.h"
 
 namespace hmcr {
 
@@ -48,8 +48,7 @@ ShadedMesh build_shaded_mesh(const Hierarchy& h, double crease_degrees = kCrease
 // The same, for a tree nobody needs afterwards: it is released as soon as the conforming
 // polygons, the cells' data and the crease flags are taken from it, before the largest arrays
 // of the output are built. At 10^6 patches the tree and its patches are 400 MB.
-ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h,
-                             double crease_degrees = kCreaseDegrees);
+ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, double crease_degrees = kCreaseDegrees);
 // Fills mesh.cluster_id from each side value's cluster leaf (Solution::cluster_of_side()); leaves
 // it empty when that is.
 void set_cluster_ids(ShadedMesh& mesh, std::span<const std::int32_t> cluster_of_side);

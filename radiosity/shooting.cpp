@@ -86,8 +86,8 @@ struct ShootingBuffers::Impl {
     // Each ray's deposit, added after the batch by one thread: atomic adds from both threads
     // onto the few hot elements of a small scene made 2 threads 20% slower.
     struct Deposit {
-        Quanta quanta{};    // rho * Phi, for an element
-        Quanta incident{};  // Phi, for a cluster (docs/design.md §2.7)
+        Quanta quanta{};     // rho * Phi, for an element
+        Quanta incident{};   // Phi, for a cluster (docs/design.md §2.7)
         bool lands = false;  // on a front face: the descent finds its element
     };
     // The batch's descents are made together, after its rays are traced, so that rays between
@@ -149,8 +149,8 @@ Vec3 hit_point(const GeneratedRays& rays, std::size_t k, float distance) {
 // deposit: visit(material, region) for each that lands on a side, with the side's material and
 // the source region the ray left.
 template <class Visit>
-void trace_pilots(const RefinementContext& ctx, const IterationSources& sources,
-                  std::uint32_t key, std::uint64_t rays, Visit visit) {
+void trace_pilots(const RefinementContext& ctx, const IterationSources& sources, std::uint32_t key,
+                  std::uint64_t rays, Visit visit) {
     set_tracing_float_mode();
     GeneratedRays batch;
     batch.resize(rays);
@@ -189,9 +189,8 @@ double zero_surfaces_seen(const RefinementContext& ctx, const ZeroSurfaces& zero
     sources.rebuild(zero, Rgb::Ones());
     if (sources.total <= 0 || rays == 0) return 1;
     std::uint64_t seen = 0;
-    trace_pilots(ctx, sources, kZeroPilotKey, rays, [&](const PatchMaterial& m, std::uint32_t) {
-        seen += (m.reflectance > 0).any();
-    });
+    trace_pilots(ctx, sources, kZeroPilotKey, rays,
+                 [&](const PatchMaterial& m, std::uint32_t) { seen += (m.reflectance > 0).any(); });
     return double(seen) / double(rays);
 }
 

@@ -8,9 +8,9 @@
 #include <optional>
 #include <vector>
 
+#include "radiosity/refinement.h"
 #include "rays/alias_table.h"
 #include "rays/ray_generator.h"
-#include "radiosity/refinement.h"
 
 namespace hmcr {
 
@@ -23,8 +23,8 @@ struct ZeroSurfaces;
 // With a control constant beta (docs/design.md §3.11) a leaf shoots Delta B_l - beta, with
 // weight A_l sum_c |Delta B_l,c - beta_c|, and the zero surfaces shoot -beta.
 struct IterationSources {
-    std::vector<RayRegion> regions;  // each leaf's domain and patch
-    std::vector<Rgb> share;          // each leaf's (Delta B - beta) / sum_c |Delta B_c - beta_c|
+    std::vector<RayRegion> regions;   // each leaf's domain and patch
+    std::vector<Rgb> share;           // each leaf's (Delta B - beta) / sum_c |Delta B_c - beta_c|
     double total = 0;                 // S
     Rgb max_share = Rgb::Zero();      // the largest |share| of a leaf in each channel
     std::optional<AliasTable> alias;  // none when nothing is left to shoot
@@ -60,8 +60,8 @@ struct RayPart {
 };
 
 struct IterationOutcome {
-    std::uint64_t rays = 0;  // shot by this process
-    PowerQuantum quantum;    // of the whole iteration, the same for every slice
+    std::uint64_t rays = 0;    // shot by this process
+    PowerQuantum quantum;      // of the whole iteration, the same for every slice
     Quanta shot_power{};       // sum of the rays' power
     Quanta escaped_power{};    // rays that left the scene
     Quanta back_face_power{};  // rays absorbed by a back face
@@ -72,14 +72,14 @@ struct IterationOutcome {
 // iteration to the next: allocated once per solve, their pages are faulted in once (when every
 // iteration allocated its own, they were a third of a Cornell box solve's page faults).
 class ShootingBuffers {
-  public:
+public:
     ShootingBuffers();
     ~ShootingBuffers();
 
     struct Impl;  // defined where they are used
     Impl& impl() { return *m_impl; }
 
-  private:
+private:
     std::unique_ptr<Impl> m_impl;
 };
 

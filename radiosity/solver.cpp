@@ -14,7 +14,6 @@
 #include "common/error.h"
 #include "common/interrupt.h"
 #include "common/stopwatch.h"
-#include "rays/embree_scene.h"
 #include "radiosity/clusters.h"
 #include "radiosity/control_variate.h"
 #include "radiosity/link_cache.h"
@@ -23,6 +22,7 @@
 #include "radiosity/shooting.h"
 #include "radiosity/solver_settings.h"
 #include "radiosity/view_importance.h"
+#include "rays/embree_scene.h"
 
 namespace hmcr {
 namespace {
@@ -66,8 +66,8 @@ PowerQuantum common_quantum(const IterationSources& a, std::uint64_t a_rays,
 // the last `zero_rays` of them from the zero surfaces' sources, in one quantum (§3.11).
 // `on_batch` gets the rays this rank has shot so far.
 IterationOutcome shoot_on_rank(const RefinementContext& ctx, const IterationSources& sources,
-                               const IterationSources* zero, std::uint32_t it,
-                               std::uint64_t rays, std::uint64_t zero_rays, const Ranks& ranks,
+                               const IterationSources* zero, std::uint32_t it, std::uint64_t rays,
+                               std::uint64_t zero_rays, const Ranks& ranks,
                                const std::function<void(std::uint64_t)>& on_batch,
                                ShootingBuffers& buffers) {
     const auto slice = [&](std::uint64_t n) { return slice_of(n, ranks.rank(), ranks.size()); };
@@ -77,10 +77,11 @@ IterationOutcome shoot_on_rank(const RefinementContext& ctx, const IterationSour
     IterationOutcome out =
         shoot_iteration(ctx, sources, it, side_rays, slice(side_rays), on_batch, &buffers, sides);
     const std::uint64_t done = out.rays;
-    add_part(out, shoot_iteration(
-                      ctx, *zero, it, zero_rays, slice(zero_rays),
-                      [&](std::uint64_t n) { if (on_batch) on_batch(done + n); }, &buffers,
-                      {side_rays, sides.quantum}));
+    add_part(out, shoot_iteration(ctx, *zero, it, zero_rays, slice(zero_rays),
+                                  [&](std::uint64_t n) {
+                                      if (on_batch) on_batch(done + n);
+                                  },
+                                  &buffers, {side_rays, sides.quantum}));
     return out;
 }
 
@@ -166,7 +167,8 @@ StartMesh frozen_like(PatchSet patches, const SolverOptions& o, const Solution& 
                       std::shared_ptr<const EmbreeScene>& scene) {
     StartMesh mesh{roots(std::move(patches), o, scene), nullptr, true};
     mesh.hierarchy->subdivide_like(*shape.hierarchy);
-    if (shape.clusters) mesh.clusters = clusters_opened(*mesh.hierarchy, shape.clusters->open_flags());
+    if (shape.clusters)
+        mesh.clusters = clusters_opened(*mesh.hierarchy, shape.clusters->open_flags());
     return mesh;
 }
 

@@ -32,7 +32,7 @@ struct IterationRecord {
     Rgb unshot_after = Rgb::Zero();
     std::size_t leaves_after = 0;
     double seconds = 0;
-    bool frozen = false;  // an iteration of the frozen pass of refine-then-freeze
+    bool frozen = false;                 // an iteration of the frozen pass of refine-then-freeze
     Rgb control_constant = Rgb::Zero();  // beta of the control variate (0: none), §3.11
 };
 
@@ -45,16 +45,16 @@ struct SolveStats {
     std::uint64_t oracle_evaluations = 0;  // geometric factors computed
     std::uint64_t cache_hits = 0;
     std::uint64_t lines_cast = 0;
-    double oracle_seconds = 0;             // computing line-based factors, summed over threads
+    double oracle_seconds = 0;  // computing line-based factors, summed over threads
     std::size_t cache_bytes = 0, cache_capacity = 0, cache_evictions = 0;
-    double epsilon = 0;              // the value used (the oracle's default if not given)
-    int threads = 0;                 // worker threads used (by each rank)
-    int ranks = 1;                   // MPI processes that shared the rays
-    std::size_t patches = 0;        // in the scene
+    double epsilon = 0;                 // the value used (the oracle's default if not given)
+    int threads = 0;                    // worker threads used (by each rank)
+    int ranks = 1;                      // MPI processes that shared the rays
+    std::size_t patches = 0;            // in the scene
     std::size_t two_sided_patches = 0;  // of them, those with a back side (docs/design.md §1.3)
     Rgb emitted_power = Rgb::Zero();
-    double total_area = 0;          // of the patches, m^2
-    double max_emitted_power = 0;   // of one patch, in its brightest channel, W
+    double total_area = 0;         // of the patches, m^2
+    double max_emitted_power = 0;  // of one patch, in its brightest channel, W
     // The power balance of the pass whose values the solution holds (the frozen one when the
     // mesh was refined first, docs/design.md §3.10).
     Rgb shot_power = Rgb::Zero();       // sum over iterations of the rays' power
@@ -65,7 +65,7 @@ struct SolveStats {
     // faces: the hierarchy's leaves, one output cell each.
     std::size_t elements = 0, leaves = 0, cluster_leaves = 0, faces = 0, hierarchy_bytes = 0;
     double setup_seconds = 0, shooting_seconds = 0, push_pull_seconds = 0, total_seconds = 0;
-    double refining_seconds = 0;  // the refining pass's part of total_seconds
+    double refining_seconds = 0;    // the refining pass's part of total_seconds
     double importance_seconds = 0;  // the view importance's part of refining_seconds
 
     // Fraction of the shot power that hit back faces (a sign of flipped normals if > 1%).
@@ -99,8 +99,8 @@ Solution solve(const PatchMesh& mesh, const SolverOptions& options,
                Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 // The same from the mesh's patches (build_patch_set), so that the mesh can be released before
 // the rays are shot.
-Solution solve(PatchSet patches, const SolverOptions& options,
-               Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
+Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress = no_progress(),
+               const Ranks& ranks = Ranks::single());
 
 // Refine-then-freeze (docs/design.md §3.10). refine_pass is the refined solve with the refining
 // share of the rays, what a budget search probes; freeze_pass solves its leaves again from

@@ -69,7 +69,9 @@ struct EnumNames<Importance> {
     static constexpr std::array<std::string_view, 2> names{"none", "views"};
 };
 template <class E>
-concept NamedEnum = requires { EnumNames<E>::names; };
+concept NamedEnum = requires {
+    EnumNames<E>::names;
+};
 
 // "total" for LinkWeight::total: how flags, scene files and summaries spell a value.
 template <NamedEnum E>
@@ -98,7 +100,9 @@ struct SettingNames<E> {
     static std::string_view name(E value) { return hmcr::name(value); }
 };
 template <class T>
-concept NamedSetting = requires(T v) { SettingNames<T>::name(v); };
+concept NamedSetting = requires(T v) {
+    SettingNames<T>::name(v);
+};
 
 // clang-format off
 #define HMCR_SOLVER_SETTINGS(X)                                                                   \
@@ -154,7 +158,6 @@ std::uint64_t default_max_elements();
 
 // epsilon's default: the oracle's own (Oracle::default_epsilon).
 inline constexpr double kOracleDefault = std::numeric_limits<double>::quiet_NaN();
-
 
 struct SolverOptions {
 #define HMCR_FIELD(type, name, default_value, ...) type name = default_value;

@@ -54,9 +54,9 @@ T json_value([[maybe_unused]] const Setting<T>& s, const json& j) {
     } else {
         // Whole numbers only: 2.5, 1e30 (a float to JSON) and -5 for a count are refused, not
         // rounded or wrapped.
-        const bool whole = j.is_number_integer() &&
-                           (j.is_number_unsigned() || j.get<std::int64_t>() >= 0 ||
-                            std::numeric_limits<T>::is_signed);
+        const bool whole =
+            j.is_number_integer() && (j.is_number_unsigned() || j.get<std::int64_t>() >= 0 ||
+                                      std::numeric_limits<T>::is_signed);
         if (!whole) throw InputError("must be a whole number in range" + got(j));
         if constexpr (std::is_signed_v<T>) {
             const auto v = j.is_number_unsigned() ? std::numeric_limits<std::int64_t>::max()

@@ -26,8 +26,8 @@ struct Setting {
 // field of each options object given (none, one, or several to compare or merge).
 template <class F, class... Options>
 void for_each_setting(F&& f, Options&... options) {
-#define HMCR_VISIT(type, name, default_value, condition, range, scope, help)                 \
-    f(Setting<type>{#name, SettingScope::scope, help, range, default_value,                  \
+#define HMCR_VISIT(type, name, default_value, condition, range, scope, help)         \
+    f(Setting<type>{#name, SettingScope::scope, help, range, default_value,          \
                     []([[maybe_unused]] const type& v) { return bool(condition); }}, \
       options.name...);
     HMCR_SOLVER_SETTINGS(HMCR_VISIT)

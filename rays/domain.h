@@ -36,10 +36,14 @@ struct Domain {
         const float h = 0.5f * s;
         if (quad) return {u0 + (k & 1) * h, v0 + (k >> 1) * h, h};
         switch (k) {
-            case 0: return {u0, v0, h};
-            case 1: return {u0 + h, v0, h};
-            case 2: return {u0, v0 + h, h};
-            default: return {u0 + h, v0 + h, -h};
+            case 0:
+                return {u0, v0, h};
+            case 1:
+                return {u0 + h, v0, h};
+            case 2:
+                return {u0, v0 + h, h};
+            default:
+                return {u0 + h, v0 + h, -h};
         }
     }
 

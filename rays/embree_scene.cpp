@@ -120,10 +120,9 @@ EmbreeScene::EmbreeScene(const PatchSet& set) : m_impl(std::make_unique<Impl>())
             const Patch& p = patches[i];
             const auto& v = mesh.faces[i];
             if (mesh.corner_count(i) != p.corner_count) {
-                throw std::invalid_argument("face " + std::to_string(i) + " has " +
-                                            std::to_string(mesh.corner_count(i)) +
-                                            " corners, its patch " +
-                                            std::to_string(p.corner_count));
+                throw std::invalid_argument(
+                    "face " + std::to_string(i) + " has " + std::to_string(mesh.corner_count(i)) +
+                    " corners, its patch " + std::to_string(p.corner_count));
             }
             // A vertex is written once per patch that meets there, each time the same value:
             // the patches' corners are the mesh's points.
@@ -213,8 +212,7 @@ void EmbreeScene::build(std::size_t vertex_count, std::size_t triangle_count, co
         rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                    m_impl->vertices.data(), 0, 3 * sizeof(float), vertex_count);
         rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                   m_impl->indices.data(), 0, 3 * sizeof(unsigned),
-                                   triangle_count);
+                                   m_impl->indices.data(), 0, 3 * sizeof(unsigned), triangle_count);
         if (!m_impl->error.empty()) rtcReleaseGeometry(geom);  // before the throw below
         throw_if_failed(*m_impl, "sharing the geometry with Embree");
         rtcCommitGeometry(geom);
@@ -246,10 +244,9 @@ void EmbreeScene::first_hits(const GeneratedRays& rays, std::size_t begin, std::
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     for (std::size_t k = begin; k < end; ++k) {
-        const RTCRayHit rh =
-            intersect(m_impl->scene, context, rays.origin[0][k], rays.origin[1][k],
-                      rays.origin[2][k], rays.direction[0][k], rays.direction[1][k],
-                      rays.direction[2][k], float(m_offset));
+        const RTCRayHit rh = intersect(m_impl->scene, context, rays.origin[0][k], rays.origin[1][k],
+                                       rays.origin[2][k], rays.direction[0][k],
+                                       rays.direction[1][k], rays.direction[2][k], float(m_offset));
         BatchHit& h = hits[k];
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
             h.patch = BatchHit::kNoHit;

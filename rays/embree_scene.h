@@ -83,8 +83,8 @@ public:
 private:
     // The BVH of `triangle_count` triangles over `vertex_count` vertices, which fill(vertices,
     // triangles) writes straight into Embree's buffers: 3 floats, 3 vertex indices each.
-    void build(std::size_t vertex_count, std::size_t triangle_count, const Vec3& lo,
-               const Vec3& hi, const std::function<void(float*, unsigned*)>& fill);
+    void build(std::size_t vertex_count, std::size_t triangle_count, const Vec3& lo, const Vec3& hi,
+               const std::function<void(float*, unsigned*)>& fill);
 
     // build() for patches: their bounds, and the triangles add_patch_triangles() writes.
     void build_patches(const std::vector<Patch>& patches, std::size_t vertex_count,

@@ -11,9 +11,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/types.h"
 #include "meshes/connectivity.h"
 #include "meshes/patch_mesh.h"
-#include "common/types.h"
 
 namespace hmcr {
 
@@ -99,8 +99,8 @@ struct PatchSet {
     std::vector<PatchMaterial> materials{PatchMaterial{}};  // patches name them by index
     // The material of each patch's back side, or kOneSided; empty when no patch has a back.
     std::vector<std::uint32_t> back_materials;
-    double total_area = 0;          // A_T, of the sides: a two-sided patch's area counts twice
-    double max_emitted_power = 0;   // Phi_max: largest A_i * max_c E_i,c of any side
+    double total_area = 0;            // A_T, of the sides: a two-sided patch's area counts twice
+    double max_emitted_power = 0;     // Phi_max: largest A_i * max_c E_i,c of any side
     Rgb emitted_power = Rgb::Zero();  // sum of A_i * E_i over the sides
 
     const Rgb& reflectance(const Patch& p) const { return materials[p.material].reflectance; }

@@ -4,6 +4,8 @@
 // lane (no fused multiply-add, no approximate reciprocal), so all widths give the same bits.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "rays/ray_generator.cpp"
+#include "rays/ray_generator.h"
+
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
@@ -12,7 +14,6 @@
 #include <cstring>
 
 #include "common/populated.h"
-#include "rays/ray_generator.h"
 #include "rays/rng.h"
 #include "rays/sampling.h"
 
@@ -79,8 +80,8 @@ struct Streams {
 // Density proportional to (1 - x) a + x b on [0, 1] (rays/sampling.h's sample_linear).
 HWY_INLINE V linear(D d, V a, V b, V xi) {
     const V one = hn::Set(d, 1.0);
-    const V root = hn::Sqrt(hn::Add(hn::Mul(hn::Mul(hn::Sub(one, xi), a), a),
-                                    hn::Mul(hn::Mul(xi, b), b)));
+    const V root =
+        hn::Sqrt(hn::Add(hn::Mul(hn::Mul(hn::Sub(one, xi), a), a), hn::Mul(hn::Mul(xi, b), b)));
     const V x = hn::Div(hn::Mul(xi, hn::Add(a, b)), hn::Add(a, root));
     return hn::IfThenElse(hn::Eq(a, b), xi, x);
 }
@@ -97,8 +98,8 @@ HWY_INLINE void cos_sin_turn(D d, V xi, V& cos_out, V& sin_out) {
     const DI di;
     const V four_xi = hn::Mul(xi, hn::Set(d, 4.0));
     const V quarter = hn::Floor(four_xi);
-    const V theta = hn::Mul(hn::Sub(hn::Sub(four_xi, quarter), hn::Set(d, 0.5)),
-                            hn::Set(d, kQuarterTurn));
+    const V theta =
+        hn::Mul(hn::Sub(hn::Sub(four_xi, quarter), hn::Set(d, 0.5)), hn::Set(d, kQuarterTurn));
     const V t2 = hn::Mul(theta, theta);
     const V c = horner(d, t2, kTurnCos.data(), kTurnCos.size());
     const V s = hn::Mul(theta, horner(d, t2, kTurnSin.data(), kTurnSin.size()));
@@ -148,23 +149,23 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
 
         // The region: Walker's alias table (rays/alias_table.h), bins of {keep, alias}.
         const V scaled = hn::Mul(xi_region, hn::Set(d, double(region_count)));
-        const VI bin = hn::Min(hn::ConvertTo(di, scaled), hn::Set(di, std::int64_t(region_count) - 1));
+        const VI bin =
+            hn::Min(hn::ConvertTo(di, scaled), hn::Set(di, std::int64_t(region_count) - 1));
         const V keep = hn::GatherIndex(d, bin_doubles, hn::ShiftLeft<1>(bin));
-        const VI alias = hn::BitCast(di, hn::GatherIndex(
-                                             du, reinterpret_cast<const std::uint64_t*>(bins),
-                                             hn::Add(hn::ShiftLeft<1>(bin), hn::Set(di, 1))));
-        const VI region =
-            hn::IfThenElse(hn::RebindMask(di, hn::Lt(hn::Sub(scaled, hn::ConvertTo(d, bin)), keep)),
-                           bin, alias);
+        const VI alias =
+            hn::BitCast(di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(bins),
+                                            hn::Add(hn::ShiftLeft<1>(bin), hn::Set(di, 1))));
+        const VI region = hn::IfThenElse(
+            hn::RebindMask(di, hn::Lt(hn::Sub(scaled, hn::ConvertTo(d, bin)), keep)), bin, alias);
 
         // The region's domain and patch.
         const VI at = hn::ShiftLeft<2>(region);
         const V u0 = hn::GatherIndex(d, region_doubles, at);
         const V v0 = hn::GatherIndex(d, region_doubles, hn::Add(at, hn::Set(di, 1)));
         const V s = hn::GatherIndex(d, region_doubles, hn::Add(at, hn::Set(di, 2)));
-        const VI patch_map = hn::BitCast(
-            di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(regions),
-                                hn::Add(at, hn::Set(di, 3))));
+        const VI patch_map =
+            hn::BitCast(di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(regions),
+                                            hn::Add(at, hn::Set(di, 3))));
         const VI patch = hn::And(patch_map, hn::Set(di, 0xffffffff));
         const VI map = hn::And(hn::ShiftRight<32>(patch_map), hn::Set(di, 0xffff));
         const auto back = hn::RebindMask(d, hn::Eq(hn::ShiftRight<48>(patch_map), hn::Set(di, 1)));
@@ -173,16 +174,18 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
         V c[4][3], normal[3];
         for (int q = 0; q < 4; ++q) {
             for (int a = 0; a < 3; ++a) {
-                c[q][a] = hn::GatherIndex(
-                    d, patch_doubles, hn::Add(base, hn::Set(di, layout.corner + 3 * q + a)));
+                c[q][a] = hn::GatherIndex(d, patch_doubles,
+                                          hn::Add(base, hn::Set(di, layout.corner + 3 * q + a)));
             }
         }
         for (int a = 0; a < 3; ++a) {
-            normal[a] = hn::GatherIndex(d, patch_doubles, hn::Add(base, hn::Set(di, layout.normal + a)));
+            normal[a] =
+                hn::GatherIndex(d, patch_doubles, hn::Add(base, hn::Set(di, layout.normal + a)));
         }
         // The corners' map is the same on either side; the direction leaves the region's side.
         V out_normal[3];
-        for (int a = 0; a < 3; ++a) out_normal[a] = hn::IfThenElse(back, hn::Neg(normal[a]), normal[a]);
+        for (int a = 0; a < 3; ++a)
+            out_normal[a] = hn::IfThenElse(back, hn::Neg(normal[a]), normal[a]);
         const auto is_triangle = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 0)));
         const auto is_bilinear = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 2)));
         // P(u, v) = c0 + u e1 + v ev + u v g: ev = c2 - c0, g = 0 on a triangle; ev = c3 - c0,
@@ -190,9 +193,10 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
         V e1[3], ev[3], g[3];
         for (int a = 0; a < 3; ++a) {
             e1[a] = hn::Sub(c[1][a], c[0][a]);
-            ev[a] = hn::IfThenElse(is_triangle, hn::Sub(c[2][a], c[0][a]), hn::Sub(c[3][a], c[0][a]));
-            g[a] = hn::IfThenElseZero(hn::Not(is_triangle),
-                                      hn::Add(hn::Sub(c[0][a], c[1][a]), hn::Sub(c[2][a], c[3][a])));
+            ev[a] =
+                hn::IfThenElse(is_triangle, hn::Sub(c[2][a], c[0][a]), hn::Sub(c[3][a], c[0][a]));
+            g[a] = hn::IfThenElseZero(hn::Not(is_triangle), hn::Add(hn::Sub(c[0][a], c[1][a]),
+                                                                    hn::Sub(c[2][a], c[3][a])));
         }
 
         // The point, uniform by area on the region (rays/element_sampler.h).
@@ -234,8 +238,9 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
         const V sign = hn::CopySign(one, out_normal[2]);
         const V fa = hn::Div(hn::Set(d, -1.0), hn::Add(sign, out_normal[2]));
         const V fc = hn::Mul(hn::Mul(out_normal[0], out_normal[1]), fa);
-        const V t[3] = {hn::Add(one, hn::Mul(hn::Mul(hn::Mul(sign, out_normal[0]), out_normal[0]), fa)),
-                        hn::Mul(sign, fc), hn::Neg(hn::Mul(sign, out_normal[0]))};
+        const V t[3] = {
+            hn::Add(one, hn::Mul(hn::Mul(hn::Mul(sign, out_normal[0]), out_normal[0]), fa)),
+            hn::Mul(sign, fc), hn::Neg(hn::Mul(sign, out_normal[0]))};
         const V bt3[3] = {fc, hn::Add(sign, hn::Mul(hn::Mul(out_normal[1], out_normal[1]), fa)),
                           hn::Neg(out_normal[1])};
         const V r = hn::Sqrt(xi_r);
@@ -328,11 +333,12 @@ RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const Ray
     for (int a = 0; a < 3; ++a) {
         e1[a] = p.corner[1][a] - p.corner[0][a];
         ev[a] = triangle ? p.corner[2][a] - p.corner[0][a] : p.corner[3][a] - p.corner[0][a];
-        g[a] = triangle ? 0.0
-                        : (p.corner[0][a] - p.corner[1][a]) + (p.corner[2][a] - p.corner[3][a]);
+        g[a] =
+            triangle ? 0.0 : (p.corner[0][a] - p.corner[1][a]) + (p.corner[2][a] - p.corner[3][a]);
     }
     const auto cross = [](const Vec3& x, const Vec3& y) {
-        return Vec3(x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]);
+        return Vec3(x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                    x[0] * y[1] - x[1] * y[0]);
     };
     const auto dot = [](const Vec3& x, const Vec3& y) {
         return (x[0] * y[0] + x[1] * y[1]) + x[2] * y[2];

@@ -35,14 +35,25 @@ inline void tangent_frame(const Vec3& n, Vec3& t, Vec3& b) {
 
 // cos and sin of a quarter turn's Taylor series at |theta| <= pi/4, to theta^18 and theta^17:
 // the first term left out is below 1e-19.
-inline constexpr std::array<double, 10> kTurnCos = {
-    1.0,          -1.0 / 2,           1.0 / 24,           -1.0 / 720,
-    1.0 / 40320,  -1.0 / 3628800,     1.0 / 479001600,    -1.0 / 87178291200.0,
-    1.0 / 20922789888000.0,           -1.0 / 6402373705728000.0};
-inline constexpr std::array<double, 9> kTurnSin = {
-    1.0,           -1.0 / 6,          1.0 / 120,          -1.0 / 5040,
-    1.0 / 362880,  -1.0 / 39916800,   1.0 / 6227020800.0, -1.0 / 1307674368000.0,
-    1.0 / 355687428096000.0};
+inline constexpr std::array<double, 10> kTurnCos = {1.0,
+                                                    -1.0 / 2,
+                                                    1.0 / 24,
+                                                    -1.0 / 720,
+                                                    1.0 / 40320,
+                                                    -1.0 / 3628800,
+                                                    1.0 / 479001600,
+                                                    -1.0 / 87178291200.0,
+                                                    1.0 / 20922789888000.0,
+                                                    -1.0 / 6402373705728000.0};
+inline constexpr std::array<double, 9> kTurnSin = {1.0,
+                                                   -1.0 / 6,
+                                                   1.0 / 120,
+                                                   -1.0 / 5040,
+                                                   1.0 / 362880,
+                                                   -1.0 / 39916800,
+                                                   1.0 / 6227020800.0,
+                                                   -1.0 / 1307674368000.0,
+                                                   1.0 / 355687428096000.0};
 inline constexpr double kQuarterTurn = 1.5707963267948966;  // pi / 2
 inline constexpr double kHalfRoot2 = 0.70710678118654752;   // cos(pi / 4)
 

@@ -10,7 +10,7 @@
 namespace hmcr {
 
 class TrianglePatches {
-  public:
+public:
     void reserve(std::size_t triangles) {
         m_bits.reserve(triangles / 64 + 1);
         m_before.reserve(triangles / 64 + 1);
@@ -36,7 +36,7 @@ class TrianglePatches {
         return t - m_before[t / 64] - ones(upto);
     }
 
-  private:
+private:
     // std::popcount is a library call on the x86-64 baseline the build targets (no POPCNT):
     // the bit-parallel count inline is a third of the instructions at each hit.
     static std::uint32_t ones(std::uint64_t x) {

@@ -8,9 +8,10 @@ void check_study_size(std::uint64_t per_seed, int seeds, std::uint64_t first_see
     // In floating point: the product of a long list and a billion seeds cannot wrap.
     const double cells = double(per_seed) * double(seeds);
     if (cells > double(kMaxStudyCells)) {
-        throw InputError(fmt::format("study: {} x {} seeds = {:.0f} cells, more than the {} a "
-                                     "study may have",
-                                     per_seed, seeds, cells, kMaxStudyCells));
+        throw InputError(
+            fmt::format("study: {} x {} seeds = {:.0f} cells, more than the {} a "
+                        "study may have",
+                        per_seed, seeds, cells, kMaxStudyCells));
     }
     if (std::uint64_t(seeds - 1) > std::numeric_limits<std::uint64_t>::max() - first_seed) {
         throw InputError(fmt::format("study: seeds {} to {} + {} pass the largest seed, 2^64 - 1",

@@ -62,8 +62,8 @@ struct CellFileRule {
 // computed again (a truncated write, an edited file) and said so in `notes`; one made with other
 // settings is refused (InputError naming the file) unless rule.redo_other_settings.
 template <class Cell>
-std::optional<Cell> read_previous_cell(const std::filesystem::path& file, const CellFileRule<Cell>& rule,
-                                  Progress& notes) {
+std::optional<Cell> read_previous_cell(const std::filesystem::path& file,
+                                       const CellFileRule<Cell>& rule, Progress& notes) {
     std::error_code ec;
     if (!std::filesystem::exists(file, ec)) return std::nullopt;
     Cell cell;
@@ -98,8 +98,8 @@ struct CellLoop {
     std::function<Cell(const nlohmann::json&)> from_json;
     std::function<std::filesystem::path(std::size_t)> file;
     std::function<std::vector<std::filesystem::path>(std::size_t)> outputs;  // file() and more
-    std::function<std::string(std::size_t)> where;      // "[3/21] CELL"
-    std::function<std::string(const Cell&)> outcome;    // "done", "failed", ...
+    std::function<std::string(std::size_t)> where;                           // "[3/21] CELL"
+    std::function<std::string(const Cell&)> outcome;  // "done", "failed", ...
 };
 
 // One cell, before any is computed: its outputs checked (common/output_paths.h: none a folder, a

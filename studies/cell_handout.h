@@ -69,8 +69,9 @@ std::vector<Cell> hand_out_cells(const CellLoop<Cell>& loop, Progress& progress,
         --active;
         if (message.starts_with("!")) {
             const std::size_t space = message.find(' ');
-            if (!failure) failure = Failure{std::stoi(message.substr(1, space - 1)),
-                                            message.substr(space + 1)};
+            if (!failure)
+                failure =
+                    Failure{std::stoi(message.substr(1, space - 1)), message.substr(space + 1)};
         } else {
             const std::size_t eol = message.find('\n');
             const std::size_t i = std::stoull(message.substr(0, eol));
@@ -79,8 +80,7 @@ std::vector<Cell> hand_out_cells(const CellLoop<Cell>& loop, Progress& progress,
             const double elapsed = seconds_since(start);
             const double left = elapsed / double(computed) * double(todo.size() - computed);
             progress.note(fmt::format("{}: {} (rank {}; {:.0f} s elapsed, about {:.0f} s left)",
-                                      loop.where(i), loop.outcome(*cells[i]), from, elapsed,
-                                      left));
+                                      loop.where(i), loop.outcome(*cells[i]), from, elapsed, left));
         }
         hand_to(from);
     }
@@ -110,8 +110,7 @@ void work_on_cells(const CellLoop<Cell>& loop, const Ranks& ranks) {
 
 // run_cells (cell_files.h) on one process, or over `ranks`; only rank 0 gets the cells.
 template <class Cell>
-std::vector<Cell> run_cells_on(const Ranks& ranks, const CellLoop<Cell>& loop,
-                               Progress& progress) {
+std::vector<Cell> run_cells_on(const Ranks& ranks, const CellLoop<Cell>& loop, Progress& progress) {
     if (ranks.size() == 1) return run_cells(loop, progress);
     if (ranks.root()) return hand_out_cells(loop, progress, ranks);
     work_on_cells(loop, ranks);

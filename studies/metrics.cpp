@@ -7,8 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "studies/table_fields.h"
 #include "image/tone_map.h"
+#include "studies/table_fields.h"
 
 namespace hmcr {
 namespace {

@@ -72,11 +72,13 @@ struct SolutionProbe {
             keys = std::max(keys, key(s.patch_id[c], cell_side(s, c)) + 1);
         }
         first.assign(keys + 1, 0);
-        for (std::size_t c = 0; c < s.cell_count(); ++c) ++first[key(s.patch_id[c], cell_side(s, c)) + 1];
+        for (std::size_t c = 0; c < s.cell_count(); ++c)
+            ++first[key(s.patch_id[c], cell_side(s, c)) + 1];
         for (std::size_t k = 0; k < keys; ++k) first[k + 1] += first[k];
         cells.resize(s.cell_count());
         std::vector<std::size_t> next(first.begin(), first.end() - 1);
-        for (std::size_t c = 0; c < s.cell_count(); ++c) cells[next[key(s.patch_id[c], cell_side(s, c))]++] = c;
+        for (std::size_t c = 0; c < s.cell_count(); ++c)
+            cells[next[key(s.patch_id[c], cell_side(s, c))]++] = c;
     }
     static std::size_t key(int patch, std::uint8_t side) { return 2 * std::size_t(patch) + side; }
 

@@ -33,8 +33,8 @@ std::vector<T> distinct(const std::vector<Cell>& cells, T Cell::*key, const char
     std::set<T> values;
     for (const Cell& c : cells) values.insert(c.*key);
     if (values.size() > kMaxPlotPoints) {
-        throw InputError(fmt::format("{} {}; a plot shows at most {}", values.size(), what,
-                                     kMaxPlotPoints));
+        throw InputError(
+            fmt::format("{} {}; a plot shows at most {}", values.size(), what, kMaxPlotPoints));
     }
     return {values.begin(), values.end()};
 }
@@ -43,8 +43,11 @@ std::vector<T> distinct(const std::vector<Cell>& cells, T Cell::*key, const char
 json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 json point(const MeanSe& x, const MeanSe& y) {
-    return {{"x", finite_or_null(x.mean)}, {"x_se", finite_or_null(x.se)},
-            {"y", finite_or_null(y.mean)}, {"y_se", finite_or_null(y.se)}, {"n", y.n}};
+    return {{"x", finite_or_null(x.mean)},
+            {"x_se", finite_or_null(x.se)},
+            {"y", finite_or_null(y.mean)},
+            {"y_se", finite_or_null(y.se)},
+            {"n", y.n}};
 }
 
 json bar(const MeanSe& y) {
@@ -54,21 +57,19 @@ json bar(const MeanSe& y) {
 // Error against mean leaves per oracle, one point per budget, over each budget's successful
 // cells that measured the error.
 json leaves_panel(const std::vector<CellResult>& cells, const std::string& title,
-                  const std::string& y_label, const std::function<double(const CellResult&)>& error) {
+                  const std::string& y_label,
+                  const std::function<double(const CellResult&)>& error) {
     const std::vector<std::size_t> budgets = distinct(cells, &CellResult::budget, "budgets");
-    json panel = {{"type", "lines"},
-                  {"title", title},
-                  {"x_label", "leaves"},
-                  {"y_label", y_label},
-                  {"x_ticks", budgets},
-                  {"series", json::array()}};
+    json panel = {{"type", "lines"},    {"title", title},     {"x_label", "leaves"},
+                  {"y_label", y_label}, {"x_ticks", budgets}, {"series", json::array()}};
     for (const std::string& oracle :
          names_in_order(cells, [](const CellResult& c) { return c.oracle; })) {
         json points = json::array();
         for (std::size_t b : budgets) {
             std::vector<double> leaves, y;
             for (const CellResult& c : cells) {
-                if (c.oracle != oracle || c.budget != b || !c.ok() || std::isnan(error(c))) continue;
+                if (c.oracle != oracle || c.budget != b || !c.ok() || std::isnan(error(c)))
+                    continue;
                 leaves.push_back(double(c.leaves));
                 y.push_back(error(c));
             }
@@ -145,15 +146,19 @@ json spp_bars(const std::vector<SamplingCell>& cells, const std::vector<std::str
 // RMSEp against the spp reached, per sampler, one point per target spp.
 json spp_lines(const std::vector<SamplingCell>& cells, const std::vector<std::string>& samplers,
                const std::vector<double>& spps) {
-    json panel = {{"type", "lines"},       {"title", "RMSEp against samples per pixel"},
-                  {"x_label", "samples per pixel"}, {"y_label", "RMSEp (0–255)"},
-                  {"x_ticks", spps},       {"series", json::array()}};
+    json panel = {{"type", "lines"},
+                  {"title", "RMSEp against samples per pixel"},
+                  {"x_label", "samples per pixel"},
+                  {"y_label", "RMSEp (0–255)"},
+                  {"x_ticks", spps},
+                  {"series", json::array()}};
     for (const std::string& s : samplers) {
         json points = json::array();
         for (double spp : spps) {
             const auto ok = successful(cells, s, spp);
             if (!ok.empty()) {
-                points.push_back(point(mean_se(values(ok, cell_spp)), mean_se(values(ok, cell_rmse_p))));
+                points.push_back(
+                    point(mean_se(values(ok, cell_spp)), mean_se(values(ok, cell_rmse_p))));
             }
         }
         panel["series"].push_back({{"name", s}, {"points", points}});
@@ -184,8 +189,8 @@ json meshing_plot_data(const std::string& scene, const std::vector<CellResult>& 
     const bool mesh = std::any_of(cells.begin(), cells.end(),
                                   [](const CellResult& c) { return c.ok() && c.mesh_rays > 0; });
     const std::string y_label = object ? "object error (relative L2)" : "RMSEp (0–255)";
-    json panels = json::array(
-        {leaves_panel(cells, "solution", y_label, object ? solution_object_error : solution_rmse_p)});
+    json panels = json::array({leaves_panel(cells, "solution", y_label,
+                                            object ? solution_object_error : solution_rmse_p)});
     if (mesh) {
         panels.push_back(leaves_panel(cells, "mesh (frozen re-solve)", y_label,
                                       object ? mesh_object_error : mesh_rmse_p));
@@ -206,8 +211,8 @@ json sampling_plot_data(const std::string& scene, const std::vector<SamplingCell
     for (double spp : spps) bars.push_back(spp_bars(cells, samplers, spp, split));
     json figures = json::array({{{"name", "error_by_sampler"}, {"panels", bars}}});
     if (spps.size() >= 2) {
-        figures.push_back(
-            {{"name", "error_vs_spp"}, {"panels", json::array({spp_lines(cells, samplers, spps)})}});
+        figures.push_back({{"name", "error_vs_spp"},
+                           {"panels", json::array({spp_lines(cells, samplers, spps)})}});
     }
     return {{"study", "sampling"}, {"scene", scene}, {"figures", figures}};
 }
@@ -225,15 +230,17 @@ json plot_data_of_table(const std::filesystem::path& table) {
         if (options.contains("samplers")) {
             std::vector<SamplingCell> cells;
             for (const json& c : j.at("cells")) cells.push_back(sampling_cell_from_json(c));
-            check_names(criterion_registry(), cells, [](const SamplingCell& c) { return c.sampler; });
+            check_names(criterion_registry(), cells,
+                        [](const SamplingCell& c) { return c.sampler; });
             // With several spp values the splits are by spp first, and the plots show none.
             const json& spp = options.at("spp");
             const bool one_spp = !spp.is_array() || spp.size() == 1;
             return sampling_plot_data(
                 scene, cells, one_spp ? splits_from_json(j.at("error_split")) : ErrorSplits{});
         }
-        throw InputError("neither a meshing study's table (options.budgets) nor a sampling "
-                         "study's (options.samplers)");
+        throw InputError(
+            "neither a meshing study's table (options.budgets) nor a sampling "
+            "study's (options.samplers)");
     });
 }
 

@@ -61,8 +61,9 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progr
     const Solution second = solve_uniform(scene, o, seed + 1, progress, ranks);
     const ShadedMesh second_mesh = shade(second, o.crease_degrees);
     ref.truncation = truncation_bias(ref.solution);
-    ref.seed_difference = (reflected_power(*second.hierarchy) - ref.truncation.reflected).cwiseAbs() /
-                          ref.truncation.reflected.cwiseMax(1e-300);
+    ref.seed_difference =
+        (reflected_power(*second.hierarchy) - ref.truncation.reflected).cwiseAbs() /
+        ref.truncation.reflected.cwiseMax(1e-300);
     progress.stage("comparing the two seeds");
     const ShadedTracer first_tracer(ref.mesh), second_tracer(second_mesh);
     ref.object_error = object_space_error(second_tracer, second_mesh, ref.mesh,
@@ -73,7 +74,8 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progr
         Image image = render(first_tracer, v, render_options);
         const double exposure = exposure_from(image);
         const Image other = render(second_tracer, v, render_options);
-        ref.view_errors[v.name] = image_errors(quantise(other, exposure), quantise(image, exposure));
+        ref.view_errors[v.name] =
+            image_errors(quantise(other, exposure), quantise(image, exposure));
         ref.views[v.name] = {std::move(image), exposure};
     }
     ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -115,9 +117,10 @@ void write_reference(OutputSet& out, const std::filesystem::path& dir, const Sce
           {"object_space_unmatched", ref.object_error.unmatched},
           {"views", errors}}},
         {"truncation",
-         {{"what", "the reflected power the unshot power would still add, U r / (1 - r) with r "
-                   "the last iteration's decay, relative to the reflected power, per channel "
-                   "(R, G, B); seed_difference: the seeds' reflected powers' relative difference"},
+         {{"what",
+           "the reflected power the unshot power would still add, U r / (1 - r) with r "
+           "the last iteration's decay, relative to the reflected power, per channel "
+           "(R, G, B); seed_difference: the seeds' reflected powers' relative difference"},
           {"stop", o.solver.stop},
           {"unshot_power", rgb_json(ref.truncation.unshot)},
           {"decay", rgb_json(ref.truncation.decay)},
@@ -138,8 +141,8 @@ std::map<std::string, double> read_reference_exposures(const std::filesystem::pa
             const std::string path = json_path(views, view);
             const double e = json_number(json_member(v, {"exposure"}, path), path + ".exposure");
             if (!(e > 0 && std::isfinite(e))) {
-                throw InputError(fmt::format("view {}: exposure {} is not a positive number",
-                                             quote(view), e));
+                throw InputError(
+                    fmt::format("view {}: exposure {} is not a positive number", quote(view), e));
             }
             exposure[view] = e;
         }

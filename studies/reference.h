@@ -12,20 +12,19 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "common/output_set.h"
 #include "common/progress.h"
+#include "image/image.h"
 #include "meshes/scene.h"
+#include "radiosity/shaded_mesh.h"
 #include "radiosity/solver.h"
 #include "radiosity/truncation.h"
-#include "image/image.h"
 #include "studies/metrics.h"
 #include "studies/object_space_error.h"
-#include "radiosity/shaded_mesh.h"
 
 namespace hmcr {
 
@@ -47,8 +46,8 @@ struct ReferenceOptions {
 };
 
 struct ViewImage {
-    Image image;        // linear radiance
-    double exposure;    // fixed from this image for every image of a study
+    Image image;      // linear radiance
+    double exposure;  // fixed from this image for every image of a study
 };
 
 struct Reference {

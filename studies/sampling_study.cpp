@@ -4,21 +4,21 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 #include <memory>
+#include <optional>
 
+#include "common/error.h"
 #include "common/file_names.h"
 #include "common/hash.h"
 #include "common/output_set.h"
-#include "common/error.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
+#include "image/density_map.h"
 #include "rays/patch.h"
 #include "studies/cell_handout.h"
 #include "studies/montage.h"
 #include "studies/plot_data.h"
 #include "studies/traced_reference.h"
-#include "image/density_map.h"
 #include "trace/criteria/registry.h"
 
 namespace hmcr {
@@ -55,7 +55,8 @@ void validate(const SamplingStudyOptions& o) {
 // OUT/figures/VIEW-KIND.png, or VIEW-sppN-KIND.png in a study of several spp values.
 fs::path figure_file(const SamplingStudyOptions& o, const View& view, double spp,
                      const char* kind) {
-    const std::string stem = o.spps.size() == 1 ? view.name : fmt::format("{}-spp{:g}", view.name, spp);
+    const std::string stem =
+        o.spps.size() == 1 ? view.name : fmt::format("{}-spp{:g}", view.name, spp);
     return named_file(o.output / "figures", stem + "-" + kind, ".png");
 }
 
@@ -104,8 +105,9 @@ SamplingStudy::SamplingStudy(const Scene& scene, const SamplingStudyOptions& o, 
         for (const Criterion* s : o.samplers)
             for (int k = 0; k < o.seeds; ++k) {
                 const std::uint64_t seed = o.trace.seed + std::uint64_t(k);
-                m_tasks.push_back({s, spp, seed,
-                                   sampling_cell_name(scene.name, std::string(s->name()), spp, seed)});
+                m_tasks.push_back(
+                    {s, spp, seed,
+                     sampling_cell_name(scene.name, std::string(s->name()), spp, seed)});
             }
     // Rank 0 writes the tables and figures: it alone checks, locks and holds them, before any
     // work; every rank learns of a refusal.
@@ -186,9 +188,10 @@ SppErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cell
             for (const View& v : m_scene.views) {
                 std::vector<Image8> images;
                 for (const SamplingCell& c : cells) {
-                    const fs::path png = file(
-                        "images", sampling_cell_name(c.scene, c.sampler, c.spp, c.seed) + "-" + v.name,
-                        ".png");
+                    const fs::path png =
+                        file("images",
+                             sampling_cell_name(c.scene, c.sampler, c.spp, c.seed) + "-" + v.name,
+                             ".png");
                     if (c.sampler == s && c.spp == spp && c.ok() && fs::exists(png))
                         images.push_back(read_png(png));
                 }
@@ -201,8 +204,8 @@ SppErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cell
 
 SamplingCell SamplingStudy::compute(std::size_t index) {
     const CellTask& t = m_tasks[index];
-    SamplingCell cell{m_scene.name, std::string(t.sampler->name()), t.spp, t.seed, m_settings, "ok", "",
-                      {}, 0};
+    SamplingCell cell{
+        m_scene.name, std::string(t.sampler->name()), t.spp, t.seed, m_settings, "ok", "", {}, 0};
     const auto start = Clock::now();
     for (const View& v : m_scene.views) {
         CellNotes notes(m_progress, where(index) + ": view " + v.name + ": ");
@@ -251,9 +254,9 @@ void SamplingStudy::write_figures(OutputSet& out, const View& view, double spp) 
     const Image8& ref = m_reference8.at(view.name);
     std::vector<Image8> images{ref}, maps;
     for (const Criterion* sampler : m_options.samplers) {
-        const std::string name =
-            sampling_cell_name(m_scene.name, std::string(sampler->name()), spp, m_options.trace.seed) +
-            "-" + view.name;
+        const std::string name = sampling_cell_name(m_scene.name, std::string(sampler->name()), spp,
+                                                    m_options.trace.seed) +
+                                 "-" + view.name;
         const fs::path image = file("images", name, ".png"), map = file("density", name, ".png");
         const bool ok = fs::exists(image) && fs::exists(map);
         Image8 blank(ref.width, ref.height);
@@ -287,9 +290,7 @@ std::string sampling_cell_name(const std::string& scene, const std::string& samp
     return fmt::format("{}-{}-spp{:g}-s{}", scene, sampler, spp, seed);
 }
 
-void validate_sampling_study(const SamplingStudyOptions& options) {
-    validate(options);
-}
+void validate_sampling_study(const SamplingStudyOptions& options) { validate(options); }
 
 nlohmann::json sampling_study_settings(const Scene& scene, const SamplingStudyOptions& o) {
     const TraceOptions& t = o.trace;

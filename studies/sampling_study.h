@@ -47,15 +47,15 @@
 namespace hmcr {
 
 struct SamplingStudyOptions {
-    std::filesystem::path reference;           // a reference folder of either kind
+    std::filesystem::path reference;  // a reference folder of either kind
     std::vector<const Criterion*> samplers = criterion_registry().all();
-    int seeds = 3;                             // trace.seed .. trace.seed + seeds - 1
-    std::vector<double> spps{60};              // target mean spp of the cells, in order
-    TraceOptions trace;                        // every cell's; sampler, spp, seed set per cell
+    int seeds = 3;                 // trace.seed .. trace.seed + seeds - 1
+    std::vector<double> spps{60};  // target mean spp of the cells, in order
+    TraceOptions trace;            // every cell's; sampler, spp, seed set per cell
     // Adaptive criteria judge display values (TraceOptions::criterion_exposure), at the
     // reference's exposure of each view
     bool display_criteria = false;
-    std::filesystem::path output;              // the study folder
+    std::filesystem::path output;  // the study folder
     // A folder's cells must all be made with the same settings (sampling_study_settings): a
     // rerun with other settings is refused, unless this is set, when such cells are redone.
     bool redo_other_settings = false;

@@ -122,9 +122,9 @@ constexpr const char* kSplitText =
 std::string md_document(const std::string& scene, const SamplingStudyOptions& o, double spp,
                         const std::vector<std::string>& views,
                         const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
-    std::string out = fmt::format("# Sampling study: {}\n\n{}\n\n## Mean over the views ({})\n\n{}\n",
-                                  scene, description(o, spp), fmt::join(views, ", "),
-                                  markdown(summary(cells, "")));
+    std::string out =
+        fmt::format("# Sampling study: {}\n\n{}\n\n## Mean over the views ({})\n\n{}\n", scene,
+                    description(o, spp), fmt::join(views, ", "), markdown(summary(cells, "")));
     if (!splits.empty()) {
         out += fmt::format("## Bias and noise\n\n{}\n\n{}\n", kSplitText,
                            markdown(split_summary(splits, sampler_order(cells))));
@@ -141,17 +141,19 @@ std::string tex_floats(const std::string& scene, double spp, bool several,
                        const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
     const std::string name = latex_text(scene);
     const std::string at = several ? fmt::format(" at {:g} spp", spp) : "";
-    const std::string label = "tab:" + latex_label(scene) + "-sampling" +
-                              (several ? fmt::format("-spp{:g}", spp) : "");
-    const std::string what = "mean $\\pm$ standard error over the seeds; the best mean of each "
-                             "error column in bold.";
+    const std::string label =
+        "tab:" + latex_label(scene) + "-sampling" + (several ? fmt::format("-spp{:g}", spp) : "");
+    const std::string what =
+        "mean $\\pm$ standard error over the seeds; the best mean of each "
+        "error column in bold.";
     std::string out = latex_float(
         fmt::format("Sampling study of {}{}, the mean over the views: {}", name, at, what), label,
         summary(cells, ""));
     if (!splits.empty()) {
-        out += latex_float(fmt::format("Sampling study of {}{}: RMSEp split into bias and noise. {}",
-                                       name, at, latex_text(kSplitText)),
-                           label + "-split", split_summary(splits, sampler_order(cells)));
+        out +=
+            latex_float(fmt::format("Sampling study of {}{}: RMSEp split into bias and noise. {}",
+                                    name, at, latex_text(kSplitText)),
+                        label + "-split", split_summary(splits, sampler_order(cells)));
     }
     for (const std::string& v : views) {
         out += latex_float(
@@ -216,9 +218,9 @@ ErrorSplit rms_over_views(const std::map<std::string, ErrorSplit>& by_view) {
 nlohmann::json sampling_cell_to_json(const SamplingCell& c) {
     nlohmann::json views = nlohmann::json::object();
     for (const auto& [name, v] : c.views) views[name] = view_to_json(v);
-    return {{"scene", c.scene},     {"sampler", c.sampler}, {"spp", c.spp},
+    return {{"scene", c.scene},     {"sampler", c.sampler},   {"spp", c.spp},
             {"seed", c.seed},       {"settings", c.settings}, {"status", c.status},
-            {"message", c.message}, {"views", views},       {"seconds", c.seconds}};
+            {"message", c.message}, {"views", views},         {"seconds", c.seconds}};
 }
 
 SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
@@ -238,8 +240,7 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
     return c;
 }
 
-void write_sampling_tables(OutputSet& out, const std::string& scene,
-                           const SamplingStudyOptions& o,
+void write_sampling_tables(OutputSet& out, const std::string& scene, const SamplingStudyOptions& o,
                            const std::vector<std::string>& views,
                            const std::vector<SamplingCell>& cells, const SppErrorSplits& splits) {
     // error_split: by sampler and view, and with several spp values by spp first
@@ -288,11 +289,11 @@ void write_sampling_tables(OutputSet& out, const std::string& scene,
         tex += tex_floats(scene, spp, several, views, at_spp, split);
     }
     write_text_atomically(out.temp(o.output / "table.md"), md);
-    write_text_atomically(out.temp(o.output / "table.tex"),
-                          fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}} "
-                                      "and \\usepackage{{graphicx}}.\n% {}\n{}",
-                                      latex_text(scene), latex_text(description(o, o.spps.front())),
-                                      tex));
+    write_text_atomically(
+        out.temp(o.output / "table.tex"),
+        fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}} "
+                    "and \\usepackage{{graphicx}}.\n% {}\n{}",
+                    latex_text(scene), latex_text(description(o, o.spps.front())), tex));
     // The plots' bias and noise bars are those of a study of one spp.
     const ErrorSplits one_spp =
         splits.size() == 1 && !several ? splits.begin()->second : ErrorSplits{};

@@ -9,20 +9,20 @@
 #include <optional>
 #include <stdexcept>
 
-#include "meshes/scene.h"
-#include "oracles/registry.h"
-#include "rays/patch.h"
-#include "radiosity/solver_settings.h"
-#include "common/stopwatch.h"
-#include "common/text_file.h"
 #include "common/file_names.h"
 #include "common/hash.h"
 #include "common/output_set.h"
+#include "common/stopwatch.h"
+#include "common/text_file.h"
+#include "image/image.h"
+#include "meshes/scene.h"
+#include "oracles/registry.h"
+#include "radiosity/solver_settings.h"
+#include "rays/patch.h"
 #include "studies/cell_handout.h"
 #include "studies/plot_data.h"
 #include "studies/reference.h"
 #include "studies/traced_reference.h"
-#include "image/image.h"
 #include "viz/paraview_collection.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
@@ -78,7 +78,8 @@ void validate(const StudyOptions& o) {
     validate(o.solver);
     for (std::size_t b : o.budgets) {
         // Each product is checked against the limit before it is formed (no wrap-around).
-        if (o.rays_per_leaf > kMaxRays / b || (cell_rays(o, b) > kMaxRays / kMeshRaysPerCellRay && !o.mesh_rays)) {
+        if (o.rays_per_leaf > kMaxRays / b ||
+            (cell_rays(o, b) > kMaxRays / kMeshRaysPerCellRay && !o.mesh_rays)) {
             throw InputError(fmt::format("study: budget {} would shoot more than 1e15 rays", b));
         }
     }
@@ -95,16 +96,15 @@ struct CellTask {
 class StudyRunner {
 public:
     StudyRunner(const Scene& scene, const StudyOptions& o, Progress& progress)
-        : m_options(o),
-          m_progress(progress),
-          m_scene(scene) {
+        : m_options(o), m_progress(progress), m_scene(scene) {
         validate(o);
         for (std::size_t b : o.budgets)
             for (const Oracle* oracle : o.oracles)
                 for (int s = 0; s < o.seeds; ++s) {
                     const std::uint64_t seed = o.solver.seed + std::uint64_t(s);
-                    m_tasks.push_back({oracle, b, seed,
-                                       cell_name(m_scene.name, std::string(oracle->name()), b, seed)});
+                    m_tasks.push_back(
+                        {oracle, b, seed,
+                         cell_name(m_scene.name, std::string(oracle->name()), b, seed)});
                 }
         // Rank 0 writes the tables: it alone checks, locks and holds them, before any work;
         // every rank learns of a refusal.
@@ -330,8 +330,8 @@ std::string cell_name(const std::string& scene, const std::string& oracle, std::
 }
 
 std::vector<std::filesystem::path> study_output_files(const StudyOptions& o) {
-    return {o.output / "table.json", o.output / "table.csv", o.output / "table.md",
-            o.output / "table.tex",    plot_data_file(o.output), o.output / "meshes.pvd"};
+    return {o.output / "table.json", o.output / "table.csv",   o.output / "table.md",
+            o.output / "table.tex",  plot_data_file(o.output), o.output / "meshes.pvd"};
 }
 
 void run_study(const Scene& scene, const StudyOptions& options, Progress& progress) {

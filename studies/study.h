@@ -53,16 +53,16 @@ struct StudyOptions {
     std::filesystem::path reference;   // folder written by write_reference
     std::vector<std::size_t> budgets;  // target leaf counts
     std::vector<const Oracle*> oracles = oracle_registry().all();  // each budget's cells
-    int seeds = 3;                     // seeds solver.seed .. solver.seed + seeds - 1
-    SolverOptions solver;              // every cell's solve; oracle, epsilon, seed set per cell
+    int seeds = 3;         // seeds solver.seed .. solver.seed + seeds - 1
+    SolverOptions solver;  // every cell's solve; oracle, epsilon, seed set per cell
     // > 0: each budget's cells shoot rays_per_leaf x budget rays instead of solver.rays.
     std::uint64_t rays_per_leaf = 0;
     // Rays of the frozen re-solve (mesh error): 0 for none; by default kMeshRaysPerCellRay x
     // the cell's rays.
     std::optional<std::uint64_t> mesh_rays;
-    double budget_tolerance = 0.01;    // relative distance to the budget accepted
-    int samples_per_axis = 2;          // supersampling of the images
-    std::filesystem::path output;      // the study folder
+    double budget_tolerance = 0.01;          // relative distance to the budget accepted
+    int samples_per_axis = 2;                // supersampling of the images
+    std::filesystem::path output;            // the study folder
     double crease_degrees = kCreaseDegrees;  // Gouraud blending limit of the shaded meshes
     // A folder's cells must all be made with the same settings (study_settings): a rerun with
     // other settings is refused, unless this is set, when such cells are computed again.
@@ -96,8 +96,7 @@ void validate_study(const StudyOptions& options);
 // Runs (or resumes) the study; each cell is a note of `progress` (skipped, its probes, done or
 // failed, the time left). Throws InputError on bad options (unknown oracle, no budget, seeds < 1)
 // or an unusable reference.
-void run_study(const Scene& scene, const StudyOptions& options,
-               Progress& progress = no_progress());
+void run_study(const Scene& scene, const StudyOptions& options, Progress& progress = no_progress());
 
 // The rays of a cell at `budget`, and of its frozen re-solve.
 std::uint64_t cell_rays(const StudyOptions& options, std::size_t budget);
@@ -125,6 +124,7 @@ std::vector<std::filesystem::path> study_output_files(const StudyOptions& option
 // table.json, table.csv, table.md, table.tex and the plot data, from every cell of the study in
 // order, into `out`, the set of study_output_files().
 void write_study_tables(OutputSet& out, const std::string& scene, const StudyOptions& options,
-                        const std::vector<std::string>& views, const std::vector<CellResult>& cells);
+                        const std::vector<std::string>& views,
+                        const std::vector<CellResult>& cells);
 
 }  // namespace hmcr

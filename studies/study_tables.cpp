@@ -79,7 +79,8 @@ SummaryTable budget_table(std::size_t budget, const std::vector<CellResult>& cel
                 if (const double x = col.value(*c); !std::isnan(x)) v.push_back(x);
             row.values.push_back(mean_se(v));
         }
-        row.seeds = fmt::format("{}/{}", row.values[0].n, select(cells, budget, oracle, false).size());
+        row.seeds =
+            fmt::format("{}/{}", row.values[0].n, select(cells, budget, oracle, false).size());
         table.rows.push_back(std::move(row));
     }
     return table;
@@ -98,7 +99,8 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
             ? fmt::format("{} with {} rays, the error of the mesh itself", frozen, *o.mesh_rays)
             : std::string("mesh: not measured (--mesh-rays 0)");
     return fmt::format(
-        "{}, N_s = {}, link weight {}, refine share {}{}{}, budget tolerance {}%, {} seeds from {}. "
+        "{}, N_s = {}, link weight {}, refine share {}{}{}, budget tolerance {}%, {} seeds from "
+        "{}. "
         "Mean ± standard "
         "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
         "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
@@ -113,8 +115,8 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
         o.solver.importance == Importance::none
             ? std::string()
             : fmt::format(", importance {}", name(o.solver.importance)),
-        100 * o.budget_tolerance, o.seeds,
-        o.solver.seed, views.size(), fmt::join(views, ", "), mesh);
+        100 * o.budget_tolerance, o.seeds, o.solver.seed, views.size(), fmt::join(views, ", "),
+        mesh);
 }
 
 std::string md_table(const std::string& scene, const StudyOptions& o,
@@ -132,8 +134,7 @@ std::string tex_table(const std::string& scene, const StudyOptions& o,
     std::string out = fmt::format(
         "% Meshing study: {} (hmcr). Needs \\usepackage{{booktabs}} and "
         "\\usepackage{{graphicx}}.\n% {}\n",
-        latex_text(scene),
-        latex_text(description(o, views)));
+        latex_text(scene), latex_text(description(o, views)));
     for (std::size_t b : o.budgets) {
         out += latex_float(fmt::format("Meshing study of {} at {} leaves: mean $\\pm$ standard "
                                        "error over the seeds; the best mean of each error column "
@@ -187,8 +188,7 @@ ObjectError object_error_from_json(const nlohmann::json& oe) {
 
 std::map<std::string, ImageErrors> views_from_json(const nlohmann::json& views) {
     std::map<std::string, ImageErrors> out;
-    for (const auto& [name, e] : views.items())
-        out[name] = e.get<ImageErrors>();
+    for (const auto& [name, e] : views.items()) out[name] = e.get<ImageErrors>();
     return out;
 }
 
@@ -244,26 +244,27 @@ CellResult cell_from_json(const nlohmann::json& j) {
 }
 
 void write_study_tables(OutputSet& out, const std::string& scene, const StudyOptions& o,
-                        const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
+                        const std::vector<std::string>& views,
+                        const std::vector<CellResult>& cells) {
     nlohmann::json all = nlohmann::json::array();
     for (const CellResult& c : cells) all.push_back(cell_to_json(c));
     nlohmann::json table = {{"scene", scene},
-                                  {"options",
-                                   {{"budgets", o.budgets},
-                                    {"oracles", oracle_order(cells)},
-                                    {"seeds", o.seeds},
-                                    {"first_seed", o.solver.seed},
-                                    {"rays", o.solver.rays},
-                                    {"rays_per_leaf", o.rays_per_leaf},
-                                    {"mesh_rays", mesh_rays_json(o)},
-                                    {"link_weight", name(o.solver.link_weight)},
-                                    {"refine_share", o.solver.refine_share},
-                                    {"lines", o.solver.lines},
-                                    {"budget_tolerance", o.budget_tolerance},
-                                    {"samples_per_axis", o.samples_per_axis},
-                                    {"reference", o.reference.string()}}},
-                                  {"views", views},
-                                  {"cells", all}};
+                            {"options",
+                             {{"budgets", o.budgets},
+                              {"oracles", oracle_order(cells)},
+                              {"seeds", o.seeds},
+                              {"first_seed", o.solver.seed},
+                              {"rays", o.solver.rays},
+                              {"rays_per_leaf", o.rays_per_leaf},
+                              {"mesh_rays", mesh_rays_json(o)},
+                              {"link_weight", name(o.solver.link_weight)},
+                              {"refine_share", o.solver.refine_share},
+                              {"lines", o.solver.lines},
+                              {"budget_tolerance", o.budget_tolerance},
+                              {"samples_per_axis", o.samples_per_axis},
+                              {"reference", o.reference.string()}}},
+                            {"views", views},
+                            {"cells", all}};
     nlohmann::json& options = table["options"];
     if (o.solver.control_variate != ControlVariate::none) {
         options["control_variate"] = name(o.solver.control_variate);

@@ -58,8 +58,8 @@ std::string latex_tabular(const SummaryTable& t) {
         spec += "r";
         header += " & " + latex_text(col.title);
     }
-    std::string out = fmt::format("\\begin{{tabular}}{{{}@{{}}}}\n\\toprule\n{} \\\\\n\\midrule\n",
-                                  spec, header);
+    std::string out =
+        fmt::format("\\begin{{tabular}}{{{}@{{}}}}\n\\toprule\n{} \\\\\n\\midrule\n", spec, header);
     for (std::size_t r = 0; r < t.rows.size(); ++r) {
         out += latex_text(t.rows[r].name);
         if (t.seeds_column) out += " & " + latex_text(t.rows[r].seeds);
@@ -76,8 +76,10 @@ std::string latex_float(const std::string& caption, const std::string& label,
                         const SummaryTable& table) {
     // Shrunk to the line where it is wider (\width is the tabular's natural width), as it is
     // otherwise: which tables fit depends on the paper's class and columns, not on hmcr.
-    const std::string tabular = "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}"
-                                "{!}{%\n" + latex_tabular(table) + "}\n";
+    const std::string tabular =
+        "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}"
+        "{!}{%\n" +
+        latex_tabular(table) + "}\n";
     return fmt::format(
         "\n\\begin{{table}}[htbp]\n\\centering\n\\small\n\\caption{{{}}}\n\\label{{{}}}\n{}"
         "\\end{{table}}\n",
@@ -86,10 +88,21 @@ std::string latex_float(const std::string& caption, const std::string& label,
 
 std::string latex_text(std::string_view text) {
     static const std::pair<std::string_view, std::string_view> kReplacements[] = {
-        {"\\", "\\textbackslash{}"}, {"&", "\\&"}, {"%", "\\%"}, {"$", "\\$"}, {"#", "\\#"},
-        {"_", "\\_"}, {"{", "\\{"}, {"}", "\\}"}, {"~", "\\textasciitilde{}"},
-        {"^", "\\textasciicircum{}"}, {"±", "$\\pm$"}, {"–", "--"}, {"ε", "$\\varepsilon$"},
-        {"²", "$^2$"}, {"×", "$\\times$"}};
+        {"\\", "\\textbackslash{}"},
+        {"&", "\\&"},
+        {"%", "\\%"},
+        {"$", "\\$"},
+        {"#", "\\#"},
+        {"_", "\\_"},
+        {"{", "\\{"},
+        {"}", "\\}"},
+        {"~", "\\textasciitilde{}"},
+        {"^", "\\textasciicircum{}"},
+        {"±", "$\\pm$"},
+        {"–", "--"},
+        {"ε", "$\\varepsilon$"},
+        {"²", "$^2$"},
+        {"×", "$\\times$"}};
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
         bool replaced = false;
@@ -113,7 +126,8 @@ std::string latex_text(std::string_view text) {
 std::string latex_label(std::string_view name) {
     std::string out(name);
     for (char& c : out) {
-        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+        const bool keep =
+            (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
         if (!keep) c = '-';
     }
     return out;

@@ -40,8 +40,8 @@ std::vector<std::filesystem::path> traced_reference_files(const std::filesystem:
     return files;
 }
 
-void write_traced_reference(OutputSet& out, const std::filesystem::path& dir,
-                            const Scene& scene, const TracedReference& ref, const TraceOptions& o,
+void write_traced_reference(OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
+                            const TracedReference& ref, const TraceOptions& o,
                             const std::string& command) {
     nlohmann::json views = nlohmann::json::object();
     for (const auto& [name, v] : ref.views) {

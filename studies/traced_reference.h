@@ -23,8 +23,8 @@
 
 #include "common/output_set.h"
 #include "common/progress.h"
-#include "meshes/scene.h"
 #include "image/image.h"
+#include "meshes/scene.h"
 #include "trace/trace_image.h"
 
 namespace hmcr {
@@ -51,9 +51,9 @@ std::vector<std::filesystem::path> traced_reference_files(const std::filesystem:
 
 // Writes the folder described above into `out`, an OutputSet of traced_reference_files(dir,
 // scene) (common/output_set.h), which the caller commits; `command` is the invocation.
-void write_traced_reference(OutputSet& out, const std::filesystem::path& dir,
-                            const Scene& scene, const TracedReference& reference,
-                            const TraceOptions& options, const std::string& command);
+void write_traced_reference(OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
+                            const TracedReference& reference, const TraceOptions& options,
+                            const std::string& command);
 
 // Whether the reference folder `dir` is a traced one (reference.json says "kind": "traced");
 // a radiosity reference (studies/reference.h) also has a mesh, reference.vtp.

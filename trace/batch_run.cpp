@@ -153,7 +153,7 @@ std::unique_ptr<PixelRun> make_batch_run(const Criterion& criterion, std::uint32
 }
 
 std::vector<TracedSample> trace_pixel_batch(const PixelTracer& tracer, int x, int y,
-                                           std::uint32_t first, std::uint32_t end) {
+                                            std::uint32_t first, std::uint32_t end) {
     std::vector<TracedSample> out;
     out.reserve(end - first);
     trace_batch(tracer, x, y, first, end, [&](const TracedSample& t) { out.push_back(t); });

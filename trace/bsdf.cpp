@@ -39,8 +39,7 @@ double Bsdf::pdf(const Vec3& wi) const {
 }
 
 std::optional<Bsdf::Sample> Bsdf::sample(Rng& rng) const {
-    const bool specular =
-        m_specular_p > 0 && (m_diffuse_p == 0 || rng.uniform() < m_specular_p);
+    const bool specular = m_specular_p > 0 && (m_diffuse_p == 0 || rng.uniform() < m_specular_p);
     if (specular && is_mirror()) {
         const Vec3 wi = 2 * m_n.dot(m_wo) * m_n - m_wo;
         return Sample{wi, m_specular / m_specular_p, 0, true};

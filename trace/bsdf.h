@@ -43,9 +43,9 @@ public:
 
     struct Sample {
         Vec3 wi;
-        Rgb weight;         // f cos / p
-        double pdf = 0;     // per steradian; 0 for the mirror
-        bool delta = false; // the mirror's reflection
+        Rgb weight;          // f cos / p
+        double pdf = 0;      // per steradian; 0 for the mirror
+        bool delta = false;  // the mirror's reflection
     };
     // None when the glossy lobe reflects below the surface (the path ends).
     std::optional<Sample> sample(Rng& rng) const;

@@ -54,9 +54,8 @@ std::vector<double> shares(std::span<const double> values, double extra, double 
 std::vector<std::uint32_t> allocate_from_map(std::span<const double> values, double spp,
                                              std::uint32_t first, std::uint32_t most) {
     if (values.empty() || !(spp >= first && spp <= most)) {
-        throw std::invalid_argument("allocate_from_map: spp " + std::to_string(spp) +
-                                    " outside " + std::to_string(first) + ".." +
-                                    std::to_string(most));
+        throw std::invalid_argument("allocate_from_map: spp " + std::to_string(spp) + " outside " +
+                                    std::to_string(first) + ".." + std::to_string(most));
     }
     for (double v : values) {
         if (!(v >= 0 && std::isfinite(v))) {
@@ -115,8 +114,9 @@ MapTrace trace_from_map(const Criterion& criterion, const PixelTracer& pixels,
     const std::vector<std::uint32_t> n = second.samples(kInf);
     for (std::size_t i = 0; i < count; ++i) {
         if (n[i] == 0) continue;
-        out.image.pixels[i] = (out.image.pixels[i] * double(kBatchSize) + more.pixels[i] * double(n[i])) /
-                              double(kBatchSize + n[i]);
+        out.image.pixels[i] =
+            (out.image.pixels[i] * double(kBatchSize) + more.pixels[i] * double(n[i])) /
+            double(kBatchSize + n[i]);
     }
     out.rays = first_rays + second.rays(kInf);
     out.rays_traced = out.rays;

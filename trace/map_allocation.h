@@ -28,11 +28,11 @@ std::vector<std::uint32_t> allocate_from_map(std::span<const double> values, dou
                                              std::uint32_t first, std::uint32_t most);
 
 struct MapTrace {
-    Image image;                          // linear radiance
-    std::vector<std::uint32_t> samples;   // n_i, row-major
-    std::vector<double> values;           // the map: each pixel's first-pass value
-    std::uint64_t rays = 0;               // cast by the image's samples
-    std::uint64_t rays_traced = 0;        // also by the first pass when the image is fresh
+    Image image;                         // linear radiance
+    std::vector<std::uint32_t> samples;  // n_i, row-major
+    std::vector<double> values;          // the map: each pixel's first-pass value
+    std::uint64_t rays = 0;              // cast by the image's samples
+    std::uint64_t rays_traced = 0;       // also by the first pass when the image is fresh
 };
 
 // The two passes of `criterion` over the image of `pixels`; with `fresh` (a tracer of other

@@ -27,7 +27,7 @@ struct PathTracer::Vertex {
     Vec3 point;
     std::uint32_t patch = 0;
     std::uint8_t side = kFront;  // the side the path arrived on
-    Vec3 wo;  // unit, back along the path that arrived
+    Vec3 wo;                     // unit, back along the path that arrived
 };
 
 std::optional<PathTracer::SideHit> PathTracer::side_met(std::uint32_t patch,
@@ -92,8 +92,8 @@ CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& r
 Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
     Rgb sum = Rgb::Zero(), beta = Rgb::Ones();
     for (int bounce = 1; bounce <= m_options.max_depth; ++bounce) {
-        const Bsdf bsdf(m_set.material(v.patch, v.side), side_normal(m_set.patches[v.patch], v.side),
-                        v.wo);
+        const Bsdf bsdf(m_set.material(v.patch, v.side),
+                        side_normal(m_set.patches[v.patch], v.side), v.wo);
         if (bsdf.black()) break;
         if (m_options.estimator != Estimator::bsdf && bsdf.has_smooth_lobe()) {
             Vec3 w = Vec3::Zero();

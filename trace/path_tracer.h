@@ -80,8 +80,7 @@ private:
     // The side a ray along `direction` meets, or none: the back of a one-sided patch, or grazing.
     std::optional<SideHit> side_met(std::uint32_t patch, const Vec3& direction) const;
     Rgb emitted(std::uint32_t patch, std::uint8_t side) const;  // Le = E / pi of the side
-    Rgb next_event(const Vertex& v, const Bsdf& bsdf, Rng& rng, std::uint32_t& rays,
-                   Vec3& w) const;
+    Rgb next_event(const Vertex& v, const Bsdf& bsdf, Rng& rng, std::uint32_t& rays, Vec3& w) const;
     Rgb radiance(Vertex v, Rng& rng, std::uint32_t& rays) const;
 
     PatchSet m_set;

@@ -20,8 +20,8 @@
 #include <memory>
 #include <vector>
 
-#include "trace/pixel_tracer.h"
 #include "trace/criteria/criterion.h"
+#include "trace/pixel_tracer.h"
 
 namespace hmcr {
 
@@ -60,7 +60,7 @@ std::unique_ptr<PixelRun> make_tree_run(const Criterion& criterion, int max_dept
 // Samples first .. end - 1 of pixel (x, y), one batch (first a multiple of 8, end - first <= 8),
 // in the order of strata drawn for the batch: the batches every batch run takes.
 std::vector<TracedSample> trace_pixel_batch(const PixelTracer& tracer, int x, int y,
-                                           std::uint32_t first, std::uint32_t end);
+                                            std::uint32_t first, std::uint32_t end);
 // Samples first .. end - 1 of the pixel's uniform batches (first a multiple of 8, at most end):
 // the rest of a pixel whose first samples were traced by another run, the same samples a
 // uniform run of `end` takes after them. Its radiance is the mean of those samples alone (0 for

@@ -95,7 +95,8 @@ Image fresh_image(const PixelTracer& tracer, const std::vector<std::uint32_t>& s
     const Criterion& uniform = uniform_criterion();
     PixelRuns runs(uniform, RunLimits{}, tracer);
     for (std::size_t i = 0; i < samples.size(); ++i) {
-        const int x = int(i % std::size_t(tracer.width())), y = int(i / std::size_t(tracer.width()));
+        const int x = int(i % std::size_t(tracer.width())),
+                  y = int(i / std::size_t(tracer.width()));
         runs.m_runs[i] = make_batch_run(uniform, samples[i], x, y);
     }
     const double threshold = std::numeric_limits<double>::infinity();

@@ -51,8 +51,8 @@ public:
     std::vector<double> first_values() const override;
 
 private:
-    friend Image fresh_image(const PixelTracer&, const std::vector<std::uint32_t>&,
-                             std::uint64_t&, Progress&);
+    friend Image fresh_image(const PixelTracer&, const std::vector<std::uint32_t>&, std::uint64_t&,
+                             Progress&);
     const PixelTracer& m_tracer;
     std::vector<std::unique_ptr<PixelRun>> m_runs;  // row-major
 };

@@ -7,8 +7,8 @@
 #include <cstdint>
 
 #include "rays/camera.h"
-#include "trace/path_tracer.h"
 #include "trace/criteria/criterion.h"
+#include "trace/path_tracer.h"
 
 namespace hmcr {
 

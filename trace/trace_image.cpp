@@ -12,11 +12,11 @@
 #include "common/memory.h"
 #include "common/stopwatch.h"
 #include "rays/camera.h"
+#include "trace/criteria/display_values.h"
+#include "trace/criteria/registry.h"
 #include "trace/map_allocation.h"
 #include "trace/pass_runs.h"
 #include "trace/pixel_runs.h"
-#include "trace/criteria/display_values.h"
-#include "trace/criteria/registry.h"
 
 namespace hmcr {
 namespace {

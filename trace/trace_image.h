@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "common/progress.h"
-#include "meshes/scene.h"
 #include "image/image.h"
+#include "meshes/scene.h"
+#include "trace/criteria/registry.h"
 #include "trace/path_tracer.h"
 #include "trace/pixel_run.h"
-#include "trace/criteria/registry.h"
 #include "trace/threshold_search.h"
 
 namespace hmcr {
@@ -35,15 +35,15 @@ Allocation parse_allocation(const std::string& name);
 
 struct TraceOptions {
     const Criterion* sampler = &uniform_criterion();  // trace/criteria/registry.h
-    double spp = 16;                  // mean samples per pixel: exact for uniform (a whole
-                                      // number), the search's target otherwise
+    double spp = 16;  // mean samples per pixel: exact for uniform (a whole
+                      // number), the search's target otherwise
     double threshold = std::numeric_limits<double>::quiet_NaN();  // > 0: fixed, no search
     double spp_tolerance = 0.02;  // accepted relative distance of the mean to spp
     // most samples of one pixel, batch samplers: 8..kMostSamplesPerPixel; none: 8 x spp
     std::optional<std::uint32_t> max_spp;
-    int tree_depth = 4;           // entropy samplers' quadtree depth limit, 1..12
-    std::uint64_t seed = 1;       // keys every sample's stream
-    int threads = 0;              // 0 = all cores; the image does not depend on it
+    int tree_depth = 4;      // entropy samplers' quadtree depth limit, 1..12
+    std::uint64_t seed = 1;  // keys every sample's stream
+    int threads = 0;         // 0 = all cores; the image does not depend on it
     // > 0: adaptive criteria see display values, radiance x this clamped to [0, 1]
     // (trace/criteria/display_values.h); 0: physical radiance
     double criterion_exposure = 0;

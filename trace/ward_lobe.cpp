@@ -24,8 +24,7 @@ double ward_lobe(const Vec3& n, const Vec3& wo, const Vec3& wi, double alpha) {
     if (!(cos_o > 0 && cos_i > 0)) return 0;
     const double cos_h = n.dot((wo + wi).normalized());
     const double cos2 = cos_h * cos_h, tan2 = (1 - cos2) / cos2;
-    return std::exp(-tan2 / (alpha * alpha)) /
-           (4 * kPi * alpha * alpha * std::sqrt(cos_i * cos_o));
+    return std::exp(-tan2 / (alpha * alpha)) / (4 * kPi * alpha * alpha * std::sqrt(cos_i * cos_o));
 }
 
 double ward_lobe_pdf(const Vec3& n, const Vec3& wo, const Vec3& wi, double alpha) {

@@ -6,8 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "rays/camera.h"
 #include "image/tone_map.h"
+#include "rays/camera.h"
 #include "viz/mesh_colors.h"
 
 namespace hmcr {

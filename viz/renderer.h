@@ -10,8 +10,8 @@
 
 #include <string>
 
-#include "meshes/scene.h"
 #include "image/image.h"
+#include "meshes/scene.h"
 #include "radiosity/shaded_mesh.h"
 #include "viz/shaded_tracer.h"
 

@@ -62,21 +62,18 @@ ShadedTracer::ShadedTracer(const ShadedMesh& mesh)
     }
     if (!m_two_sided.empty()) {
         m_patch_of_cell = mesh.patch_id;
-        const auto back = std::stable_partition(m_triangles.begin(), m_triangles.end(),
-                                                [&](const FanTriangle& t) {
-                                                    return cell_side(mesh, t.cell) == kFront;
-                                                });
+        const auto back = std::stable_partition(
+            m_triangles.begin(), m_triangles.end(),
+            [&](const FanTriangle& t) { return cell_side(mesh, t.cell) == kFront; });
         m_back_triangles.assign(back, m_triangles.end());
         m_triangles.erase(back, m_triangles.end());
-        m_back_scene =
-            std::make_unique<EmbreeScene>(mesh.points, point_triples(m_back_triangles));
+        m_back_scene = std::make_unique<EmbreeScene>(mesh.points, point_triples(m_back_triangles));
     }
     m_scene = std::make_unique<EmbreeScene>(mesh.points, point_triples(m_triangles));
 }
 
 std::optional<ShadedHit> ShadedTracer::shade(const std::vector<FanTriangle>& triangles,
-                                             const TriangleHit& hit,
-                                             const Vec3& direction) const {
+                                             const TriangleHit& hit, const Vec3& direction) const {
     const FanTriangle& t = triangles[hit.triangle];
     // Embree's (u, v) weigh the triangle's second and third vertex.
     const Rgb b = (1 - hit.u - hit.v) * m_point_radiosity[t.points[0]] +

@@ -14,9 +14,9 @@
 #include <optional>
 #include <vector>
 
-#include "rays/embree_scene.h"
 #include "common/types.h"
 #include "radiosity/shaded_mesh.h"
+#include "rays/embree_scene.h"
 
 namespace hmcr {
 
@@ -46,7 +46,7 @@ inline std::uint8_t cell_side(const ShadedMesh& mesh, std::size_t cell) {
 }
 
 class ShadedTracer {
-  public:
+public:
     // Copies what it needs: the mesh may be destroyed afterwards.
     explicit ShadedTracer(const ShadedMesh& mesh);
 
@@ -58,7 +58,7 @@ class ShadedTracer {
 
     double offset() const { return m_scene->offset(); }  // Embree's self-hit offset, metres
 
-  private:
+private:
     std::optional<ShadedHit> shade(const std::vector<FanTriangle>& triangles,
                                    const TriangleHit& hit, const Vec3& direction) const;
 

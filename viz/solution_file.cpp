@@ -10,8 +10,7 @@ SceneIdentity scene_identity(const Scene& scene) {
     return {scene.name, scene.mesh.n_faces(), geometry_hash(scene.mesh)};
 }
 
-VtpMetadata vtp_metadata(const Solution& solution, const SceneIdentity& scene,
-                         double time_value) {
+VtpMetadata vtp_metadata(const Solution& solution, const SceneIdentity& scene, double time_value) {
     const SolveStats& st = solution.stats;
     const bool uniform = solution.options.uniform_max_area > 0;
     return {uniform ? "uniform" : std::string(solution.options.oracle->name()),
@@ -58,11 +57,12 @@ SolutionFile read_solution(const std::filesystem::path& vtp, const Scene& scene)
     SolutionFile file = read_solution(vtp);
     const SceneIdentity id = scene_identity(scene);
     if (file.meta.patch_count != id.patches || file.meta.geometry_hash != id.geometry_hash) {
-        throw InputError(vtp.string(), fmt::format("is a solution of scene {} ({} patches, "
-                                                   "geometry {}), not of {} ({} patches, geometry {})",
-                                                   quote(file.meta.scene), file.meta.patch_count,
-                                                   file.meta.geometry_hash, quote(id.name),
-                                                   id.patches, id.geometry_hash));
+        throw InputError(
+            vtp.string(),
+            fmt::format("is a solution of scene {} ({} patches, "
+                        "geometry {}), not of {} ({} patches, geometry {})",
+                        quote(file.meta.scene), file.meta.patch_count, file.meta.geometry_hash,
+                        quote(id.name), id.patches, id.geometry_hash));
     }
     return file;
 }

@@ -6,8 +6,8 @@
 #include <filesystem>
 
 #include "meshes/scene.h"
-#include "radiosity/solver.h"
 #include "radiosity/shaded_mesh.h"
+#include "radiosity/solver.h"
 #include "viz/vtk_export.h"
 
 namespace hmcr {

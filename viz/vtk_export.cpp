@@ -1,7 +1,5 @@
 #include "viz/vtk_export.h"
 
-#include <algorithm>
-
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
@@ -22,6 +20,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <limits>
@@ -43,7 +42,7 @@ namespace {
 
 // Collects VTK error messages instead of letting them go to the console.
 class ErrorObserver : public vtkCommand {
-  public:
+public:
     static ErrorObserver* New() { return new ErrorObserver; }
     void Execute(vtkObject*, unsigned long, void* data) override {
         std::string text = data ? static_cast<const char*>(data) : "unknown VTK error";
@@ -54,7 +53,7 @@ class ErrorObserver : public vtkCommand {
     }
     const std::string& message() const { return m_message; }
 
-  private:
+private:
     std::string m_message;
 };
 

@@ -78,15 +78,15 @@ vtkSmartPointer<vtkPolyData> read_polydata(const fs::path& path, const VtpChecke
     bool failed = false;
     auto on_error = vtkSmartPointer<vtkCallbackCommand>::New();
     on_error->SetClientData(&failed);
-    on_error->SetCallback([](vtkObject*, unsigned long, void* flag, void*) {
-        *static_cast<bool*>(flag) = true;
-    });
+    on_error->SetCallback(
+        [](vtkObject*, unsigned long, void* flag, void*) { *static_cast<bool*>(flag) = true; });
     reader->AddObserver(vtkCommand::ErrorEvent, on_error);
     reader->AddObserver(vtkCommand::WarningEvent, on_error);
     reader->SetFileName(path.c_str());
     reader->Update();
     vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
-    if (failed || reader->GetErrorCode() != 0 || !data) check.fail("cannot read it as VTK PolyData");
+    if (failed || reader->GetErrorCode() != 0 || !data)
+        check.fail("cannot read it as VTK PolyData");
     return data;
 }
 
@@ -99,7 +99,8 @@ void read_points(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
         m.points.emplace_back(p[0], p[1], p[2]);
         Rgb r;
         // Negative where a signed estimator (the control variate, design.md §3.11) undershoots.
-        for (int k = 0; k < 3; ++k) r[k] = check.finite_at_least<double>(b->GetValue(3 * i + k), -HUGE_VAL, "Radiosity");
+        for (int k = 0; k < 3; ++k)
+            r[k] = check.finite_at_least<double>(b->GetValue(3 * i + k), -HUGE_VAL, "Radiosity");
         m.point_radiosity.push_back(r);
     }
 }
@@ -110,10 +111,12 @@ void read_cells(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
     vtkCellArray* polys = data->GetPolys();
     for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c) {
         polys->GetCellAtId(c, ids);
-        if (ids->GetNumberOfIds() < 3) check.fail(fmt::format("cell {} has fewer than 3 points", c));
+        if (ids->GetNumberOfIds() < 3)
+            check.fail(fmt::format("cell {} has fewer than 3 points", c));
         for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
             const vtkIdType id = ids->GetId(k);
-            if (id < 0 || id >= points) check.fail(fmt::format("cell {} names point {} of {}", c, id, points));
+            if (id < 0 || id >= points)
+                check.fail(fmt::format("cell {} names point {} of {}", c, id, points));
             m.connectivity.push_back(id);
         }
         m.offsets.push_back(std::int64_t(m.connectivity.size()));
@@ -131,13 +134,15 @@ void read_cell_data(vtkPolyData* data, const VtpChecker& check, std::uint64_t pa
     for (vtkIdType c = 0; c < n; ++c) {
         Rgb r;
         for (int k = 0; k < 3; ++k) {
-            r[k] = check.finite_at_least<double>(eb->GetValue(3 * c + k), -HUGE_VAL, "ElementRadiosity");
+            r[k] = check.finite_at_least<double>(eb->GetValue(3 * c + k), -HUGE_VAL,
+                                                 "ElementRadiosity");
         }
         m.element_radiosity.push_back(r);
         m.hierarchy_level.push_back(check.finite_at_least(level->GetValue(c), 0, "HierarchyLevel"));
         const int p = check.finite_at_least(patch->GetValue(c), 0, "PatchId");
         if (std::uint64_t(p) >= patch_count) {
-            check.fail(fmt::format("cell {} has PatchId {}, but the scene has {} patches", c, p, patch_count));
+            check.fail(fmt::format("cell {} has PatchId {}, but the scene has {} patches", c, p,
+                                   patch_count));
         }
         m.patch_id.push_back(p);
         m.element_area.push_back(check.finite_at_least(area->GetValue(c), 0.0, "ElementArea"));
@@ -156,7 +161,8 @@ void read_cell_data(vtkPolyData* data, const VtpChecker& check, std::uint64_t pa
 std::string string_field(vtkFieldData* fd, const char* name, const VtpChecker& check) {
     auto* a = vtkStringArray::SafeDownCast(fd->GetAbstractArray(name));
     if (!a || a->GetNumberOfValues() != 1) {
-        check.fail(fmt::format("no {} field: not a solution of this version of hmcr (solve again)", name));
+        check.fail(
+            fmt::format("no {} field: not a solution of this version of hmcr (solve again)", name));
     }
     return a->GetValue(0);
 }
@@ -172,8 +178,8 @@ std::uint64_t count_field(vtkFieldData* fd, const char* name, const VtpChecker& 
     vtkAbstractArray* a = fd->GetAbstractArray(name);
     if (!a) check.fail(fmt::format("not an hmcr solution (no {} field)", name));
     const int type = a->GetDataType();
-    const bool unsigned64 = (type == VTK_UNSIGNED_LONG || type == VTK_UNSIGNED_LONG_LONG) &&
-                            a->GetDataTypeSize() == 8;
+    const bool unsigned64 =
+        (type == VTK_UNSIGNED_LONG || type == VTK_UNSIGNED_LONG_LONG) && a->GetDataTypeSize() == 8;
     if (!unsigned64 || a->GetNumberOfComponents() != 1 || a->GetNumberOfTuples() != 1) {
         check.fail(fmt::format("field {} is not one unsigned 64-bit count", name));
     }
@@ -218,7 +224,8 @@ ShadedMesh read_vtp(const fs::path& path, VtpMetadata* metadata) {
     read_cells(data, check, m);
     read_cell_data(data, check, meta.patch_count, m);
     if (m.cell_count() != meta.element_count) {
-        check.fail(fmt::format("has {} cells but records {} elements", m.cell_count(), meta.element_count));
+        check.fail(fmt::format("has {} cells but records {} elements", m.cell_count(),
+                               meta.element_count));
     }
     if (metadata) *metadata = meta;
     return m;

@@ -57,8 +57,8 @@ private:
         const std::uint64_t left = m_bytes.size() - std::min<std::uint64_t>(base, m_bytes.size());
         auto need = [&](std::uint64_t bytes, const char* what) {
             if (offset > left || bytes > left - offset) {
-                fail(fmt::format("the array at offset {} declares {} beyond the file's end",
-                                 offset, what));
+                fail(fmt::format("the array at offset {} declares {} beyond the file's end", offset,
+                                 what));
             }
         };
         const std::size_t at = base + offset;
@@ -76,9 +76,10 @@ private:
         const std::uint64_t last_size = read_uint(head, 2 * width, width);
         // VTK 9.1 dereferences null for a header of no blocks but some bytes (fuzzer).
         if (blocks == 0 ? last_size != 0 : block_size == 0 || last_size > block_size) {
-            fail(fmt::format("the array at offset {} has a block header that contradicts itself "
-                             "({} blocks of {} bytes, the last {})",
-                             offset, blocks, block_size, last_size));
+            fail(
+                fmt::format("the array at offset {} has a block header that contradicts itself "
+                            "({} blocks of {} bytes, the last {})",
+                            offset, blocks, block_size, last_size));
         }
         if (blocks > left / width) need(left + 1, "its block sizes");
         const std::uint64_t header_bytes = (3 + blocks) * width;
@@ -103,9 +104,9 @@ private:
         std::string out(n + 3, '\0');
         const std::size_t chars = stored_size(n);
         if (at + chars > m_bytes.size()) fail("a header runs past the file's end");
-        vtkBase64Utilities::DecodeSafely(reinterpret_cast<const unsigned char*>(m_bytes.data() + at),
-                                         chars, reinterpret_cast<unsigned char*>(out.data()),
-                                         out.size());
+        vtkBase64Utilities::DecodeSafely(
+            reinterpret_cast<const unsigned char*>(m_bytes.data() + at), chars,
+            reinterpret_cast<unsigned char*>(out.data()), out.size());
         out.resize(n);
         return out;
     }

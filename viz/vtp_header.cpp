@@ -240,11 +240,11 @@ private:
 
     std::unique_ptr<XML_ParserStruct, FreeParser> m_parser;
     std::size_t m_file_bytes;
-    double m_limit;                   // the largest count the file could hold
-    bool m_in_points = false;         // the last element started is a Points
-    std::string m_section;            // the data section being read, if any
+    double m_limit;                         // the largest count the file could hold
+    bool m_in_points = false;               // the last element started is a Points
+    std::string m_section;                  // the data section being read, if any
     std::set<std::string> m_section_names;  // the names of its arrays so far
-    bool m_header_type_seen = false;  // the first header_type counts
+    bool m_header_type_seen = false;        // the first header_type counts
     std::string m_error;
 };
 

@@ -95,8 +95,8 @@ TEST_F(Cli, OraclesAndScenesAreListed) {
 TEST_F(Cli, PeakMemoryIsTheSolvesOwnNotItsParents) {
     const std::string vtp = (m_dir / "p.vtp").string();
     auto spawned_solve_peak = [&] {
-        std::vector<std::string> args = {HMCR_BINARY, "solve", "plates", "--rays", "20000",
-                                         "-q", "-o", vtp};
+        std::vector<std::string> args = {HMCR_BINARY, "solve", "plates", "--rays",
+                                         "20000",     "-q",    "-o",     vtp};
         std::vector<char*> argv;
         for (std::string& a : args) argv.push_back(a.data());
         argv.push_back(nullptr);
@@ -132,7 +132,8 @@ TEST_F(Cli, SolveWritesTheMeshAndASummaryWithCountsAndTimings) {
     EXPECT_EQ(summary["scene"]["max_emitted_power_w"].get<double>(), set.max_emitted_power);
     EXPECT_NEAR(summary["counts"]["rays"].get<double>(), 20000, 400);
     EXPECT_GT(summary["counts"]["leaves"].get<int>(), 1);
-    EXPECT_GE(summary["timings_s"]["total"].get<double>(), summary["timings_s"]["solve"].get<double>());
+    EXPECT_GE(summary["timings_s"]["total"].get<double>(),
+              summary["timings_s"]["solve"].get<double>());
     EXPECT_GT(summary["memory"]["peak_bytes"].get<double>(), 0);
     // Without a terminal, progress is a line every 10%.
     EXPECT_NE(r.err.find("shooting rays: 100%"), std::string::npos) << r.err;
@@ -173,8 +174,8 @@ TEST_F(Cli, RenderAndReferenceWriteTheirFiles) {
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(fs::exists(m_dir / "p.png"));
     EXPECT_TRUE(fs::exists(m_dir / "p.pfm"));
-    const CliRun ref = hmcr("reference plates --max-area 0.05 --rays 20000 -q -o " +
-                            (m_dir / "ref").string());
+    const CliRun ref =
+        hmcr("reference plates --max-area 0.05 --rays 20000 -q -o " + (m_dir / "ref").string());
     EXPECT_EQ(ref.exit_code, 0) << ref.err;
     for (const char* f : {"reference.vtp", "reference.json", "views/side.pfm", "views/side.png"}) {
         EXPECT_TRUE(fs::exists(m_dir / "ref" / f)) << f;
@@ -191,8 +192,8 @@ TEST_F(Cli, RenderRejectsAnUnknownViewAndAMissingSolution) {
                              (m_dir / "out.vtp.png").string());
     EXPECT_EQ(view.exit_code, 2);
     EXPECT_NE(view.err.find("no view 'nope' (views: side"), std::string::npos) << view.err;
-    const CliRun missing = hmcr("render " + (m_dir / "none.vtp").string() +
-                                " --scene plates -o " + (m_dir / "x.png").string());
+    const CliRun missing = hmcr("render " + (m_dir / "none.vtp").string() + " --scene plates -o " +
+                                (m_dir / "x.png").string());
     EXPECT_EQ(missing.exit_code, 2);
     EXPECT_NE(missing.err.find("none.vtp: no such file"), std::string::npos) << missing.err;
     EXPECT_FALSE(fs::exists(m_dir / "x.png"));
@@ -203,8 +204,8 @@ TEST_F(Cli, RenderNamesABrokenReferenceFile) {
     const std::string vtp = (m_dir / "p.vtp").string();
     ASSERT_EQ(hmcr("solve plates --rays 5000 --quiet -o " + vtp).exit_code, 0);
     fs::create_directories(m_dir / "ref");
-    for (const char* text : {"{}", "{\"reference\": {\"views\": {\"side\": {\"exposure\": \"x\"}}}}",
-                             "{not json"}) {
+    for (const char* text :
+         {"{}", "{\"reference\": {\"views\": {\"side\": {\"exposure\": \"x\"}}}}", "{not json"}) {
         std::ofstream(m_dir / "ref" / "reference.json") << text;
         const CliRun r = hmcr("render " + vtp + " --scene plates --reference " +
                               (m_dir / "ref").string() + " -o " + (m_dir / "x.png").string());

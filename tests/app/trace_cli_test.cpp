@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "image/image.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/temp_dir.h"
-#include "image/image.h"
 
 namespace hmcr::test {
 namespace {
@@ -106,8 +106,8 @@ TEST_F(TraceCli, AMeshingStudyTakesATracedReference) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string md = read_file(m_dir / "study" / "table.md");
     EXPECT_NE(md.find("| power | 1/1 |"), std::string::npos) << md;
-    const auto cell = nlohmann::json::parse(
-        read_file(m_dir / "study" / "cells" / "plates-kl-B20-s1.json"));
+    const auto cell =
+        nlohmann::json::parse(read_file(m_dir / "study" / "cells" / "plates-kl-B20-s1.json"));
     EXPECT_EQ(cell["status"], "ok");
     EXPECT_TRUE(cell["object_error"]["relative_l2"].is_null());
     for (const auto& [view, e] : cell["views"].items()) {

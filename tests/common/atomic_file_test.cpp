@@ -115,10 +115,10 @@ TEST(AtomicFile, FlushesTheBytesBeforeTheRenameAndTheFolderAfter) {
     replace_sync_call(system_call);
     ASSERT_EQ(g_flushes.size(), 2u);
     EXPECT_EQ(std::filesystem::path(g_flushes[0].path).parent_path(), g_target.parent_path());
-    EXPECT_NE(g_flushes[0].path, g_target.string());  // the temporary file, ...
-    EXPECT_FALSE(g_flushes[0].target_there);          // ... before the rename
+    EXPECT_NE(g_flushes[0].path, g_target.string());                // the temporary file, ...
+    EXPECT_FALSE(g_flushes[0].target_there);                        // ... before the rename
     EXPECT_EQ(g_flushes[1].path, g_target.parent_path().string());  // the folder, ...
-    EXPECT_TRUE(g_flushes[1].target_there);                          // ... after it
+    EXPECT_TRUE(g_flushes[1].target_there);                         // ... after it
 }
 
 TEST(AtomicFile, TemporaryNamesAreHiddenAndWithinTheNameLimit) {

@@ -15,10 +15,20 @@ TEST(FileNames, PortableNamesPass) {
 }
 
 TEST(FileNames, NamesThatCouldLeaveTheirFolderOrBreakALineAreRefused) {
-    const std::vector<std::string> names = {
-        "", "..", ".", "../../ESCAPED", "/tmp/x", "a/b", "a\\b", "a\nb", ".hidden", "-rf",
-        "two words", "caf\xc3\xa9", std::string("nul\0byte", 8),
-        std::string(kMaxNameBytes + 1, 'v')};
+    const std::vector<std::string> names = {"",
+                                            "..",
+                                            ".",
+                                            "../../ESCAPED",
+                                            "/tmp/x",
+                                            "a/b",
+                                            "a\\b",
+                                            "a\nb",
+                                            ".hidden",
+                                            "-rf",
+                                            "two words",
+                                            "caf\xc3\xa9",
+                                            std::string("nul\0byte", 8),
+                                            std::string(kMaxNameBytes + 1, 'v')};
     for (const std::string& name : names) {
         EXPECT_TRUE(name_problem(name)) << name;
         EXPECT_THROW(check_name(name, "view name"), InputError) << name;
@@ -42,8 +52,9 @@ TEST(FileNames, TheReasonNamesTheCharacter) {
         check_name("a\nb", "view name");
         FAIL();
     } catch (const InputError& e) {
-        EXPECT_STREQ(e.what(), "view name 'a\\nb' cannot name a file: '\\n' is not a letter, "
-                               "digit, '.', '_', '-' or '+'");
+        EXPECT_STREQ(e.what(),
+                     "view name 'a\\nb' cannot name a file: '\\n' is not a letter, "
+                     "digit, '.', '_', '-' or '+'");
     }
 }
 

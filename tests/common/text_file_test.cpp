@@ -32,8 +32,9 @@ TEST(ReadJsonFile, ASyntaxErrorIsOneShortLineWithFileAndLine) {
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     EXPECT_LT(what.size(), 400u) << what;
     // The token before "; expected ...", and a token holding "'; expected" itself (fuzzer).
-    for (const std::string& key : {std::string(3000, '\x7f') + "\xff",
-                                   std::string(3000, '\'') + "'; expected" + std::string(3000, '\'')}) {
+    for (const std::string& key :
+         {std::string(3000, '\x7f') + "\xff",
+          std::string(3000, '\'') + "'; expected" + std::string(3000, '\'')}) {
         const auto file = dir.write("key.json", "{\n  \"" + key + "\n\": 1}");
         const std::string middle = error_of(file);
         EXPECT_NE(middle.find("key.json:2: "), std::string::npos) << middle;

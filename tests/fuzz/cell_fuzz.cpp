@@ -53,12 +53,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using namespace hmcr::fuzz;
     const auto cell = write("cell.json", std::string(reinterpret_cast<const char*>(data), size));
     expect_only_input_errors([&] {
-        check(hmcr::read_json_file(cell, [](const nlohmann::json& j) {
-            return hmcr::cell_from_json(j);
-        }));
+        check(hmcr::read_json_file(
+            cell, [](const nlohmann::json& j) { return hmcr::cell_from_json(j); }));
     });
-    expect_only_input_errors([&] {
-        check(hmcr::read_json_file(cell, hmcr::sampling_cell_from_json));
-    });
+    expect_only_input_errors(
+        [&] { check(hmcr::read_json_file(cell, hmcr::sampling_cell_from_json)); });
     return 0;
 }

@@ -22,7 +22,8 @@ namespace hmcr::fuzz {
 
 inline const std::filesystem::path& work_dir() {
     static const std::filesystem::path dir = [] {
-        std::string pattern = (std::filesystem::temp_directory_path() / "hmcr_fuzz_XXXXXX").string();
+        std::string pattern =
+            (std::filesystem::temp_directory_path() / "hmcr_fuzz_XXXXXX").string();
         if (mkdtemp(pattern.data()) == nullptr) crash("cannot create a temporary folder");
         return std::filesystem::path(pattern);
     }();

@@ -1,8 +1,8 @@
 // libFuzzer target: PFM images, as a study reads a reference's views/VIEW.pfm.
 #include <cstdint>
 
-#include "tests/fuzz/fuzz_support.h"
 #include "image/image.h"
+#include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace hmcr::fuzz;

@@ -12,7 +12,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     write("reference.json", std::string(reinterpret_cast<const char*>(data), size));
     expect_only_input_errors([&] {
         for (const auto& [view, exposure] : hmcr::read_reference_exposures(work_dir())) {
-            if (!(exposure > 0 && std::isfinite(exposure))) crash("an exposure that is not positive");
+            if (!(exposure > 0 && std::isfinite(exposure)))
+                crash("an exposure that is not positive");
             if (hmcr::name_problem(view)) crash("a view name that cannot name a file");
         }
     });

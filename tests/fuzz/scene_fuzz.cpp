@@ -11,8 +11,9 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace hmcr::fuzz;
     static const bool mesh_written = [] {
-        write("fuzz.obj", "mtllib fuzz.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\n"
-                          "v 1 0 1\nv 1 1 1\nv 0 1 1\nusemtl e\nf 1 2 3 4\nusemtl r\nf 5 8 7 6\n");
+        write("fuzz.obj",
+              "mtllib fuzz.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\n"
+              "v 1 0 1\nv 1 1 1\nv 0 1 1\nusemtl e\nf 1 2 3 4\nusemtl r\nf 5 8 7 6\n");
         write("fuzz.mtl", "newmtl e\nKd 0 0 0\nKe 1 1 1\nnewmtl r\nKd 0.5 0.5 0.5\n");
         return true;
     }();

@@ -1,6 +1,6 @@
 // The hostile-input suite: every case runs the hmcr binary as a careless or hostile user would
-// and checks the promise of docs/usage.md#bad-input: exit code 2, one line on stderr naming what and
-// where, no hang, and not one file of the working folder written, removed or changed.
+// and checks the promise of docs/usage.md#bad-input: exit code 2, one line on stderr naming what
+// and where, no hang, and not one file of the working folder written, removed or changed.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -36,8 +36,8 @@ inline int interrupted(const std::string& args, const std::filesystem::path& dir
                        std::chrono::milliseconds delay) {
     const pid_t child = fork();
     if (child == 0) {
-        const std::string cmd = "cd '" + dir.string() + "' && exec " + HMCR_BINARY + " " + args +
-                                " >.stdout 2>.stderr";
+        const std::string cmd =
+            "cd '" + dir.string() + "' && exec " + HMCR_BINARY + " " + args + " >.stdout 2>.stderr";
         execl("/bin/sh", "sh", "-c", cmd.c_str(), nullptr);
         _exit(127);
     }

@@ -37,9 +37,10 @@ TEST_P(Interrupt, AReferenceEndsCleanly) {
 
 TEST_P(Interrupt, ATraceEndsCleanly) {
     const int signal = GetParam();
-    const int status = interrupted("trace cube-room --spp 100000 -o out/room.png --pfm out/room.pfm "
-                                   "--progress none",
-                                   dir(), signal, std::chrono::milliseconds(1500));
+    const int status = interrupted(
+        "trace cube-room --spp 100000 -o out/room.png --pfm out/room.pfm "
+        "--progress none",
+        dir(), signal, std::chrono::milliseconds(1500));
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
     EXPECT_NE(read_file(dir() / ".stderr").find("interrupted by SIG"), std::string::npos);

@@ -32,9 +32,10 @@ TEST_F(Hostile, NumbersOutOfRangeOrNotNumbersAreRefused) {
 
 TEST_F(Hostile, TheElementLimitStopsAGrowingHierarchy) {
     plates();
-    refused("solve plates.json -o out.vtp --oracle power --epsilon 1e-12 --rays 20000 "
-            "--max-elements 1000",
-            "would grow beyond --max-elements 1000");
+    refused(
+        "solve plates.json -o out.vtp --oracle power --epsilon 1e-12 --rays 20000 "
+        "--max-elements 1000",
+        "would grow beyond --max-elements 1000");
 }
 
 TEST_F(Hostile, RenderOptionsAreChecked) {

@@ -9,7 +9,6 @@
 
 #include <csignal>
 #include <cstring>
-
 #include <nlohmann/json.hpp>
 
 #include "tests/hostile/hostile.h"
@@ -21,7 +20,8 @@ namespace {
 // The seed of x.json and of x.vtp in `dir`: equal when both are one run's.
 std::pair<std::uint64_t, std::uint64_t> seeds(const std::filesystem::path& dir) {
     const auto summary = nlohmann::json::parse(read_file(dir / "x.json"));
-    return {summary["options"]["seed"].get<std::uint64_t>(), read_solution(dir / "x.vtp").meta.seed};
+    return {summary["options"]["seed"].get<std::uint64_t>(),
+            read_solution(dir / "x.vtp").meta.seed};
 }
 
 // Both runs shoot the same rays with their own seed: they finish together, which is when their
@@ -37,7 +37,8 @@ TEST_F(Hostile, TwoSolvesOfOneOutputLeaveOneRunsFiles) {
         ASSERT_EQ(std::system(both.c_str()), 0);
         for (const char* err : {".err1", ".err2"}) {
             const std::string text = read_file(dir() / err);
-            EXPECT_TRUE(text.empty() || text.find("another hmcr run is writing it") != std::string::npos)
+            EXPECT_TRUE(text.empty() ||
+                        text.find("another hmcr run is writing it") != std::string::npos)
                 << text;
             refusals += !text.empty();
         }

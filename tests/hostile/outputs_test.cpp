@@ -41,7 +41,8 @@ TEST_F(Hostile, AStudyMayNotWriteIntoItsReference) {
 TEST_F(Hostile, OutputsThatCannotBeWrittenAreRefusedFirst) {
     plates();
     m_temp.write("file", "x");
-    refused("reference plates.json --rays 100000000 -o file", "cannot write file: it is not a folder");
+    refused("reference plates.json --rays 100000000 -o file",
+            "cannot write file: it is not a folder");
     refused("study plates.json --budgets 5 --reference ref -o file", "it is not a folder");
     refused("solve plates.json --rays 100000000 -o /proc/x.vtp", "cannot write /proc/x.vtp");
     refused("solve plates.json -o file/x.vtp", "cannot write file/x.vtp");
@@ -57,25 +58,29 @@ TEST_F(Hostile, EveryFileOfASetIsCheckedBeforeTheWork) {
     refused("solve plates.json --rays 1e12 -q -o d/x.vtp", "cannot write d/x.json: it is a folder");
     refused("solve plates.json --rays 1e12 -q -o d/" + long_name + ".vtp",
             ".json: its name is 256 bytes long, more than 255");
-    refused("trace plates.json --spp 100000 -q -o d/x.png", "cannot write d/x.json: it is a folder");
+    refused("trace plates.json --spp 100000 -q -o d/x.png",
+            "cannot write d/x.json: it is a folder");
     refused("trace plates.json --spp 100000 -q -o d/" + long_name + ".png",
             "-density.png: its name is 263 bytes long, more than 255");
     std::filesystem::create_directories(dir() / "ref" / "views" / "side.png");
     refused("reference plates.json --rays 1e12 -q -o ref", "cannot write ref/views/side.png");
-    refused("trace-reference plates.json --spp 100000 -q -o ref", "cannot write ref/views/side.png");
+    refused("trace-reference plates.json --spp 100000 -q -o ref",
+            "cannot write ref/views/side.png");
 }
 
 TEST_F(Hostile, AStudysCellFilesAreCheckedBeforeTheFirstCell) {
     plates();
     accepted("reference plates.json --max-area 0.5 --rays 2000 -q -o ref");
     std::filesystem::create_directories(dir() / "st" / "cells" / "plates-power-B4-s2.json");
-    refused("study plates.json --reference ref --budgets 4 --oracles power --seeds 2 "
-            "--rays 1e12 -q -o st",
-            "cannot write st/cells/plates-power-B4-s2.json: it is a folder");
+    refused(
+        "study plates.json --reference ref --budgets 4 --oracles power --seeds 2 "
+        "--rays 1e12 -q -o st",
+        "cannot write st/cells/plates-power-B4-s2.json: it is a folder");
     std::filesystem::create_directories(dir() / "st2" / "images" / "plates-kl-B4-s1-side.png");
-    refused("study plates.json --reference ref --budgets 4 --oracles power,kl --seeds 1 "
-            "--rays 1e12 -q -o st2",
-            "cannot write st2/images/plates-kl-B4-s1-side.png: it is a folder");
+    refused(
+        "study plates.json --reference ref --budgets 4 --oracles power,kl --seeds 1 "
+        "--rays 1e12 -q -o st2",
+        "cannot write st2/images/plates-kl-B4-s1-side.png: it is a folder");
 }
 
 // The folders a run makes for its outputs go with them when it is stopped.

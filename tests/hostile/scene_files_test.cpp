@@ -1,5 +1,5 @@
-// Hostile scenes: every class of bad scene docs/usage.md#bad-input lists, and the cases that once hung,
-// crashed or went unnoticed.
+// Hostile scenes: every class of bad scene docs/usage.md#bad-input lists, and the cases that once
+// hung, crashed or went unnoticed.
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -25,8 +25,9 @@ TEST_F(Hostile, EveryClassOfBadObjIsRefusedWithItsLine) {
         {with(kPlatesObj, "f 1 2 3 4", "f 1 3 2 4"), "plates.obj:11: self-intersecting"},
         {with(kPlatesObj, "usemtl emitter\n", ""), "plates.obj:10: face has no material"},
         {with(kPlatesObj, "usemtl emitter", "usemtl emiter"), "material 'emiter', which no"},
-        {with(kPlatesObj, "mtllib plates.mtl", "mtllib none.mtl"), "plates.obj:1: cannot read "
-                                                                  "material library 'none.mtl'"},
+        {with(kPlatesObj, "mtllib plates.mtl", "mtllib none.mtl"),
+         "plates.obj:1: cannot read "
+         "material library 'none.mtl'"},
         {with(kPlatesObj, "v 0 0 0", "vv 0 0 0"), "plates.obj:2: unknown OBJ statement 'vv'"},
         {"", "plates.obj: no faces"},
     };
@@ -36,8 +37,8 @@ TEST_F(Hostile, EveryClassOfBadObjIsRefusedWithItsLine) {
     }
 }
 
-// What the repairs fix (docs/usage.md#repairs) is refused as before with --strict, or a scene file's
-// "strict": true.
+// What the repairs fix (docs/usage.md#repairs) is refused as before with --strict, or a scene
+// file's "strict": true.
 TEST_F(Hostile, StrictRefusesWhatTheRepairsFix) {
     const std::pair<std::string, std::string> cases[] = {
         {with(kPlatesObj, "f 1 2 3 4", "f 1 2 2"), "plates.obj:11: degenerate face"},
@@ -104,9 +105,9 @@ TEST_F(Hostile, SidesOtherThanOneOrTwoAreRefused) {
     plates();
     refused("solve plates.obj -o out.vtp --sides 3", "--sides");
     refused("solve plates.obj -o out.vtp --sides 0", "--sides");
-    plates(kPlatesObj, kPlatesMtl,
-           with(kPlatesJson, R"({"mesh": "plates.obj", )",
-                R"({"mesh": "plates.obj", "sides": 3, )"));
+    plates(
+        kPlatesObj, kPlatesMtl,
+        with(kPlatesJson, R"({"mesh": "plates.obj", )", R"({"mesh": "plates.obj", "sides": 3, )"));
     refused("info plates.json", "plates.json: sides: must be 1 or 2");
     m_temp.write("sides.mgf", "m lamp =\n ed 100\n sides 3\n");
     refused("info sides.mgf", "sides.mgf:3: sides 3 is not 1 or 2");
@@ -134,8 +135,9 @@ TEST_F(Hostile, EveryClassOfBadMaterialIsRefusedWithItsLine) {
         // Once a solve that never ended: the powers overflowed to infinity.
         {with(kPlatesMtl, "Ke 0.3 0.3 0.3", "Ke 1e300 1 1"), "plates.mtl:3: emission 1e+300"},
         {with(kPlatesMtl, "Kd 0 0 0", "Kd 0 0"), "plates.mtl:2: 'Kd' needs three numbers"},
-        {std::string(kPlatesMtl) + "newmtl receiver\n", "plates.mtl:7: material 'receiver' is "
-                                                         "defined again (first at"},
+        {std::string(kPlatesMtl) + "newmtl receiver\n",
+         "plates.mtl:7: material 'receiver' is "
+         "defined again (first at"},
     };
     for (const auto& [mtl, needle] : cases) {
         plates(kPlatesObj, mtl);
@@ -185,7 +187,8 @@ TEST_F(Hostile, BadSceneFilesAreRefusedWithFileAndPlace) {
         {"{\"mesh\": \"plates.obj\",", "plates.json:1: "},
         {R"({"mesh": "plates.obj", "meshh": 1})", "unknown key 'meshh'"},
         {R"({"mesh": "plates.obj", "views": [{"name": "a", "position": [0, 0, 0],
-             "look_at": [0, 0, 0]}]})", "look_at equals position"},
+             "look_at": [0, 0, 0]}]})",
+         "look_at equals position"},
         {R"({"mesh": "plates.obj", "solver": {"rays": -5}})", "plates.json: solver.rays: "},
         {R"({"mesh": "plates.obj", "solver": {"rays": 1.5}})", "plates.json: solver.rays: "},
         {R"({"mesh": "plates.obj", "solver": {"rays": 1e30}})", "plates.json: solver.rays: "},

@@ -77,7 +77,8 @@ TEST_F(Hostile, BadAllocationAndSppListsAreRefused) {
 
 // A radiosity command on a scene with mirrors says once that the engine absorbs their light.
 TEST_F(Hostile, RadiosityCommandsWarnOnceAboutSpecularSurfaces) {
-    plates(kPlatesObj, with(kPlatesMtl, "Kd 0.5 0.5 0.5\n", "Kd 0.2 0.2 0.2\nillum 3\nKs 0.7 0.7 0.7\n"));
+    plates(kPlatesObj,
+           with(kPlatesMtl, "Kd 0.5 0.5 0.5\n", "Kd 0.2 0.2 0.2\nillum 3\nKs 0.7 0.7 0.7\n"));
     const CliRun solve = accepted("solve plates.json --rays 2000 -o out.vtp");
     const std::string warning = "hmcr: warning: 1 of 2 patches of plates reflect specularly";
     EXPECT_NE(solve.err.find(warning), std::string::npos) << solve.err;

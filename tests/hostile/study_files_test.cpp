@@ -3,9 +3,8 @@
 // mixed into one table; a study's size and seeds are bounded before anything is written;
 // `hmcr plot` refuses a folder that holds no study's table, and a machine without matplotlib;
 // a study whose plotting script fails is still whole.
-#include <nlohmann/json.hpp>
-
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "tests/hostile/hostile.h"
@@ -76,7 +75,8 @@ TEST_F(HostileStudy, CellsWhoseValuesDoNotCheckOutAreComputedAgain) {
         m_temp.write("st/cells/plates-power-B20-s1.json", bad.dump(2));
         const CliRun r = accepted(kStudy);
         EXPECT_NE(r.err.find("plates-power-B20-s1: unreadable"), std::string::npos)
-            << pointer << "\n" << r.err;
+            << pointer << "\n"
+            << r.err;
         EXPECT_NE(r.err.find(pointer.substr(pointer.rfind('/') + 1)), std::string::npos) << r.err;
         EXPECT_EQ(nlohmann::json::parse(read_file(cell(1)))["leaves"], good["leaves"]) << pointer;
     }
@@ -87,12 +87,14 @@ TEST_F(HostileStudy, TheCellCountAndTheSeedsAreBounded) {
             "7 x 2000 seeds = 14000 cells");
     refused("study plates.json --reference ref --samplers uniform --seeds 10001 -o big",
             "1 x 10001 seeds = 10001 cells, more than the 10000 a study may have");
-    refused("study plates.json --reference ref --budgets 20 --oracles power "
-            "--first-seed 18446744073709551614 --seeds 3 -o big",
-            "pass the largest seed");
-    refused("study plates.json --reference ref --samplers uniform "
-            "--first-seed 18446744073709551615 --seeds 2 -o big",
-            "pass the largest seed");
+    refused(
+        "study plates.json --reference ref --budgets 20 --oracles power "
+        "--first-seed 18446744073709551614 --seeds 3 -o big",
+        "pass the largest seed");
+    refused(
+        "study plates.json --reference ref --samplers uniform "
+        "--first-seed 18446744073709551615 --seeds 2 -o big",
+        "pass the largest seed");
 }
 
 TEST_F(HostileStudy, QuietMeansQuiet) {
@@ -165,7 +167,8 @@ TEST_F(HostileStudy, AFailingPlotScriptLeavesTheStudyWhole) {
         "broken-python", "#!/bin/sh\n[ \"$1\" = -c ] && exit 0\necho broken >&2\nexit 1\n");
     std::filesystem::permissions(python, std::filesystem::perms::owner_exec,
                                  std::filesystem::perm_options::add);
-    const CliRun study = run_launched("env HMCR_PYTHON=" + python.string() + " ", kStudy, dir(), 60);
+    const CliRun study =
+        run_launched("env HMCR_PYTHON=" + python.string() + " ", kStudy, dir(), 60);
     EXPECT_EQ(study.exit_code, 0) << study.err;
     EXPECT_TRUE(std::filesystem::exists(dir() / "st" / "table.tex"));
     EXPECT_NE(study.err.find("broken\nhmcr: warning: plots not drawn: the plotting script "),
@@ -183,7 +186,8 @@ TEST_F(Hostile, ThePlotScriptNamesNoFileOutsideItsFolder) {
          "groups": [{"name": "g", "values": [{"y": 1, "y_se": null}]}]}]}]})");
     const auto before = snapshot(dir());
     const std::string script =
-        (std::filesystem::path(HMCR_SCENE_DIR).parent_path() / "scripts" / "plot_study.py").string();
+        (std::filesystem::path(HMCR_SCENE_DIR).parent_path() / "scripts" / "plot_study.py")
+            .string();
     const std::string cmd = "cd '" + dir().string() + "' && /usr/bin/python3 '" + script +
                             "' st/plots/plot_data.json 2>.err";
     const int status = std::system(cmd.c_str());

@@ -30,7 +30,8 @@ TEST_F(Hostile, TraceOptionsAreChecked) {
         {"--view top", "no view 'top' (views: side)"},
         {"--progress loud", "progress must be auto, bar, lines or none"},
     };
-    for (const auto& [option, needle] : cases) refused("trace plates.json -o x.png " + option, needle);
+    for (const auto& [option, needle] : cases)
+        refused("trace plates.json -o x.png " + option, needle);
     for (const char* e : {"nan", "-1", "0", "inf"}) {
         refused("trace plates.json -o x.png --exposure " + std::string(e),
                 "exposure must be a positive number, got " + std::string(e));

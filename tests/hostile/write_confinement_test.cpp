@@ -84,10 +84,11 @@ TEST_F(HostileConfinement, EveryCommandWritesOnlyWhatItWasGiven) {
 // Names a scene file may give its views, each of which would lead a reference's views/NAME.pfm
 // out of its folder, hide it, or break a message in two.
 TEST_F(HostileConfinement, NoViewNameLeadsAWriteOutOfItsFolder) {
-    const fs::path outside = fs::temp_directory_path() / ("hmcr-escaped-" + std::to_string(getpid()));
-    for (const std::string& name : {std::string("../../ESCAPED"), outside.string(), std::string(""),
-                                   std::string("a\\nb"), std::string(".hidden"),
-                                   std::string(65, 'v')}) {
+    const fs::path outside =
+        fs::temp_directory_path() / ("hmcr-escaped-" + std::to_string(getpid()));
+    for (const std::string& name :
+         {std::string("../../ESCAPED"), outside.string(), std::string(""), std::string("a\\nb"),
+          std::string(".hidden"), std::string(65, 'v')}) {
         m_temp.write("plates.json", scene_with_view(name));
         for (const Given& g : kCommands) {
             if (g.args.find("plates.json") == std::string::npos) continue;

@@ -7,10 +7,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "tests/support/temp_dir.h"
-#include "tests/support/image_checks.h"
 #include "image/image.h"
 #include "image/tone_map.h"
+#include "tests/support/image_checks.h"
+#include "tests/support/temp_dir.h"
 
 namespace hmcr {
 namespace {

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <vector>
 
-#include "radiosity/solver.h"
 #include "information/scene_information.h"
+#include "radiosity/solver.h"
 #include "tests/support/information.h"
 #include "tests/support/plugins.h"
 #include "tests/support/statistics.h"
@@ -24,8 +24,8 @@ namespace {
 std::vector<TestPolygon> two_rooms(const Rgb& emission) {
     std::vector<TestPolygon> scene;
     for (const double x0 : {0.0, 1.0}) {
-        for (const TestPolygon& wall : inward_box({x0, 0, 0}, {x0 + 1, 1, 1}, 1,
-                                                  Rgb::Constant(0.5), emission)) {
+        for (const TestPolygon& wall :
+             inward_box({x0, 0, 0}, {x0 + 1, 1, 1}, 1, Rgb::Constant(0.5), emission)) {
             bool on_partition = true;
             for (const Vec3& c : wall.corners) on_partition &= c.x() == 1;
             if (!on_partition) scene.push_back(wall);
@@ -51,7 +51,8 @@ void expect_two_rooms(const InformationMeasures& m, std::uint64_t lines) {
     EXPECT_LT(double(m.samples_open), 1e-4 * double(m.samples));
     EXPECT_EQ(m.patches_unsampled, 0u);
     EXPECT_NEAR(m.h_p.estimate, std::log2(12.0), 1e-12);
-    EXPECT_TRUE(within_standard_errors("H_S", m.h_s.estimate, cube.h_s, m.h_s.standard_error, bias));
+    EXPECT_TRUE(
+        within_standard_errors("H_S", m.h_s.estimate, cube.h_s, m.h_s.standard_error, bias));
     EXPECT_TRUE(within_standard_errors("I_S", m.i_s.estimate, std::log2(12.0) - cube.h_s,
                                        m.i_s.standard_error, bias));
 }

@@ -40,8 +40,8 @@ TEST(GlobalLines, CubeFormFactorsMatchExactValues) {
             const double dot = set.patches[i].normal.dot(set.patches[j].normal);
             const double f_ij = i == j ? 0.0 : dot < -0.5 ? exact.opposite : exact.adjacent;
             const double se = std::sqrt(std::max(f_ij * (1 - f_ij), 1e-12) / double(f.rays[i]));
-            EXPECT_TRUE(within_standard_errors(
-                "F_" + std::to_string(i) + std::to_string(j), f(i, j), f_ij, se));
+            EXPECT_TRUE(within_standard_errors("F_" + std::to_string(i) + std::to_string(j),
+                                               f(i, j), f_ij, se));
         }
     }
     EXPECT_EQ(samples.samples() % 2, 0u);  // crossings come in pairs on a closed convex box
@@ -78,11 +78,12 @@ TEST(GlobalLines, AgreeWithLocalLinesOnTheCornellBox) {
     EXPECT_TRUE(agree("H_S", local.h_s, global.h_s, bias));
     EXPECT_TRUE(agree("I_S", local.i_s, global.i_s, bias));
     EXPECT_TRUE(agree("I^c_S", local.i_cs, global.i_cs, 0));
-    EXPECT_TRUE(agree("I^c_S - I_S", local.discretisation_error, global.discretisation_error, bias));
+    EXPECT_TRUE(
+        agree("I^c_S - I_S", local.discretisation_error, global.discretisation_error, bias));
     // The open share of rays (out of the front, onto back faces) is the same quantity too.
-    EXPECT_TRUE(within_standard_errors("open share", global_open.mean, local_open.mean,
-                                       std::hypot(global_open.standard_error,
-                                                  local_open.standard_error)));
+    EXPECT_TRUE(
+        within_standard_errors("open share", global_open.mean, local_open.mean,
+                               std::hypot(global_open.standard_error, local_open.standard_error)));
     EXPECT_EQ(global.patches_unsampled, 0u);
 }
 

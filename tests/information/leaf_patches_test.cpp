@@ -1,23 +1,23 @@
 // A solution's leaves as a discretisation: its cells reduced to their triangles and quads, and
 // the information measures of that discretisation (docs/design.md §7).
-#include "oracles/registry.h"
 #include "information/leaf_patches.h"
 
 #include <gtest/gtest.h>
 
-#include "radiosity/solver.h"
 #include "information/scene_information.h"
+#include "oracles/registry.h"
+#include "radiosity/shaded_mesh.h"
+#include "radiosity/solver.h"
 #include "tests/support/information.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
-#include "radiosity/shaded_mesh.h"
 
 namespace hmcr::test {
 namespace {
 
 TEST(LeafPatches, CellsBecomeTheirLeavesWithTheSameArea) {
-    const PatchMesh mesh = make_patch_mesh(
-        inward_box({0, 0, 0}, {1, 1, 1}, 1, Rgb::Constant(0.5), Rgb::Constant(1)));
+    const PatchMesh mesh =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 1, Rgb::Constant(0.5), Rgb::Constant(1)));
     SolverOptions o;
     o.oracle = oracle_registry().find("power");
     o.epsilon = 1e-3;
@@ -41,11 +41,12 @@ TEST(LeafPatches, CellsBecomeTheirLeavesWithTheSameArea) {
     const LineOptions lines{LineMethod::local, 2'000'000, 16, 1};
     const auto [coarse, coarse_bias, coarse_open] = measure_channel(build_patch_set(mesh), lines);
     const auto [fine, fine_bias, fine_open] = measure_channel(leaves, lines);
-    EXPECT_TRUE(within_standard_errors(
-        "I^c_S leaves vs patches", fine.i_cs.estimate, coarse.i_cs.estimate,
-        std::hypot(fine.i_cs.standard_error, coarse.i_cs.standard_error)));
-    EXPECT_GT(fine.i_s.estimate - fine_bias - kZ * (fine.i_s.standard_error + coarse.i_s.standard_error),
-              coarse.i_s.estimate);
+    EXPECT_TRUE(
+        within_standard_errors("I^c_S leaves vs patches", fine.i_cs.estimate, coarse.i_cs.estimate,
+                               std::hypot(fine.i_cs.standard_error, coarse.i_cs.standard_error)));
+    EXPECT_GT(
+        fine.i_s.estimate - fine_bias - kZ * (fine.i_s.standard_error + coarse.i_s.standard_error),
+        coarse.i_s.estimate);
     EXPECT_LE(fine.i_s.estimate - kZ * fine.discretisation_error.standard_error,
               fine.i_cs.estimate + fine_bias);
 }

@@ -4,7 +4,6 @@
 // Tolerances: z = 4 batch-means standard errors, plus, where the plug-in entropy's bias
 // matters, Paninski's bound (tests/support/information.h).
 #include "information/scene_information.h"
-#include "information/form_factors.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -13,6 +12,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "information/form_factors.h"
 #include "tests/support/analytic.h"
 #include "tests/support/information.h"
 #include "tests/support/statistics.h"

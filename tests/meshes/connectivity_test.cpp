@@ -26,9 +26,9 @@ void expect_same_as_openmesh(const PatchMesh& mesh) {
         int k = 0;
         for (auto fv : mesh.fv_range(f)) EXPECT_EQ(v.faces[f.idx()][k++], unsigned(fv.idx()));
         for (k = 0; k < n; ++k) {
-            const auto h = mesh.find_halfedge(PatchMesh::VertexHandle(int(v.faces[f.idx()][k])),
-                                              PatchMesh::VertexHandle(
-                                                  int(v.faces[f.idx()][(k + 1) % n])));
+            const auto h =
+                mesh.find_halfedge(PatchMesh::VertexHandle(int(v.faces[f.idx()][k])),
+                                   PatchMesh::VertexHandle(int(v.faces[f.idx()][(k + 1) % n])));
             ASSERT_TRUE(h.is_valid());
             EXPECT_EQ(e.faces[f.idx()][k], unsigned(mesh.edge_handle(h).idx()))
                 << "face " << f.idx() << " side " << k;

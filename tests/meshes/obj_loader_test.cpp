@@ -224,8 +224,9 @@ TEST(ObjLoader, DuplicateFaces) {
         "f 1 2 3 4\n"                 // 7
         "f 4 3 2 1\n"                 // 8
         "usemtl light\nf 2 3 4 1\n";  // 10
-    EXPECT_TRUE(contains(obj_error(body), "scene.obj:10: a third face on the same vertices as "
-                                          "the faces on lines 7 and 8: a surface has two sides"));
+    EXPECT_TRUE(contains(obj_error(body),
+                         "scene.obj:10: a third face on the same vertices as "
+                         "the faces on lines 7 and 8: a surface has two sides"));
     // Strict: a copy is refused, with both lines.
     EXPECT_TRUE(contains(strict_error("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nf 2 3 1\n"),
                          "scene.obj:7: duplicate face: same vertices as the face on line 6"));
@@ -235,8 +236,9 @@ TEST(ObjLoader, FaceWithoutMaterial) {
     SceneFiles files;
     const auto obj = files.write("scene.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     EXPECT_TRUE(contains(scene_error([&] { load_obj(obj); }), "scene.obj:4: face has no material"));
-    EXPECT_TRUE(contains(obj_error("usemtl purple\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
-                         "scene.obj:7: face uses material 'purple', which no loaded material file"));
+    EXPECT_TRUE(
+        contains(obj_error("usemtl purple\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+                 "scene.obj:7: face uses material 'purple', which no loaded material file"));
 }
 
 TEST(ObjLoader, ReflectanceNotBelowOne) {

@@ -1,6 +1,6 @@
-// The repairs (docs/usage.md#repairs): each kind on an OBJ that needs it (what was done, the report,
-// its summary line), the same file refused with today's message under --strict, and what stays
-// an error either way.
+// The repairs (docs/usage.md#repairs): each kind on an OBJ that needs it (what was done, the
+// report, its summary line), the same file refused with today's message under --strict, and what
+// stays an error either way.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -153,8 +153,9 @@ TEST(Repairs, ExactDuplicateIsDroppedAReversedOneIsTheBackAnotherMaterialLoses) 
 
 TEST(Repairs, EveryLaterCopyIsDroppedTheFirstKeptInItsPlace) {
     // Faces on lines 8-12: A, B, A from another corner, B from another corner, A again.
-    const Loaded r = load("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
-                          "f 1 2 3\nf 1 3 4\nf 2 3 1\nf 4 1 3\nf 1 2 3\n");
+    const Loaded r = load(
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        "f 1 2 3\nf 1 3 4\nf 2 3 1\nf 4 1 3\nf 1 2 3\n");
     ASSERT_TRUE(r.error.empty()) << r.error;
     ASSERT_EQ(r.file.mesh.n_faces(), 2u + 1);  // and the light
     EXPECT_EQ(r.file.repairs[RepairKind::duplicate_dropped].count, 3u);

@@ -43,7 +43,7 @@ std::filesystem::path write_scene(const SceneFiles& files, const std::string& js
 
 // Sets an environment variable for the lifetime of the object, then restores it.
 class ScopedEnv {
-  public:
+public:
     ScopedEnv(const char* name, const std::string& value) : m_name(name) {
         if (const char* old = getenv(name)) m_old = old;
         setenv(name, value.c_str(), 1);
@@ -58,7 +58,7 @@ class ScopedEnv {
     ScopedEnv(const ScopedEnv&) = delete;
     ScopedEnv& operator=(const ScopedEnv&) = delete;
 
-  private:
+private:
     const char* m_name;
     std::optional<std::string> m_old;
 };

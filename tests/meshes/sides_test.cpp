@@ -172,8 +172,8 @@ TEST(Sides, MirroredHalvesShareATwoSidedFaceAndAnotherMaterialLoses) {
     SceneFiles files;
     files.write("scene.mgf", std::string(kMgfHead) +
                                  "m floor\nxf -a 2 -my\nprism a b c d 1\nxf\n"  // 14-17
-                                 "m lamp\nv e =\n p 0 0 3\nf a b e\n"          // 18-21
-                                 "m red =\n rd 0.3\nf b e a\n");                 // 22-24
+                                 "m lamp\nv e =\n p 0 0 3\nf a b e\n"           // 18-21
+                                 "m red =\n rd 0.3\nf b e a\n");                // 22-24
     const MeshFile file = load(files, "scene.mgf");
     EXPECT_EQ(file.mesh.n_faces(), 2u * 6 - 1 + 1);
     EXPECT_EQ(file.repairs[RepairKind::sides_joined].count, 1u);

@@ -52,7 +52,8 @@ TEST(SpecularMaterials, MtlKsWithIllum3IsAMirrorInEitherOrder) {
 // illum; Blender writes `Ks 0.5 0.5 0.5` and `illum 2` for every material.
 TEST(SpecularMaterials, MtlKsWithoutIllum3IsNotUsed) {
     for (const std::string illum : {"", "illum 0\n", "illum 1\n", "illum 2\n"}) {
-        const FaceMaterial m = first_face(load("newmtl m\nKd 0.6 0.6 0.6\nKs 0.5 0.5 0.5\n" + illum));
+        const FaceMaterial m =
+            first_face(load("newmtl m\nKd 0.6 0.6 0.6\nKs 0.5 0.5 0.5\n" + illum));
         EXPECT_EQ(m.specular, OpenMesh::Vec3d(0, 0, 0)) << illum;
     }
 }
@@ -60,11 +61,13 @@ TEST(SpecularMaterials, MtlKsWithoutIllum3IsNotUsed) {
 TEST(SpecularMaterials, MtlUnsupportedIllumIsRefusedAtItsLine) {
     for (const std::string model : {"4", "5", "7", "10", "3.5", "-1"}) {
         EXPECT_TRUE(contains(load_error("newmtl m\nKd 0.5 0.5 0.5\nillum " + model + "\n"),
-                             "scene.mtl:3: illum " + model + " is not supported: hmcr reads illum "
-                             "0, 1 and 2 (diffuse; Ks unused) and 3 (Ks an ideal mirror)"));
+                             "scene.mtl:3: illum " + model +
+                                 " is not supported: hmcr reads illum "
+                                 "0, 1 and 2 (diffuse; Ks unused) and 3 (Ks an ideal mirror)"));
     }
     EXPECT_TRUE(contains(load_error("newmtl m\nillum\n"), "scene.mtl:2: 'illum' needs one number"));
-    EXPECT_TRUE(contains(load_error("newmtl m\nillum 3 3\n"), "scene.mtl:2: 'illum' needs one number"));
+    EXPECT_TRUE(
+        contains(load_error("newmtl m\nillum 3 3\n"), "scene.mtl:2: 'illum' needs one number"));
     EXPECT_TRUE(contains(load_error("newmtl m\nKs 0.5 0.5\n"),
                          "scene.mtl:2: 'Ks' needs three numbers (r g b)"));
 }
@@ -73,11 +76,13 @@ TEST(SpecularMaterials, MtlUnsupportedIllumIsRefusedAtItsLine) {
 // refused by --strict), as Kd = 1 is.
 TEST(SpecularMaterials, MtlKdPlusKsAboveOneIsRefused) {
     const std::string over = "newmtl m\nKd 0.5 0.5 0.5\nillum 3\nKs 0.4 0.6 0.4\n";
-    EXPECT_TRUE(contains(load_error(over), "scene.mtl:4: diffuse + specular reflectance 1.1 of "
-                                           "material 'm' is above 1"));
+    EXPECT_TRUE(contains(load_error(over),
+                         "scene.mtl:4: diffuse + specular reflectance 1.1 of "
+                         "material 'm' is above 1"));
     const std::string one = "newmtl m\nKd 0.5 0.5 0.5\nillum 3\nKs 0.5 0.5 0.5\n";
-    EXPECT_TRUE(contains(load_error(one, true), "scene.mtl:4: diffuse + specular reflectance 1 of "
-                                                "material 'm' is not below 1"));
+    EXPECT_TRUE(contains(load_error(one, true),
+                         "scene.mtl:4: diffuse + specular reflectance 1 of "
+                         "material 'm' is not below 1"));
     EXPECT_EQ(first_face(load(one)).specular, OpenMesh::Vec3d(0.5, 0.5, 0.5));
     EXPECT_TRUE(contains(load_error("newmtl m\nillum 3\nKs 0.5 -0.1 0.5\n"),
                          "scene.mtl:3: specular reflectance -0.1 of material 'm' is negative"));
@@ -89,7 +94,8 @@ TEST(SpecularMaterials, MtlKdPlusKsAboveOneIsRefused) {
 // MGF: a unit square of material m, and a light above it.
 std::string mgf(const std::string& material) {
     return "m light =\n ed 10\nv a =\n p 0 0 1\nv b =\n p 0 1 1\nv c =\n p 1 0 1\nf a b c\n"
-           "m m =\n" + material +
+           "m m =\n" +
+           material +
            "v q0 =\n p 0 0 0\nv q1 =\n p 1 0 0\nv q2 =\n p 1 1 0\nv q3 =\n p 0 1 0\n"
            "f q0 q1 q2 q3\n";
 }
@@ -122,7 +128,8 @@ TEST(SpecularMaterials, MgfBadRsIsRefusedAtItsLine) {
     // the material's statements start on line 11
     EXPECT_TRUE(contains(error(" rs 0.5 -0.1\n"),
                          "scene.mgf:11: rs roughness -0.1 is not in [0, 1] (0: a mirror)"));
-    EXPECT_TRUE(contains(error(" rs 0.5 1.5\n"), "scene.mgf:11: rs roughness 1.5 is not in [0, 1]"));
+    EXPECT_TRUE(
+        contains(error(" rs 0.5 1.5\n"), "scene.mgf:11: rs roughness 1.5 is not in [0, 1]"));
     EXPECT_TRUE(contains(error(" rs -0.5 0\n"), "scene.mgf:11: rs -0.5 is not in [0, 1]"));
     EXPECT_TRUE(contains(error(" rs 0.5\n"), "scene.mgf:11:"));
 }
@@ -162,8 +169,7 @@ TEST(SpecularMaterials, MgfRdPlusRsOfALuminanceUpTo1FitsTowardGrey) {
     EXPECT_NEAR(luminance(m.specular), 0.29, 1e-12);
     EXPECT_GT(m.reflectance[0], 2 * m.reflectance[1]);  // still red
     EXPECT_EQ(red.repairs.total(), 0u);
-    const MeshFile grey = load_mgf(
-        mgf(" c\n  cxy 0.333333 0.333333\n rd 0.6\n rs 0.4 0.01\n"));
+    const MeshFile grey = load_mgf(mgf(" c\n  cxy 0.333333 0.333333\n rd 0.6\n rs 0.4 0.01\n"));
     EXPECT_EQ(square(grey).reflectance + square(grey).specular, OpenMesh::Vec3d(1, 1, 1));
     EXPECT_EQ(grey.repairs[RepairKind::reflectance_one].count, 1u);  // it absorbs nothing
 }

@@ -13,8 +13,9 @@ namespace {
 using Points = std::vector<Eigen::Vector3d>;
 
 TEST(Weld, EqualPositionsShareTheIdOfTheirFirstAppearance) {
-    const Points p{{1, 2, 3}, {0, 0, 0}, {1, 2, 3}, {-0.0, 0, -0.0},
-                   {1, 2, std::nextafter(3.0, 4.0)}, {0, 0, 0}, {1, 2, 3}};
+    const Points p{
+        {1, 2, 3}, {0, 0, 0}, {1, 2, 3}, {-0.0, 0, -0.0}, {1, 2, std::nextafter(3.0, 4.0)},
+        {0, 0, 0}, {1, 2, 3}};
     const Welding w = weld(p);
     EXPECT_EQ(w.id, (std::vector<int>{0, 1, 0, 1, 2, 1, 0}));
     EXPECT_EQ(w.count, 3u);

@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 // process's own link cache saw.
 nlohmann::json without_run_details(nlohmann::json j) {
     for (const char* key : {"timings_s", "memory", "command", "output", "link_cache"}) j.erase(key);
-    for (const char* key : {"lines_cast", "oracle_evaluations", "cache_hits"}) j["counts"].erase(key);
+    for (const char* key : {"lines_cast", "oracle_evaluations", "cache_hits"})
+        j["counts"].erase(key);
     for (auto& it : j["iterations"]) it.erase("seconds");
     j["options"].erase("ranks");
     j["options"].erase("threads");  // Open MPI binds each rank to a core: 1 thread each
@@ -51,8 +52,8 @@ nlohmann::json without_seconds(nlohmann::json j) {
 
 // Runs `command` + "one" + `suffix` alone, then `command` + "ranksK" + `suffix` under
 // `mpirun -n K` for each K, and calls `check(name, K)` on each MPI run's output name.
-void against_one_process(const fs::path& dir, const std::string& command,
-                         const std::string& suffix, std::initializer_list<int> rank_counts,
+void against_one_process(const fs::path& dir, const std::string& command, const std::string& suffix,
+                         std::initializer_list<int> rank_counts,
                          const std::function<void(const std::string&, int)>& check) {
     ASSERT_EQ(run_hmcr(command + "one" + suffix, dir).exit_code, 0);
     for (int k : rank_counts) {
@@ -76,10 +77,9 @@ void expect_same_solve(const fs::path& dir, const std::string& name, int k) {
 // solution.
 void expect_same_solve_on_ranks(const std::string& flags, std::initializer_list<int> rank_counts) {
     TempDir dir;
-    against_one_process(dir.path(), "solve cornell " + flags + " -q -o ", ".vtp", rank_counts,
-                        [&](const std::string& name, int k) {
-                            expect_same_solve(dir.path(), name, k);
-                        });
+    against_one_process(
+        dir.path(), "solve cornell " + flags + " -q -o ", ".vtp", rank_counts,
+        [&](const std::string& name, int k) { expect_same_solve(dir.path(), name, k); });
 }
 
 TEST(MpiRuns, RefinedSolvesAreTheSameBitsOnAnyRankCount) {
@@ -122,8 +122,7 @@ TEST(MpiRuns, ReferencesAreTheSameBitsOnAnyRankCount) {
         dir.path(), "reference plates --max-area 0.05 --rays 40000 -q -o ", "", {1, 2, 3},
         [&](const std::string& name, int k) {
             for (const char* file : {"reference.vtp", "views/side.pfm", "views/oblique.pfm"}) {
-                EXPECT_EQ(read_file(dir.path() / name / file),
-                          read_file(dir.path() / "one" / file))
+                EXPECT_EQ(read_file(dir.path() / name / file), read_file(dir.path() / "one" / file))
                     << file << ", " << k << " ranks";
             }
         });
@@ -145,15 +144,17 @@ class MpiStudy : public testing::Test {
 protected:
     static void SetUpTestSuite() {
         s_dir = new TempDir;
-        ASSERT_EQ(run_hmcr("reference plates --max-area 0.05 --rays 20000 -q -o ref", dir()).exit_code,
-                  0);
+        ASSERT_EQ(
+            run_hmcr("reference plates --max-area 0.05 --rays 20000 -q -o ref", dir()).exit_code,
+            0);
         ASSERT_EQ(run_hmcr(study("one"), dir()).exit_code, 0);
     }
     static void TearDownTestSuite() { delete s_dir; }
     static const fs::path& dir() { return s_dir->path(); }
     static std::string study(const std::string& out) {
         return "study plates --reference ref --budgets 60,120 --oracles power,kl --seeds 1 "
-               "--rays 400000 -o " + out;
+               "--rays 400000 -o " +
+               out;
     }
     static void expect_same_study(const std::string& out) {
         EXPECT_EQ(without_seconds(read_json(dir() / out / "table.json")),
@@ -190,7 +191,8 @@ pid_t rank_process(int rank, const std::string& marker) {
         if (cmdline.find(HMCR_BINARY) != 0 || cmdline.find(marker) == std::string::npos) continue;
         std::string env = read_file(e.path() / "environ");
         for (char& c : env) c = c == '\0' ? '\n' : c;
-        if (env.find("\nOMPI_COMM_WORLD_RANK=" + std::to_string(rank) + "\n") != std::string::npos) {
+        if (env.find("\nOMPI_COMM_WORLD_RANK=" + std::to_string(rank) + "\n") !=
+            std::string::npos) {
             return pid_t(std::stoi(name));
         }
     }
@@ -225,7 +227,8 @@ TEST_F(MpiStudy, KilledOnOneRankItResumesWithAnotherRankCount) {
     const CliRun r = run_hmcr_mpi(2, study("killed"), dir());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::size_t skipped = 0;
-    for (std::size_t at = 0; (at = r.err.find("done before, skipped", at)) != std::string::npos; ++at) {
+    for (std::size_t at = 0; (at = r.err.find("done before, skipped", at)) != std::string::npos;
+         ++at) {
         ++skipped;
     }
     EXPECT_EQ(skipped, before);

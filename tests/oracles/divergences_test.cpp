@@ -1,6 +1,5 @@
 // The shared f-divergences (oracles/divergences.h) against values computed by hand, and the
 // three oracles that are built on them.
-#include "common/error.h"
 #include "oracles/divergences.h"
 
 #include <gtest/gtest.h>
@@ -8,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/error.h"
 #include "oracles/registry.h"
 
 namespace hmcr::test {
@@ -56,10 +56,12 @@ TEST(Divergences, OraclesUseThem) {
     g.source_area = 3;
     g.total_area = 10;
     g.kernel = kernel;
-    EXPECT_EQ(find_named(oracle_registry(), "kl").geometric_factor(g), 2 * 3 * f * kl_divergence(kernel, f));
+    EXPECT_EQ(find_named(oracle_registry(), "kl").geometric_factor(g),
+              2 * 3 * f * kl_divergence(kernel, f));
     EXPECT_EQ(find_named(oracle_registry(), "cs").geometric_factor(g),
               2 * 3 * f * 5.0 * squared_deviation_from_uniform(kernel, f));
-    EXPECT_EQ(find_named(oracle_registry(), "hl").geometric_factor(g), 2 * 3 * f * hellinger_divergence(kernel, f));
+    EXPECT_EQ(find_named(oracle_registry(), "hl").geometric_factor(g),
+              2 * 3 * f * hellinger_divergence(kernel, f));
 }
 
 }  // namespace

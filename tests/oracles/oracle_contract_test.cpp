@@ -85,7 +85,8 @@ TEST_P(EveryRegisteredOracle, HasANameADescriptionAndAPositiveDefaultEpsilon) {
     EXPECT_EQ(&find_named(oracle_registry(), o.name()), &o);
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, EveryRegisteredOracle, testing::ValuesIn(oracle_registry().all()),
+INSTANTIATE_TEST_SUITE_P(Registry, EveryRegisteredOracle,
+                         testing::ValuesIn(oracle_registry().all()),
                          [](const testing::TestParamInfo<const Oracle*>& p) {
                              return std::string(p.param->name());
                          });

@@ -68,12 +68,12 @@ TEST(OracleFormulas, SingleNonZeroLine) {
     const double ln2 = std::log(2.0);
     expect_values({0, 0, 0, 2},
                   {
-                      {"ks", 3 * 1.5},            // A_j max(2 - 0.5, 0.5 - 0)
-                      {"mi", 0.6 * ln2},          // (6/10) [(2 ln 2)/4 - 0.5 ln 0.5]
-                      {"kl", 12 * 2 * ln2},       // A_i A_j F^ = 12, D = ln 4 (its maximum)
-                      {"cs", 12 * 3.0},           // chi2 = 4 (3/16 + 9/16) = 3 = N_s - 1
-                      {"hl", 12 * 0.5},           // h2 = (3/4 + 1/4) / 2
-                      {"vt", 6 * 4 * 3.0 / 16},   // A_i A_j F^2 V, V = 1/4 - 1/16
+                      {"ks", 3 * 1.5},           // A_j max(2 - 0.5, 0.5 - 0)
+                      {"mi", 0.6 * ln2},         // (6/10) [(2 ln 2)/4 - 0.5 ln 0.5]
+                      {"kl", 12 * 2 * ln2},      // A_i A_j F^ = 12, D = ln 4 (its maximum)
+                      {"cs", 12 * 3.0},          // chi2 = 4 (3/16 + 9/16) = 3 = N_s - 1
+                      {"hl", 12 * 0.5},          // h2 = (3/4 + 1/4) / 2
+                      {"vt", 6 * 4 * 3.0 / 16},  // A_i A_j F^2 V, V = 1/4 - 1/16
                   });
 }
 
@@ -82,12 +82,13 @@ TEST(OracleFormulas, SpikyKernel) {
     using std::log, std::sqrt;
     const double d = log(0.25) / 16 + log(0.5) / 8 + 3 * log(0.75) / 16 + 10 * log(2.5) / 16;
     const double gap = (2 * log(2.0) + 3 * log(3.0) + 10 * log(10.0)) / 4 - 4 * log(4.0);
-    const double h2 = 0.5 * (std::pow(sqrt(1.0 / 16) - 0.5, 2) + std::pow(sqrt(2.0 / 16) - 0.5, 2) +
-                             std::pow(sqrt(3.0 / 16) - 0.5, 2) + std::pow(sqrt(10.0 / 16) - 0.5, 2));
+    const double h2 =
+        0.5 * (std::pow(sqrt(1.0 / 16) - 0.5, 2) + std::pow(sqrt(2.0 / 16) - 0.5, 2) +
+               std::pow(sqrt(3.0 / 16) - 0.5, 2) + std::pow(sqrt(10.0 / 16) - 0.5, 2));
     expect_values({1, 2, 3, 10}, {
-                                     {"ks", 3 * 6.0},             // A_j max(10 - 4, 4 - 1)
-                                     {"mi", 0.6 * gap},           // Jensen's gap of x ln x
-                                     {"kl", 6 * 16 * d},          // d = 0.34545...
+                                     {"ks", 3 * 6.0},               // A_j max(10 - 4, 4 - 1)
+                                     {"mi", 0.6 * gap},             // Jensen's gap of x ln x
+                                     {"kl", 6 * 16 * d},            // d = 0.34545...
                                      {"cs", 6 * 16 * 200 / 256.0},  // chi2 = 4 * 50 / 256
                                      {"hl", 6 * 16 * h2},
                                      {"vt", 6 * 256 * 50 / 1024.0},  // V = 114/1024 - 1/16
@@ -103,8 +104,8 @@ std::vector<double> random_kernel(Rng& rng, int n) {
     return f;
 }
 
-// docs/design.md §4.2: mi = kl / (A_T N_s) on the same lines; D <= ln N_s, chi2 <= N_s - 1, h2 <= 1,
-// V >= 0, and the mi bracket (Jensen's gap) >= 0.
+// docs/design.md §4.2: mi = kl / (A_T N_s) on the same lines; D <= ln N_s, chi2 <= N_s - 1, h2 <=
+// 1, V >= 0, and the mi bracket (Jensen's gap) >= 0.
 TEST(OracleIdentities, HoldOnRandomKernels) {
     Rng rng(42, 0);
     for (int trial = 0; trial < 2000; ++trial) {

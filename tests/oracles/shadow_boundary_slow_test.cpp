@@ -170,7 +170,8 @@ Calibrated run_at(const Scene& scene, const Oracle& oracle, double epsilon, cons
     o.lines = 10;
     o.rays = 1'000'000;
     o.seed = 3;
-    o.refine_share = 1;  // where the oracle refines, with all the rays the measurement was made with
+    o.refine_share =
+        1;  // where the oracle refines, with all the rays the measurement was made with
     const Solution sol = solve(scene.mesh, o);
     return {epsilon, 1, measure(*sol.hierarchy, shadow, margin)};
 }

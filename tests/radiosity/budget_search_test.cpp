@@ -1,6 +1,8 @@
 // Budget search (docs/design.md §6): epsilon by bisection on log epsilon until the leaf count is
 // within the tolerance, for every oracle; clean failures when the budget cannot be reached;
 // probes known from another budget's search taken without changing the result.
+#include "radiosity/budget_search.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 #include "common/error.h"
 #include "meshes/scene.h"
 #include "oracles/registry.h"
-#include "radiosity/budget_search.h"
 
 namespace hmcr::test {
 namespace {
@@ -109,11 +110,11 @@ TEST(BudgetSearch, KnownProbesAreNotSolvedAgainAndChangeNothing) {
     o.rays = 300'000;
     const BudgetResult alone = solve_for_budget(scene.mesh, o, {2000, 0.01});
     KnownProbes known;
-    const BudgetResult first = solve_for_budget(scene.mesh, o, {1000, 0.01}, no_progress(),
-                                                Ranks::single(), &known);
+    const BudgetResult first =
+        solve_for_budget(scene.mesh, o, {1000, 0.01}, no_progress(), Ranks::single(), &known);
     ASSERT_EQ(known.size(), first.probes.size());
-    const BudgetResult second = solve_for_budget(scene.mesh, o, {2000, 0.01}, no_progress(),
-                                                 Ranks::single(), &known);
+    const BudgetResult second =
+        solve_for_budget(scene.mesh, o, {2000, 0.01}, no_progress(), Ranks::single(), &known);
     ASSERT_EQ(second.probes.size(), alone.probes.size());
     std::size_t taken = 0;
     for (std::size_t k = 0; k < alone.probes.size(); ++k) {
@@ -125,7 +126,7 @@ TEST(BudgetSearch, KnownProbesAreNotSolvedAgainAndChangeNothing) {
             EXPECT_EQ(second.probes[k].seconds, 0);
         }
     }
-    EXPECT_GE(taken, 1u);  // the start, at least
+    EXPECT_GE(taken, 1u);                      // the start, at least
     EXPECT_FALSE(second.probes.back().known);  // the accepted probe is solved
     EXPECT_EQ(leaf_radiosities(second.solution), leaf_radiosities(alone.solution));
 }

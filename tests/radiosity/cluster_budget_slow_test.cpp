@@ -41,11 +41,11 @@ TEST(ClusterBudget, FiveThousandLeavesOnAHundredThousandPatches) {
 }
 
 // A furnace of 6 x 41 x 41 = 10,086 patches meshed with cluster leaves (at epsilon 30 nearly all
-// of its leaves are clusters) and frozen: every patch's B is the exact K-bounce value, t-tested over 10
-// seeds with Bonferroni over the patches.
+// of its leaves are clusters) and frozen: every patch's B is the exact K-bounce value, t-tested
+// over 10 seeds with Bonferroni over the patches.
 TEST(ClusterBudget, FurnaceOfTenThousandPatchesIsExactOnEveryPatch) {
-    const PatchMesh mesh = make_patch_mesh(
-        inward_box({0, 0, 0}, {1, 1, 1}, 41, Rgb::Constant(0.5), Rgb::Constant(1)));
+    const PatchMesh mesh =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 41, Rgb::Constant(0.5), Rgb::Constant(1)));
     expect_furnace_per_patch(
         mesh, 0.5, 1, 10,
         [](std::uint64_t seed) {

@@ -1,8 +1,9 @@
 // Clusters (docs/design.md §2.7): the tree over the patches, the descent through it (grouped
 // and one ray at a time alike), and exact results with clustering on: the furnace of many
 // patches, the plates' form factor, and the same bits for one and two threads.
-#include <gtest/gtest.h>
+#include "radiosity/clusters.h"
 
+#include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
@@ -11,7 +12,6 @@
 
 #include "meshes/scene.h"
 #include "oracles/registry.h"
-#include "radiosity/clusters.h"
 #include "radiosity/refinement.h"
 #include "radiosity/solver.h"
 #include "rays/embree_scene.h"
@@ -128,9 +128,11 @@ TEST(Clusters, PointsAreUniformByArea) {
 TEST(Clusters, GroupedDescentEndsWhereOneRayDescentsEnd) {
     const PatchSet ps = build_patch_set(load_scene("cornell").mesh);
     std::size_t on_clusters = 0, on_patches = 0;
-    for (const auto& [oracle_name, threshold_scale] :
-         {std::pair<std::string, double>{"kl", 1}, {"kl", 1e4}, {"power", 1}, {"power", 1e4},
-          {"kl", 1e6}}) {
+    for (const auto& [oracle_name, threshold_scale] : {std::pair<std::string, double>{"kl", 1},
+                                                       {"kl", 1e4},
+                                                       {"power", 1},
+                                                       {"power", 1e4},
+                                                       {"kl", 1e6}}) {
         // Named copies: clang before 16 does not let a lambda capture a structured binding.
         const std::string name = oracle_name;
         const double scale = threshold_scale;
@@ -144,14 +146,14 @@ TEST(Clusters, GroupedDescentEndsWhereOneRayDescentsEnd) {
         ClusterTree grouped_tree(grouped), single_tree(single);
         const EmbreeScene scene(ps.patches);
         auto context = [&](Hierarchy& h, ClusterTree& t) {
-            return RefinementContext{.hierarchy = h,
-                                     .oracle = oracle,
-                                     .scene = scene,
-                                     .threshold = scale * oracle.default_epsilon() *
-                                                  ps.max_emitted_power,
-                                     .lines = 4,
-                                     .seed = 11,
-                                     .clusters = &t};
+            return RefinementContext{
+                .hierarchy = h,
+                .oracle = oracle,
+                .scene = scene,
+                .threshold = scale * oracle.default_epsilon() * ps.max_emitted_power,
+                .lines = 4,
+                .seed = 11,
+                .clusters = &t};
         };
         Rng rng(5, 1);
         std::vector<LinkQuery> queries(6'000);
@@ -199,8 +201,8 @@ SolverOptions clustered(std::uint64_t rays, std::uint64_t seed) {
 // take deposits: the patches' spread about their mean is well below an unclustered solve's.
 TEST(Clusters, FurnaceOfManyPatchesIsExact) {
     const double rho = 0.5, e = 1;
-    const auto mesh = make_patch_mesh(
-        inward_box({0, 0, 0}, {1, 1, 1}, 16, Rgb::Constant(rho), Rgb::Constant(e)));
+    const auto mesh =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 16, Rgb::Constant(rho), Rgb::Constant(e)));
     const std::size_t patches = mesh.n_faces();
     auto spread = [&](const Solution& sol) {
         double sum = 0, sum2 = 0;
@@ -268,8 +270,8 @@ TEST(Clusters, PlatesOfManyPatchesKeepTheFormFactor) {
 // the clusters at its receiver side's root and goes on from its source side's root, as without
 // clusters: the same leaves and the same bits.
 TEST(Clusters, WhereEveryClusterIsRefusedTheSolveIsTheUnclusteredOne) {
-    const PatchMesh mesh = make_patch_mesh(
-        inward_box({0, 0, 0}, {1, 1, 1}, 6, Rgb::Constant(0.5), Rgb::Constant(1)));
+    const PatchMesh mesh =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 6, Rgb::Constant(0.5), Rgb::Constant(1)));
     SolverOptions o = clustered(40'000, 7);
     const Solution with = solve(mesh, o);
     o.clustering = Clustering::none;

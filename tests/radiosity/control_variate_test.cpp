@@ -11,9 +11,9 @@
 #include "meshes/scene.h"
 #include "radiosity/solver.h"
 #include "tests/support/analytic.h"
+#include "tests/support/same_leaves.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
-#include "tests/support/same_leaves.h"
 
 namespace hmcr::test {
 namespace {
@@ -127,7 +127,8 @@ TEST(ControlVariate, ThePowerBalanceKeepsThePlainIterations) {
     const Scene scene = load_scene("cornell");
     const Solution sol = solve(scene.mesh, fixed_mesh(400'000, 2, 1e-3));
     bool shifted = false;
-    for (const IterationRecord& it : sol.stats.iterations) shifted |= (it.control_constant != 0).any();
+    for (const IterationRecord& it : sol.stats.iterations)
+        shifted |= (it.control_constant != 0).any();
     ASSERT_TRUE(shifted);
     EXPECT_GE(sol.stats.shot_power.sum(), 0.99 * sol.stats.emitted_power.sum());
     EXPECT_GT(sol.stats.escaped_power.minCoeff(), 0);

@@ -10,10 +10,10 @@
 
 #include <cmath>
 
-#include "rays/embree_scene.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/line_sampler.h"
 #include "rays/element_sampler.h"
+#include "rays/embree_scene.h"
 #include "rays/point_kernel.h"
 #include "rays/sampling.h"
 #include "tests/support/analytic.h"
@@ -104,8 +104,8 @@ TwoPatches perpendicular(double l, double w, double h) {
 TEST_P(PerpendicularPlates, LocalLinesMatchTheExactFormFactor) {
     const auto [l, w, h] = GetParam();
     const Estimate f = local_line_form_factor(perpendicular(l, w, h), 0, 1, 1'000'000, 12);
-    EXPECT_TRUE(within_standard_errors("F perpendicular", f.mean,
-                                       perpendicular_rectangles(l, w, h), f.standard_error));
+    EXPECT_TRUE(within_standard_errors("F perpendicular", f.mean, perpendicular_rectangles(l, w, h),
+                                       f.standard_error));
 }
 
 INSTANTIATE_TEST_SUITE_P(Spec, PerpendicularPlates,
@@ -122,15 +122,15 @@ TEST(Reciprocity, AreaTimesFormFactorIsSymmetric) {
 
 TEST(PointToRectangle, KernelIntegralMatchesTheDifferentialFormFactor) {
     // A point 1 m below the centre of a unit square, both facing each other.
-    const TwoPatches s({rect(2, 0, {-0.5, -0.5}, {0.5, 0.5}, false),
-                        rect(2, -5, {-0.5, -0.5}, {0.5, 0.5}, true)});
+    const TwoPatches s(
+        {rect(2, 0, {-0.5, -0.5}, {0.5, 0.5}, false), rect(2, -5, {-0.5, -0.5}, {0.5, 0.5}, true)});
     const Patch& square = s.hierarchy.patch_set().patches[0];
     const Vec3 x(0, 0, -1), nx(0, 0, 1);
     Rng rng(15, 0);
     std::vector<double> f(1'000'000);
     for (double& v : f) {
-        const Vec3 y = square.point(sample_element(square, Domain::root(), rng.uniform(),
-                                                   rng.uniform()));
+        const Vec3 y =
+            square.point(sample_element(square, Domain::root(), rng.uniform(), rng.uniform()));
         v = square.area * point_kernel(x, nx, y, square.normal) * s.scene.visible(x, y);
     }
     const Estimate e = estimate_mean(f);

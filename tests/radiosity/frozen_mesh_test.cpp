@@ -72,7 +72,8 @@ std::vector<Leaf> receiver_leaves(const Hierarchy& h) {
         constexpr int n = 8;
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j) {
-                const double b = exact_b(x0 + (i + 0.5) * (x1 - x0) / n, y0 + (j + 0.5) * (y1 - y0) / n);
+                const double b =
+                    exact_b(x0 + (i + 0.5) * (x1 - x0) / n, y0 + (j + 0.5) * (y1 - y0) / n);
                 leaf.exact.push_back(b);
                 leaf.mean += b / (n * n);
             }
@@ -92,7 +93,8 @@ TEST(FrozenMesh, ErrorFallsAsOneOverRootRaysToTheMeshError) {
     const std::vector<Leaf> leaves = receiver_leaves(*shape.hierarchy);
     double mesh_error2 = 0;
     for (const Leaf& l : leaves)
-        for (double b : l.exact) mesh_error2 += l.weight * (l.mean - b) * (l.mean - b) / double(l.exact.size());
+        for (double b : l.exact)
+            mesh_error2 += l.weight * (l.mean - b) * (l.mean - b) / double(l.exact.size());
     EXPECT_GT(mesh_error2, 0);
 
     std::vector<double> errors, expected_noise;
@@ -112,7 +114,8 @@ TEST(FrozenMesh, ErrorFallsAsOneOverRootRaysToTheMeshError) {
             noise += l.weight * (b[k] - l.mean) * (b[k] - l.mean);
             expected += l.weight * l.variance_n0 / n0;
             variance += 2 * std::pow(l.weight * l.variance_n0 / n0, 2);  // (chi^2, 1 dof each)
-            for (double x : l.exact) error2 += l.weight * (b[k] - x) * (b[k] - x) / double(l.exact.size());
+            for (double x : l.exact)
+                error2 += l.weight * (b[k] - x) * (b[k] - x) / double(l.exact.size());
         }
         EXPECT_NEAR(error2, mesh_error2 + noise, 1e-12 * error2);
         EXPECT_TRUE(within_standard_errors("noise at " + std::to_string(rays) + " rays", noise,

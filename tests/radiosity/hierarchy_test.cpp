@@ -1,10 +1,11 @@
 // The element quadtree (docs/design.md §2): areas, point location, identities, limits, push-pull.
+#include "radiosity/hierarchy.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
 #include <stdexcept>
 
-#include "radiosity/hierarchy.h"
 #include "rays/rng.h"
 #include "tests/support/test_scenes.h"
 
@@ -13,7 +14,8 @@ namespace {
 
 // A skewed planar quad (not a parallelogram) and a triangle, side by side.
 std::vector<TestPolygon> quad_and_triangle() {
-    TestPolygon q{{{0, 0, 0}, {2, 0, 0}, {1.6, 1.2, 0}, {0.2, 0.9, 0}}, Rgb::Constant(0.5), Rgb::Zero()};
+    TestPolygon q{
+        {{0, 0, 0}, {2, 0, 0}, {1.6, 1.2, 0}, {0.2, 0.9, 0}}, Rgb::Constant(0.5), Rgb::Zero()};
     TestPolygon t{{{3, 0, 0}, {5, 0.5, 0}, {3.5, 2, 0}}, Rgb::Constant(0.5), Rgb::Constant(1)};
     return {q, t};
 }
@@ -78,8 +80,8 @@ TEST(Hierarchy, PointLocationFindsTheLeafWhoseRegionContainsThePoint) {
             const Domain& d = leaf.domain;
             const double a = (uv.x() - d.u0) / d.s, b = (uv.y() - d.v0) / d.s;
             const double tol = 1e-9;
-            EXPECT_TRUE(a >= -tol && b >= -tol && (patch.is_quad() ? a <= 1 + tol && b <= 1 + tol
-                                                                     : a + b <= 1 + tol))
+            EXPECT_TRUE(a >= -tol && b >= -tol &&
+                        (patch.is_quad() ? a <= 1 + tol && b <= 1 + tol : a + b <= 1 + tol))
                 << "uv " << uv.transpose() << " not in leaf " << leaf.id.to_string();
         }
     }

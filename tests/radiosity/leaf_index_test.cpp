@@ -1,10 +1,11 @@
 // A fixed mesh's leaves by parameter point (radiosity/leaf_index.h): the same leaf as the
 // walk down the elements, on quads and triangles, on both sides, at and beside every boundary.
+#include "radiosity/leaf_index.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "radiosity/leaf_index.h"
 #include "rays/rng.h"
 #include "tests/support/test_scenes.h"
 
@@ -41,8 +42,8 @@ double pick(const std::vector<double>& values, Rng& rng) {
 // the trees reach, the floats on either side of them, the domain's edges, and random points.
 std::vector<Vec2> hard_points(bool quad, Rng& rng) {
     // Beyond the domain too (-1e-7, 1 + 1e-7): the walks must agree there as well.
-    std::vector<double> coordinates = {0, 1, std::nextafter(1.0f, 0.0f), 1e-30, 1e-7, -1e-7,
-                                       std::nextafter(1.0f, 2.0f)};
+    std::vector<double> coordinates = {0,    1,     std::nextafter(1.0f, 0.0f), 1e-30,
+                                       1e-7, -1e-7, std::nextafter(1.0f, 2.0f)};
     for (int depth = 1; depth <= 10; ++depth) {
         const double step = std::ldexp(1.0, -depth);
         for (double x = step; x < 1; x += 2 * step) {

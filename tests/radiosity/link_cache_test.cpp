@@ -1,9 +1,10 @@
 // The link cache (docs/design.md §4.3) and the mi/kl identity at the level of whole solves.
+#include "radiosity/link_cache.h"
+
 #include <gtest/gtest.h>
 
 #include "meshes/scene.h"
 #include "oracles/registry.h"
-#include "radiosity/link_cache.h"
 #include "radiosity/solver.h"
 
 namespace hmcr::test {
@@ -67,8 +68,8 @@ TEST(LinkCache, EvictionAndSizeDoNotChangeTheSolution) {
     expect_same(leaves_of(big), leaves_of(none));
 }
 
-// docs/design.md §4.2: mi = kl / (A_T N_s) on the same lines, so mi at eps_kl / (A_T N_s) refines exactly
-// like kl at eps_kl.
+// docs/design.md §4.2: mi = kl / (A_T N_s) on the same lines, so mi at eps_kl / (A_T N_s) refines
+// exactly like kl at eps_kl.
 TEST(LinkCache, MiAtTheScaledEpsilonBuildsTheSameHierarchyAsKl) {
     const Scene scene = load_scene("cornell");
     SolverOptions o = kl_options();

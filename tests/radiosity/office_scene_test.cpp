@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "oracles/registry.h"
 #include "meshes/scene.h"
+#include "oracles/registry.h"
 #include "radiosity/solver.h"
 #include "tests/support/temp_dir.h"
 
@@ -16,7 +16,8 @@ namespace {
 TEST(OfficeScene, ASmallInstanceHasItsPlannedFacesAndIsClosed) {
     TempDir dir;
     const std::string script = (scene_directory() / "office" / "generate.py").string();
-    const std::string command = "python3 '" + script + "' --bays 2 --tile 0.4 --name office2 --out '" +
+    const std::string command = "python3 '" + script +
+                                "' --bays 2 --tile 0.4 --name office2 --out '" +
                                 dir.path().string() + "' > /dev/null";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     LoadOptions one_sided;  // as office.json says: its lights' backs face the void above

@@ -13,8 +13,21 @@ namespace {
 // floor_to_int is the maths library's floor as an integer wherever the quanta need it (|x| below
 // 2^63): both signs, integers and their neighbours, fractions, and every magnitude up to 2^62.
 TEST(PowerQuanta, FloorToIntIsTheFloor) {
-    std::vector<double> xs = {0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 0x1p52, 0x1p52 + 1, 0x1p53,
-                              0x1p62, -0x1p62, 0x1p52 - 0.5, -(0x1p52 - 0.5), 1e-300, -1e-300};
+    std::vector<double> xs = {0.0,
+                              -0.0,
+                              0.5,
+                              -0.5,
+                              1.0,
+                              -1.0,
+                              0x1p52,
+                              0x1p52 + 1,
+                              0x1p53,
+                              0x1p62,
+                              -0x1p62,
+                              0x1p52 - 0.5,
+                              -(0x1p52 - 0.5),
+                              1e-300,
+                              -1e-300};
     for (const double n : {1.0, 2.0, 3.0, 1e6, 0x1p40, 0x1p51}) {
         for (const double sign : {1.0, -1.0}) {
             xs.push_back(sign * n);

@@ -35,7 +35,8 @@ TEST(RankMerge, AnIterationOfTheLargestRaysCannotOverflowItsQuanta) {
         EXPECT_EQ(one[2], 0);
         for (int c = 0; c < 2; ++c) {
             EXPECT_NEAR(double(one[c]), 0x1p61 / double(rays), 1.0) << c;
-            EXPECT_LE(double(one[c]) * double(rays), double(std::numeric_limits<std::int64_t>::max()));
+            EXPECT_LE(double(one[c]) * double(rays),
+                      double(std::numeric_limits<std::int64_t>::max()));
         }
     }
 }

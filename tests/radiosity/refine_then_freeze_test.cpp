@@ -12,9 +12,9 @@
 #include "rays/embree_scene.h"
 #include "tests/support/analytic.h"
 #include "tests/support/plugins.h"
+#include "tests/support/same_leaves.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
-#include "tests/support/same_leaves.h"
 
 namespace hmcr::test::refine_then_freeze {
 namespace {
@@ -175,8 +175,7 @@ TEST(RefineThenFreeze, ABudgetSearchFreezesTheAcceptedProbe) {
     Scene scene = load_scene("cornell");
     const BudgetOptions budget{.leaves = 3000, .tolerance = 0.02};
     const BudgetResult both = solve_for_budget(scene.mesh, options("power", 400'000, 0.5), budget);
-    const BudgetResult refined =
-        solve_for_budget(scene.mesh, options("power", 200'000, 1), budget);
+    const BudgetResult refined = solve_for_budget(scene.mesh, options("power", 200'000, 1), budget);
     const Solution& s = both.solution;
     EXPECT_LE(std::abs(double(s.stats.leaves) - 3000.0), 0.02 * 3000);
     EXPECT_EQ(leaf_ids(*s.hierarchy), leaf_ids(*refined.solution.hierarchy));

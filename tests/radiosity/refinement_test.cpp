@@ -2,8 +2,9 @@
 // patch roots that docs/design.md §3 states (refine_link): for every oracle, on quads and on
 // triangles, every ray must end on the same element, the two hierarchies must be the same and
 // the decisions counted the same; the grouped one must evaluate fewer links.
-#include <gtest/gtest.h>
+#include "radiosity/refinement.h"
 
+#include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -14,9 +15,8 @@
 #include "common/error.h"
 #include "meshes/scene.h"
 #include "oracles/registry.h"
-#include "rays/embree_scene.h"
 #include "radiosity/leaf_index.h"
-#include "radiosity/refinement.h"
+#include "rays/embree_scene.h"
 #include "rays/rng.h"
 #include "tests/support/plugins.h"
 #include "tests/support/test_scenes.h"
@@ -38,10 +38,14 @@ std::unique_ptr<Hierarchy> lit_hierarchy(const PatchMesh& mesh) {
 Vec2 point_on(const Patch& p, Rng& rng) {
     const double pick = rng.uniform();
     Vec2 uv(rng.uniform(), rng.uniform());
-    if (pick < 0.04) uv = Vec2(0.5, 0.25);
-    else if (pick < 0.08) uv = Vec2(1, 1);
-    else if (pick < 0.12) uv = Vec2(0, 0.5);
-    else if (pick < 0.16) uv = Vec2(0.25, 0.25);
+    if (pick < 0.04)
+        uv = Vec2(0.5, 0.25);
+    else if (pick < 0.08)
+        uv = Vec2(1, 1);
+    else if (pick < 0.12)
+        uv = Vec2(0, 0.5);
+    else if (pick < 0.16)
+        uv = Vec2(0.25, 0.25);
     return p.is_quad() || uv.sum() <= 1 ? uv : Vec2(Vec2(1, 1) - uv);
 }
 
@@ -157,15 +161,15 @@ TEST(Descents, ReservedScratchKeepsItsBlocks) {
     const auto h = lit_hierarchy(load_scene("cornell").mesh);
     const EmbreeScene scene(h->patch_set().patches);
     const Oracle& oracle = find_named(oracle_registry(), "power");
-    const RefinementContext ctx{.hierarchy = *h,
-                                .oracle = oracle,
-                                .scene = scene,
-                                .threshold = kEpsilonScale * oracle.default_epsilon() *
-                                             h->patch_set().max_emitted_power};
+    const RefinementContext ctx{
+        .hierarchy = *h,
+        .oracle = oracle,
+        .scene = scene,
+        .threshold = kEpsilonScale * oracle.default_epsilon() * h->patch_set().max_emitted_power};
     const std::vector<LinkQuery> queries = queries_for(*h, 3000);
     DescentScratch scratch;
     auto blocks = [&] {
-        std::vector<const void*> b{scratch.keyed.data(), scratch.keyed_scratch.data(),
+        std::vector<const void*> b{scratch.keyed.data(),   scratch.keyed_scratch.data(),
                                    scratch.grouped.data(), scratch.receivers.data(),
                                    scratch.index.data(),   scratch.scratch.data(),
                                    scratch.child.data()};

@@ -62,18 +62,17 @@ TEST_P(RenderParkPatterns, LoadsWithItsRepairsAndSolves) {
 }
 
 // patches, two-sided, sides joined, coincident dropped, duplicates dropped, rs reduced
-INSTANTIATE_TEST_SUITE_P(
-    Scenes, RenderParkPatterns,
-    testing::Values(Pattern{"hospital-walls.mgf", 78, 78, 1, 0, 0, 1},
-                    Pattern{"examp1-reflector.mgf", 34, 27, 1, 0, 0, 0},
-                    Pattern{"graz-desks.mgf", 5, 5, 0, 1, 1, 0},
-                    Pattern{"classroom-benches.mgf", 4, 4, 1, 0, 1, 0}),
-    [](const testing::TestParamInfo<Pattern>& param) {
-        std::string name = param.param.file;
-        name = name.substr(0, name.find('.'));
-        std::erase(name, '-');
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(Scenes, RenderParkPatterns,
+                         testing::Values(Pattern{"hospital-walls.mgf", 78, 78, 1, 0, 0, 1},
+                                         Pattern{"examp1-reflector.mgf", 34, 27, 1, 0, 0, 0},
+                                         Pattern{"graz-desks.mgf", 5, 5, 0, 1, 1, 0},
+                                         Pattern{"classroom-benches.mgf", 4, 4, 1, 0, 1, 0}),
+                         [](const testing::TestParamInfo<Pattern>& param) {
+                             std::string name = param.param.file;
+                             name = name.substr(0, name.find('.'));
+                             std::erase(name, '-');
+                             return name;
+                         });
 
 }  // namespace
 }  // namespace hmcr::test

@@ -228,8 +228,8 @@ TEST(ShadedMesh, RejectsPatchesWithoutTheirMeshVertices) {
     PatchSet set = build_patch_set(mesh);
     set.vertices = face_vertices(make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
     EXPECT_THROW(build_shaded_mesh(Hierarchy(set, {})), std::invalid_argument);
-    set.vertices = face_vertices(make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}},
-                                           {{0, 1, 2}, {1, 3, 2}}));
+    set.vertices = face_vertices(
+        make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 2}, {1, 3, 2}}));
     EXPECT_THROW(build_shaded_mesh(Hierarchy(set, {})), std::invalid_argument);
     set.vertices = {};
     EXPECT_THROW(build_shaded_mesh(Hierarchy(set, {})), std::invalid_argument);

@@ -5,17 +5,17 @@
 #include <map>
 #include <tuple>
 
-#include "radiosity/solver.h"
-#include "tests/support/test_scenes.h"
-#include "tests/support/shaded_scenes.h"
 #include "radiosity/shaded_mesh.h"
+#include "radiosity/solver.h"
+#include "tests/support/shaded_scenes.h"
+#include "tests/support/test_scenes.h"
 
 namespace hmcr::test {
 namespace {
 
 TEST(SolvedMesh, IsConformingAndContinuousWithinEachSmoothRegion) {
-    const PatchMesh mesh = make_patch_mesh(
-        inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(0.5), Rgb::Constant(1)));
+    const PatchMesh mesh =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(0.5), Rgb::Constant(1)));
     SolverOptions o;
     o.rays = 100'000;
     o.epsilon = 1e-4;

@@ -1,11 +1,12 @@
 // The settings table: a scene file's "solver" object is checked key by key and value by value,
 // and the summary names every setting.
+#include "radiosity/solver_settings.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "radiosity/solver_settings.h"
 
 namespace hmcr::test {
 namespace {
@@ -68,8 +69,9 @@ TEST(SolverSettings, BadSceneValuesAreRefusedWithFileAndKey) {
 
 // Keys a scene may not set: unknown ones, and properties of a run rather than of a scene.
 TEST(SolverSettings, UnknownAndRunOnlyKeysAreRefused) {
-    EXPECT_NE(solver_error({{"ray", 5}}).find("scene.json: solver: unknown setting 'ray' (settings: "),
-              std::string::npos);
+    EXPECT_NE(
+        solver_error({{"ray", 5}}).find("scene.json: solver: unknown setting 'ray' (settings: "),
+        std::string::npos);
     EXPECT_NE(solver_error({{"threads", 2}}).find("unknown setting 'threads'"), std::string::npos);
     EXPECT_NE(solver_error({{"uniform_max_area", 1}}).find("unknown setting"), std::string::npos);
     EXPECT_NE(solver_error(json::array()).find("must be a JSON object"), std::string::npos);

@@ -1,4 +1,6 @@
 // The solver against exact results (docs/design.md §8), for every registered oracle.
+#include "radiosity/solver.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,14 +10,13 @@
 
 #include "meshes/scene.h"
 #include "oracles/registry.h"
-#include "radiosity/solver.h"
 #include "radiosity/solver_settings.h"
-#include "tests/support/plugins.h"
 #include "tests/support/analytic.h"
 #include "tests/support/furnace.h"
+#include "tests/support/plugins.h"
+#include "tests/support/same_leaves.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
-#include "tests/support/same_leaves.h"
 
 namespace hmcr::test {
 namespace {
@@ -40,8 +41,8 @@ TEST_P(EveryOracle, PlatesReceiverGetsRhoTimesEmissionTimesFormFactor) {
     const double f = parallel_rectangles(1, 1, 1), n0 = double(sol.stats.iterations[0].rays);
     const double se = 0.5 * std::sqrt(f * (1 - f) / n0);
     for (int c = 0; c < 3; ++c) {
-        EXPECT_TRUE(within_standard_errors("receiver B", sol.hierarchy->root(1).radiosity[c],
-                                           0.5 * f, se));
+        EXPECT_TRUE(
+            within_standard_errors("receiver B", sol.hierarchy->root(1).radiosity[c], 0.5 * f, se));
     }
 }
 
@@ -109,8 +110,8 @@ TEST_P(EveryOracle, PlatesWithViewImportance) {
     ASSERT_GT(sol.stats.importance_rays, 0u);
     const double f = parallel_rectangles(1, 1, 1), n0 = double(sol.stats.iterations[0].rays);
     const double se = 0.5 * std::sqrt(f * (1 - f) / n0);
-    EXPECT_TRUE(within_standard_errors("receiver B", sol.hierarchy->root(1).radiosity[1],
-                                       0.5 * f, se));
+    EXPECT_TRUE(
+        within_standard_errors("receiver B", sol.hierarchy->root(1).radiosity[1], 0.5 * f, se));
 }
 
 // The link weight changes where the mesh is refined, never the expected values: in the furnace
@@ -161,9 +162,10 @@ void expect_energy_balance(const Solution& sol) {
     for (const IterationRecord& it : sol.stats.value_iterations()) reflected += it.unshot_after;
     const SolveStats& st = sol.stats;
     const Rgb out = absorbed + reflected + st.escaped_power + st.back_face_power;
-    EXPECT_TRUE(out.isApprox(st.shot_power, 1e-9)) << out.transpose() << " vs "
-                                                   << st.shot_power.transpose();
-    const double balance = (absorbed + st.escaped_power + st.back_face_power + st.unshot_power).sum();
+    EXPECT_TRUE(out.isApprox(st.shot_power, 1e-9))
+        << out.transpose() << " vs " << st.shot_power.transpose();
+    const double balance =
+        (absorbed + st.escaped_power + st.back_face_power + st.unshot_power).sum();
     EXPECT_NEAR(balance, st.emitted_power.sum(), 1e-9 * st.emitted_power.sum());
 }
 
@@ -230,7 +232,8 @@ TEST(SolverOptions, BadValuesAreRejectedWithTheirName) {
         }
         return std::string("accepted");
     };
-    EXPECT_NE(message([](auto& o) { o.oracle = nullptr; }).find("one of power, ks"), std::string::npos);
+    EXPECT_NE(message([](auto& o) { o.oracle = nullptr; }).find("one of power, ks"),
+              std::string::npos);
     EXPECT_NE(message([](auto& o) { o.epsilon = -1; }).find("epsilon"), std::string::npos);
     EXPECT_NE(message([](auto& o) { o.stop = 0; }).find("stop"), std::string::npos);
     EXPECT_NE(message([](auto& o) { o.max_depth = 30; }).find("max-depth"), std::string::npos);

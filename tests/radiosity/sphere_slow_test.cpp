@@ -26,7 +26,8 @@ TEST(Sphere, EveryRegionGetsTheUniformRadiosity) {
     faces[0].emission = Rgb::Constant(100);
     double alpha = 0, sagitta = 0;
     for (const auto& f : faces) {
-        const Vec3 n = (f.corners[1] - f.corners[0]).cross(f.corners[2] - f.corners[0]).normalized();
+        const Vec3 n =
+            (f.corners[1] - f.corners[0]).cross(f.corners[2] - f.corners[0]).normalized();
         const Vec3 c = (f.corners[0] + f.corners[1] + f.corners[2]) / 3;
         ASSERT_LT(n.dot(c), 0) << "faces must point inward";
         for (const Vec3& v : f.corners) alpha = std::max(alpha, std::acos(-n.dot(v.normalized())));
@@ -60,8 +61,8 @@ TEST(Sphere, EveryRegionGetsTheUniformRadiosity) {
         }
         for (int k = 0; k < 8; ++k) octant[k].push_back(power[k] / area[k]);
     }
-    const double expected = rho * phi * (1 - std::pow(rho, double(iterations))) /
-                            (total_area * (1 - rho));
+    const double expected =
+        rho * phi * (1 - std::pow(rho, double(iterations))) / (total_area * (1 - rho));
     for (int k = 0; k < 8; ++k) {  // Bonferroni over the 8 octants
         EXPECT_TRUE(t_test("octant " + std::to_string(k), octant[k], expected, bias * expected, 8));
     }

@@ -1,11 +1,12 @@
 // The bias of stopping (radiosity/truncation.h) on the furnace, where it is known exactly.
+#include "radiosity/truncation.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "oracles/registry.h"
 #include "radiosity/solver.h"
-#include "radiosity/truncation.h"
 #include "tests/support/test_scenes.h"
 
 namespace hmcr::test {
@@ -16,8 +17,8 @@ namespace {
 // lost at the edges), so the decay of each iteration is rho and the reported tail is the true one.
 TEST(Truncation, TheFurnaceTailIsTheMissingReflectedPower) {
     const double rho = 0.5, e = 1;
-    const auto mesh = make_patch_mesh(
-        inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(rho), Rgb::Constant(e)));
+    const auto mesh =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(rho), Rgb::Constant(e)));
     for (const double stop : {1e-2, 1e-4}) {
         SolverOptions o;
         o.oracle = oracle_registry().find("power");
@@ -33,7 +34,8 @@ TEST(Truncation, TheFurnaceTailIsTheMissingReflectedPower) {
             // Rays that slip through the box's edges or reach a back face (a few in a million)
             // take their power and its later bounces, at most lost / (1 - rho), with them.
             const double lost = sol.stats.escaped_power[c] + sol.stats.back_face_power[c];
-            EXPECT_NEAR(t.reflected[c] + t.missing[c], converged, 1e-9 * converged + lost / (1 - rho));
+            EXPECT_NEAR(t.reflected[c] + t.missing[c], converged,
+                        1e-9 * converged + lost / (1 - rho));
             EXPECT_LT(lost, 1e-4 * area * e);
             EXPECT_GT(t.relative[c], 0);
             // U < stop x emitted, and the tail of a decay of 0.5 is U itself.

@@ -9,8 +9,8 @@
 #include "radiosity/solver.h"
 #include "tests/support/analytic.h"
 #include "tests/support/plugins.h"
-#include "tests/support/statistics.h"
 #include "tests/support/same_leaves.h"
+#include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
 
 namespace hmcr::test {
@@ -51,7 +51,8 @@ TEST(TwoSided, EachSideOfAPlateGetsTheLightOfTheEmitterItFaces) {
         const Element& root;
         double rho, emission;
     };
-    for (const Side& s : {Side{"front", h.root(1), 0.5, 1.0}, Side{"back", *h.back_root(1), 0.25, 2.0}}) {
+    for (const Side& s :
+         {Side{"front", h.root(1), 0.5, 1.0}, Side{"back", *h.back_root(1), 0.25, 2.0}}) {
         const double p = s.emission * f / 3;  // the chance that a ray lands on this side
         const double se = s.rho * 3 * std::sqrt(p * (1 - p) / n0);
         for (int c = 0; c < 3; ++c) {

@@ -1,12 +1,13 @@
 // View importance (docs/design.md §3.12): the views' pixel shares, the adjoint solve's exact
 // total in a closed box, and elements where the views look.
+#include "radiosity/view_importance.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "radiosity/solver.h"
-#include "radiosity/view_importance.h"
 #include "rays/embree_scene.h"
 #include "tests/support/furnace.h"
 #include "tests/support/plugins.h"

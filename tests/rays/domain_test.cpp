@@ -2,6 +2,8 @@
 // the deepest split, the child that child_containing's division picks, for any float point:
 // dyadic boundaries, their neighbours, the edges and points beyond them; and a quad's cell at a
 // depth, found from the point's binary digits, is the domain that walk reaches there.
+#include "rays/domain.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "rays/domain.h"
 #include "rays/rng.h"
 
 namespace hmcr::test {
@@ -21,8 +22,14 @@ std::vector<Vec2f> hostile_points() {
     std::vector<Vec2f> points;
     Rng rng(7, 0);
     for (int k = 0; k < 5'000; ++k) points.emplace_back(float(rng.uniform()), float(rng.uniform()));
-    const float edges[] = {0.0f, 1.0f, 0.5f, 1e-30f, -1e-7f, 1.5f,
-                           std::nextafter(1.0f, 0.0f), std::nextafter(1.0f, 2.0f),
+    const float edges[] = {0.0f,
+                           1.0f,
+                           0.5f,
+                           1e-30f,
+                           -1e-7f,
+                           1.5f,
+                           std::nextafter(1.0f, 0.0f),
+                           std::nextafter(1.0f, 2.0f),
                            std::ldexp(1.0f, -kDeepest)};
     for (const float u : edges) {
         for (const float v : edges) points.emplace_back(u, v);
@@ -31,7 +38,8 @@ std::vector<Vec2f> hostile_points() {
         const float step = std::ldexp(1.0f, -depth);
         for (int k = 0; k < 8; ++k) {
             const float dyadic = std::floor(float(rng.uniform()) / step) * step;
-            for (const float u : {dyadic, std::nextafter(dyadic, 0.0f), std::nextafter(dyadic, 1.0f)}) {
+            for (const float u :
+                 {dyadic, std::nextafter(dyadic, 0.0f), std::nextafter(dyadic, 1.0f)}) {
                 points.emplace_back(u, float(rng.uniform()));
                 points.emplace_back(float(rng.uniform()), u);
                 points.emplace_back(u, 1.0f - u);  // on a triangle's diagonals
@@ -88,8 +96,8 @@ TEST(Domain, AQuadCellIsWhereTheWalkFromTheRootArrives) {
             Domain below = d;
             for (int k = depth; k < std::min(depth + 3, kDeepest); ++k) {
                 const int child = below.child_containing(true, uv);
-                ASSERT_EQ(from_cell.step(), child) << "point (" << p.x() << ", " << p.y()
-                                                   << ") from depth " << depth;
+                ASSERT_EQ(from_cell.step(), child)
+                    << "point (" << p.x() << ", " << p.y() << ") from depth " << depth;
                 below = below.child(true, child);
             }
             ++compared;

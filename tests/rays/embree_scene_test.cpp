@@ -1,12 +1,13 @@
 // The Embree scene built from the patches' mesh vertices (shared between patches) against the
 // one built from the patches alone (every patch's corners its own): the same triangles in the
 // same order, so every query must give the same bits.
+#include "rays/embree_scene.h"
+
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "meshes/scene.h"
-#include "rays/embree_scene.h"
 #include "rays/element_sampler.h"
 #include "rays/rng.h"
 #include "rays/sampling.h"

@@ -26,14 +26,14 @@ struct Regions {
 };
 
 Regions test_regions() {
-    const TestPolygon skewed{{{0, 0, 0}, {3, 0, 0}, {2.2, 1.0, 0.3}, {0.1, 2.5, 0.75}},
-                             Rgb::Constant(0.5), Rgb::Zero()};
-    const TestPolygon parallelogram{{{4, 0, 0}, {6, 0, 1}, {7, 2, 1}, {5, 2, 0}},
-                                    Rgb::Constant(0.5), Rgb::Zero()};
-    const TestPolygon triangle{{{4, 0, 3}, {6, 0.5, 3}, {4.5, 2, 3.5}}, Rgb::Constant(0.5),
-                               Rgb::Zero()};
-    const TestPolygon down{{{0, 0, 5}, {0, 2, 5}, {2, 2, 5}, {2, 0, 5}}, Rgb::Constant(0.5),
-                           Rgb::Zero()};
+    const TestPolygon skewed{
+        {{0, 0, 0}, {3, 0, 0}, {2.2, 1.0, 0.3}, {0.1, 2.5, 0.75}}, Rgb::Constant(0.5), Rgb::Zero()};
+    const TestPolygon parallelogram{
+        {{4, 0, 0}, {6, 0, 1}, {7, 2, 1}, {5, 2, 0}}, Rgb::Constant(0.5), Rgb::Zero()};
+    const TestPolygon triangle{
+        {{4, 0, 3}, {6, 0.5, 3}, {4.5, 2, 3.5}}, Rgb::Constant(0.5), Rgb::Zero()};
+    const TestPolygon down{
+        {{0, 0, 5}, {0, 2, 5}, {2, 2, 5}, {2, 0, 5}}, Rgb::Constant(0.5), Rgb::Zero()};
     Regions r;
     r.set = build_patch_set(make_patch_mesh({skewed, parallelogram, triangle, down}));
     const Domain whole = Domain::root();
@@ -108,8 +108,8 @@ TEST(RayGenerator, RegionsByWeightAndPointsUniformByArea) {
     }
     for (std::size_t i = 0; i < r.regions.size(); ++i) {
         const double p = r.weights[i] / total;
-        EXPECT_TRUE(within_standard_errors("region " + std::to_string(i), picked[i] / double(n),
-                                           p, std::sqrt(p * (1 - p) / double(n))));
+        EXPECT_TRUE(within_standard_errors("region " + std::to_string(i), picked[i] / double(n), p,
+                                           std::sqrt(p * (1 - p) / double(n))));
         const RayRegion& reg = r.regions[i];
         const Patch& patch = r.set.patches[reg.patch];
         const Domain dom{float(reg.u0), float(reg.v0), float(reg.s)};
@@ -123,8 +123,8 @@ TEST(RayGenerator, RegionsByWeightAndPointsUniformByArea) {
         for (int c = 0; c < 4; ++c) {
             const double q = child_area[c] / area, m = picked[i];
             EXPECT_TRUE(within_standard_errors(
-                "region " + std::to_string(i) + " child " + std::to_string(c),
-                children[i][c] / m, q, std::sqrt(q * (1 - q) / m)));
+                "region " + std::to_string(i) + " child " + std::to_string(c), children[i][c] / m,
+                q, std::sqrt(q * (1 - q) / m)));
         }
     }
 }

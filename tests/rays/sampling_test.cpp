@@ -1,5 +1,7 @@
 // Samplers against their densities: each is a hypothesis test with binomial or sample
 // standard errors.
+#include "rays/sampling.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -7,11 +9,10 @@
 #include <numbers>
 #include <numeric>
 
-#include "rays/alias_table.h"
 #include "radiosity/hierarchy.h"
+#include "rays/alias_table.h"
 #include "rays/element_sampler.h"
 #include "rays/rng.h"
-#include "rays/sampling.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
 
@@ -96,7 +97,8 @@ TEST(Sampling, UniformDiskFillsEveryRegionByItsArea) {
 // On a skewed quad and a triangle, sample_element is uniform by area: each child of the
 // sampled element gets a share of the points equal to its share of the area.
 TEST(Sampling, ElementSamplesAreUniformByArea) {
-    TestPolygon q{{{0, 0, 0}, {3, 0, 0}, {2.2, 1.0, 0}, {0.1, 2.5, 0}}, Rgb::Constant(0.5), Rgb::Zero()};
+    TestPolygon q{
+        {{0, 0, 0}, {3, 0, 0}, {2.2, 1.0, 0}, {0.1, 2.5, 0}}, Rgb::Constant(0.5), Rgb::Zero()};
     TestPolygon t{{{4, 0, 0}, {6, 0.5, 0}, {4.5, 2, 0}}, Rgb::Constant(0.5), Rgb::Zero()};
     Hierarchy h(build_patch_set(make_patch_mesh({q, t})), {});
     Rng rng(3, 0);
@@ -111,10 +113,10 @@ TEST(Sampling, ElementSamplesAreUniformByArea) {
         }
         for (int k = 0; k < 4; ++k) {
             const double expected = c[k].area / parent.area;
-            EXPECT_TRUE(within_standard_errors(
-                "patch " + std::to_string(p) + " child " + std::to_string(k),
-                double(count[k]) / kSamples, expected,
-                std::sqrt(expected * (1 - expected) / kSamples)));
+            EXPECT_TRUE(
+                within_standard_errors("patch " + std::to_string(p) + " child " + std::to_string(k),
+                                       double(count[k]) / kSamples, expected,
+                                       std::sqrt(expected * (1 - expected) / kSamples)));
         }
     }
 }
@@ -161,7 +163,8 @@ TEST(Sampling, AliasTableBinsHoldEachIndexsShareExactly) {
             mass[b.alias] += 1 - b.keep;
         }
         for (std::size_t i = 0; i < n; ++i) {
-            EXPECT_NEAR(mass[i] / double(n), weights[i] / total, 1e-12) << "n " << n << " index " << i;
+            EXPECT_NEAR(mass[i] / double(n), weights[i] / total, 1e-12)
+                << "n " << n << " index " << i;
         }
     }
 }

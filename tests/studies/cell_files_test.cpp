@@ -1,11 +1,12 @@
 // A study's cell files are checked as they are read (studies/table_fields.h): a value no study
 // writes is an InputError, and the study computes the cell again instead of tabling it.
+#include "studies/cell_files.h"
+
 #include <gtest/gtest.h>
 
 #include <limits>
 
 #include "common/error.h"
-#include "studies/cell_files.h"
 #include "studies/sampling_study.h"
 #include "studies/study.h"
 
@@ -56,16 +57,22 @@ TEST(CellFiles, AGoodCellReadsBack) {
     // What the tables store for what was not measured: null, read as NaN or infinity.
     EXPECT_NO_THROW(cell_from_json(spoiled(meshing_cell(), "/object_error/relative_l2", nullptr)));
     EXPECT_NO_THROW(cell_from_json(spoiled(meshing_cell(), "/views/side/psnr_p", nullptr)));
-    EXPECT_NO_THROW(sampling_cell_from_json(spoiled(sampling_cell(), "/views/side/threshold", nullptr)));
+    EXPECT_NO_THROW(
+        sampling_cell_from_json(spoiled(sampling_cell(), "/views/side/threshold", nullptr)));
 }
 
 TEST(CellFiles, ValuesNoStudyWritesAreRefused) {
     const std::pair<const char*, json> meshing[] = {
-        {"/budget", -20},          {"/budget", 2.5},
-        {"/seed", -1},             {"/leaves", -3},
-        {"/leaves", 1e30},         {"/epsilon", -1e-3},
-        {"/seconds", -1},          {"/rays", -20000},
-        {"/mesh_rays", "many"},    {"/status", "great"},
+        {"/budget", -20},
+        {"/budget", 2.5},
+        {"/seed", -1},
+        {"/leaves", -3},
+        {"/leaves", 1e30},
+        {"/epsilon", -1e-3},
+        {"/seconds", -1},
+        {"/rays", -20000},
+        {"/mesh_rays", "many"},
+        {"/status", "great"},
         {"/probe_history/0/leaves", -7},
         {"/probe_history/0/epsilon", -1},
         {"/object_error/relative_l2", -0.5},
@@ -81,9 +88,12 @@ TEST(CellFiles, ValuesNoStudyWritesAreRefused) {
             << pointer << " = " << value;
     }
     const std::pair<const char*, json> sampling[] = {
-        {"/spp", -16},          {"/spp", 0},
-        {"/seed", -1},          {"/status", ""},
-        {"/seconds", -0.3},     {"/views/side/spp", -16.1},
+        {"/spp", -16},
+        {"/spp", 0},
+        {"/seed", -1},
+        {"/status", ""},
+        {"/seconds", -0.3},
+        {"/views/side/spp", -16.1},
         {"/views/side/min_spp", -4},
         {"/views/side/max_spp", 5e9},
         {"/views/side/threshold", -0.02},

@@ -175,7 +175,8 @@ TEST(ObjectSpaceError, PointsAreMatchedOnTheirOwnPatch) {
 TEST(ObjectSpaceError, PointsAtAnEdgeBetweenPatchesAreTheirOwnPatchs) {
     const double s = 1e-8;
     const auto strip = [](double x0, double x1, int patch, double b) {
-        ShadedMesh m = grid(1, 4, [&](const Vec3&) { return Rgb::Constant(b); }, false, 0, patch);
+        ShadedMesh m = grid(
+            1, 4, [&](const Vec3&) { return Rgb::Constant(b); }, false, 0, patch);
         for (Vec3& x : m.points) x.x() = x0 + (x1 - x0) * x.x();
         return m;
     };

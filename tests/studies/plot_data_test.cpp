@@ -31,9 +31,9 @@ const json& panel(const json& data, std::size_t figure, std::size_t panel) {
 }
 
 TEST(PlotData, MeshingPointsAreTheMeansAndStandardErrorsOfEachBudget) {
-    std::vector<CellResult> cells = {meshing_cell("kl", 100, 98, 0.2), meshing_cell("kl", 100, 102, 0.4),
-                                     meshing_cell("kl", 200, 200, 0.1),
-                                     meshing_cell("power", 100, 100, 0.3)};
+    std::vector<CellResult> cells = {
+        meshing_cell("kl", 100, 98, 0.2), meshing_cell("kl", 100, 102, 0.4),
+        meshing_cell("kl", 200, 200, 0.1), meshing_cell("power", 100, 100, 0.3)};
     cells.push_back(meshing_cell("power", 200, 0, 0));
     cells.back().status = "failed";  // left out, as the tables leave it out
     const json data = meshing_plot_data("box", cells);
@@ -51,7 +51,7 @@ TEST(PlotData, MeshingPointsAreTheMeansAndStandardErrorsOfEachBudget) {
     EXPECT_DOUBLE_EQ(p.at("y").get<double>(), 0.3);
     EXPECT_NEAR(p.at("y_se").get<double>(), 0.1, 1e-15);
     EXPECT_EQ(p.at("n"), 2);
-    EXPECT_TRUE(kl.at("points").at(1).at("y_se").is_null());  // one seed: no standard error
+    EXPECT_TRUE(kl.at("points").at(1).at("y_se").is_null());         // one seed: no standard error
     EXPECT_EQ(solution.at("series").at(1).at("points").size(), 1u);  // power's failed cell
 }
 
@@ -63,8 +63,8 @@ TEST(PlotData, MeshPanelWhereMeasuredAndRmsepAgainstATracedReference) {
     c.object_error.relative_l2 = std::numeric_limits<double>::quiet_NaN();  // traced reference
     const json traced = meshing_plot_data("box", {c});
     EXPECT_EQ(panel(traced, 0, 0).at("y_label"), "RMSEp (0–255)");
-    EXPECT_DOUBLE_EQ(panel(traced, 0, 0).at("series").at(0).at("points").at(0).at("y").get<double>(),
-                     0.6);
+    EXPECT_DOUBLE_EQ(
+        panel(traced, 0, 0).at("series").at(0).at("points").at(0).at("y").get<double>(), 0.6);
 }
 
 SamplingCell sampling_cell(const std::string& sampler, double spp, double rmse_p) {
@@ -124,7 +124,14 @@ TEST(PlotData, TableOfNoStudyUnknownOracleOrTooManyBudgetsIsRefused) {
               std::string::npos);
     table["cells"].erase(table["cells"].begin());
     EXPECT_EQ(plot_data_of_table(dir.write("table.json", table.dump()))
-                  .at("figures").at(0).at("panels").at(0).at("series").at(0).at("points").size(),
+                  .at("figures")
+                  .at(0)
+                  .at("panels")
+                  .at(0)
+                  .at("series")
+                  .at(0)
+                  .at("points")
+                  .size(),
               kMaxPlotPoints);
 }
 

@@ -8,11 +8,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "image/image.h"
 #include "studies/reference.h"
 #include "studies/traced_reference.h"
 #include "tests/support/plugins.h"
 #include "tests/support/temp_dir.h"
-#include "image/image.h"
 
 namespace hmcr::test {
 namespace {

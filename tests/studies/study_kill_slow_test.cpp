@@ -34,15 +34,19 @@ TEST_P(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
     TempDir dir;
     const fs::path ref = dir.path() / "ref", out = dir.path() / "study";
     ASSERT_EQ(run_hmcr("reference plates --max-area 0.05 --rays 20000 -q -o " + ref.string(),
-                       dir.path(), 600).exit_code, 0);
+                       dir.path(), 600)
+                  .exit_code,
+              0);
     const std::string study = "study plates --reference " + ref.string() +
                               " --budgets 60,120 --oracles power,kl --seeds 2 --rays 400000 -o " +
                               out.string();
     const pid_t child = fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
-        execl("/bin/sh", "sh", "-c", (std::string("exec ") + HMCR_BINARY + " " + study +
-                                      " >/dev/null 2>/dev/null").c_str(), nullptr);
+        execl(
+            "/bin/sh", "sh", "-c",
+            (std::string("exec ") + HMCR_BINARY + " " + study + " >/dev/null 2>/dev/null").c_str(),
+            nullptr);
         _exit(127);
     }
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
@@ -66,7 +70,8 @@ TEST_P(StudyKill, RerunSkipsTheFinishedCellsAndCompletesTheRest) {
     ASSERT_EQ(rerun.exit_code, 0) << rerun.err;
     const std::string& log = rerun.err;
     std::size_t skipped = 0;
-    for (std::size_t at = 0; (at = log.find("done before, skipped", at)) != std::string::npos; ++at) {
+    for (std::size_t at = 0; (at = log.find("done before, skipped", at)) != std::string::npos;
+         ++at) {
         ++skipped;
     }
     EXPECT_EQ(skipped, before) << log;

@@ -5,11 +5,11 @@
 
 #include <sstream>
 
+#include "image/image.h"
 #include "studies/reference.h"
 #include "studies/study.h"
 #include "tests/support/plugins.h"
 #include "tests/support/temp_dir.h"
-#include "image/image.h"
 
 namespace hmcr::test {
 namespace {

@@ -30,7 +30,7 @@ SummaryTable two_oracles() {
 
 TEST(SummaryTable, MarksTheBestMeanOfEachErrorColumnOnly) {
     const SummaryTable t = two_oracles();
-    EXPECT_TRUE(is_best(t, 0, 0));   // lower RMSEp
+    EXPECT_TRUE(is_best(t, 0, 0));  // lower RMSEp
     EXPECT_FALSE(is_best(t, 1, 0));
     EXPECT_TRUE(is_best(t, 1, 1));   // higher PSNR
     EXPECT_FALSE(is_best(t, 0, 2));  // not an error column
@@ -67,7 +67,8 @@ bool has_pdflatex() { return std::system("command -v pdflatex >/dev/null 2>&1") 
 std::pair<bool, std::string> pdflatex(const TempDir& dir, const std::string& body) {
     dir.write("paper.tex",
               "\\documentclass{article}\n\\usepackage{booktabs}\n\\usepackage{graphicx}\n"
-              "\\begin{document}\n" + body + "\n\\end{document}\n");
+              "\\begin{document}\n" +
+                  body + "\n\\end{document}\n");
     const std::string cmd = "cd '" + dir.path().string() +
                             "' && pdflatex -interaction=nonstopmode -halt-on-error paper.tex "
                             ">/dev/null 2>&1";
@@ -80,12 +81,13 @@ std::pair<bool, std::string> pdflatex(const TempDir& dir, const std::string& bod
 TEST(SummaryTable, AFloatWiderThanTheLineIsScaledToIt) {
     SummaryTable wide;
     wide.row_title = "sampler";
-    for (const char* title : {"RMSEa", "RMSEp", "PSNRa (dB)", "PSNRp (dB)", "spp", "max spp",
-                              "rays (M)", "seconds"}) {
+    for (const char* title :
+         {"RMSEa", "RMSEp", "PSNRa (dB)", "PSNRp (dB)", "spp", "max spp", "rays (M)", "seconds"}) {
         wide.columns.push_back({title, "{:.2f}", 0});
     }
     wide.rows = {{"uniform", "3/3", std::vector<MeanSe>(8, mean_se({32.37, 33.5, 31.2}))}};
-    const std::string shrunk = "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%";
+    const std::string shrunk =
+        "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%";
     const std::string floats = latex_float("Wide.", "tab:wide", wide) +
                                latex_float("Narrow.", "tab:narrow", two_oracles());
     EXPECT_NE(floats.find(shrunk), std::string::npos) << floats;
@@ -146,7 +148,7 @@ TEST(StudyTables, TexHoldsOneTableFloatPerBudgetThatPdflatexCompiles) {
         if (columns == 0) columns = amps;
         EXPECT_EQ(amps, columns) << line;
     }
-    EXPECT_EQ(rows, 6);  // header, power and kl, twice
+    EXPECT_EQ(rows, 6);       // header, power and kl, twice
     EXPECT_EQ(columns, 11u);  // seeds and 10 measures
     // kl's object error is the lower: bold, with its standard error.
     EXPECT_NE(tex.find("kl & 2/2 & "), std::string::npos);

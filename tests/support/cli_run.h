@@ -56,7 +56,8 @@ inline CliRun run_hmcr_mpi(int ranks, const std::string& args, const std::filesy
 inline std::map<std::string, std::string> snapshot(const std::filesystem::path& dir) {
     std::map<std::string, std::string> files;
     for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
-        if (e.is_regular_file()) files[e.path().lexically_relative(dir).string()] = read_file(e.path());
+        if (e.is_regular_file())
+            files[e.path().lexically_relative(dir).string()] = read_file(e.path());
     }
     return files;
 }

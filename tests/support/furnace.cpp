@@ -32,8 +32,8 @@ std::size_t expect_furnace_per_patch(const PatchMesh& mesh, double rho, double e
     }
     const double expected = furnace_value(rho, e, iterations);
     for (std::size_t p = 0; p < patches; ++p) {
-        EXPECT_TRUE(t_test("furnace patch " + std::to_string(p), per_patch[p], expected, 0,
-                           int(patches)));
+        EXPECT_TRUE(
+            t_test("furnace patch " + std::to_string(p), per_patch[p], expected, 0, int(patches)));
     }
     return iterations;
 }

@@ -9,9 +9,9 @@
 // the realised counts.
 #pragma once
 
-#include "rays/patch.h"
 #include "information/channel_samples.h"
 #include "information/scene_information.h"
+#include "rays/patch.h"
 #include "tests/support/statistics.h"
 
 namespace hmcr::test {

@@ -10,8 +10,8 @@
 
 #include "meshes/patch_mesh.h"
 #include "radiosity/hierarchy.h"
-#include "rays/patch.h"
 #include "radiosity/shaded_mesh.h"
+#include "rays/patch.h"
 
 namespace hmcr::test {
 

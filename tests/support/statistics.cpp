@@ -1,9 +1,8 @@
 #include "tests/support/statistics.h"
 
+#include <array>
 #include <boost/math/distributions/fisher_f.hpp>
 #include <boost/math/special_functions/gamma.hpp>
-
-#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -101,15 +100,16 @@ testing::AssertionResult variance_smaller(const std::string& what,
                                      boost::math::fisher_f(d_l, d_s), var_l / var_s))
                                : (var_l > 0 ? 0.0 : 1.0);
     auto result = p < 1e-3 ? testing::AssertionSuccess() : testing::AssertionFailure();
-    return result << what << ": F = " << var_l << " / " << var_s << " with (" << d_l << ", "
-                  << d_s << ") degrees of freedom, p = " << p;
+    return result << what << ": F = " << var_l << " / " << var_s << " with (" << d_l << ", " << d_s
+                  << ") degrees of freedom, p = " << p;
 }
 
 double chi_square_p_value(double statistic, double dof) {
     return boost::math::gamma_q(dof / 2, statistic / 2);
 }
 
-testing::AssertionResult chi_square_test(const std::string& what, const std::vector<double>& observed,
+testing::AssertionResult chi_square_test(const std::string& what,
+                                         const std::vector<double>& observed,
                                          const std::vector<double>& expected, int comparisons) {
     if (observed.size() != expected.size()) {
         return testing::AssertionFailure() << what << ": " << observed.size() << " cells observed, "
@@ -132,8 +132,8 @@ testing::AssertionResult chi_square_test(const std::string& what, const std::vec
                      pooled_expected;
         ++cells;
     } else if (pooled_observed > 0) {
-        return testing::AssertionFailure() << what << ": " << pooled_observed
-                                           << " samples where none are expected";
+        return testing::AssertionFailure()
+               << what << ": " << pooled_observed << " samples where none are expected";
     }
     const double dof = cells - 1, p = chi_square_p_value(statistic, dof);
     const double level = 1e-3 / comparisons;

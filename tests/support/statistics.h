@@ -37,7 +37,8 @@ testing::AssertionResult t_test(const std::string& what, const std::vector<doubl
 // the same cells (the same total), at level 1e-3 / comparisons (Bonferroni): cells expected
 // below 5 are pooled into one (Cochran's rule), so that the statistic's chi-square distribution
 // holds. The message names the statistic, its degrees of freedom and p-value.
-testing::AssertionResult chi_square_test(const std::string& what, const std::vector<double>& observed,
+testing::AssertionResult chi_square_test(const std::string& what,
+                                         const std::vector<double>& observed,
                                          const std::vector<double>& expected, int comparisons = 1);
 
 // One-sided F test of two independent samples (e.g. one value per seed, two estimators): passes

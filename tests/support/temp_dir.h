@@ -22,7 +22,7 @@ inline std::string read_file(const std::filesystem::path& path) {
 }
 
 class TempDir {
-  public:
+public:
     TempDir() {
         const auto* info = testing::UnitTest::GetInstance()->current_test_info();
         static std::atomic<int> counter{0};
@@ -57,7 +57,7 @@ class TempDir {
         return out;
     }
 
-  private:
+private:
     std::filesystem::path m_path;
 };
 

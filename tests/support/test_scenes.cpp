@@ -30,13 +30,13 @@ PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons) {
         }
         material[f] = std::uint32_t(table.size());
         table.push_back({{p.reflectance[0], p.reflectance[1], p.reflectance[2]},
-                          {p.emission[0], p.emission[1], p.emission[2]},
-                          {p.specular[0], p.specular[1], p.specular[2]},
-                          p.roughness});
+                         {p.emission[0], p.emission[1], p.emission[2]},
+                         {p.specular[0], p.specular[1], p.specular[2]},
+                         p.roughness});
         line[f] = 0;
     }
-    const bool any_back =
-        std::any_of(polygons.begin(), polygons.end(), [](const TestPolygon& p) { return p.two_sided; });
+    const bool any_back = std::any_of(polygons.begin(), polygons.end(),
+                                      [](const TestPolygon& p) { return p.two_sided; });
     if (!any_back) return mesh;
     auto back = back_material_prop(mesh);
     for (auto f : mesh.faces()) {
@@ -45,8 +45,8 @@ PatchMesh make_patch_mesh(const std::vector<TestPolygon>& polygons) {
         if (!p.two_sided) continue;
         back[f] = std::uint32_t(table.size());
         table.push_back({{p.back_reflectance[0], p.back_reflectance[1], p.back_reflectance[2]},
-                          {p.back_emission[0], p.back_emission[1], p.back_emission[2]},
-                          {p.back_specular[0], p.back_specular[1], p.back_specular[2]}});
+                         {p.back_emission[0], p.back_emission[1], p.back_emission[2]},
+                         {p.back_specular[0], p.back_specular[1], p.back_specular[2]}});
     }
     return mesh;
 }
@@ -94,9 +94,9 @@ std::vector<TestPolygon> inward_box(const Vec3& lo, const Vec3& hi, int n, const
             for (int i = 0; i < n; ++i) {
                 for (int j = 0; j < n; ++j) {
                     auto cut = [&](int k, int c) { return lo[k] + (hi[k] - lo[k]) * c / n; };
-                    TestPolygon p = axis_rectangle(axis, side ? hi[axis] : lo[axis],
-                                                   {cut(a, i), cut(b, j)},
-                                                   {cut(a, i + 1), cut(b, j + 1)}, side == 0);
+                    TestPolygon p =
+                        axis_rectangle(axis, side ? hi[axis] : lo[axis], {cut(a, i), cut(b, j)},
+                                       {cut(a, i + 1), cut(b, j + 1)}, side == 0);
                     p.reflectance = rho;
                     p.emission = emission;
                     faces.push_back(p);
@@ -113,9 +113,9 @@ std::vector<TestPolygon> inward_icosphere(int level, double radius, const Rgb& r
                            {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
                            {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
     std::vector<std::array<int, 3>> f = {
-        {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-        {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     for (auto& p : v) p.normalize();
     for (int l = 0; l < level; ++l) {
         std::map<std::pair<int, int>, int> mid;

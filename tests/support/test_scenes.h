@@ -3,9 +3,9 @@
 
 #include <vector>
 
+#include "common/types.h"
 #include "meshes/patch_mesh.h"
 #include "meshes/scene.h"
-#include "common/types.h"
 
 namespace hmcr::test {
 

@@ -33,11 +33,13 @@ double value(const std::string& name, const std::vector<PixelSample>& s, double 
 TEST(Criteria, DisplayValuesClampAtWhite) {
     const auto s = grey({1, 1, 1, 1, 1, 1, 1, 9});
     for (const char* name : {"cc", "var", "kl", "srhe", "entropy"}) {
-        EXPECT_EQ(on_display_values(find_named(criterion_registry(), name), 1.0)->value(s, 1), 0) << name;
-        EXPECT_GT(on_display_values(find_named(criterion_registry(), name), 0.1)->value(s, 1), 0) << name;
+        EXPECT_EQ(on_display_values(find_named(criterion_registry(), name), 1.0)->value(s, 1), 0)
+            << name;
+        EXPECT_GT(on_display_values(find_named(criterion_registry(), name), 0.1)->value(s, 1), 0)
+            << name;
     }
-    EXPECT_NEAR(on_display_values(find_named(criterion_registry(), "kl"), 0.1)->value(s, 1), 0.1 * value("kl", s),
-                1e-15);
+    EXPECT_NEAR(on_display_values(find_named(criterion_registry(), "kl"), 0.1)->value(s, 1),
+                0.1 * value("kl", s), 1e-15);
 }
 
 // Eight luminances 1, ..., 1, 9: n = 8, sum 16, L-bar = 2, p = (1/16 x 7, 9/16).

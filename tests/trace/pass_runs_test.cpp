@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "rays/camera.h"
 #include "meshes/scene.h"
+#include "rays/camera.h"
 #include "trace/criteria/registry.h"
 #include "trace/trace_image.h"
 
@@ -36,8 +36,8 @@ TEST(PassRuns, APixelGoesOnWhileItOrANeighbourIsUnconverged) {
     for (int i = 0; i < w * h; ++i) {
         std::vector<PixelSample> samples;
         for (std::uint32_t first = 0; first < r.samples[std::size_t(i)]; first += kBatchSize) {
-            for (const TracedSample& t : trace_pixel_batch(pixels, i % w, i / w, first,
-                                                           std::min(first + kBatchSize, most)))
+            for (const TracedSample& t :
+                 trace_pixel_batch(pixels, i % w, i / w, first, std::min(first + kBatchSize, most)))
                 samples.push_back(store(t.sample).expand());
             values[std::size_t(i)].push_back(criterion.value(samples, 1.0));
         }

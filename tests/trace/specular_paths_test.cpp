@@ -9,13 +9,13 @@
 #include <numbers>
 
 #include "meshes/scene.h"
+#include "rays/camera.h"
 #include "tests/support/image_checks.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"
-#include "rays/camera.h"
 #include "trace/criteria/registry.h"
-#include "trace/pixel_run.h"
 #include "trace/path_tracer.h"
+#include "trace/pixel_run.h"
 #include "trace/trace_image.h"
 
 namespace hmcr::test::specular_paths {
@@ -52,7 +52,9 @@ PatchMesh mixed_furnace(double rho, double e) {
     std::vector<TestPolygon> walls = inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Zero(), Rgb::Zero());
     for (TestPolygon& w : walls) {
         const Vec3 n = (w.corners[1] - w.corners[0]).cross(w.corners[2] - w.corners[0]);
-        const int axis = std::abs(n.x()) > 0.5 * n.norm() ? 0 : std::abs(n.y()) > 0.5 * n.norm() ? 1 : 2;
+        const int axis = std::abs(n.x()) > 0.5 * n.norm()   ? 0
+                         : std::abs(n.y()) > 0.5 * n.norm() ? 1
+                                                            : 2;
         w.emission = Rgb::Constant(e);
         w.reflectance = Rgb::Constant(axis == 0 ? 0 : axis == 1 ? rho : rho / 2);
         w.specular = Rgb::Constant(axis == 0 ? rho : axis == 1 ? 0 : rho / 2);
@@ -96,7 +98,8 @@ TEST(SpecularPaths, AnEmitterSeenInAMirrorHasRhoSTimesItsRadiance) {
     for (const Estimator est : {Estimator::mis, Estimator::nee, Estimator::bsdf}) {
         const Image im = trace(mesh, v, est, 4, 2).image;
         for (const Rgb& p : im.pixels)
-            for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], rho_s[c] * le[c], 1e-12) << estimator_name(est);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(p[c], rho_s[c] * le[c], 1e-12) << estimator_name(est);
     }
 }
 
@@ -163,8 +166,8 @@ TEST(SpecularPaths, NextEventAndPurePathTracingAgreeOnMirrors) {
 // Mirrors and glossy lobes draw from each sample's own stream: 1 and 2 threads give the same
 // bits, for the uniform sampler, a batch one, the Cycles-style passes and the map allocation.
 TEST(SpecularPaths, ImagesWithSpecularSurfacesDoNotDependOnTheThreadCount) {
-    std::vector<TestPolygon> walls = inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(0.3),
-                                                Rgb::Zero());
+    std::vector<TestPolygon> walls =
+        inward_box({0, 0, 0}, {1, 1, 1}, 2, Rgb::Constant(0.3), Rgb::Zero());
     for (std::size_t k = 0; k < walls.size(); ++k) {
         if (k % 3 == 0) walls[k].specular = Rgb::Constant(0.5);
         if (k % 3 == 1) walls[k].specular = Rgb(0.4, 0.5, 0.6), walls[k].roughness = 0.15;

@@ -1,7 +1,6 @@
 // Whole traced images: every sampler reaches its spp target within 2%, an image does not
 // depend on the thread count, and the image the search assembles from its probes' samples is
 // the one a fresh render at the accepted threshold gives.
-#include "common/error.h"
 #include "trace/trace_image.h"
 
 #include <gtest/gtest.h>
@@ -9,10 +8,11 @@
 
 #include <numbers>
 
+#include "common/error.h"
 #include "meshes/scene.h"
 #include "tests/support/analytic.h"
-#include "tests/support/statistics.h"
 #include "tests/support/image_checks.h"
+#include "tests/support/statistics.h"
 #include "trace/criteria/registry.h"
 
 namespace hmcr::test {
@@ -90,7 +90,8 @@ INSTANTIATE_TEST_SUITE_P(Registry, EverySampler, testing::ValuesIn(criterion_reg
                          });
 
 TEST(TraceImage, UniformGivesEveryPixelExactlyItsSamples) {
-    TraceOptions o = options(find_named(criterion_registry(), "uniform"), 13);  // one full batch and a partial one
+    TraceOptions o = options(find_named(criterion_registry(), "uniform"),
+                             13);  // one full batch and a partial one
     const TraceResult r = cornell().trace(o);
     EXPECT_EQ(r.counts().min, 13u);
     EXPECT_EQ(r.counts().max, 13u);
@@ -99,8 +100,10 @@ TEST(TraceImage, UniformGivesEveryPixelExactlyItsSamples) {
 
 TEST(TraceImage, TargetsOutsideTheSamplersRangeAreInputErrors) {
     EXPECT_THROW(cornell().trace(options(find_named(criterion_registry(), "kl"), 4)), InputError);
-    EXPECT_THROW(cornell().trace(options(find_named(criterion_registry(), "entropy"), 2000)), InputError);
-    EXPECT_THROW(cornell().trace(options(find_named(criterion_registry(), "uniform"), 2.5)), InputError);
+    EXPECT_THROW(cornell().trace(options(find_named(criterion_registry(), "entropy"), 2000)),
+                 InputError);
+    EXPECT_THROW(cornell().trace(options(find_named(criterion_registry(), "uniform"), 2.5)),
+                 InputError);
     TraceOptions o = options(find_named(criterion_registry(), "kl"), 20);
     o.max_spp = 16;
     EXPECT_THROW(cornell().trace(o), InputError);
@@ -144,7 +147,8 @@ TEST(TraceImage, FreshAdaptiveImagesAreUnbiased) {
         std::vector<double> values;
         for (const Rgb& p : im.pixels) values.push_back(p[c]);
         const Estimate m = estimate_mean(values);
-        EXPECT_TRUE(within_standard_errors("kl, fresh samples", m.mean, expected, m.standard_error));
+        EXPECT_TRUE(
+            within_standard_errors("kl, fresh samples", m.mean, expected, m.standard_error));
     }
 }
 

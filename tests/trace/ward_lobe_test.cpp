@@ -80,8 +80,9 @@ testing::AssertionResult sampling_matches_density(double alpha, double density_a
         const auto w = sample_ward_lobe(f.n, wo, alpha, xi1, xi2);
         observed[w ? bin_of(f, *w) : kZBins * kPhiBins] += 1;
     }
-    return chi_square_test("alpha " + std::to_string(alpha) + ", theta_o " + std::to_string(theta_o),
-                           observed, expected, comparisons);
+    return chi_square_test(
+        "alpha " + std::to_string(alpha) + ", theta_o " + std::to_string(theta_o), observed,
+        expected, comparisons);
 }
 
 TEST(WardLobe, SamplingPassesAChiSquareTestAgainstItsDensity) {
@@ -98,7 +99,8 @@ TEST(WardLobe, TheChiSquareTestRejectsADensityOfAnotherRoughness) {
 // At the mirror direction tan(theta_h) = 0: f / rho_s = 1 / (4 pi alpha^2 cos theta); the value
 // is symmetric in wo and wi, 0 below the surface, and the density integrates to at most 1.
 TEST(WardLobe, ValueAtTheMirrorDirectionReciprocityAndHorizon) {
-    const Vec3 n(0, 0, 1), wo = Vec3(0.6, 0, 0.8), mirror(-0.6, 0, 0.8), wi = Vec3(-0.3, 0.2, 0.9).normalized();
+    const Vec3 n(0, 0, 1), wo = Vec3(0.6, 0, 0.8), mirror(-0.6, 0, 0.8),
+                           wi = Vec3(-0.3, 0.2, 0.9).normalized();
     const double alpha = 0.2;
     EXPECT_NEAR(ward_lobe(n, wo, mirror, alpha), 1 / (4 * kPi * alpha * alpha * 0.8), 1e-12);
     EXPECT_DOUBLE_EQ(ward_lobe(n, wo, wi, alpha), ward_lobe(n, wi, wo, alpha));

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "tests/support/image_checks.h"
 #include "image/image.h"
 #include "image/tone_map.h"
+#include "tests/support/image_checks.h"
 
 namespace hmcr {
 namespace {

@@ -1,6 +1,7 @@
 #include "viz/vtk_export.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -11,16 +12,14 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
-#include <sys/resource.h>
-
 #include <csignal>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 
-#include "tests/support/temp_dir.h"
-#include "tests/support/shaded_scenes.h"
 #include "common/atomic_file.h"
+#include "tests/support/shaded_scenes.h"
+#include "tests/support/temp_dir.h"
 #include "viz/mesh_colors.h"
 
 namespace hmcr::test {
@@ -68,7 +67,7 @@ void expect_array(vtkAbstractArray* a, int type, int components, bool rgb_names)
 }
 
 class VtkExport : public testing::Test {
-  protected:
+protected:
     TempDir m_dir;
     MeshHierarchy m_scene = sample_scene();
     ShadedMesh m_mesh = m_scene.shade();

@@ -1,11 +1,11 @@
 // A solution read back from its .vtp is the mesh that was written (to float precision).
-#include "common/error.h"
 #include "viz/vtk_import.h"
 
 #include <gtest/gtest.h>
 
-#include "tests/support/temp_dir.h"
+#include "common/error.h"
 #include "tests/support/shaded_scenes.h"
+#include "tests/support/temp_dir.h"
 #include "viz/vtk_export.h"
 
 namespace hmcr::test {
