@@ -9,14 +9,14 @@ SANITIZE ?= OFF
 DEPS := g++ cmake make libpng-dev libembree-dev libopenmesh-dev libvtk9-dev libeigen3-dev \
         libhwy-dev libtbb-dev libexpat1-dev libcli11-dev nlohmann-json3-dev libfmt-dev \
         libopenmpi-dev openmpi-bin libgtest-dev libboost-dev zlib1g-dev clang libclang-rt-14-dev \
-        python3 python3-matplotlib
+        clang-format python3 python3-matplotlib
 
 SANITIZE_BUILD ?= build-sanitize
 PREFIX ?= /usr/local
 # Debian's Python, which python3-matplotlib serves (another python3 may come first on the PATH).
 PLOT_PYTHON ?= /usr/bin/python3
 
-.PHONY: deps build run install test test-quick test-sanitize bench scenes format clean
+.PHONY: deps build run install test test-quick test-sanitize bench scenes format format-check clean
 
 # Installs only what is missing, so it is quick when everything is present.
 deps:
@@ -83,8 +83,12 @@ scenes: scenes/office/office.obj
 scenes/office/office.obj: scenes/office/generate.py
 	python3 scenes/office/generate.py
 
-format:
+format: deps
 	clang-format -i $$(git ls-files '*.cpp' '*.h')
+
+# Fails, naming each file and line, where a source differs from .clang-format (what CI checks).
+format-check: deps
+	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.h')
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD)
