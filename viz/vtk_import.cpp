@@ -1,10 +1,8 @@
 #include "viz/vtk_import.h"
 
 #include <fmt/format.h>
-#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -15,80 +13,18 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkVariant.h>
-#include <vtkXMLPolyDataReader.h>
 
 #include <cmath>
 
 #include "common/error.h"
-#include "viz/vtk_console.h"
-#include "viz/vtp_envelope.h"
+#include "viz/vtp_io.h"
 
 namespace hmcr {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Every array, count and cell is checked before use: a .vtp comes from outside, and VTK hands
-// out whatever the file says (a 1-component "Radiosity", a PatchId of -7, lines for cells).
-class VtpChecker {
-public:
-    explicit VtpChecker(const fs::path& path) : m_path(path.string()) {}
-
-    [[noreturn]] void fail(const std::string& why) const { throw InputError(m_path, why); }
-
-    // The array called name in `data`, of type A, with `components` components and `tuples`
-    // tuples.
-    template <class A>
-    A* array(vtkFieldData* data, const char* name, int components, vtkIdType tuples) const {
-        vtkAbstractArray* raw = data->GetAbstractArray(name);
-        if (!raw) fail(fmt::format("not an hmcr solution (no {} array)", name));
-        A* a = A::SafeDownCast(raw);
-        if (!a) {
-            const vtkNew<A> wanted;  // an instance only for its type's name
-            fail(fmt::format("array {} has type {}, not {}", name, raw->GetDataTypeAsString(),
-                             wanted->GetDataTypeAsString()));
-        }
-        if (a->GetNumberOfComponents() != components || a->GetNumberOfTuples() != tuples) {
-            fail(fmt::format("array {} has {} tuples of {} components; expected {} of {}", name,
-                             a->GetNumberOfTuples(), a->GetNumberOfComponents(), tuples,
-                             components));
-        }
-        return a;
-    }
-
-    template <class T>
-    T finite_at_least(T value, T lowest, const char* what) const {
-        if (!(std::isfinite(double(value)) && value >= lowest)) {
-            fail(fmt::format("{} {} is not a finite number of at least {}", what, value, lowest));
-        }
-        return value;
-    }
-
-private:
-    std::string m_path;
-};
-
-// Reads the XML with VTK's own messages kept off the console: our one line says it.
-vtkSmartPointer<vtkPolyData> read_polydata(const fs::path& path, const VtpChecker& check) {
-    silence_vtk_console();
-    auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    bool failed = false;
-    auto on_error = vtkSmartPointer<vtkCallbackCommand>::New();
-    on_error->SetClientData(&failed);
-    on_error->SetCallback(
-        [](vtkObject*, unsigned long, void* flag, void*) { *static_cast<bool*>(flag) = true; });
-    reader->AddObserver(vtkCommand::ErrorEvent, on_error);
-    reader->AddObserver(vtkCommand::WarningEvent, on_error);
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
-    if (failed || reader->GetErrorCode() != 0 || !data)
-        check.fail("cannot read it as VTK PolyData");
-    return data;
-}
 
 void read_points(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
     const vtkIdType n = data->GetNumberOfPoints();
@@ -158,47 +94,26 @@ void read_cell_data(vtkPolyData* data, const VtpChecker& check, std::uint64_t pa
     }
 }
 
-std::string string_field(vtkFieldData* fd, const char* name, const VtpChecker& check) {
-    auto* a = vtkStringArray::SafeDownCast(fd->GetAbstractArray(name));
-    if (!a || a->GetNumberOfValues() != 1) {
-        check.fail(
-            fmt::format("no {} field: not a solution of this version of hmcr (solve again)", name));
-    }
-    return a->GetValue(0);
-}
-
 template <class A>
 auto value_field(vtkFieldData* fd, const char* name, const VtpChecker& check) {
     return check.array<A>(fd, name, 1, 1)->GetValue(0);
 }
 
-// A 64-bit unsigned field: VTK reads UInt64 back as its own unsigned long type, so the check is
-// on the data type, not the array class.
-std::uint64_t count_field(vtkFieldData* fd, const char* name, const VtpChecker& check) {
-    vtkAbstractArray* a = fd->GetAbstractArray(name);
-    if (!a) check.fail(fmt::format("not an hmcr solution (no {} field)", name));
-    const int type = a->GetDataType();
-    const bool unsigned64 =
-        (type == VTK_UNSIGNED_LONG || type == VTK_UNSIGNED_LONG_LONG) && a->GetDataTypeSize() == 8;
-    if (!unsigned64 || a->GetNumberOfComponents() != 1 || a->GetNumberOfTuples() != 1) {
-        check.fail(fmt::format("field {} is not one unsigned 64-bit count", name));
-    }
-    return a->GetVariantValue(0).ToTypeUInt64();
-}
+constexpr const char* kOldSolution = "not a solution of this version of hmcr (solve again)";
 
 VtpMetadata read_metadata(vtkPolyData* data, const VtpChecker& check) {
     vtkFieldData* fd = data->GetFieldData();
     VtpMetadata meta;
-    meta.scene = string_field(fd, "Scene", check);
-    meta.geometry_hash = string_field(fd, "GeometryHash", check);
-    meta.oracle = string_field(fd, "Oracle", check);
-    meta.patch_count = count_field(fd, "PatchCount", check);
+    meta.scene = check.string_field(fd, "Scene", kOldSolution);
+    meta.geometry_hash = check.string_field(fd, "GeometryHash", kOldSolution);
+    meta.oracle = check.string_field(fd, "Oracle", kOldSolution);
+    meta.patch_count = check.count_field(fd, "PatchCount");
     meta.epsilon = value_field<vtkDoubleArray>(fd, "Epsilon", check);
-    meta.lines = count_field(fd, "Lines", check);
-    meta.rays = count_field(fd, "Rays", check);
-    meta.seed = count_field(fd, "Seed", check);
-    meta.element_count = count_field(fd, "ElementCount", check);
-    meta.iterations = count_field(fd, "Iterations", check);
+    meta.lines = check.count_field(fd, "Lines");
+    meta.rays = check.count_field(fd, "Rays");
+    meta.seed = check.count_field(fd, "Seed");
+    meta.element_count = check.count_field(fd, "ElementCount");
+    meta.iterations = check.count_field(fd, "Iterations");
     meta.time_value = value_field<vtkDoubleArray>(fd, "TimeValue", check);
     return meta;
 }
@@ -207,10 +122,6 @@ VtpMetadata read_metadata(vtkPolyData* data, const VtpChecker& check) {
 
 ShadedMesh read_vtp(const fs::path& path, VtpMetadata* metadata) {
     const VtpChecker check(path);
-    std::error_code ec;
-    if (!fs::exists(path, ec)) check.fail("no such file");
-    if (!fs::is_regular_file(path, ec)) check.fail("is not a regular file");
-    check_vtp_envelope(path);
     const vtkSmartPointer<vtkPolyData> data = read_polydata(path, check);
     if (data->GetNumberOfVerts() || data->GetNumberOfLines() || data->GetNumberOfStrips()) {
         check.fail("has cells that are not polygons (vertices, lines or strips)");
