@@ -20,6 +20,7 @@ struct Command {
 Command solve_command(CLI::App& app, const std::string& command_line);
 Command render_command(CLI::App& app);
 Command reference_command(CLI::App& app, const std::string& command_line);
+Command error_command(CLI::App& app);
 Command study_command(CLI::App& app);
 Command plot_command(CLI::App& app);
 Command info_command(CLI::App& app);

@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
     const std::vector<Command> commands = {solve_command(app, command_line),
                                            render_command(app),
                                            reference_command(app, command_line),
+                                           error_command(app),
                                            study_command(app),
                                            plot_command(app),
                                            info_command(app),

@@ -92,7 +92,6 @@ void to_json(nlohmann::json& j, const ImageErrors& e) {
 }
 
 void from_json(const nlohmann::json& j, ImageErrors& e) {
-    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     constexpr double kInf = std::numeric_limits<double>::infinity();
     e = {json_non_negative(j, "rmse_a", kNaN), json_non_negative(j, "rmse_p", kNaN),
          json_non_negative(j, "psnr_a", kInf), json_non_negative(j, "psnr_p", kInf)};

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rays/embree_scene.h"
+#include "studies/solution_probe.h"
 #include "viz/shaded_tracer.h"
 
 namespace hmcr {
@@ -20,7 +21,7 @@ namespace {
 // Sums of one block of reference triangles; blocks are fixed, so the total is deterministic.
 struct Partial {
     double squared_error = 0, squared_reference = 0;
-    std::size_t samples = 0, unmatched = 0, nearest = 0;
+    std::size_t samples = 0, unmatched = 0, nearest = 0, unlit = 0;
 
     void add(const Partial& o) {
         squared_error += o.squared_error;
@@ -28,102 +29,13 @@ struct Partial {
         samples += o.samples;
         unmatched += o.unmatched;
         nearest += o.nearest;
+        unlit += o.unlit;
     }
-};
-
-// The closest point of triangle (a, b, c) to p as barycentric weights of b and c (Ericson,
-// Real-Time Collision Detection, 5.1.5: the Voronoi regions of vertices, edges and face).
-Vec2 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-    if (d1 <= 0 && d2 <= 0) return {0, 0};
-    const Vec3 bp = p - b;
-    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-    if (d3 >= 0 && d4 <= d3) return {1, 0};
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return {d1 / (d1 - d3), 0};
-    const Vec3 cp = p - c;
-    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-    if (d6 >= 0 && d5 <= d6) return {0, 1};
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return {0, d2 / (d2 - d6)};
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-        const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return {1 - w, w};
-    }
-    const double denominator = va + vb + vc;
-    return {vb / denominator, vc / denominator};
-}
-
-// Looks up the solution's Gouraud radiosity at a point of a given patch (see the header).
-struct SolutionProbe {
-    const ShadedTracer& tracer;
-    const ShadedMesh& solution;
-    double delta;
-    // The solution's cells of each (patch, side), for points the rays do not find.
-    std::vector<std::size_t> first;  // by 2 * patch + side, into `cells`
-    std::vector<std::size_t> cells;
-
-    SolutionProbe(const ShadedTracer& t, const ShadedMesh& s, double d)
-        : tracer(t), solution(s), delta(d) {
-        std::size_t keys = 0;
-        for (std::size_t c = 0; c < s.cell_count(); ++c) {
-            keys = std::max(keys, key(s.patch_id[c], cell_side(s, c)) + 1);
-        }
-        first.assign(keys + 1, 0);
-        for (std::size_t c = 0; c < s.cell_count(); ++c)
-            ++first[key(s.patch_id[c], cell_side(s, c)) + 1];
-        for (std::size_t k = 0; k < keys; ++k) first[k + 1] += first[k];
-        cells.resize(s.cell_count());
-        std::vector<std::size_t> next(first.begin(), first.end() - 1);
-        for (std::size_t c = 0; c < s.cell_count(); ++c)
-            cells[next[key(s.patch_id[c], cell_side(s, c))]++] = c;
-    }
-    static std::size_t key(int patch, std::uint8_t side) { return 2 * std::size_t(patch) + side; }
-
-    // `normal` points out of the reference cell's side, so the ray from in front meets the
-    // solution's cell of that side.
-    std::optional<Rgb> at(const Vec3& p, const Vec3& normal, int patch, std::uint8_t side,
-                          bool& by_ray) const {
-        by_ray = true;
-        for (const double from : {1.0, -1.0}) {
-            const auto hit = tracer.hit_along(p + from * delta * normal, -from * normal);
-            if (hit && solution.patch_id[hit->cell] == patch &&
-                cell_side(solution, hit->cell) == side) {
-                return hit->radiosity;
-            }
-        }
-        by_ray = false;
-        return nearest(p, patch, side);
-    }
-
-    // The Gouraud value at the closest point of the patch side's cells within delta of p: a
-    // point at an edge between patches, which the tracer's float arithmetic may put on the
-    // neighbour (a light tile in a ceiling), is still its own patch's.
-    std::optional<Rgb> nearest(const Vec3& p, int patch, std::uint8_t side) const {
-        const std::size_t k = key(patch, side);
-        if (k + 1 >= first.size()) return std::nullopt;
-        double best = delta * delta;
-        std::optional<Rgb> value;
-        for (std::size_t i = first[k]; i < first[k + 1]; ++i) {
-            const std::size_t c = cells[i];
-            const auto v0 = solution.offsets[c], end = solution.offsets[c + 1];
-            const auto corner = [&](std::int64_t s) { return solution.connectivity[s]; };
-            for (auto s = v0 + 1; s + 1 < end; ++s) {
-                const Vec3 &a = solution.points[corner(v0)], &b = solution.points[corner(s)],
-                           &d = solution.points[corner(s + 1)];
-                const Vec2 w = closest_on_triangle(p, a, b, d);
-                const Vec3 q = (1 - w.x() - w.y()) * a + w.x() * b + w.y() * d;
-                const double distance = (q - p).squaredNorm();
-                if (distance >= best) continue;
-                best = distance;
-                value = Rgb((1 - w.x() - w.y()) * solution.point_radiosity[corner(v0)] +
-                            w.x() * solution.point_radiosity[corner(s)] +
-                            w.y() * solution.point_radiosity[corner(s + 1)]);
-            }
-        }
-        return value;
+    void count(SolutionProbe::Found found) {
+        ++samples;
+        unmatched += found == SolutionProbe::Found::unmatched;
+        nearest += found == SolutionProbe::Found::nearest;
+        unlit += found == SolutionProbe::Found::unlit;
     }
 };
 
@@ -173,16 +85,13 @@ Partial integrate_triangle(const ShadedMesh& ref, const FanTriangle& tri, const 
     const int patch = ref.patch_id[tri.cell];
     const std::uint8_t side = cell_side(ref, tri.cell);
     const std::vector<Rgb>& emission = side == kBack ? options.back_emission : options.emission;
+    const Rgb e = emission.empty() ? Rgb::Zero() : emission[std::size_t(patch)];
     for (const Vec2& st : points) {
         const Rgb b_ref = (1 - st.x() - st.y()) * b0 + st.x() * b1 + st.y() * b2;
-        bool by_ray = true;
-        const auto b_sol = probe.at(p0 + st.x() * e1 + st.y() * e2, normal, patch, side, by_ray);
-        if (!b_sol) ++sum.unmatched;
-        if (b_sol && !by_ray) ++sum.nearest;
-        sum.squared_error += weight * (b_sol.value_or(Rgb::Zero()) - b_ref).matrix().squaredNorm();
-        const Rgb reflected = emission.empty() ? b_ref : Rgb(b_ref - emission[std::size_t(patch)]);
-        sum.squared_reference += weight * reflected.matrix().squaredNorm();
-        ++sum.samples;
+        const auto b_sol = probe.value(p0 + st.x() * e1 + st.y() * e2, normal, patch, side, e);
+        sum.count(b_sol.found);
+        sum.squared_error += weight * (b_sol.radiosity - b_ref).matrix().squaredNorm();
+        sum.squared_reference += weight * (b_ref - e).matrix().squaredNorm();
     }
     return sum;
 }
@@ -201,9 +110,34 @@ std::string ObjectErrorOptions::to_string() const {
 
 std::string ObjectError::to_string() const {
     std::ostringstream s;
-    s << "ObjectError{relative_l2=" << relative_l2 << ", samples=" << samples
-      << ", unmatched=" << unmatched << ", nearest=" << nearest << "}";
+    s << "ObjectError{relative_l2=" << relative_l2 << ", standard_error=" << standard_error
+      << ", samples=" << samples << ", unmatched=" << unmatched << ", nearest=" << nearest
+      << ", unlit=" << unlit << "}";
     return s.str();
+}
+
+void SideErrors::add(std::uint32_t patch, std::uint8_t side, double squared_error) {
+    const std::size_t key = 2 * std::size_t(patch) + side;
+    if (key >= m_sum.size()) m_sum.resize(key + 1, 0.0);
+    m_sum[key] += squared_error;
+}
+
+std::vector<PatchError> SideErrors::largest(double total) const {
+    std::vector<PatchError> all;
+    if (!(total > 0)) return all;
+    for (std::size_t k = 0; k < m_sum.size(); ++k) {
+        if (m_sum[k] != 0)
+            all.push_back({std::uint32_t(k / 2), std::uint8_t(k % 2), m_sum[k] / total});
+    }
+    // Largest first; ties by patch and side, so the list is the same for any order of adding.
+    const auto before = [](const PatchError& a, const PatchError& b) {
+        if (a.share != b.share) return a.share > b.share;
+        return std::pair(a.patch, a.side) < std::pair(b.patch, b.side);
+    };
+    const std::size_t n = std::min(all.size(), kLargestPatches);
+    std::partial_sort(all.begin(), all.begin() + std::ptrdiff_t(n), all.end(), before);
+    all.resize(n);
+    return all;
 }
 
 ObjectError object_space_error(const ShadedMesh& solution, const ShadedMesh& reference,
@@ -230,24 +164,38 @@ ObjectError object_space_error(const ShadedTracer& tracer, const ShadedMesh& sol
     const std::vector<FanTriangle> triangles = fan_triangulate(reference);
     std::vector<Vec3> normals(reference.cell_count());
     for (std::size_t c = 0; c < normals.size(); ++c) normals[c] = cell_normal(reference, c);
-    const SolutionProbe probe{tracer, solution, 10 * tracer.offset()};
+    const SolutionProbe probe(tracer, solution);
     const std::vector<Vec2> points = quadrature_points(options.subdivisions);
 
     constexpr std::size_t kBlock = 256;
     std::vector<Partial> blocks((triangles.size() + kBlock - 1) / kBlock);
+    std::vector<double> triangle_error(triangles.size(), 0.0);
     tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t b) {
         set_tracing_float_mode();
         const std::size_t end = std::min(triangles.size(), (b + 1) * kBlock);
         for (std::size_t t = b * kBlock; t < end; ++t) {
             const FanTriangle& tri = triangles[t];
-            blocks[b].add(
-                integrate_triangle(reference, tri, normals[tri.cell], probe, points, options));
+            const Partial p =
+                integrate_triangle(reference, tri, normals[tri.cell], probe, points, options);
+            triangle_error[t] = p.squared_error;
+            blocks[b].add(p);
         }
     });
     Partial total;
     for (const Partial& p : blocks) total.add(p);
+    SideErrors by_side;
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        const std::uint32_t cell = triangles[t].cell;
+        by_side.add(std::uint32_t(reference.patch_id[cell]), cell_side(reference, cell),
+                    triangle_error[t]);
+    }
 
-    ObjectError out{0, total.samples, total.unmatched, total.nearest};
+    ObjectError out;
+    out.samples = total.samples;
+    out.unmatched = total.unmatched;
+    out.nearest = total.nearest;
+    out.unlit = total.unlit;
+    out.largest = by_side.largest(total.squared_error);
     if (total.squared_reference > 0) {
         out.relative_l2 = std::sqrt(total.squared_error / total.squared_reference);
     } else if (total.squared_error > 0) {

@@ -28,10 +28,13 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "radiosity/shaded_mesh.h"
+#include "rays/patch.h"
 #include "viz/shaded_tracer.h"
 
 namespace hmcr {
@@ -51,13 +54,43 @@ struct ObjectErrorOptions {
     std::string to_string() const;
 };
 
+// A patch side's part of an object error's squared numerator.
+struct PatchError {
+    std::uint32_t patch = 0;
+    std::uint8_t side = kFront;
+    double share = 0;  // of the numerator; noise-corrected against a point reference
+};
+
+// The patches an ObjectError lists, the largest shares first.
+inline constexpr std::size_t kLargestPatches = 10;
+
 struct ObjectError {
-    double relative_l2 = 0;     // e above; 0 when both fields are 0, +inf when only B_ref is 0
+    double relative_l2 = 0;  // e above; 0 when both fields are 0, +inf when only B_ref is 0
+    // Its standard error from the reference's own noise, known against a point reference
+    // (studies/point_error.h); NaN against a mesh reference.
+    double standard_error = std::numeric_limits<double>::quiet_NaN();
     std::size_t samples = 0;    // quadrature points
     std::size_t unmatched = 0;  // points where the solution shows no surface of the same patch
     std::size_t nearest = 0;    // points the rays missed, found on their patch's nearest cell
+    // Points on a side the solution has no cell of at all, where the other side of the patch
+    // has cells: a back the solution's light never reached, whose radiosity is its emission E
+    // (0 but for a glowing back). They count with B_sol = E, not as unmatched.
+    std::size_t unlit = 0;
+    std::vector<PatchError> largest;  // at most kLargestPatches, largest share first
 
     std::string to_string() const;
+};
+
+// The squared error of each patch side, summed as an object error integrates, and the sides
+// holding the most of it.
+class SideErrors {
+public:
+    void add(std::uint32_t patch, std::uint8_t side, double squared_error);
+    // At most kLargestPatches sides with their share of `total`, largest first.
+    std::vector<PatchError> largest(double total) const;
+
+private:
+    std::vector<double> m_sum;  // by 2 * patch + side
 };
 
 // Throws std::invalid_argument on malformed meshes (patch_id missing for some cell) or options.

@@ -11,6 +11,8 @@
 #include "common/rgb_json.h"
 #include "common/text_file.h"
 #include "meshes/patch_mesh.h"
+#include "studies/point_error.h"
+#include "studies/point_reference.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
 #include "viz/solution_file.h"
@@ -78,8 +80,22 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progr
             image_errors(quantise(other, exposure), quantise(image, exposure));
         ref.views[v.name] = {std::move(image), exposure};
     }
+    if (o.check_points > 0) {
+        progress.stage("checking the mesh against points");
+        const PathTracer tracer(diffuse_patch_set(scene), PathOptions{});
+        std::uint64_t rays = 0;
+        const PointTarget points =
+            point_target(estimate_reference_points(scene, tracer, o.check_points, o.check_paths,
+                                                   seed, progress, ranks, rays),
+                         tracer.patches());
+        ref.discretisation = point_object_error(first_tracer, ref.mesh, points);
+    }
     ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return ref;
+}
+
+std::string scene_file(const Scene& scene) {
+    return std::filesystem::absolute(scene.source).lexically_normal().string();
 }
 
 std::vector<std::filesystem::path> reference_files(const std::filesystem::path& dir,
@@ -126,8 +142,18 @@ void write_reference(OutputSet& out, const std::filesystem::path& dir, const Sce
           {"decay", rgb_json(ref.truncation.decay)},
           {"relative_bias", rgb_json(ref.truncation.relative)},
           {"seed_difference", rgb_json(ref.seed_difference)}}},
+        {"discretisation",
+         {{"what",
+           "the first seed's solution measured against points traced independently of any "
+           "mesh (an object error, relative to the reflected radiosity, with its standard "
+           "error): what the uniform mesh and its noise leave out"},
+          {"check_points", ref.discretisation.samples},
+          {"check_paths", o.check_paths},
+          {"relative_l2", ref.discretisation.relative_l2},
+          {"standard_error", ref.discretisation.standard_error}}},
         {"seconds", ref.seconds},
-        {"scene", scene.name}};
+        {"scene", scene.name},
+        {"scene_file", scene_file(scene)}};
     write_text_atomically(out.temp(dir / "reference.json"), summary.dump(2) + "\n");
 }
 

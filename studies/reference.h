@@ -28,6 +28,9 @@
 
 namespace hmcr {
 
+inline constexpr std::uint64_t kDefaultCheckPoints = 20'000;
+inline constexpr std::uint64_t kDefaultCheckPaths = 256;
+
 struct ReferenceOptions {
     double max_area = 1e-4;  // m^2: every patch cut to elements no larger
     // The two solves: rays per seed, the first seed (the second is seed + 1), threads, stop.
@@ -43,6 +46,11 @@ struct ReferenceOptions {
     }();
     int samples_per_axis = 2;  // supersampling of the view images
     double crease_degrees = kCreaseDegrees;
+    // The check of the mesh's own discretisation: the first seed's solution measured against
+    // this many stratified points traced with check_paths paths each (studies/point_error.h);
+    // 0 for none.
+    std::uint64_t check_points = kDefaultCheckPoints;
+    std::uint64_t check_paths = kDefaultCheckPaths;
 };
 
 struct ViewImage {
@@ -61,6 +69,9 @@ struct Reference {
     // |reflected power of seed 2 - seed 1| / reflected power of seed 1, per channel.
     TruncationBias truncation;
     Rgb seed_difference = Rgb::Zero();
+    // The first seed's solution against the check points: its discretisation error and noise
+    // (samples 0 when not checked).
+    ObjectError discretisation;
     double seconds = 0;
 };
 
@@ -72,6 +83,10 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& options,
 // Object-space error options relative to the reflected radiosity B - E of the scene's patches
 // (studies/object_space_error.h): how references and studies compare solutions.
 ObjectErrorOptions reflected_error_options(const PatchMesh& mesh);
+
+// The scene's file as references record it (reference.json's "scene_file"), absolute, so that
+// `hmcr error` finds the scene from any folder.
+std::string scene_file(const Scene& scene);
 
 // The files write_reference writes for this scene.
 std::vector<std::filesystem::path> reference_files(const std::filesystem::path& dir,

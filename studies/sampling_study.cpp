@@ -297,7 +297,6 @@ nlohmann::json sampling_study_settings(const Scene& scene, const SamplingStudyOp
     const std::string reference_json = read_text_file(o.reference / "reference.json");
     return {{"scene", scene.name},
             {"geometry", geometry_hash(scene.mesh)},
-            {"reference", fs::absolute(o.reference).lexically_normal().string()},
             {"reference_json_hash", text_hash(reference_json)},
             {"spp_tolerance", t.spp_tolerance},
             {"max_spp", t.max_spp.value_or(0)},  // 0: the default

@@ -17,8 +17,6 @@
 namespace hmcr {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 // One column of table.md: a view's value, its format, which way is better (0: not an error).
 struct Column {
     const char* title;

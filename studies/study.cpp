@@ -21,7 +21,7 @@
 #include "rays/patch.h"
 #include "studies/cell_handout.h"
 #include "studies/plot_data.h"
-#include "studies/reference.h"
+#include "studies/reference_measure.h"
 #include "studies/traced_reference.h"
 #include "viz/paraview_collection.h"
 #include "viz/renderer.h"
@@ -32,24 +32,6 @@ namespace hmcr {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// What every cell is measured against, loaded once. A traced reference (studies/
-// traced_reference.h) has images but no mesh: its cells have no object-space error.
-struct StudyReference {
-    std::optional<ShadedMesh> mesh;
-    std::map<std::string, Image8> images;  // quantised with the view's exposure
-    std::map<std::string, double> exposure;
-};
-
-StudyReference load_reference(const std::filesystem::path& dir, const Scene& scene) {
-    StudyReference ref;
-    if (!is_traced_reference(dir)) ref.mesh = read_solution(dir / "reference.vtp", scene).mesh;
-    for (const auto& [name, view] : read_reference_views(dir, scene)) {
-        ref.exposure[name] = view.exposure;
-        ref.images[name] = quantise(view.image, view.exposure);
-    }
-    return ref;
-}
 
 // "study: budget 500 is given twice".
 template <class T>
@@ -86,7 +68,7 @@ void validate(const StudyOptions& o) {
 }
 
 // One cell to run, and where its result lives.
-struct CellTask {
+struct MeshingCell {
     const Oracle* oracle = nullptr;
     std::size_t budget = 0;
     std::uint64_t seed = 0;
@@ -111,7 +93,6 @@ public:
         together(Ranks::world(), [&] {
             if (Ranks::world().root()) m_tables.emplace(study_output_files(o), o.output);
         });
-        m_error_options = reflected_error_options(m_scene.mesh);
         m_settings = study_settings(m_scene, m_options);
     }
 
@@ -119,7 +100,7 @@ public:
 
 private:
     std::optional<CellResult> previous_cell(std::size_t index);
-    std::filesystem::path cell_file(const CellTask& t) const {
+    std::filesystem::path cell_file(const MeshingCell& t) const {
         return named_file(m_options.output / "cells", t.name, ".json");
     }
     // NAME.vtp and NAME-VIEW.png of a cell's solution (NAME: the cell's name) or of its frozen
@@ -132,18 +113,18 @@ private:
     }
     std::vector<std::filesystem::path> outputs(std::size_t index) const;
     CellResult compute(std::size_t index);
-    ObjectError measure(const Solution& solution, const CellTask& t, const std::string& name,
-                        std::map<std::string, ImageErrors>& views);
+    ObjectError measure(const Solution& solution, const MeshingCell& t, const std::string& name,
+                        std::map<std::string, ImageErrors>& views, double* finer_share = nullptr);
     void write_mesh_collection(OutputSet& out) const;
+    void check_resolution(const CellResult& cell, CellNotes& notes) const;
     std::string where(std::size_t index) const;
 
     const StudyOptions& m_options;
     Progress& m_progress;
     const Scene& m_scene;
-    std::vector<CellTask> m_tasks;
-    ObjectErrorOptions m_error_options;
+    std::vector<MeshingCell> m_tasks;
     nlohmann::json m_settings;
-    StudyReference m_reference;
+    LoadedReference m_reference;
     std::optional<OutputSet> m_tables;  // rank 0's
     // The probes this rank has solved, by oracle, seed and rays: the cells of the other budgets
     // search from the same start (radiosity/budget_search.h). Which cells a rank solved changes
@@ -157,7 +138,7 @@ std::string StudyRunner::where(std::size_t index) const {
 }
 
 std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
-    const CellTask& t = m_tasks[index];
+    const MeshingCell& t = m_tasks[index];
     CellFileRule<CellResult> rule;
     rule.parse = [](const nlohmann::json& j) { return cell_from_json(j); };
     rule.is_this_cell = [&](const CellResult& c) {
@@ -172,7 +153,7 @@ std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
 
 // Every file a cell writes, for the checks before any cell is computed.
 std::vector<std::filesystem::path> StudyRunner::outputs(std::size_t index) const {
-    const CellTask& t = m_tasks[index];
+    const MeshingCell& t = m_tasks[index];
     std::vector<std::string> names{t.name};
     if (cell_mesh_rays(m_options, t.budget) > 0) names.push_back(t.name + "-mesh");
     std::vector<std::filesystem::path> files{cell_file(t)};
@@ -209,7 +190,7 @@ void StudyRunner::run() {
 // meshes.pvd: every cell's mesh as one time step, to step through them in one ParaView session.
 void StudyRunner::write_mesh_collection(OutputSet& out) const {
     std::vector<CollectionEntry> entries;
-    for (const CellTask& t : m_tasks) {
+    for (const MeshingCell& t : m_tasks) {
         const std::filesystem::path mesh = mesh_file(t.name);
         std::error_code ec;
         if (std::filesystem::is_regular_file(mesh, ec)) {
@@ -220,7 +201,7 @@ void StudyRunner::write_mesh_collection(OutputSet& out) const {
 }
 
 CellResult StudyRunner::compute(std::size_t index) {
-    const CellTask& t = m_tasks[index];
+    const MeshingCell& t = m_tasks[index];
     CellResult cell;
     cell.settings = m_settings;
     cell.scene = m_scene.name;
@@ -243,7 +224,8 @@ CellResult StudyRunner::compute(std::size_t index) {
         cell.epsilon = r.solution.stats.epsilon;
         cell.leaves = r.solution.stats.leaves;
         notes.note("rendering and measuring");
-        cell.object_error = measure(r.solution, t, t.name, cell.views);
+        cell.object_error = measure(r.solution, t, t.name, cell.views, &cell.finer_share);
+        check_resolution(cell, notes);
         cell.mesh_rays = cell_mesh_rays(m_options, t.budget);
         if (cell.mesh_rays > 0) {
             notes.note(fmt::format("mesh error: the mesh frozen, {} rays", cell.mesh_rays));
@@ -259,30 +241,44 @@ CellResult StudyRunner::compute(std::size_t index) {
     return cell;
 }
 
+// A cell whose leaves are finer than the reference resolves: a note, or with --strict a refusal
+// (the cell is not kept: its errors would have a floor the reference sets).
+void StudyRunner::check_resolution(const CellResult& cell, CellNotes& notes) const {
+    if (!(cell.finer_share > kFinerShareLimit)) return;
+    const std::string what = fmt::format(
+        "{:.0f}% of the area is in leaves finer than the reference resolves (more than {:.0f}%): "
+        "its errors are bounded below by the reference's; make a finer one (hmcr reference "
+        "--for-budget {})",
+        100 * cell.finer_share, 100 * kFinerShareLimit, cell.budget);
+    if (m_options.strict)
+        throw InputError(cell_name(cell.scene, cell.oracle, cell.budget, cell.seed) + ": " + what);
+    notes.note("warning: " + what);
+}
+
 // The mesh file NAME.vtp, the images NAME-VIEW.png and the metrics of a solution: the image
 // errors of every view into `views`, the object-space error returned.
-ObjectError StudyRunner::measure(const Solution& solution, const CellTask& t,
-                                 const std::string& name,
-                                 std::map<std::string, ImageErrors>& views) {
+ObjectError StudyRunner::measure(const Solution& solution, const MeshingCell& t,
+                                 const std::string& name, std::map<std::string, ImageErrors>& views,
+                                 double* finer_share) {
     const ShadedMesh mesh = write_solution(mesh_file(name), solution, m_scene,
                                            m_options.crease_degrees, double(t.budget));
-    const ShadedTracer tracer(mesh);
-    const RenderOptions render_options{m_options.samples_per_axis};
-    for (View v : m_scene.views) {
-        const Image8& ref = m_reference.images.at(v.name);
-        v.width = ref.width;  // a traced reference may be smaller than the view
-        v.height = ref.height;
-        const Image8 image =
-            quantise(render(tracer, v, render_options), m_reference.exposure.at(v.name));
-        write_png(image_file(name, v), image);
-        views[v.name] = image_errors(image, ref);
+    SolutionErrors e = measure_solution(m_reference, mesh, m_scene, m_options.samples_per_axis);
+    for (const View& v : m_scene.views) write_png(image_file(name, v), e.images.at(v.name));
+    views = std::move(e.views);
+    if (finer_share) *finer_share = e.finer_share;
+    return e.object;
+}
+
+// The repairs as a cell records them: each kind's first place as FILE:LINE without the folder,
+// so that a study resumes from any working folder and with absolute or relative scene paths
+// alike (the geometry hash says the scene is the same).
+nlohmann::json portable_repairs(nlohmann::json repairs) {
+    for (auto& [kind, value] : repairs.items()) {
+        if (!value.is_object() || !value.contains("first")) continue;
+        const std::string first = value["first"].get<std::string>();
+        value["first"] = std::filesystem::path(first).filename().string();
     }
-    if (m_reference.mesh) {
-        return object_space_error(tracer, mesh, *m_reference.mesh, m_error_options);
-    }
-    ObjectError none;  // a traced reference has no mesh: not measured
-    none.relative_l2 = std::numeric_limits<double>::quiet_NaN();
-    return none;
+    return repairs;
 }
 
 }  // namespace
@@ -302,8 +298,7 @@ nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
             {"geometry", geometry_hash(scene.mesh)},
             // Whether the scene was repaired (a strict load of it would be refused) and how.
             {"repaired", !scene.repairs.empty()},
-            {"repairs", scene.repairs.to_json()},
-            {"reference", std::filesystem::absolute(o.reference).lexically_normal().string()},
+            {"repairs", portable_repairs(scene.repairs.to_json())},
             {"reference_json_hash", text_hash(reference_json)},
             {"solve", solve},
             {"budget_tolerance", o.budget_tolerance},

@@ -30,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -67,6 +68,9 @@ struct StudyOptions {
     // A folder's cells must all be made with the same settings (study_settings): a rerun with
     // other settings is refused, unless this is set, when such cells are computed again.
     bool redo_other_settings = false;
+    // Refuse a cell whose leaves are finer than the reference resolves (kFinerShareLimit of
+    // studies/reference_resolution.h) instead of warning.
+    bool strict = false;
 };
 
 struct CellResult {
@@ -82,6 +86,9 @@ struct CellResult {
     double seconds = 0;  // wall time of the budget search (every probe)
     std::map<std::string, ImageErrors> views;
     ObjectError object_error;
+    // The share of the solution's area in leaves finer than the reference resolves there
+    // (studies/reference_resolution.h); NaN where the reference has no resolution (traced).
+    double finer_share = std::numeric_limits<double>::quiet_NaN();
     std::uint64_t rays = 0;       // of the cell's solves
     std::uint64_t mesh_rays = 0;  // of the frozen re-solve; 0: no mesh error measured
     std::map<std::string, ImageErrors> mesh_views;

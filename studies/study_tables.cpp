@@ -10,6 +10,7 @@
 #include "common/atomic_file.h"
 #include "studies/cell_errors.h"
 #include "studies/mean_se.h"
+#include "studies/object_error_json.h"
 #include "studies/plot_data.h"
 #include "studies/study.h"
 #include "studies/summary_table.h"
@@ -18,18 +19,15 @@
 namespace hmcr {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 // One column of table.md: how a cell gives its value, how it prints, which way is better.
-struct Column {
+struct MeshingColumn {
     const char* title;
     std::function<double(const CellResult&)> value;
     const char* format;
     int better;  // -1: lower is better, +1: higher, 0: not an error column
 };
 
-std::vector<Column> md_columns() {
+std::vector<MeshingColumn> md_columns() {
     return {
         {"RMSEa", [](const CellResult& c) { return view_mean(c, &ImageErrors::rmse_a); }, "{:.2f}",
          -1},
@@ -67,13 +65,14 @@ std::vector<std::string> oracle_order(const std::vector<CellResult>& cells) {
 
 // One budget's table: a row per oracle, mean ± se of every column over its successful seeds.
 SummaryTable budget_table(std::size_t budget, const std::vector<CellResult>& cells) {
-    const std::vector<Column> columns = md_columns();
+    const std::vector<MeshingColumn> columns = md_columns();
     SummaryTable table;
     table.row_title = "oracle";
-    for (const Column& col : columns) table.columns.push_back({col.title, col.format, col.better});
+    for (const MeshingColumn& col : columns)
+        table.columns.push_back({col.title, col.format, col.better});
     for (const std::string& oracle : oracle_order(cells)) {
         SummaryRow row{oracle, "", {}};
-        for (const Column& col : columns) {
+        for (const MeshingColumn& col : columns) {
             std::vector<double> v;
             for (const CellResult* c : select(cells, budget, oracle, true))
                 if (const double x = col.value(*c); !std::isnan(x)) v.push_back(x);
@@ -175,17 +174,6 @@ std::string csv_table(const std::vector<std::string>& views, const std::vector<C
     return out;
 }
 
-nlohmann::json object_error_json(const ObjectError& e) {
-    return {{"relative_l2", e.relative_l2}, {"samples", e.samples}, {"unmatched", e.unmatched}};
-}
-
-// null: +inf (only B_ref is 0) when measured, NaN when not (a traced reference has no mesh).
-ObjectError object_error_from_json(const nlohmann::json& oe) {
-    const std::size_t samples = json_count(oe, "samples");
-    return {json_non_negative(oe, "relative_l2", samples > 0 ? kInf : kNaN), samples,
-            json_count(oe, "unmatched")};
-}
-
 std::map<std::string, ImageErrors> views_from_json(const nlohmann::json& views) {
     std::map<std::string, ImageErrors> out;
     for (const auto& [name, e] : views.items()) out[name] = e.get<ImageErrors>();
@@ -209,6 +197,7 @@ nlohmann::json cell_to_json(const CellResult& c) {
             {"seconds", c.seconds},
             {"views", nlohmann::json(c.views)},
             {"object_error", object_error_json(c.object_error)},
+            {"finer_share", json_finite_or_null(c.finer_share)},
             {"rays", c.rays},
             {"mesh_rays", c.mesh_rays},
             // Not measured (--mesh-rays 0): null, not a perfect 0.
@@ -234,6 +223,9 @@ CellResult cell_from_json(const nlohmann::json& j) {
     c.seconds = json_non_negative(j, "seconds", kNaN);
     c.views = views_from_json(j.at("views"));
     c.object_error = object_error_from_json(j.at("object_error"));
+    c.finer_share = json_non_negative(j, "finer_share", kNaN);
+    if (c.finer_share > 1)
+        throw InputError(fmt::format("finer_share: {} is above 1", c.finer_share));
     c.rays = json_count(j, "rays");
     c.mesh_rays = json_count(j, "mesh_rays");
     if (c.mesh_rays > 0) {

@@ -16,6 +16,9 @@
 
 namespace hmcr {
 
+// A value not measured (or a failed cell's), written as null in JSON and empty in CSV.
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 // The number at `key`, or `missing` where it is null or absent.
 inline double json_number(const nlohmann::json& j, const char* key, double missing) {
     const auto it = j.find(key);
@@ -51,6 +54,12 @@ inline std::string json_status(const nlohmann::json& j) {
         throw InputError("status: " + quote(status) + " is neither \"ok\" nor \"failed\"");
     }
     return status;
+}
+
+// A finite number, or null (JSON has no NaN or infinity; stored as null in memory too, so that a
+// cell read back compares equal to the one written).
+inline nlohmann::json json_finite_or_null(double x) {
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
 // NaN is an empty field; infinities are "inf" and "-inf".

@@ -17,17 +17,40 @@ namespace hmcr {
 TracedReference compute_traced_reference(const Scene& scene, const std::vector<View>& views,
                                          TraceOptions options, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    options.sampler = &uniform_criterion();
     const PathTracer tracer(build_patch_set(scene.mesh), options.path);
     TracedReference ref;
+    ref.views = trace_views(tracer, views, options, progress);
+    ref.seconds = seconds_since(start);
+    return ref;
+}
+
+std::map<std::string, TracedView> trace_views(const PathTracer& tracer,
+                                              const std::vector<View>& views, TraceOptions options,
+                                              Progress& progress) {
+    options.sampler = &uniform_criterion();
+    std::map<std::string, TracedView> out;
     for (const View& v : views) {
         PrefixedProgress view_progress(progress, "view " + v.name + ": ");
         TraceResult r = trace_image(tracer, v, options, view_progress);
         const double exposure = exposure_from(r.image);
-        ref.views[v.name] = {std::move(r.image), exposure, r.rays, r.seconds};
+        out[v.name] = {std::move(r.image), exposure, r.rays, r.seconds};
     }
-    ref.seconds = seconds_since(start);
-    return ref;
+    return out;
+}
+
+nlohmann::json write_view_images(OutputSet& out, const std::filesystem::path& dir,
+                                 const std::map<std::string, TracedView>& views) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [name, v] : views) {
+        write_pfm(out.temp(named_file(dir / "views", name, ".pfm")), v.image);
+        write_png(out.temp(named_file(dir / "views", name, ".png")), v.image, v.exposure);
+        j[name] = {{"exposure", v.exposure},
+                   {"width", v.image.width},
+                   {"height", v.image.height},
+                   {"rays", v.rays},
+                   {"seconds", v.seconds}};
+    }
+    return j;
 }
 
 std::vector<std::filesystem::path> traced_reference_files(const std::filesystem::path& dir,
@@ -43,16 +66,7 @@ std::vector<std::filesystem::path> traced_reference_files(const std::filesystem:
 void write_traced_reference(OutputSet& out, const std::filesystem::path& dir, const Scene& scene,
                             const TracedReference& ref, const TraceOptions& o,
                             const std::string& command) {
-    nlohmann::json views = nlohmann::json::object();
-    for (const auto& [name, v] : ref.views) {
-        write_pfm(out.temp(named_file(dir / "views", name, ".pfm")), v.image);
-        write_png(out.temp(named_file(dir / "views", name, ".png")), v.image, v.exposure);
-        views[name] = {{"exposure", v.exposure},
-                       {"width", v.image.width},
-                       {"height", v.image.height},
-                       {"rays", v.rays},
-                       {"seconds", v.seconds}};
-    }
+    const nlohmann::json views = write_view_images(out, dir, ref.views);
     const nlohmann::json j = {{"command", command},
                               {"hmcr_version", HMCR_VERSION},
                               {"reference",
@@ -70,11 +84,15 @@ void write_traced_reference(OutputSet& out, const std::filesystem::path& dir, co
     write_text_atomically(out.temp(dir / "reference.json"), j.dump(2) + "\n");
 }
 
-bool is_traced_reference(const std::filesystem::path& dir) {
+ReferenceKind reference_kind(const std::filesystem::path& dir) {
     return read_json_file(dir / "reference.json", [](const nlohmann::json& j) {
         const nlohmann::json& reference = json_member(j, {"reference"});
         const auto kind = json_object(reference, "reference").find("kind");
-        return kind != reference.end() && json_string(*kind, "reference.kind") == "traced";
+        if (kind == reference.end()) return ReferenceKind::mesh;
+        const std::string name = json_string(*kind, "reference.kind");
+        if (name == "traced") return ReferenceKind::traced;
+        if (name == "points") return ReferenceKind::points;
+        throw InputError("reference.kind " + quote(name) + " is not traced or points");
     });
 }
 

@@ -45,6 +45,17 @@ struct TracedReference {
 TracedReference compute_traced_reference(const Scene& scene, const std::vector<View>& views,
                                          TraceOptions options, Progress& progress = no_progress());
 
+// Every view traced by `tracer` with `options` (the sampler forced to uniform), each a stage of
+// `progress`, with the exposure fixed from its image.
+std::map<std::string, TracedView> trace_views(const PathTracer& tracer,
+                                              const std::vector<View>& views, TraceOptions options,
+                                              Progress& progress);
+
+// views/VIEW.pfm and .png of each view into `out`; returns reference.json's "views" object
+// (each view's exposure, size, rays and seconds).
+nlohmann::json write_view_images(OutputSet& out, const std::filesystem::path& dir,
+                                 const std::map<std::string, TracedView>& views);
+
 // Every file write_traced_reference writes into `dir`, for the checks before the work.
 std::vector<std::filesystem::path> traced_reference_files(const std::filesystem::path& dir,
                                                           const Scene& scene);
@@ -55,9 +66,11 @@ void write_traced_reference(OutputSet& out, const std::filesystem::path& dir, co
                             const TracedReference& reference, const TraceOptions& options,
                             const std::string& command);
 
-// Whether the reference folder `dir` is a traced one (reference.json says "kind": "traced");
-// a radiosity reference (studies/reference.h) also has a mesh, reference.vtp.
-bool is_traced_reference(const std::filesystem::path& dir);
+// What a reference folder holds, from its reference.json's "kind": a radiosity reference's mesh
+// (studies/reference.h, no kind), a traced one's images alone ("traced"), or a point reference's
+// points and images ("points", studies/point_reference.h).
+enum class ReferenceKind { mesh, traced, points };
+ReferenceKind reference_kind(const std::filesystem::path& dir);
 
 // Every view of the scene read back from a reference folder of either kind: its linear image
 // (views/VIEW.pfm) and its exposure. Throws InputError naming the file when one is missing.

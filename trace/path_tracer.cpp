@@ -88,6 +88,14 @@ CameraSample PathTracer::trace(const Vec3& origin, const Vec3& direction, Rng& r
     return s;
 }
 
+Rgb PathTracer::reflected_radiosity(const Vec3& point, std::uint32_t patch, std::uint8_t side,
+                                    Rng& rng, std::uint32_t& rays) const {
+    // A Lambertian surface reflects the same radiance in every direction: any wo in front of
+    // the side will do, and its normal is one.
+    const Vertex v{point, patch, side, side_normal(m_set.patches[patch], side)};
+    return kPi * radiance(v, rng, rays);
+}
+
 // The reflected radiance leaving v towards the previous vertex, one path's estimate.
 Rgb PathTracer::radiance(Vertex v, Rng& rng, std::uint32_t& rays) const {
     Rgb sum = Rgb::Zero(), beta = Rgb::Ones();

@@ -69,7 +69,16 @@ public:
     // The caller's thread should have set_tracing_float_mode() (radiosity/embree_scene.h).
     CameraSample trace(const Vec3& origin, const Vec3& direction, Rng& rng) const;
 
+    // One path's estimate of the radiance a diffuse surface point reflects, times pi: the
+    // reflected radiosity B - E at `point` (on the plane of `patch`, on its `side`), for a
+    // surface whose material is diffuse (the radiosity engine's view). Its expectation is
+    // rho / pi times the integral of the incoming radiance L_in cos over the side's hemisphere,
+    // times pi; the same estimator as a camera path's from its first hit on.
+    Rgb reflected_radiosity(const Vec3& point, std::uint32_t patch, std::uint8_t side, Rng& rng,
+                            std::uint32_t& rays) const;
+
     const PathOptions& options() const { return m_options; }
+    const PatchSet& patches() const { return m_set; }
 
 private:
     struct Vertex;  // a surface point a path reflects at

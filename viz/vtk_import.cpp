@@ -41,24 +41,6 @@ void read_points(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
     }
 }
 
-void read_cells(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
-    const vtkIdType points = data->GetNumberOfPoints();
-    auto ids = vtkSmartPointer<vtkIdList>::New();
-    vtkCellArray* polys = data->GetPolys();
-    for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c) {
-        polys->GetCellAtId(c, ids);
-        if (ids->GetNumberOfIds() < 3)
-            check.fail(fmt::format("cell {} has fewer than 3 points", c));
-        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
-            const vtkIdType id = ids->GetId(k);
-            if (id < 0 || id >= points)
-                check.fail(fmt::format("cell {} names point {} of {}", c, id, points));
-            m.connectivity.push_back(id);
-        }
-        m.offsets.push_back(std::int64_t(m.connectivity.size()));
-    }
-}
-
 void read_cell_data(vtkPolyData* data, const VtpChecker& check, std::uint64_t patch_count,
                     ShadedMesh& m) {
     const vtkIdType n = vtkIdType(m.cell_count());
@@ -120,6 +102,24 @@ VtpMetadata read_metadata(vtkPolyData* data, const VtpChecker& check) {
 
 }  // namespace
 
+void read_polygon_cells(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
+    const vtkIdType points = data->GetNumberOfPoints();
+    auto ids = vtkSmartPointer<vtkIdList>::New();
+    vtkCellArray* polys = data->GetPolys();
+    for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c) {
+        polys->GetCellAtId(c, ids);
+        if (ids->GetNumberOfIds() < 3)
+            check.fail(fmt::format("cell {} has fewer than 3 points", c));
+        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
+            const vtkIdType id = ids->GetId(k);
+            if (id < 0 || id >= points)
+                check.fail(fmt::format("cell {} names point {} of {}", c, id, points));
+            m.connectivity.push_back(id);
+        }
+        m.offsets.push_back(std::int64_t(m.connectivity.size()));
+    }
+}
+
 ShadedMesh read_vtp(const fs::path& path, VtpMetadata* metadata) {
     const VtpChecker check(path);
     const vtkSmartPointer<vtkPolyData> data = read_polydata(path, check);
@@ -132,7 +132,7 @@ ShadedMesh read_vtp(const fs::path& path, VtpMetadata* metadata) {
     const VtpMetadata meta = read_metadata(data, check);
     ShadedMesh m;
     read_points(data, check, m);
-    read_cells(data, check, m);
+    read_polygon_cells(data, check, m);
     read_cell_data(data, check, meta.patch_count, m);
     if (m.cell_count() != meta.element_count) {
         check.fail(fmt::format("has {} cells but records {} elements", m.cell_count(),

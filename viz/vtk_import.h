@@ -5,6 +5,7 @@
 
 #include "radiosity/shaded_mesh.h"
 #include "viz/vtk_export.h"
+#include "viz/vtp_io.h"
 
 namespace hmcr {
 
@@ -13,5 +14,9 @@ namespace hmcr {
 // for a file that is missing, unreadable, not made by this version of hmcr, or inconsistent
 // (a PatchId out of range, a negative or NaN radiosity, a cell naming a point that is not there).
 ShadedMesh read_vtp(const std::filesystem::path& path, VtpMetadata* metadata = nullptr);
+
+// The polygons of `data` into m.offsets and m.connectivity, each checked to have 3 points or
+// more, all of them in the file (the part of read_vtp a foreign solution shares).
+void read_polygon_cells(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m);
 
 }  // namespace hmcr

@@ -26,11 +26,13 @@ json meshing_cell() {
     c.probes = {{1e-3, 21, 0.1}};
     c.seconds = 0.1;
     c.views["side"] = {1.5, 1.2, 44.6, 46.5};
-    c.object_error = {0.04, 768, 0};
+    c.object_error.relative_l2 = 0.04;
+    c.object_error.samples = 768;
     c.rays = 20000;
     c.mesh_rays = 1000000;
     c.mesh_views["side"] = {0.3, 0.3, 58.7, 58.7};
-    c.mesh_object_error = {0.03, 768, 0};
+    c.mesh_object_error.relative_l2 = 0.03;
+    c.mesh_object_error.samples = 768;
     return cell_to_json(c);
 }
 

@@ -22,7 +22,8 @@ CellResult meshing_cell(const std::string& oracle, std::size_t budget, std::size
     c.budget = budget;
     c.leaves = leaves;
     c.views["camera"] = {1, 3 * error, 40, 30};
-    c.object_error = {error, 10, 0};
+    c.object_error.relative_l2 = error;
+    c.object_error.samples = 10;
     return c;
 }
 
@@ -58,7 +59,8 @@ TEST(PlotData, MeshingPointsAreTheMeansAndStandardErrorsOfEachBudget) {
 TEST(PlotData, MeshPanelWhereMeasuredAndRmsepAgainstATracedReference) {
     CellResult c = meshing_cell("kl", 100, 100, 0.2);
     c.mesh_rays = 1000;
-    c.mesh_object_error = {0.1, 10, 0};
+    c.mesh_object_error.relative_l2 = 0.1;
+    c.mesh_object_error.samples = 10;
     EXPECT_EQ(panel(meshing_plot_data("box", {c}), 0, 1).at("title"), "mesh (frozen re-solve)");
     c.object_error.relative_l2 = std::numeric_limits<double>::quiet_NaN();  // traced reference
     const json traced = meshing_plot_data("box", {c});

@@ -107,7 +107,8 @@ CellResult cell(const std::string& oracle, std::size_t budget, std::uint64_t see
     c.leaves = budget + seed;
     c.epsilon = 1e-6;
     c.views["camera"] = {1 + error, 2 + error, 40 - error, 30 - error};
-    c.object_error = {error, 100, 0};
+    c.object_error.relative_l2 = error;
+    c.object_error.samples = 100;
     return c;
 }
 
