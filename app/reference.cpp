@@ -192,11 +192,12 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
     a->mesh_only.push_back(cmd->add_option("--samples", o.samples_per_axis,
                                            "mesh: n x n rays per pixel of the view images")
                                ->capture_default_str());
-    a->mesh_only.push_back(cmd->add_option("--check-points", o.check_points,
-                                           "mesh: points its discretisation is checked against "
-                                           "(0: none)")
-                               ->transform(count_notation())
-                               ->capture_default_str());
+    a->mesh_only.push_back(
+        cmd->add_option_function<std::uint64_t>(
+               "--check-points", [&o](const std::uint64_t& n) { o.check_points = n; },
+               "mesh: points its discretisation is checked against (0: none; default: 4 a "
+               "uniform element, at most 20000)")
+            ->transform(count_notation()));
     PointReferenceOptions& p = a->points;
     a->points_only.push_back(
         cmd->add_option("--points", p.points,

@@ -76,7 +76,7 @@ ObjectError point_object_error(const ShadedTracer& tracer, const ShadedMesh& sol
     const std::size_t n = t.points.points.size();
     const SolutionProbe probe(tracer, solution);
     std::vector<Terms> terms(n);
-    tbb::parallel_for(std::size_t(0), n, std::size_t(256), [&](std::size_t i) {
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
         set_tracing_float_mode();
         terms[i] = point_terms(probe, t, i);
     });

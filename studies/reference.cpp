@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -80,18 +81,29 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progr
             image_errors(quantise(other, exposure), quantise(image, exposure));
         ref.views[v.name] = {std::move(image), exposure};
     }
-    if (o.check_points > 0) {
+    if (const CheckSize check = check_size(o, ref.solution.stats.leaves); check.points > 0) {
         progress.stage("checking the mesh against points");
         const PathTracer tracer(diffuse_patch_set(scene), PathOptions{});
         std::uint64_t rays = 0;
         const PointTarget points =
-            point_target(estimate_reference_points(scene, tracer, o.check_points, o.check_paths,
-                                                   seed, progress, ranks, rays),
+            point_target(estimate_reference_points(scene, tracer, check.points, check.paths, seed,
+                                                   progress, ranks, rays),
                          tracer.patches());
         ref.discretisation = point_object_error(first_tracer, ref.mesh, points);
+        ref.check_paths = check.paths;
     }
     ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return ref;
+}
+
+CheckSize check_size(const ReferenceOptions& o, std::uint64_t elements) {
+    CheckSize c;
+    c.points = o.check_points.value_or(std::min(kMostCheckPoints, 4 * elements));
+    if (c.points == 0) return c;
+    // A path casts about 5 rays on the bundled rooms; two seeds.
+    const double paths = double(o.solver.rays) / (10.0 * 5 * 2 * double(c.points));
+    c.paths = std::uint64_t(std::clamp(paths, 16.0, 1024.0));
+    return c;
 }
 
 std::string scene_file(const Scene& scene) {
@@ -148,7 +160,7 @@ void write_reference(OutputSet& out, const std::filesystem::path& dir, const Sce
            "mesh (an object error, relative to the reflected radiosity, with its standard "
            "error): what the uniform mesh and its noise leave out"},
           {"check_points", ref.discretisation.samples},
-          {"check_paths", o.check_paths},
+          {"check_paths", ref.check_paths},
           {"relative_l2", ref.discretisation.relative_l2},
           {"standard_error", ref.discretisation.standard_error}}},
         {"seconds", ref.seconds},

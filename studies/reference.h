@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,9 @@
 
 namespace hmcr {
 
-inline constexpr std::uint64_t kDefaultCheckPoints = 20'000;
-inline constexpr std::uint64_t kDefaultCheckPaths = 256;
+// The check of a mesh reference's discretisation (check_size): by default at most this many
+// points, four a uniform element, with paths for about a tenth of the solve's rays.
+inline constexpr std::uint64_t kMostCheckPoints = 20'000;
 
 struct ReferenceOptions {
     double max_area = 1e-4;  // m^2: every patch cut to elements no larger
@@ -47,11 +49,16 @@ struct ReferenceOptions {
     int samples_per_axis = 2;  // supersampling of the view images
     double crease_degrees = kCreaseDegrees;
     // The check of the mesh's own discretisation: the first seed's solution measured against
-    // this many stratified points traced with check_paths paths each (studies/point_error.h);
-    // 0 for none.
-    std::uint64_t check_points = kDefaultCheckPoints;
-    std::uint64_t check_paths = kDefaultCheckPaths;
+    // this many stratified points (studies/point_error.h); 0 for none; none given: check_size's.
+    std::optional<std::uint64_t> check_points;
 };
+
+// The points and paths a point of the check of a reference of `elements` uniform elements
+// takes (docs/design.md §6.2).
+struct CheckSize {
+    std::uint64_t points = 0, paths = 0;
+};
+CheckSize check_size(const ReferenceOptions& options, std::uint64_t elements);
 
 struct ViewImage {
     Image image;      // linear radiance
@@ -72,6 +79,7 @@ struct Reference {
     // The first seed's solution against the check points: its discretisation error and noise
     // (samples 0 when not checked).
     ObjectError discretisation;
+    std::uint64_t check_paths = 0;
     double seconds = 0;
 };
 

@@ -8,61 +8,18 @@
 #include <functional>
 #include <stdexcept>
 
+#include "tests/support/shaded_grid.h"
+
 namespace hmcr {
 namespace {
 
-using Field = std::function<Rgb(const Vec3&)>;
+using test::append;
+using test::Field;
+using test::grid;
 
 // Embree's float barycentrics perturb the solution's values by about 1e-7 relative; the
 // quadrature is otherwise exact for the linear fields used here.
 constexpr double kTol = 1e-6;
-
-// The unit square [0,1]^2 at height z as an nx x ny grid of cells of one patch, quads or (when
-// `triangles`) each quad cut along its diagonal, counter-clockwise seen from +z unless
-// `facing_down`.
-ShadedMesh grid(int nx, int ny, const Field& field, bool triangles = false, double z = 0,
-                int patch = 0, bool facing_down = false) {
-    ShadedMesh m;
-    for (int j = 0; j <= ny; ++j) {
-        for (int i = 0; i <= nx; ++i) {
-            m.points.emplace_back(double(i) / nx, double(j) / ny, z);
-            m.point_radiosity.push_back(field(m.points.back()));
-        }
-    }
-    const auto add_cell = [&](std::vector<std::int64_t> c) {
-        if (facing_down) std::reverse(c.begin(), c.end());
-        m.connectivity.insert(m.connectivity.end(), c.begin(), c.end());
-        m.offsets.push_back(std::int64_t(m.connectivity.size()));
-        m.patch_id.push_back(patch);
-    };
-    for (int j = 0; j < ny; ++j) {
-        for (int i = 0; i < nx; ++i) {
-            const std::int64_t a = j * (nx + 1) + i, b = a + 1, c = b + nx + 1, d = a + nx + 1;
-            if (triangles) {
-                add_cell({a, b, c});
-                add_cell({a, c, d});
-            } else {
-                add_cell({a, b, c, d});
-            }
-        }
-    }
-    return m;
-}
-
-// `part` appended to `into`, its points and cells renumbered.
-void append(ShadedMesh& into, const ShadedMesh& part) {
-    const auto base = std::int64_t(into.points.size());
-    into.points.insert(into.points.end(), part.points.begin(), part.points.end());
-    into.point_radiosity.insert(into.point_radiosity.end(), part.point_radiosity.begin(),
-                                part.point_radiosity.end());
-    for (std::size_t c = 0; c < part.cell_count(); ++c) {
-        for (auto s = part.offsets[c]; s < part.offsets[c + 1]; ++s) {
-            into.connectivity.push_back(base + part.connectivity[s]);
-        }
-        into.offsets.push_back(std::int64_t(into.connectivity.size()));
-        into.patch_id.push_back(part.patch_id[c]);
-    }
-}
 
 // A linear field: channel k is coef[k][0] + coef[k][1] x + coef[k][2] y.
 using Linear = std::array<std::array<double, 3>, 3>;
