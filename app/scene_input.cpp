@@ -10,7 +10,8 @@ namespace hmcr {
 void add_scene_flags(CLI::App& command, SceneFlags& flags) {
     command.add_flag("--strict", flags.strict,
                      "refuse polygons and materials that hmcr would otherwise repair "
-                     "(docs/usage.md#repairs)");
+                     "(docs/usage.md#repairs); a meshing study also refuses a cell finer than "
+                     "its reference resolves");
     command
         .add_option("--mgf-segments", flags.mgf_segments,
                     fmt::format("segments per circle of MGF's curved surfaces (default: the scene "

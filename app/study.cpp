@@ -138,6 +138,7 @@ int run_meshing_study(StudyArgs& a) {
         }
         a.options.mesh_rays = *rays;
     }
+    a.options.strict = a.scene_flags.strict;  // refuses cells finer than the reference too
     validate_study(a.options);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     warn_specular(scene, a.quiet, SpecularUse::solve);

@@ -176,6 +176,8 @@ def figure_of(spec, plt, ticker):
             ax.set_xlabel(panel["x_label"])
         elif panel["type"] == "bars":
             draw_bars(ax, panel)
+            if "x_label" in panel:
+                ax.set_xlabel(panel["x_label"])
         else:
             raise ValueError(f"unknown panel type {panel['type']!r}")
         ax.set_ylabel(panel["y_label"])

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 
 #include "common/error.h"
@@ -78,6 +79,68 @@ json leaves_panel(const std::vector<CellResult>& cells, const std::string& title
         panel["series"].push_back({{"name", oracle}, {"points", points}});
     }
     return panel;
+}
+
+std::string patch_label(const PatchError& p) {
+    return p.side == kBack ? fmt::format("{} back", p.patch) : std::to_string(p.patch);
+}
+
+// The shares of the squared object error held by the patches that hold the most of it at one
+// budget (by the largest mean share over the oracles), per oracle: a cell that does not list a
+// patch among its largest counts it as 0.
+json patch_bars(const std::vector<CellResult>& cells, std::size_t budget) {
+    constexpr std::size_t kPatchesShown = 8;
+    const std::vector<std::string> oracles =
+        names_in_order(cells, [](const CellResult& c) { return c.oracle; });
+    const auto share = [](const CellResult& c, const std::string& label) {
+        for (const PatchError& p : c.object_error.largest)
+            if (patch_label(p) == label) return 100 * p.share;
+        return 0.0;
+    };
+    const auto of = [&](const std::string& oracle) {
+        std::vector<const CellResult*> out;
+        for (const CellResult& c : cells) {
+            if (c.oracle == oracle && c.budget == budget && c.ok()) out.push_back(&c);
+        }
+        return out;
+    };
+    std::vector<std::string> labels;
+    for (const CellResult& c : cells) {
+        if (c.budget != budget || !c.ok()) continue;
+        for (const PatchError& p : c.object_error.largest) {
+            const std::string l = patch_label(p);
+            if (std::find(labels.begin(), labels.end(), l) == labels.end()) labels.push_back(l);
+        }
+    }
+    // The largest first, by the largest of the oracles' mean shares; ties by label.
+    std::map<std::string, double> largest;
+    for (const std::string& l : labels) {
+        for (const std::string& o : oracles) {
+            std::vector<double> v;
+            for (const CellResult* c : of(o)) v.push_back(share(*c, l));
+            if (!v.empty()) largest[l] = std::max(largest[l], mean_se(v).mean);
+        }
+    }
+    std::sort(labels.begin(), labels.end(), [&](const std::string& a, const std::string& b) {
+        return largest[a] != largest[b] ? largest[a] > largest[b] : a < b;
+    });
+    if (labels.size() > kPatchesShown) labels.resize(kPatchesShown);
+    json groups = json::array();
+    for (const std::string& o : oracles) {
+        json values = json::array();
+        for (const std::string& l : labels) {
+            std::vector<double> v;
+            for (const CellResult* c : of(o)) v.push_back(share(*c, l));
+            values.push_back(bar(mean_se(v)));
+        }
+        groups.push_back({{"name", o}, {"values", values}});
+    }
+    return {{"type", "bars"},
+            {"title", fmt::format("{} leaves", budget)},
+            {"y_label", "share of the squared object error (%)"},
+            {"x_label", "patch (PatchId)"},
+            {"categories", labels},
+            {"groups", groups}};
 }
 
 double solution_rmse_p(const CellResult& c) { return view_mean(c, &ImageErrors::rmse_p); }
@@ -195,9 +258,15 @@ json meshing_plot_data(const std::string& scene, const std::vector<CellResult>& 
         panels.push_back(leaves_panel(cells, "mesh (frozen re-solve)", y_label,
                                       object ? mesh_object_error : mesh_rmse_p));
     }
-    return {{"study", "meshing"},
-            {"scene", scene},
-            {"figures", json::array({{{"name", "error_vs_elements"}, {"panels", panels}}})}};
+    json figures = json::array({{{"name", "error_vs_elements"}, {"panels", panels}}});
+    if (object) {
+        json by_patch = json::array();
+        for (std::size_t b : distinct(cells, &CellResult::budget, "budgets")) {
+            by_patch.push_back(patch_bars(cells, b));
+        }
+        figures.push_back({{"name", "error_by_patch"}, {"panels", by_patch}});
+    }
+    return {{"study", "meshing"}, {"scene", scene}, {"figures", figures}};
 }
 
 json sampling_plot_data(const std::string& scene, const std::vector<SamplingCell>& cells,

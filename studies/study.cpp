@@ -185,6 +185,11 @@ void StudyRunner::run() {
     write_study_tables(*m_tables, m_scene.name, m_options, views, cells);
     write_mesh_collection(*m_tables);
     m_tables->commit();
+    for (std::size_t b : m_options.budgets) {
+        if (const std::string w = finer_warning(cells, b); !w.empty()) {
+            m_progress.note(fmt::format("warning: at {} leaves, {}", b, w));
+        }
+    }
 }
 
 // meshes.pvd: every cell's mesh as one time step, to step through them in one ParaView session.
@@ -325,8 +330,9 @@ std::string cell_name(const std::string& scene, const std::string& oracle, std::
 }
 
 std::vector<std::filesystem::path> study_output_files(const StudyOptions& o) {
-    return {o.output / "table.json", o.output / "table.csv",   o.output / "table.md",
-            o.output / "table.tex",  plot_data_file(o.output), o.output / "meshes.pvd"};
+    return {o.output / "table.json", o.output / "table.csv", o.output / "patches.csv",
+            o.output / "table.md",   o.output / "table.tex", plot_data_file(o.output),
+            o.output / "meshes.pvd"};
 }
 
 void run_study(const Scene& scene, const StudyOptions& options, Progress& progress) {

@@ -128,6 +128,10 @@ CellResult cell_from_json(const nlohmann::json& j);
 // plot data come after the set (docs/studies.md, "Plots").
 std::vector<std::filesystem::path> study_output_files(const StudyOptions& options);
 
+// The one-line warning of table.md and of the study's end, naming the cells at `budget` whose
+// finer share is above kFinerShareLimit (studies/reference_resolution.h); empty where none is.
+std::string finer_warning(const std::vector<CellResult>& cells, std::size_t budget);
+
 // table.json, table.csv, table.md, table.tex and the plot data, from every cell of the study in
 // order, into `out`, the set of study_output_files().
 void write_study_tables(OutputSet& out, const std::string& scene, const StudyOptions& options,

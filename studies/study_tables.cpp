@@ -12,6 +12,7 @@
 #include "studies/mean_se.h"
 #include "studies/object_error_json.h"
 #include "studies/plot_data.h"
+#include "studies/reference_resolution.h"
 #include "studies/study.h"
 #include "studies/summary_table.h"
 #include "studies/table_fields.h"
@@ -42,10 +43,16 @@ std::vector<MeshingColumn> md_columns() {
         {"mesh PSNRp (dB)",
          [](const CellResult& c) { return mesh_view_mean(c, &ImageErrors::psnr_p); }, "{:.2f}", 1},
         {"mesh object error", mesh_object_error, "{:.4f}", -1},
+        {"finer (%)", [](const CellResult& c) { return 100 * c.finer_share; }, "{:.1f}", 0},
         {"leaves", [](const CellResult& c) { return double(c.leaves); }, "{:.0f}", 0},
         {"ε", [](const CellResult& c) { return c.epsilon; }, "{:.3g}", 0},
         {"seconds", [](const CellResult& c) { return c.seconds; }, "{:.1f}", 0},
     };
+}
+
+std::size_t select_budget(const std::vector<CellResult>& cells, std::size_t budget) {
+    return std::size_t(std::count_if(cells.begin(), cells.end(),
+                                     [&](const CellResult& c) { return c.budget == budget; }));
 }
 
 std::vector<const CellResult*> select(const std::vector<CellResult>& cells, std::size_t budget,
@@ -104,8 +111,10 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
         "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
         "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
         "area-weighted relative L2 error of the reflected radiosity against the reference (– "
-        "against a traced reference, which has no mesh); "
-        "{}; seconds: the budget search. The best mean of each error column is in bold.",
+        "against a traced reference, which has neither mesh nor points); "
+        "{}; finer: the share of the area in leaves finer than the reference resolves (above "
+        "{:.0f}% a cell's errors are bounded below by the reference's); seconds: the budget "
+        "search. The best mean of each error column is in bold.",
         rays, o.solver.lines, name(o.solver.link_weight), o.solver.refine_share,
         // Named only when on, so that the tables of plain studies keep their bytes.
         o.solver.control_variate == ControlVariate::none
@@ -115,14 +124,38 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
             ? std::string()
             : fmt::format(", importance {}", name(o.solver.importance)),
         100 * o.budget_tolerance, o.seeds, o.solver.seed, views.size(), fmt::join(views, ", "),
-        mesh);
+        mesh, 100 * kFinerShareLimit);
 }
+
+}  // namespace
+
+std::string finer_warning(const std::vector<CellResult>& cells, std::size_t budget) {
+    std::vector<std::string> finer;
+    for (const CellResult& c : cells) {
+        if (c.budget == budget && c.ok() && c.finer_share > kFinerShareLimit) {
+            finer.push_back(
+                fmt::format("{} seed {} ({:.0f}%)", c.oracle, c.seed, 100 * c.finer_share));
+        }
+    }
+    if (finer.empty()) return "";
+    return fmt::format(
+        "{} of {} cells have more than {:.0f}% of their area in leaves finer than "
+        "the reference resolves ({}): their errors are bounded below by the reference's; "
+        "measure them against a finer one (hmcr reference --for-budget {}).",
+        finer.size(), select_budget(cells, budget), 100 * kFinerShareLimit, fmt::join(finer, ", "),
+        budget);
+}
+
+namespace {
 
 std::string md_table(const std::string& scene, const StudyOptions& o,
                      const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     std::string out = fmt::format("# Meshing study: {}\n\n{}\n\n", scene, description(o, views));
     for (std::size_t b : o.budgets) {
         out += fmt::format("## {} leaves\n\n{}\n", b, markdown(budget_table(b, cells)));
+        if (const std::string w = finer_warning(cells, b); !w.empty()) {
+            out += "**Warning:** " + w + "\n\n";
+        }
     }
     return out;
 }
@@ -146,8 +179,9 @@ std::string tex_table(const std::string& scene, const StudyOptions& o,
 
 constexpr const char* kCsvHeader =
     "scene,oracle,budget,seed,status,epsilon,leaves,probes,seconds,view,rmse_a,rmse_p,psnr_a,"
-    "psnr_p,object_error,object_samples,object_unmatched,rays,mesh_rays,mesh_rmse_a,mesh_rmse_p,"
-    "mesh_psnr_a,mesh_psnr_p,mesh_object_error,message";
+    "psnr_p,object_error,object_error_se,object_samples,object_unmatched,object_unlit,"
+    "finer_share,largest_patch,largest_side,largest_share,rays,mesh_rays,mesh_rmse_a,"
+    "mesh_rmse_p,mesh_psnr_a,mesh_psnr_p,mesh_object_error,message";
 
 std::string csv_table(const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
     std::string out = std::string(kCsvHeader) + "\n";
@@ -159,16 +193,23 @@ std::string csv_table(const std::vector<std::string>& views, const std::vector<C
             const auto mit = c.mesh_views.find(view);
             const ImageErrors m =
                 mit != c.mesh_views.end() ? mit->second : ImageErrors{kNaN, kNaN, kNaN, kNaN};
-            const double object = c.ok() ? c.object_error.relative_l2 : kNaN;
+            const ObjectError& o = c.object_error;
+            const double object = c.ok() ? o.relative_l2 : kNaN;
+            const bool listed = c.ok() && !o.largest.empty();
             out += fmt::format(
-                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},"
+                "{},{},{},{}\n",
                 csv_text(c.scene), c.oracle, c.budget, c.seed, c.status, csv_number(c.epsilon),
                 c.leaves, c.probes.size(), csv_number(c.seconds), csv_text(view),
                 csv_number(e.rmse_a), csv_number(e.rmse_p), csv_number(e.psnr_a),
-                csv_number(e.psnr_p), csv_number(object), c.object_error.samples,
-                c.object_error.unmatched, c.rays, c.mesh_rays, csv_number(m.rmse_a),
-                csv_number(m.rmse_p), csv_number(m.psnr_a), csv_number(m.psnr_p),
-                csv_number(c.ok() ? mesh_object_error(c) : kNaN), csv_text(c.message));
+                csv_number(e.psnr_p), csv_number(object), csv_number(o.standard_error), o.samples,
+                o.unmatched, o.unlit, csv_number(c.finer_share),
+                listed ? std::to_string(o.largest[0].patch) : "",
+                listed ? (o.largest[0].side == kBack ? "back" : "front") : "",
+                listed ? csv_number(o.largest[0].share) : "", c.rays, c.mesh_rays,
+                csv_number(m.rmse_a), csv_number(m.rmse_p), csv_number(m.psnr_a),
+                csv_number(m.psnr_p), csv_number(c.ok() ? mesh_object_error(c) : kNaN),
+                csv_text(c.message));
         }
     }
     return out;
@@ -177,6 +218,26 @@ std::string csv_table(const std::vector<std::string>& views, const std::vector<C
 std::map<std::string, ImageErrors> views_from_json(const nlohmann::json& views) {
     std::map<std::string, ImageErrors> out;
     for (const auto& [name, e] : views.items()) out[name] = e.get<ImageErrors>();
+    return out;
+}
+
+// patches.csv: for every cell, the patch sides holding the largest shares of its squared object
+// error, of the solution and of the frozen mesh.
+std::string patches_csv(const std::vector<CellResult>& cells) {
+    std::string out = "scene,oracle,budget,seed,of,rank,patch,side,share\n";
+    for (const CellResult& c : cells) {
+        if (!c.ok()) continue;
+        const auto rows = [&](const char* of, const ObjectError& e) {
+            for (std::size_t k = 0; k < e.largest.size(); ++k) {
+                const PatchError& p = e.largest[k];
+                out += fmt::format("{},{},{},{},{},{},{},{},{}\n", csv_text(c.scene), c.oracle,
+                                   c.budget, c.seed, of, k + 1, p.patch,
+                                   p.side == kBack ? "back" : "front", csv_number(p.share));
+            }
+        };
+        rows("solution", c.object_error);
+        if (c.mesh_rays > 0) rows("mesh", c.mesh_object_error);
+    }
     return out;
 }
 
@@ -266,6 +327,7 @@ void write_study_tables(OutputSet& out, const std::string& scene, const StudyOpt
     }
     write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
     write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));
+    write_text_atomically(out.temp(o.output / "patches.csv"), patches_csv(cells));
     write_text_atomically(out.temp(o.output / "table.md"), md_table(scene, o, views, cells));
     write_text_atomically(out.temp(o.output / "table.tex"), tex_table(scene, o, views, cells));
     write_text_atomically(out.temp(plot_data_file(o.output)),

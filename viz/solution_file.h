@@ -33,7 +33,8 @@ ShadedMesh shade(const Solution& solution, double crease_degrees);
 // Writes the shaded mesh of the solution atomically.
 void write_solution(const std::filesystem::path& vtp, const ShadedMesh& shaded,
                     const Solution& solution, const SceneIdentity& scene, double time_value);
-// shade() then write_solution(); returns the mesh for whoever measures it next.
+// shade() then write_solution(); returns the mesh for whoever measures it next, its radiosities
+// rounded to single precision as the file holds them.
 ShadedMesh write_solution(const std::filesystem::path& vtp, const Solution& solution,
                           const Scene& scene, double crease_degrees, double time_value);
 
