@@ -99,8 +99,15 @@ ObjectError point_object_error(const ShadedTracer& tracer, const ShadedMesh& sol
     }
     const double q = sum.n / sum.d;  // e^2
     out.relative_l2 = std::sqrt(std::max(0.0, q));
-    const double var_q =
-        std::max(0.0, sum.var_n - 2 * q * sum.cov + q * q * sum.var_d) / (sum.d * sum.d);
+    const double noise = std::max(0.0, sum.var_n - 2 * q * sum.cov + q * q * sum.var_d);
+    // The quadrature's own variance, from neighbouring points taken as one stratum of two
+    // (collapsed strata): each point's influence on q is (n_i - q d_i) / D.
+    double quadrature = 0;
+    for (std::size_t i = 0; i + 1 < n; i += 2) {
+        const double a = terms[i].n - q * terms[i].d, b = terms[i + 1].n - q * terms[i + 1].d;
+        quadrature += (a - b) * (a - b);
+    }
+    const double var_q = (noise + quadrature) / (sum.d * sum.d);
     const double se_q = std::sqrt(var_q);
     // se(e) = se(e^2) / (2 e) where e is well above its noise; near 0, e^2's noise sets the scale.
     out.standard_error = se_q / (2 * std::max(out.relative_l2, std::sqrt(se_q)));

@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "studies/object_space_error.h"
 #include "studies/point_error.h"
@@ -184,6 +185,46 @@ TEST(PointReference, AFinerSolutionIsMeasuredWhereAMeshReferenceReportsAFloor) {
     ASSERT_FALSE(coarse_e.largest.empty());
     EXPECT_EQ(coarse_e.largest[0].patch, 1u);
     EXPECT_NEAR(coarse_e.largest[0].share, 1.0, 1e-12);
+}
+
+// A solution off by c on a strip narrower than the strata (the quadrature's hardest case: its
+// points land in the strip or not), against exact, noiseless values: the standard error is the
+// quadrature's alone, and must cover the estimate's scatter over independent point sets.
+TEST(PointReference, TheStandardErrorCoversTheQuadratureOfAStepNarrowerThanItsStrata) {
+    const PatchSet set =
+        build_patch_set(make_patch_mesh({axis_rectangle(2, 0, {0, 0}, {1, 1}, true)}));
+    constexpr double kLeft = 0.5, kRight = 0.5 + 1.0 / 64, kStep = 2.0;
+    ShadedMesh step;
+    for (const auto& [x0, x1, b] :
+         {std::tuple(0.0, kLeft, 1.0), std::tuple(kLeft, kRight, 1 + kStep),
+          std::tuple(kRight, 1.0, 1.0)}) {
+        // Each cell its own four points: the step does not blend into its neighbours.
+        for (const Vec3& p : {Vec3(x0, 0, 0), Vec3(x1, 0, 0), Vec3(x1, 1, 0), Vec3(x0, 1, 0)}) {
+            step.connectivity.push_back(std::int64_t(step.points.size()));
+            step.points.push_back(p);
+            step.point_radiosity.push_back(Rgb::Constant(b));
+        }
+        step.offsets.push_back(std::int64_t(step.connectivity.size()));
+        step.patch_id.push_back(0);
+        step.side.push_back(kFront);
+        step.element_area.push_back(x1 - x0);
+    }
+    const ShadedTracer tracer(step);
+    // N = 3 c^2 (kRight - kLeft) exactly (three channels), D = 3.
+    const double truth = kStep * std::sqrt(kRight - kLeft);
+    const double z = bonferroni_z(6);
+    for (std::uint64_t target : {400, 900, 1600, 2500, 3600, 4900}) {
+        PointRadiosity exact;
+        exact.points = stratified_points(set, target);
+        for (int s = 0; s < 2; ++s) {
+            exact.radiosity[s].assign(exact.points.size(), Rgb::Constant(1));
+            exact.variance[s].assign(exact.points.size(), Rgb::Zero());
+        }
+        const ObjectError e = point_object_error(tracer, step, point_target(exact, set));
+        EXPECT_GT(e.standard_error, 0) << target;
+        EXPECT_TRUE(within_standard_errors("the step at " + std::to_string(target) + " points",
+                                           e.relative_l2, truth, e.standard_error, 0, z));
+    }
 }
 
 TEST(ReferenceResolution, TheFinerShareIsTheAreaOfLeavesBelowHalfTheReferencesElements) {
