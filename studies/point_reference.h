@@ -36,8 +36,8 @@
 namespace hmcr {
 
 // The defaults, chosen by measurement (docs/decisions.md, "Point references").
-inline constexpr std::uint64_t kDefaultReferencePoints = 100'000;
-inline constexpr std::uint64_t kDefaultPathsPerPoint = 512;
+inline constexpr std::uint64_t kDefaultReferencePoints = 400'000;
+inline constexpr std::uint64_t kDefaultPathsPerPoint = 64;
 inline constexpr double kDefaultReferenceViewSpp = 64;
 
 struct PointReferenceOptions {

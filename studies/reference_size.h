@@ -11,7 +11,7 @@ namespace hmcr {
 
 // Reference points per leaf of the largest budget, and uniform elements per leaf, chosen by
 // measurement (docs/decisions.md, "Point references").
-inline constexpr std::uint64_t kPointsPerLeaf = 8;
+inline constexpr std::uint64_t kPointsPerLeaf = 20;
 inline constexpr std::uint64_t kElementsPerLeaf = 16;
 
 struct ReferenceSize {

@@ -81,11 +81,11 @@ TEST_F(ReferenceCli, TheKindsFlagsAreKeptApart) {
 
 TEST_F(ReferenceCli, ForBudgetSizesTheReferenceAndSaysSo) {
     plates();
-    const CliRun r = run("reference plates.json --for-budget 20000 --paths 2 --spp 1 -o ref");
+    const CliRun r = run("reference plates.json --for-budget 30000 --paths 2 --spp 1 -o ref");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.out.find("for studies up to 20000 leaves: --points 160000"), std::string::npos)
+    EXPECT_NE(r.out.find("for studies up to 30000 leaves: --points 600000"), std::string::npos)
         << r.out;
-    EXPECT_EQ(json_of("ref/reference.json")["reference"]["points_target"], 160000);
+    EXPECT_EQ(json_of("ref/reference.json")["reference"]["points_target"], 600000);
 }
 
 // A coarse mesh reference of 2 elements judges cells of 20 leaves: warned; --strict refuses;
