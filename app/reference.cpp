@@ -203,6 +203,11 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
                         "points: how many (strata of A_T / points m^2 on every side)")
             ->transform(count_notation())
             ->capture_default_str());
+    a->points_only.push_back(
+        cmd->add_option("--strata-seed", p.strata_seed,
+                        "points: another independent jitter of the same strata (0: the usual)")
+            ->transform(count_notation())
+            ->capture_default_str());
     a->points_only.push_back(cmd->add_option("--paths", p.paths, "points: paths per point and seed")
                                  ->transform(count_notation())
                                  ->capture_default_str());

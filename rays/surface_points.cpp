@@ -27,8 +27,8 @@ Vec2 in_triangle(const Vec2& p0, const Vec2& p1, const Vec2& p2, double xi1, dou
 }
 
 void fill_side(const Patch& patch, std::uint32_t index, std::uint8_t side, const SideStrata& k,
-               SurfacePoint* out) {
-    Rng rng(kStrataKey, index, side);
+               std::uint64_t strata_seed, SurfacePoint* out) {
+    Rng rng(kStrataKey + strata_seed, index, side);
     std::uint64_t n = 0;
     if (patch.is_quad()) {
         const double cell = 1.0 / (double(k.ku) * double(k.kv));
@@ -101,14 +101,16 @@ std::uint64_t stratified_point_count(const PatchSet& set, std::uint64_t target) 
     return layout(set, target).first.back();
 }
 
-std::vector<SurfacePoint> stratified_points(const PatchSet& set, std::uint64_t target) {
+std::vector<SurfacePoint> stratified_points(const PatchSet& set, std::uint64_t target,
+                                            std::uint64_t strata_seed) {
     const Layout l = layout(set, target);
     std::vector<SurfacePoint> out(l.first.back());
     tbb::parallel_for(std::size_t(0), set.patches.size(), [&](std::size_t p) {
         for (std::uint8_t side : {kFront, kBack}) {
             const std::size_t s = 2 * p + side;
             if (l.first[s + 1] == l.first[s]) continue;
-            fill_side(set.patches[p], std::uint32_t(p), side, l.strata[s], &out[l.first[s]]);
+            fill_side(set.patches[p], std::uint32_t(p), side, l.strata[s], strata_seed,
+                      &out[l.first[s]]);
         }
     });
     return out;

@@ -9,7 +9,8 @@
 // J(u, v) x (the stratum's parameter area): the sum over a side's points of w f(p) is then an
 // unbiased estimate of the integral of f over the side (a stratified, jittered quadrature), and
 // exact for a constant f on triangles and parallelograms. The jitter comes from a stream keyed
-// by the patch and side alone, so the points are the same for every seed, thread and rank count.
+// by the patch and side (and a strata seed, 0 unless asked), so the points are the same for every
+// seed of the paths, thread and rank count.
 #pragma once
 
 #include <cstdint>
@@ -40,6 +41,8 @@ SideStrata side_strata(const Patch& patch, double area_per_point);
 std::uint64_t stratified_point_count(const PatchSet& set, std::uint64_t target);
 
 // The points of every side, ordered by patch, front before back, then stratum. target >= 1.
-std::vector<SurfacePoint> stratified_points(const PatchSet& set, std::uint64_t target);
+// Another `strata_seed` gives another, independent jitter of the same strata.
+std::vector<SurfacePoint> stratified_points(const PatchSet& set, std::uint64_t target,
+                                            std::uint64_t strata_seed = 0);
 
 }  // namespace hmcr

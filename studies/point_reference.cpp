@@ -193,11 +193,12 @@ PointReferenceReport point_report(const PointRadiosity& r, const std::vector<Rgb
 }
 
 PointRadiosity estimate_reference_points(const Scene& scene, const PathTracer& tracer,
-                                         std::uint64_t target, std::uint64_t paths,
-                                         std::uint64_t seed, Progress& progress, const Ranks& ranks,
+                                         std::uint64_t target, std::uint64_t strata_seed,
+                                         std::uint64_t paths, std::uint64_t seed,
+                                         Progress& progress, const Ranks& ranks,
                                          std::uint64_t& rays) {
     PointRadiosity r;
-    r.points = stratified_points(tracer.patches(), target);
+    r.points = stratified_points(tracer.patches(), target, strata_seed);
     r.paths = paths;
     r.seed = seed;
     r.scene = scene.name;
@@ -218,8 +219,8 @@ PointReference compute_point_reference(const Scene& scene, const PointReferenceO
     std::uint64_t rays = 0;
     tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
     arena.execute([&] {
-        ref.points = estimate_reference_points(scene, tracer, o.points, o.paths, o.seed, progress,
-                                               ranks, rays);
+        ref.points = estimate_reference_points(scene, tracer, o.points, o.strata_seed, o.paths,
+                                               o.seed, progress, ranks, rays);
     });
     ref.report = point_report(ref.points, point_emission(tracer.patches(), ref.points.points));
     ref.report.rays = rays;
@@ -254,6 +255,7 @@ void write_point_reference(OutputSet& out, const std::filesystem::path& dir, con
           {"scene_file", scene_file(scene)},
           {"points", ref.points.points.size()},
           {"points_target", o.points},
+          {"strata_seed", o.strata_seed},
           {"paths", o.paths},
           {"seeds", {o.seed, o.seed + 1}},
           {"path",

@@ -44,6 +44,7 @@ struct PointReferenceOptions {
     std::uint64_t points = kDefaultReferencePoints;  // the target: strata of A_T / points m^2
     std::uint64_t paths = kDefaultPathsPerPoint;     // per point and seed, >= 2
     std::uint64_t seed = 1;                          // the first; the second is seed + 1
+    std::uint64_t strata_seed = 0;                   // another jitter of the same strata
     int threads = 0;                                 // 0: every core; the result is the same
     PathOptions path;
     // The views: every view traced uniformly at views.spp (views.seed the same seed).
@@ -92,8 +93,9 @@ PointReference compute_point_reference(const Scene& scene, const PointReferenceO
 // The points alone, estimated as compute_point_reference estimates them (a mesh reference's
 // check of its own discretisation takes a few); `rays` gets the rays their paths cast.
 PointRadiosity estimate_reference_points(const Scene& scene, const PathTracer& tracer,
-                                         std::uint64_t points, std::uint64_t paths,
-                                         std::uint64_t seed, Progress& progress, const Ranks& ranks,
+                                         std::uint64_t points, std::uint64_t strata_seed,
+                                         std::uint64_t paths, std::uint64_t seed,
+                                         Progress& progress, const Ranks& ranks,
                                          std::uint64_t& rays);
 
 // The report of a reference's points (compute_point_reference fills it; a reader recomputes it).

@@ -86,8 +86,8 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progr
         const PathTracer tracer(diffuse_patch_set(scene), PathOptions{});
         std::uint64_t rays = 0;
         const PointTarget points =
-            point_target(estimate_reference_points(scene, tracer, check.points, check.paths, seed,
-                                                   progress, ranks, rays),
+            point_target(estimate_reference_points(scene, tracer, check.points, 0, check.paths,
+                                                   seed, progress, ranks, rays),
                          tracer.patches());
         ref.discretisation = point_object_error(first_tracer, ref.mesh, points);
         ref.check_paths = check.paths;

@@ -101,6 +101,20 @@ TEST(SurfacePoints, ASmallSideIsOneStratumAndTheCountFollowsTheTarget) {
     EXPECT_NEAR(points.back().weight, 1e-6, 1e-18);
 }
 
+TEST(SurfacePoints, AnotherStrataSeedJittersTheSameStrataAnew) {
+    const PatchSet set = patches_of(three_shapes());
+    const std::vector<SurfacePoint> a = stratified_points(set, 2000),
+                                    b = stratified_points(set, 2000, 1);
+    ASSERT_EQ(a.size(), b.size());
+    std::size_t same = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        same += a[i].position == b[i].position;
+        EXPECT_EQ(a[i].patch, b[i].patch);
+        EXPECT_EQ(a[i].side, b[i].side);
+    }
+    EXPECT_EQ(same, 0u);
+}
+
 TEST(SurfacePoints, TheSameForAnyThreadCount) {
     const PatchSet set = patches_of(three_shapes());
     std::vector<SurfacePoint> one;
