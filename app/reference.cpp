@@ -97,6 +97,13 @@ int run_points(ReferenceArgs& a, const Scene& scene, const std::string& command_
             "{:.4f} (object-space relative L2); seeds agree to {:.2g} +- {:.2g} -> {}\n",
             scene.name, ref.points.points.size(), r.area_per_point, a.points.paths, ref.seconds,
             r.noise, r.seed_check, r.seed_check_se, dir.string());
+        if (r.noise > kNoiseWarning)
+            fmt::print(stderr,
+                       "hmcr: warning: the points' noise {:.3f} is above {}: object errors near it "
+                       "are measured through its removal alone, with standard errors as large; "
+                       "--paths {} brings it to about {}\n",
+                       r.noise, kNoiseWarning, paths_for_target_noise(r.noise, a.points.paths),
+                       kTargetNoise);
     }
     return 0;
 }

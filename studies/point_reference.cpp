@@ -168,6 +168,11 @@ void validate_point_reference(const Scene& scene, const PointReferenceOptions& o
                    "use fewer --points");
 }
 
+std::uint64_t paths_for_target_noise(double noise, std::uint64_t paths) {
+    const double ratio = noise / kTargetNoise;
+    return std::uint64_t(std::ceil(double(paths) * ratio * ratio));
+}
+
 PointReferenceReport point_report(const PointRadiosity& r, const std::vector<Rgb>& emission) {
     PointReferenceReport out;
     double reflected = 0, noise = 0, check = 0, check_variance = 0, area = 0;

@@ -39,6 +39,16 @@ namespace hmcr {
 inline constexpr std::uint64_t kDefaultReferencePoints = 400'000;
 inline constexpr std::uint64_t kDefaultPathsPerPoint = 64;
 inline constexpr double kDefaultReferenceViewSpp = 64;
+// Above this noise (relative to the reflected radiosity, as an object error) `hmcr reference`
+// warns: a cell's object error near or below it is measured only through the noise's removal,
+// with a standard error of the noise's own size, and the removal leans on the paths' variance
+// estimates, which heavy-tailed paths make unsure. kTargetNoise is what its advice aims for.
+inline constexpr double kNoiseWarning = 0.1;
+inline constexpr double kTargetNoise = 0.05;
+
+// The paths a point that bring `noise` (measured with `paths`) to kTargetNoise: the noise
+// falls as one over the root of the paths.
+std::uint64_t paths_for_target_noise(double noise, std::uint64_t paths);
 
 struct PointReferenceOptions {
     std::uint64_t points = kDefaultReferencePoints;  // the target: strata of A_T / points m^2

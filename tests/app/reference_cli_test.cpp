@@ -2,12 +2,14 @@
 // runs them: the files each writes, the kind's flags kept apart, a warning exactly where cells
 // are finer than the reference, `hmcr error` giving a study cell's own numbers, and a study that
 // resumes from a copy of its folder.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "studies/point_reference.h"
 #include "tests/hostile/hostile.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/temp_dir.h"
@@ -47,6 +49,23 @@ TEST_F(ReferenceCli, APointReferenceWritesItsPointsViewsAndReport) {
     EXPECT_EQ(ref["paths"], 16);
     EXPECT_GT(ref["report"]["noise"].get<double>(), 0);
     EXPECT_TRUE(fs::path(ref["scene_file"].get<std::string>()).is_absolute());
+}
+
+TEST_F(ReferenceCli, ANoisyPointReferenceWarnsWithThePathsThatQuietIt) {
+    plates();
+    const CliRun noisy = run("reference plates.json --points 400 --paths 2 --spp 1 -o noisy");
+    ASSERT_EQ(noisy.exit_code, 0) << noisy.err;
+    const double noise = json_of("noisy/reference.json")["reference"]["report"]["noise"];
+    ASSERT_GT(noise, kNoiseWarning);
+    EXPECT_NE(noisy.err.find(
+                  fmt::format("--paths {} brings it to about", paths_for_target_noise(noise, 2))),
+              std::string::npos)
+        << noisy.err;
+    const CliRun quiet = run("reference plates.json --points 400 --paths 4096 --spp 1 -o quiet");
+    ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+    ASSERT_LT(json_of("quiet/reference.json")["reference"]["report"]["noise"].get<double>(),
+              kNoiseWarning);
+    EXPECT_EQ(quiet.err.find("noise"), std::string::npos) << quiet.err;
 }
 
 TEST_F(ReferenceCli, AMeshFlagMakesAMeshReferenceThatChecksItselfAgainstPoints) {
