@@ -125,9 +125,12 @@ HWY_INLINE void cross3(const V a[3], const V b[3], V out[3]) {
     out[2] = hn::Sub(hn::Mul(a[0], b[1]), hn::Mul(a[1], b[0]));
 }
 
+// `draws`, when given, holds every ray's uniforms (rays/sobol.h's layout, `stride` apart and
+// readable a whole vector past n); otherwise they come from the rays' keyed streams.
 void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t region_count,
                   const AliasTable::Bin* bins, std::uint64_t seed, std::uint64_t key,
-                  std::uint64_t first, std::size_t n, GeneratedRays* out, std::size_t offset) {
+                  std::uint64_t first, std::size_t n, const double* draws, std::size_t stride,
+                  GeneratedRays* out, std::size_t offset) {
     const D d;
     const DU du;
     const DI di;
@@ -140,12 +143,16 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
     HWY_ALIGN double lane_doubles[9][HWY_LANES(double)];
     HWY_ALIGN std::uint64_t lane_region[HWY_LANES(double)];
     for (std::size_t k = 0; k < n; k += lanes) {
-        const VU index = hn::Iota(du, first + k);
-        Streams rng(du, seed, key, index);
-        const V xi_region = rng.uniform(du);
-        const V xi_u = rng.uniform(du), xi_v = rng.uniform(du);
-        const V xi_r = rng.uniform(du), xi_phi = rng.uniform(du);
-        const V dither = rng.uniform(du);
+        V xi[kRayDraws];
+        if (draws != nullptr) {
+            for (std::size_t j = 0; j < kRayDraws; ++j)
+                xi[j] = hn::LoadU(d, draws + j * stride + k);
+        } else {
+            Streams rng(du, seed, key, hn::Iota(du, first + k));
+            for (V& x : xi) x = rng.uniform(du);
+        }
+        const V xi_region = xi[0], xi_u = xi[1], xi_v = xi[2], xi_r = xi[3], xi_phi = xi[4];
+        const V dither = xi[5];
 
         // The region: Walker's alias table (rays/alias_table.h), bins of {keep, alias}.
         const V scaled = hn::Mul(xi_region, hn::Set(d, double(region_count)));
@@ -317,13 +324,17 @@ void GeneratedRays::resize(std::size_t n) {
 
 RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
                           const AliasTable& table, std::uint64_t seed, std::uint64_t key,
-                          std::uint64_t index) {
-    Rng rng(seed, key, index);
-    const double xi_region = rng.uniform();
-    const double xi_u = rng.uniform(), xi_v = rng.uniform();
-    const double xi_r = rng.uniform(), xi_phi = rng.uniform();
+                          std::uint64_t index, RaySequence sequence) {
+    double xi[kRayDraws];
+    if (sequence == RaySequence::sobol) {
+        sobol_draws(seed, key, index, 1, xi, 1);
+    } else {
+        Rng rng(seed, key, index);
+        for (double& x : xi) x = rng.uniform();
+    }
+    const double xi_region = xi[0], xi_u = xi[1], xi_v = xi[2], xi_r = xi[3], xi_phi = xi[4];
     RayStartSample out;
-    out.dither = rng.uniform();
+    out.dither = xi[5];
     out.region = std::uint32_t(table.sample(xi_region));
     const RayRegion& reg = regions[out.region];
     const Patch& p = patches[reg.patch];
@@ -378,10 +389,20 @@ RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const Ray
 
 void generate_rays(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
                    const AliasTable& table, std::uint64_t seed, std::uint64_t key,
-                   std::uint64_t first, std::size_t n, GeneratedRays& out, std::size_t offset) {
+                   std::uint64_t first, std::size_t n, GeneratedRays& out, std::size_t offset,
+                   RaySequence sequence) {
+    const double* draws = nullptr;
+    // Padded by the widest vector, so that the last rays' loads stay inside.
+    const std::size_t stride = n + HWY_MAX_BYTES / sizeof(double);
+    thread_local std::vector<double> buffer;
+    if (sequence == RaySequence::sobol) {
+        resize_populated(buffer, kRayDraws * stride);
+        sobol_draws(seed, key, first, n, buffer.data(), stride);
+        draws = buffer.data();
+    }
     HWY_DYNAMIC_DISPATCH(GenerateRays)
-    (patches.data(), regions.data(), regions.size(), table.bins(), seed, key, first, n, &out,
-     offset);
+    (patches.data(), regions.data(), regions.size(), table.bins(), seed, key, first, n, draws,
+     stride, &out, offset);
 }
 
 }  // namespace hmcr

@@ -59,13 +59,15 @@ GeneratedRays generated(const Regions& r, std::uint64_t seed, std::uint64_t key,
     return out;
 }
 
-void expect_equal_to_reference(const Regions& r, const AliasTable& table, const char* target) {
+void expect_equal_to_reference(const Regions& r, const AliasTable& table, const char* target,
+                               RaySequence sequence) {
     GeneratedRays out;
     out.resize(kRays + 3);
     // An odd count at an offset: the last vector is partial.
-    generate_rays(r.set.patches, r.regions, table, 7, 11, 1000, kRays, out, 3);
+    generate_rays(r.set.patches, r.regions, table, 7, 11, 1000, kRays, out, 3, sequence);
     for (std::size_t k = 0; k < kRays; ++k) {
-        const RayStartSample s = scalar_ray(r.set.patches, r.regions, table, 7, 11, 1000 + k);
+        const RayStartSample s =
+            scalar_ray(r.set.patches, r.regions, table, 7, 11, 1000 + k, sequence);
         const std::size_t o = k + 3;
         ASSERT_EQ(out.region[o], s.region) << target << " ray " << k;
         ASSERT_EQ(out.u[o], float(s.uv.x())) << target << " ray " << k;
@@ -85,7 +87,9 @@ TEST(RayGenerator, EveryInstructionSetGivesTheReferenceBits) {
     ASSERT_FALSE(targets.empty());
     for (const std::int64_t target : targets) {
         hwy::SetSupportedTargetsForTest(target);
-        expect_equal_to_reference(r, table, hwy::TargetName(target));
+        for (const RaySequence sequence : {RaySequence::random, RaySequence::sobol}) {
+            expect_equal_to_reference(r, table, hwy::TargetName(target), sequence);
+        }
     }
     hwy::SetSupportedTargetsForTest(0);
 }
