@@ -30,6 +30,7 @@ struct RefinementContext {
     // A fixed mesh's leaves: deposit on the leaf at the hit, ask no oracle; none: refine.
     const LeafIndex* fixed_leaves = nullptr;
     LinkWeight link_weight = LinkWeight::unshot;  // w_ij from the source's Delta B or B
+    RaySequence sequence = RaySequence::random;   // the shooting rays' uniforms (rays/sobol.h)
     ClusterTree* clusters = nullptr;  // descents start at its top (docs/design.md §2.7); none
     // Per side (SideRef::value), what a link's weight takes for the receiver's reflectance:
     // rho I / mean(I) under view importance (§3.12); empty: the reflectance itself.

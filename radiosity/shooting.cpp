@@ -235,7 +235,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     auto trace_chunk = [&](Batch& b, std::uint64_t begin, std::uint64_t end,
                            ShootingBuffers::Impl::Chunk& chunk) {
         generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration,
-                      part.first_key + b.first + begin, end - begin, b.rays, begin);
+                      part.first_key + b.first + begin, end - begin, b.rays, begin, ctx.sequence);
         ctx.scene.first_hits(b.rays, begin, end, b.hits);
         for (std::uint64_t k = begin; k < end; ++k) {
             const std::uint32_t leaf = b.rays.region[k];

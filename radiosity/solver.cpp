@@ -246,6 +246,7 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
                                 .cache = cache.get(),
                                 .fixed_leaves = leaf_index.get(),
                                 .link_weight = options.link_weight,
+                                .sequence = options.sequence,
                                 .clusters = clusters.get(),
                                 .receiver_weights = receiver_weights};
     st.setup_seconds = seconds_since(start);

@@ -22,6 +22,7 @@
 
 #include "meshes/view.h"
 #include "oracles/registry.h"
+#include "rays/sobol.h"
 
 namespace hmcr {
 
@@ -63,6 +64,10 @@ struct EnumNames<ControlVariate> {
 template <>
 struct EnumNames<Clustering> {
     static constexpr std::array<std::string_view, 2> names{"none", "isotropic"};
+};
+template <>
+struct EnumNames<RaySequence> {
+    static constexpr std::array<std::string_view, 2> names{"random", "sobol"};
 };
 template <>
 struct EnumNames<Importance> {
@@ -132,6 +137,9 @@ concept NamedSetting = requires(T v) {
     X(Clustering,    clustering, Clustering::none, true,            "none or isotropic",         \
       scene_file, "clusters of patches above the patch roots, each receiving and emitting as an "\
                   "isotropic cloud of surfaces (none: the hierarchy starts at the patches)")    \
+    X(RaySequence,   sequence,  RaySequence::random, true,           "random or sobol",           \
+      scene_file, "where the shooting rays' uniforms come from: their keyed pseudo-random "      \
+                  "streams, or those streams' Owen-scrambled Sobol sequence")                   \
     X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \

@@ -93,6 +93,7 @@ template struct Setting<OracleRef>;
 template struct Setting<LinkWeight>;
 template struct Setting<ControlVariate>;
 template struct Setting<Clustering>;
+template struct Setting<RaySequence>;
 template struct Setting<Importance>;
 template struct Setting<double>;
 template struct Setting<int>;
@@ -107,6 +108,7 @@ template OracleRef parse_named(const Setting<OracleRef>&, std::string_view);
 template LinkWeight parse_named(const Setting<LinkWeight>&, std::string_view);
 template ControlVariate parse_named(const Setting<ControlVariate>&, std::string_view);
 template Clustering parse_named(const Setting<Clustering>&, std::string_view);
+template RaySequence parse_named(const Setting<RaySequence>&, std::string_view);
 template Importance parse_named(const Setting<Importance>&, std::string_view);
 
 const Oracle* default_oracle() { return oracle_registry().find("kl"); }

@@ -142,6 +142,45 @@ TEST(FixedMesh, FurnaceOnAUniformMesh) {
     expect_furnace(o, 1, 6 * 64);
 }
 
+// The scrambled Sobol sequence keeps the estimator exact where it is exact and unbiased where it
+// is a mean: the furnace's K-bounce value on a uniform and a refined mesh, the plates' rho E F
+// within the pseudo-random estimate's standard error (a scrambled net's variance is no larger
+// for this indicator of bounded variation), and the same bits on one and two threads.
+TEST(SobolSequence, FurnaceOnAUniformAndARefinedMesh) {
+    SolverOptions o;
+    o.rays = 30'000;
+    o.sequence = RaySequence::sobol;
+    o.uniform_max_area = 1.0 / 64;
+    expect_furnace(o, 1, 6 * 64);
+    o.uniform_max_area = 0;
+    o.epsilon = 1e-4;
+    o.lines = 4;
+    expect_furnace(o, 1, 100);
+}
+
+TEST(SobolSequence, PlatesReceiverGetsRhoTimesEmissionTimesFormFactor) {
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+        SolverOptions o;
+        o.rays = 400'000;
+        o.seed = seed;
+        o.sequence = RaySequence::sobol;
+        const Solution sol = solve(unit_plates(0.5), o);
+        const double f = parallel_rectangles(1, 1, 1), n0 = double(sol.stats.iterations[0].rays);
+        const double se = 0.5 * std::sqrt(f * (1 - f) / n0);
+        EXPECT_TRUE(
+            within_standard_errors("receiver B", sol.hierarchy->root(1).radiosity[0], 0.5 * f, se));
+    }
+}
+
+TEST(SobolSequence, SameHierarchyAndValuesForOneAndTwoThreads) {
+    SolverOptions o;
+    o.rays = 200'000;
+    o.seed = 9;
+    o.sequence = RaySequence::sobol;
+    const Scene scene = load_scene("cornell");
+    EXPECT_GT(solve_on_one_and_two_threads(scene.mesh, o).stats.leaves, 100u);
+}
+
 // Energy: every ray's power is deposited, escapes or hits a back face, and push-pull moves
 // radiosity without creating power. Per channel, exactly (up to rounding):
 //   shot = absorbed + reflected (the unshot power of the later iterations) + escaped + back face
