@@ -155,8 +155,9 @@ void trace_pilots(const RefinementContext& ctx, const IterationSources& sources,
     GeneratedRays batch;
     batch.resize(rays);
     std::vector<BatchHit> hits(rays);
+    // Pseudo-random whatever the shooting's sequence: the pilots estimate a share, not the field.
     generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, key, kPilotStream,
-                  rays, batch, 0);
+                  rays, batch, 0, RaySequence::random);
     ctx.scene.first_hits(batch, 0, rays, hits);
     const PatchSet& ps = ctx.hierarchy.patch_set();
     for (std::uint64_t k = 0; k < rays; ++k) {

@@ -392,10 +392,11 @@ void generate_rays(const std::vector<Patch>& patches, std::span<const RayRegion>
                    std::uint64_t first, std::size_t n, GeneratedRays& out, std::size_t offset,
                    RaySequence sequence) {
     const double* draws = nullptr;
-    // Padded by the widest vector, so that the last rays' loads stay inside.
-    const std::size_t stride = n + HWY_MAX_BYTES / sizeof(double);
-    thread_local std::vector<double> buffer;
+    std::size_t stride = 0;
     if (sequence == RaySequence::sobol) {
+        // Padded by the widest vector, so that the last rays' loads stay inside.
+        stride = n + HWY_MAX_BYTES / sizeof(double);
+        thread_local std::vector<double> buffer;
         resize_populated(buffer, kRayDraws * stride);
         sobol_draws(seed, key, first, n, buffer.data(), stride);
         draws = buffer.data();

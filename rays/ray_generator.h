@@ -55,13 +55,13 @@ struct RayStartSample {
 // The same ray one lane at a time, with the arithmetic of the vector code: the reference.
 RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
                           const AliasTable& table, std::uint64_t seed, std::uint64_t key,
-                          std::uint64_t index, RaySequence sequence = RaySequence::random);
+                          std::uint64_t index, RaySequence sequence);
 
 // Fills out[offset, offset + n) with the rays first, first + 1, ... of the stream (seed, key).
 // `table` picks among `regions` (at least one), whose patches are `patches`.
 void generate_rays(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
                    const AliasTable& table, std::uint64_t seed, std::uint64_t key,
                    std::uint64_t first, std::size_t n, GeneratedRays& out, std::size_t offset,
-                   RaySequence sequence = RaySequence::random);
+                   RaySequence sequence);
 
 }  // namespace hmcr

@@ -1,6 +1,5 @@
 #include "rays/sobol.h"
 
-#include <bit>
 #include <boost/random/sobol.hpp>
 
 #include "rays/rng.h"

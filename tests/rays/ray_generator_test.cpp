@@ -55,7 +55,7 @@ GeneratedRays generated(const Regions& r, std::uint64_t seed, std::uint64_t key,
     const AliasTable table(r.weights);
     GeneratedRays out;
     out.resize(n);
-    generate_rays(r.set.patches, r.regions, table, seed, key, 0, n, out, 0);
+    generate_rays(r.set.patches, r.regions, table, seed, key, 0, n, out, 0, RaySequence::random);
     return out;
 }
 
