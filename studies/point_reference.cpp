@@ -198,19 +198,17 @@ PointReferenceReport point_report(const PointRadiosity& r, const std::vector<Rgb
 }
 
 PointRadiosity estimate_reference_points(const Scene& scene, const PathTracer& tracer,
-                                         std::uint64_t target, std::uint64_t strata_seed,
-                                         std::uint64_t paths, std::uint64_t seed,
-                                         Progress& progress, const Ranks& ranks,
-                                         std::uint64_t& rays) {
+                                         const PointReferenceOptions& o, Progress& progress,
+                                         const Ranks& ranks, std::uint64_t& rays) {
     PointRadiosity r;
-    r.points = stratified_points(tracer.patches(), target, strata_seed);
-    r.paths = paths;
-    r.seed = seed;
+    r.points = stratified_points(tracer.patches(), o.points, o.strata_seed);
+    r.paths = o.paths;
+    r.seed = o.seed;
     r.scene = scene.name;
     r.geometry_hash = geometry_hash(scene.mesh);
     r.patch_count = scene.mesh.n_faces();
     const std::vector<Rgb> emission = point_emission(tracer.patches(), r.points);
-    progress.stage(fmt::format("{} points, 2 seeds x {} paths", r.points.size(), paths));
+    progress.stage(fmt::format("{} points, 2 seeds x {} paths", r.points.size(), o.paths));
     rays = estimate_points(tracer, r, emission, progress, ranks);
     return r;
 }
@@ -223,10 +221,8 @@ PointReference compute_point_reference(const Scene& scene, const PointReferenceO
     const PathTracer tracer(diffuse_patch_set(scene), o.path);
     std::uint64_t rays = 0;
     tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
-    arena.execute([&] {
-        ref.points = estimate_reference_points(scene, tracer, o.points, o.strata_seed, o.paths,
-                                               o.seed, progress, ranks, rays);
-    });
+    arena.execute(
+        [&] { ref.points = estimate_reference_points(scene, tracer, o, progress, ranks, rays); });
     ref.report = point_report(ref.points, point_emission(tracer.patches(), ref.points.points));
     ref.report.rays = rays;
     TraceOptions views = o.views;

@@ -100,13 +100,12 @@ PointReference compute_point_reference(const Scene& scene, const PointReferenceO
                                        Progress& progress = no_progress(),
                                        const Ranks& ranks = Ranks::single());
 
-// The points alone, estimated as compute_point_reference estimates them (a mesh reference's
-// check of its own discretisation takes a few); `rays` gets the rays their paths cast.
+// The points alone, estimated as compute_point_reference estimates them (o's points,
+// strata_seed, paths and seed; a mesh reference's check of its own discretisation takes a few);
+// `rays` gets the rays their paths cast.
 PointRadiosity estimate_reference_points(const Scene& scene, const PathTracer& tracer,
-                                         std::uint64_t points, std::uint64_t strata_seed,
-                                         std::uint64_t paths, std::uint64_t seed,
-                                         Progress& progress, const Ranks& ranks,
-                                         std::uint64_t& rays);
+                                         const PointReferenceOptions& o, Progress& progress,
+                                         const Ranks& ranks, std::uint64_t& rays);
 
 // The report of a reference's points (compute_point_reference fills it; a reader recomputes it).
 PointReferenceReport point_report(const PointRadiosity& points, const std::vector<Rgb>& emission);

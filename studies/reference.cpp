@@ -84,10 +84,13 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& o, Progr
     if (const CheckSize check = check_size(o, ref.solution.stats.leaves); check.points > 0) {
         progress.stage("checking the mesh against points");
         const PathTracer tracer(diffuse_patch_set(scene), PathOptions{});
+        PointReferenceOptions sampling;
+        sampling.points = check.points;
+        sampling.paths = check.paths;
+        sampling.seed = seed;
         std::uint64_t rays = 0;
         const PointTarget points =
-            point_target(estimate_reference_points(scene, tracer, check.points, 0, check.paths,
-                                                   seed, progress, ranks, rays),
+            point_target(estimate_reference_points(scene, tracer, sampling, progress, ranks, rays),
                          tracer.patches());
         ref.discretisation = point_object_error(first_tracer, ref.mesh, points);
         ref.check_paths = check.paths;
