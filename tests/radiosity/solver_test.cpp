@@ -144,8 +144,8 @@ TEST(FixedMesh, FurnaceOnAUniformMesh) {
 
 // The scrambled Sobol sequence keeps the estimator exact where it is exact and unbiased where it
 // is a mean: the furnace's K-bounce value on a uniform and a refined mesh, the plates' rho E F
-// within the pseudo-random estimate's standard error (a scrambled net's variance is no larger
-// for this indicator of bounded variation), and the same bits on one and two threads.
+// by a t test over seeds (independent scrambles: the sequence's own variance, whatever it is),
+// and the same bits on one and two threads.
 TEST(SobolSequence, FurnaceOnAUniformAndARefinedMesh) {
     SolverOptions o;
     o.rays = 30'000;
@@ -159,17 +159,15 @@ TEST(SobolSequence, FurnaceOnAUniformAndARefinedMesh) {
 }
 
 TEST(SobolSequence, PlatesReceiverGetsRhoTimesEmissionTimesFormFactor) {
-    for (std::uint64_t seed : {1u, 2u, 3u}) {
+    std::vector<double> receiver;
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
         SolverOptions o;
-        o.rays = 400'000;
+        o.rays = 100'000;
         o.seed = seed;
         o.sequence = RaySequence::sobol;
-        const Solution sol = solve(unit_plates(0.5), o);
-        const double f = parallel_rectangles(1, 1, 1), n0 = double(sol.stats.iterations[0].rays);
-        const double se = 0.5 * std::sqrt(f * (1 - f) / n0);
-        EXPECT_TRUE(
-            within_standard_errors("receiver B", sol.hierarchy->root(1).radiosity[0], 0.5 * f, se));
+        receiver.push_back(solve(unit_plates(0.5), o).hierarchy->root(1).radiosity[0]);
     }
+    EXPECT_TRUE(t_test("receiver B", receiver, 0.5 * parallel_rectangles(1, 1, 1)));
 }
 
 TEST(SobolSequence, SameHierarchyAndValuesForOneAndTwoThreads) {

@@ -68,6 +68,13 @@ void expect_every_point(const PointRadiosity& r, Exact exact) {
     EXPECT_EQ(failed, 0u) << "points off by more than " << z << " standard errors";
 }
 
+// The noise falls as one over the root of the paths: twice the target needs four times the paths.
+TEST(PointReference, ThePathsForTheTargetNoiseScaleAsItsSquare) {
+    EXPECT_EQ(paths_for_target_noise(2 * kTargetNoise, 64), 256u);
+    EXPECT_EQ(paths_for_target_noise(kTargetNoise, 64), 64u);
+    EXPECT_EQ(paths_for_target_noise(0.24073847049632754, 64), 1484u);  // the office's, results.md
+}
+
 TEST(PointReference, TheFurnaceIsExactAtEveryPoint) {
     Scene furnace = load_scene("furnace");
     furnace.views.clear();  // the points alone
