@@ -83,6 +83,17 @@ void OutputSet::lock(const fs::path& output, bool is_folder) {
     m_locks.push_back(std::make_unique<OutputLock>(output, is_folder));
 }
 
+void check_folder_takes(const fs::path& file) {
+    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    std::error_code ec;
+    const fs::file_status status = fs::status(folder, ec);
+    if (status.type() == fs::file_type::not_found) return;
+    if (!fs::is_directory(status)) {
+        throw InputError("cannot write " + file.string(), "not a folder: " + folder.string());
+    }
+    fs::remove(create_temp_beside(file), ec);
+}
+
 void OutputSet::abandon() noexcept {
     std::error_code ignored;
     for (const fs::path& tmp : m_temps) {

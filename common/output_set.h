@@ -44,4 +44,10 @@ private:
     bool m_committed = false;
 };
 
+// Proves that a file can be made in `file`'s folder, when the folder exists, by making and
+// removing a temporary file there (a folder not made yet is made when the file is written).
+// Throws InputError "cannot write FILE: why": a read-only folder, or a file in the folder's
+// place. A study checks its cells' folders so, before its first cell.
+void check_folder_takes(const std::filesystem::path& file);
+
 }  // namespace hmcr

@@ -11,12 +11,14 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/interrupt.h"
 #include "common/output_paths.h"
+#include "common/output_set.h"
 #include "common/progress.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
@@ -103,11 +105,17 @@ struct CellLoop {
 };
 
 // One cell, before any is computed: its outputs checked (common/output_paths.h: none a folder, a
-// device or a name too long) and its earlier file read (CellLoop::previous), so that a refusal
-// loses no work. Throws InputError for the first output that cannot be written.
+// device or a name too long), each folder they go into proven writable once (`folders` holds
+// those already proven: common/output_set.h), and its earlier file read (CellLoop::previous),
+// so that a refusal loses no work. Throws InputError for the first output that cannot be
+// written.
 template <class Cell>
-std::optional<Cell> check_cell(const CellLoop<Cell>& loop, std::size_t i) {
-    for (const std::filesystem::path& file : loop.outputs(i)) check_output_file(file);
+std::optional<Cell> check_cell(const CellLoop<Cell>& loop, std::size_t i,
+                               std::set<std::filesystem::path>& folders) {
+    for (const std::filesystem::path& file : loop.outputs(i)) {
+        check_output_file(file);
+        if (folders.insert(file.parent_path()).second) check_folder_takes(file);
+    }
     return loop.previous(i);
 }
 
@@ -119,9 +127,10 @@ template <class Cell>
 std::vector<Cell> run_cells(const CellLoop<Cell>& loop, Progress& progress) {
     std::vector<std::optional<Cell>> previous;
     std::size_t to_compute = 0, computed = 0;
+    std::set<std::filesystem::path> folders;
     for (std::size_t i = 0; i < loop.count; ++i) {
         throw_if_interrupted();
-        previous.push_back(check_cell(loop, i));
+        previous.push_back(check_cell(loop, i, folders));
         to_compute += previous.back() ? 0 : 1;
     }
     const auto start = std::chrono::steady_clock::now();

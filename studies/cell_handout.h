@@ -31,10 +31,11 @@ std::vector<Cell> hand_out_cells(const CellLoop<Cell>& loop, Progress& progress,
     };
     std::vector<std::optional<Cell>> cells(loop.count);
     std::vector<std::size_t> todo;
+    std::set<std::filesystem::path> folders;
     try {
         for (std::size_t i = 0; i < loop.count; ++i) {
             throw_if_interrupted();
-            cells[i] = check_cell(loop, i);
+            cells[i] = check_cell(loop, i, folders);
             if (!cells[i]) todo.push_back(i);
         }
     } catch (...) {

@@ -97,6 +97,20 @@ TEST_F(HostileStudy, TheCellCountAndTheSeedsAreBounded) {
         "pass the largest seed");
 }
 
+// A cells/ folder that takes no file is found before the first cell is computed: the one line
+// of the refusal is all the study prints (no budget probe before it).
+TEST_F(HostileStudy, ACellsFolderThatTakesNoFileIsFoundBeforeAnyCell) {
+    m_temp.write("st/cells", "a file where the folder goes");
+    refused(kStudy, "cannot write st/cells/plates-power-B20-s1.json: not a folder: st/cells");
+    std::filesystem::remove(dir() / "st" / "cells");
+    std::filesystem::create_directories(dir() / "st" / "cells");
+    const Unwritable read_only(dir() / "st" / "cells");
+    if (!read_only.ok()) GTEST_SKIP() << "no read-only folder can be made here";
+    refused(kStudy, "cannot write st/cells/plates-power-B20-s1.json");
+    refused("study plates.json --reference ref --samplers uniform --spp 2 --seeds 1 -o st",
+            "cannot write st/cells/plates-uniform-spp2-s1.json");
+}
+
 TEST_F(HostileStudy, QuietMeansQuiet) {
     accepted(kStudy + std::string(" -q"));
     m_temp.write("st/cells/plates-power-B20-s1.json", "{}");
