@@ -95,7 +95,9 @@ template <class Cell>
 struct CellLoop {
     std::size_t count = 0;
     std::function<std::optional<Cell>(std::size_t)> previous;  // read_previous_cell's answer
-    std::function<Cell(std::size_t)> compute;
+    // Computes a cell, writing its files (images, meshes) through the batch: they go into place
+    // with the cell's file, or not at all.
+    std::function<Cell(std::size_t, FileBatch&)> compute;
     std::function<nlohmann::json(const Cell&)> to_json;
     std::function<Cell(const nlohmann::json&)> from_json;
     std::function<std::filesystem::path(std::size_t)> file;
@@ -119,8 +121,20 @@ std::optional<Cell> check_cell(const CellLoop<Cell>& loop, std::size_t i,
     return loop.previous(i);
 }
 
+// Computes cell i and puts its files into place together, its cell file among them: an error
+// or a signal on the way leaves none of them. Returns the cell as its file holds it.
+template <class Cell>
+nlohmann::json compute_cell(const CellLoop<Cell>& loop, std::size_t i) {
+    FileBatch files;
+    nlohmann::json j = loop.to_json(loop.compute(i, files));
+    write_text_atomically(files.temp(loop.file(i)), j.dump(2) + "\n");
+    files.commit();
+    return j;
+}
+
 // Every cell is checked first (check_cell); a usable earlier one is skipped, the others are
-// computed, written atomically and taken back as a resumed run would read them. A note after
+// computed, written with their files (compute_cell) and taken back as a resumed run would read
+// them. A note after
 // each cell: its outcome, the time elapsed and the time left from the cells computed so far.
 // Throws Interrupted between cells after a signal.
 template <class Cell>
@@ -144,8 +158,7 @@ std::vector<Cell> run_cells(const CellLoop<Cell>& loop, Progress& progress) {
         }
         throw_if_interrupted();
         const auto cell_start = std::chrono::steady_clock::now();
-        const nlohmann::json j = loop.to_json(loop.compute(i));
-        write_text_atomically(loop.file(i), j.dump(2) + "\n");
+        const nlohmann::json j = compute_cell(loop, i);
         cells.push_back(loop.from_json(j));
         compute_seconds += seconds_since(cell_start);
         ++computed;

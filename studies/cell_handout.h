@@ -98,10 +98,8 @@ void work_on_cells(const CellLoop<Cell>& loop, const Ranks& ranks) {
         if (work.empty()) return;
         const std::size_t i = std::stoull(work);
         try {
-            const nlohmann::json j = loop.to_json(loop.compute(i));
-            const std::string text = j.dump(2) + "\n";
-            write_text_atomically(loop.file(i), text);
-            ranks.send(0, handout::kDone, std::to_string(i) + "\n" + text);
+            const nlohmann::json j = compute_cell(loop, i);
+            ranks.send(0, handout::kDone, std::to_string(i) + "\n" + j.dump(2) + "\n");
         } catch (...) {
             const Failure f = failure_of(std::current_exception());
             ranks.send(0, handout::kDone, "!" + std::to_string(f.exit_code) + " " + f.message);

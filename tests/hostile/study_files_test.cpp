@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "tests/hostile/hostile.h"
+#include "tests/support/hmcr_child.h"
 
 namespace hmcr::test {
 namespace {
@@ -109,6 +110,31 @@ TEST_F(HostileStudy, ACellsFolderThatTakesNoFileIsFoundBeforeAnyCell) {
     refused(kStudy, "cannot write st/cells/plates-power-B20-s1.json");
     refused("study plates.json --reference ref --samplers uniform --spp 2 --seeds 1 -o st",
             "cannot write st/cells/plates-uniform-spp2-s1.json");
+}
+
+// A signal during a cell's frozen re-solve, after its own mesh and images are made: none of the
+// cell's files is left, as the study says ("no partial output left").
+TEST_F(HostileStudy, ACellInterruptedInItsReSolveLeavesNoneOfItsFiles) {
+    HmcrChild child(
+        "study plates.json --reference ref --budgets 20 --oracles power --seeds 1 "
+        "--budget-tolerance 0.1 --mesh-rays 1e12 -o st",
+        dir(), 60);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (read_file(dir() / ".stderr").find("mesh error: the mesh frozen") == std::string::npos &&
+           std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // well into the re-solve
+    child.signal(SIGTERM);
+    const ChildExit e = child.wait();
+    EXPECT_EQ(e.code, 128 + SIGTERM) << e.err;
+    EXPECT_NE(e.err.find("mesh error: the mesh frozen"), std::string::npos) << e.err;
+    EXPECT_NE(e.err.find("no partial output left"), std::string::npos) << e.err;
+    std::vector<std::string> left;  // the folder goes too, made by this run
+    std::error_code none;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(dir() / "st", none))
+        left.push_back(entry.path().lexically_relative(dir()).string());
+    EXPECT_TRUE(left.empty()) << left.front();
 }
 
 TEST_F(HostileStudy, QuietMeansQuiet) {
