@@ -9,10 +9,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "common/atomic_file.h"
 #include "common/error.h"
@@ -51,6 +53,17 @@ void check_study_size(std::uint64_t per_seed, int seeds, std::uint64_t first_see
 // "rays is 200000 now": the settings that differ between a cell file and this run.
 std::string settings_difference(const nlohmann::json& old_settings, const nlohmann::json& now);
 
+// "no result for view 'top'" for the first of `views` that `results` (a cell's, by view name)
+// does not hold, or nothing.
+template <class Result>
+std::string missing_view(const std::map<std::string, Result>& results,
+                         const std::vector<std::string>& views, const char* what = "result") {
+    for (const std::string& v : views) {
+        if (results.count(v) == 0) return fmt::format("no {} for view {}", what, quote(v));
+    }
+    return "";
+}
+
 // How an earlier run's cell file is taken.
 template <class Cell>
 struct CellFileRule {
@@ -58,10 +71,14 @@ struct CellFileRule {
     std::function<bool(const Cell&)> is_this_cell;     // scene, criterion, size, seed match
     nlohmann::json settings;                           // this run's; Cell::settings must equal it
     bool redo_other_settings = false;
+    // What the cell lacks that this study needs of it ("no result for view 'side'"), or
+    // nothing: a cell file edited or made for a scene of other views is computed again.
+    std::function<std::string(const Cell&)> lacks;
 };
 
-// The cell of `file` from an earlier run, if it is usable. An unreadable or foreign file is
-// computed again (a truncated write, an edited file) and said so in `notes`; one made with other
+// The cell of `file` from an earlier run, if it is usable. An unreadable or foreign file, or one
+// that lacks what the study needs (CellFileRule::lacks), is computed again (a truncated write,
+// an edited file) and said so in `notes`; one made with other
 // settings is refused (InputError naming the file) unless rule.redo_other_settings.
 template <class Cell>
 std::optional<Cell> read_previous_cell(const std::filesystem::path& file,
@@ -79,7 +96,12 @@ std::optional<Cell> read_previous_cell(const std::filesystem::path& file,
         notes.note("the file holds another cell; computing it again");
         return std::nullopt;
     }
-    if (cell.settings == rule.settings) return cell;
+    if (cell.settings == rule.settings) {
+        const std::string lacking = rule.lacks ? rule.lacks(cell) : "";
+        if (lacking.empty()) return cell;
+        notes.note("the file holds " + lacking + "; computing it again");
+        return std::nullopt;
+    }
     if (rule.redo_other_settings) {
         notes.note("made with other settings; computing it again");
         return std::nullopt;

@@ -129,6 +129,11 @@ std::optional<SamplingCell> SamplingStudy::previous_cell(std::size_t index) {
     };
     rule.settings = m_settings;
     rule.redo_other_settings = m_options.redo_other_settings;
+    rule.lacks = [this](const SamplingCell& c) {
+        std::vector<std::string> views;
+        for (const View& v : m_scene.views) views.push_back(v.name);
+        return c.ok() ? missing_view(c.views, views) : std::string();
+    };
     CellNotes notes(m_progress, where(index) + ": ");
     return read_previous_cell(file("cells", t.name, ".json"), rule, notes);
 }

@@ -101,6 +101,7 @@ public:
 
 private:
     std::optional<CellResult> previous_cell(std::size_t index);
+    std::string lacks(const CellResult& cell, const MeshingCell& t) const;
     std::filesystem::path cell_file(const MeshingCell& t) const {
         return named_file(m_options.output / "cells", t.name, ".json");
     }
@@ -149,8 +150,25 @@ std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
     };
     rule.settings = m_settings;
     rule.redo_other_settings = m_options.redo_other_settings;
+    rule.lacks = [&](const CellResult& c) { return lacks(c, t); };
     CellNotes notes(m_progress, where(index) + ": ");
     return read_previous_cell<CellResult>(cell_file(t), rule, notes);
+}
+
+// What an earlier cell of the same settings lacks: a result for every view, and the rays and
+// mesh error these settings give a cell (a failed cell has none).
+std::string StudyRunner::lacks(const CellResult& c, const MeshingCell& t) const {
+    if (!c.ok()) return "";
+    std::vector<std::string> views;
+    for (const View& v : m_scene.views) views.push_back(v.name);
+    const std::uint64_t rays = cell_rays(m_options, t.budget);
+    const std::uint64_t mesh_rays = cell_mesh_rays(m_options, t.budget);
+    if (c.rays != rays) return fmt::format("rays {}, not the {} of this cell", c.rays, rays);
+    if (c.mesh_rays != mesh_rays) {
+        return fmt::format("mesh_rays {}, not the {} of this cell", c.mesh_rays, mesh_rays);
+    }
+    if (std::string m = missing_view(c.views, views); !m.empty()) return m;
+    return mesh_rays > 0 ? missing_view(c.mesh_views, views, "mesh error") : "";
 }
 
 // Every file a cell writes, for the checks before any cell is computed.

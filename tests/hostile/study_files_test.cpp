@@ -83,6 +83,47 @@ TEST_F(HostileStudy, CellsWhoseValuesDoNotCheckOutAreComputedAgain) {
     }
 }
 
+// A cell of the study's settings that lacks what the study needs of it (a view's result, the
+// mesh error, the rays of its budget) is computed again, not tabled short of a seed.
+TEST_F(HostileStudy, CellsThatLackWhatTheStudyNeedsAreComputedAgain) {
+    const std::string study = std::string(kStudy) + " --budget-tolerance 0.1 --mesh-rays 20000";
+    accepted(study);
+    const nlohmann::json good = nlohmann::json::parse(read_file(cell(1)));
+    ASSERT_EQ(good["status"], "ok");
+    const std::vector<std::tuple<std::string, nlohmann::json, std::string>> spoiled = {
+        {"/views", nlohmann::json::object(), "no result for view 'side'"},
+        {"/mesh_views", nlohmann::json::object(), "no mesh error for view 'side'"},
+        {"/rays", 5, "rays 5, not the 20000 of this cell"},
+        {"/mesh_rays", 0, "mesh_rays 0, not the 20000 of this cell"},
+    };
+    for (const auto& [pointer, value, note] : spoiled) {
+        nlohmann::json bad = good;
+        bad[nlohmann::json::json_pointer(pointer)] = value;
+        m_temp.write("st/cells/plates-power-B20-s1.json", bad.dump(2));
+        const CliRun r = accepted(study);
+        EXPECT_NE(
+            r.err.find("plates-power-B20-s1: the file holds " + note + "; computing it again"),
+            std::string::npos)
+            << pointer << "\n"
+            << r.err;
+        EXPECT_EQ(nlohmann::json::parse(read_file(cell(1)))["views"], good["views"]) << pointer;
+        EXPECT_NE(read_file(dir() / "st" / "table.md").find("| power | 2/2 |"), std::string::npos)
+            << pointer;
+    }
+    const std::string sampling =
+        "study plates.json --reference ref --samplers uniform --spp 2 --seeds 1 -o sst";
+    accepted(sampling);
+    const std::filesystem::path file = dir() / "sst" / "cells" / "plates-uniform-spp2-s1.json";
+    nlohmann::json bad = nlohmann::json::parse(read_file(file));
+    bad["views"] = nlohmann::json::object();
+    m_temp.write("sst/cells/plates-uniform-spp2-s1.json", bad.dump(2));
+    const CliRun r = accepted(sampling);
+    EXPECT_NE(r.err.find("the file holds no result for view 'side'; computing it again"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(nlohmann::json::parse(read_file(file))["views"].size(), 1u);
+}
+
 TEST_F(HostileStudy, TheCellCountAndTheSeedsAreBounded) {
     refused("study plates.json --reference ref --budgets 20 --oracles all --seeds 2000 -o big",
             "7 x 2000 seeds = 14000 cells");
