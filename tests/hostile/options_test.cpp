@@ -111,6 +111,14 @@ TEST_F(Hostile, StudyListsWithAValueTwiceAreRefused) {
     refused(study + "--budgets 5 --oracles all,kl", "oracle kl is given twice");
     refused(study + "--budgets 500,500", "budget 500 is given twice");
     refused(study + "--budgets 500,,600", "empty item in the list");
+    // An empty item at either end is refused alike, in every list.
+    refused(study + "--budgets 20,", "empty item in the list '20,'");
+    refused(study + "--budgets ,20", "empty item in the list ',20'");
+    refused(study + "--budgets , ", "empty item in the list ','");
+    refused(study + "--budgets 5 --oracles kl,", "empty item in the list 'kl,'");
+    refused(study + "--samplers uniform, --spp 16", "empty item in the list 'uniform,'");
+    refused(study + "--samplers uniform --spp 16,", "empty item in the list '16,'");
+    refused(study + "--samplers uniform --spp 16,32,", "empty item in the list '16,32,'");
 }
 
 }  // namespace
