@@ -31,8 +31,9 @@ TEST(RefuseOverwriting, FindsAnInputOrARepeatByAnyPath) {
     fs::create_directories(dir.path() / "sub");
     for (const fs::path& same : {dir.path() / "sub" / ".." / "scene.json", dir.path() / "hard.json",
                                  dir.path() / "soft.json"}) {
-        EXPECT_NE(refusal({dir.path() / "x.vtp", same}, {scene}).find("is an input of this command"),
-                  std::string::npos)
+        EXPECT_NE(
+            refusal({dir.path() / "x.vtp", same}, {scene}).find("is an input of this command"),
+            std::string::npos)
             << same;
     }
     const fs::path x = dir.path() / "x.vtp";

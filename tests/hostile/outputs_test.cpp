@@ -29,6 +29,22 @@ TEST_F(Hostile, NoCommandWritesOverItsInputs) {
     refused("solve plates.obj -o m.vtp", "is an input of this command");
 }
 
+// The bundled layout, DIR/X.obj beside DIR/X.json: a solve of the mesh alone names its summary
+// DIR/X.json, the scene file, which is no input of that run; a trace's IMAGE.json alike. Refused;
+// an earlier summary, or a file that is no JSON, is replaced as ever.
+TEST_F(Hostile, NoSummaryReplacesASceneFileBesideIt) {
+    plates();
+    refused("solve plates.obj --rays 2000 -q -o plates.vtp",
+            "plates.json: is a scene file (it names a \"mesh\")");
+    m_temp.write("v/side.json", R"({"mesh": "../plates.obj"})");
+    refused("trace plates.obj --spp 1 -q -o v/side.png", "v/side.json: is a scene file");
+    accepted("solve plates.obj --rays 2000 -q -o p.vtp");
+    accepted("solve plates.obj --rays 2000 -q -o p.vtp");  // over its own summary
+    m_temp.write("q.json", "not json");
+    accepted("solve plates.obj --rays 2000 -q -o q.vtp");
+    EXPECT_NE(read_file(dir() / "q.json").find("hmcr_version"), std::string::npos);
+}
+
 TEST_F(Hostile, AStudyMayNotWriteIntoItsReference) {
     plates();
     std::filesystem::create_directories(dir() / "ref");
