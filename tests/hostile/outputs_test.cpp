@@ -2,6 +2,7 @@
 // written is refused before the work, in hmcr's words: every file of the command's set is
 // checked first, so that a refusal leaves none of them.
 #include "tests/hostile/hostile.h"
+#include "tests/support/hmcr_child.h"
 
 namespace hmcr::test {
 namespace {
@@ -108,6 +109,38 @@ TEST_F(Hostile, AnInterruptedReferenceLeavesNoFolder) {
     std::filesystem::remove(dir() / ".stdout");
     std::filesystem::remove(dir() / ".stderr");
     EXPECT_TRUE(std::filesystem::is_empty(dir()));
+}
+
+// A hang-up (the terminal closed) stops a run as SIGTERM does: exit code 129, one line, no
+// output and no lock file left. Under nohup (SIGHUP ignored from the start) the run goes on.
+TEST_F(Hostile, AHangUpEndsARunCleanlyUnlessIgnored) {
+    plates();
+    const auto wait_for_lock = [&] {
+        for (int i = 0; i < 1500 && !std::filesystem::exists(dir() / "out" / ".x.pvsm.lock"); ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    };
+    {
+        HmcrChild solve("solve plates.json --rays 1e12 -q -o out/x.vtp", dir(), 60);
+        wait_for_lock();
+        solve.signal(SIGHUP);
+        const ChildExit e = solve.wait();
+        EXPECT_EQ(e.code, 128 + SIGHUP) << e.err;
+        EXPECT_EQ(e.err, "hmcr: error: interrupted by SIGHUP; no partial output left\n");
+        EXPECT_LT(e.seconds, 5.0);
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir() / "out"));  // nor its lock files
+    struct sigaction ignore {
+    }, before{};
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGHUP, &ignore, &before);  // as nohup starts it
+    HmcrChild solve("solve plates.json --rays 1e12 -q -o out/x.vtp", dir(), 60);
+    sigaction(SIGHUP, &before, nullptr);
+    wait_for_lock();
+    solve.signal(SIGHUP);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    EXPECT_TRUE(std::filesystem::exists(dir() / "out" / ".x.pvsm.lock"));  // still running
+    solve.signal(SIGTERM);
+    EXPECT_EQ(solve.wait().code, 128 + SIGTERM);
 }
 
 TEST_F(Hostile, RenderIsQuietWhenAsked) {
