@@ -30,10 +30,13 @@ struct InfoArgs {
     SceneFlags scene_flags;
 };
 
-// The discretisation `hmcr info` measures: a scene's patches, or a solution's leaves, by side.
+// The discretisation `hmcr info` measures: a scene's patches, or a solution file's cells, by
+// side. The cells are the solution's leaves, but for a cluster (a leaf of several cells, all of
+// its radiosity), whose cells are measured each apart.
 struct InfoTarget {
     std::string label;
     ChannelStates states;
+    const char* noun = "patches";  // what a state is: patches, or a solution's cells
 };
 
 InfoTarget info_target(const InfoArgs& a) {
@@ -47,15 +50,17 @@ InfoTarget info_target(const InfoArgs& a) {
             ? read_solution(a.scene)
             : read_solution(a.scene, load_scene_reporting(a.solution_scene, false,
                                                           SceneUse::geometry, a.scene_flags));
-    return {solution.meta.scene + " (leaves of " + fs::path(a.scene).filename().string() + ")",
-            leaf_states(solution.mesh)};
+    return {solution.meta.scene + " (cells of " + fs::path(a.scene).filename().string() +
+                ": its leaves, a cluster's cells each apart)",
+            leaf_states(solution.mesh), "cells"};
 }
 
-// "N patches", and with backs "N patches and M backs (S sides)": the channel's states.
+// "N patches" (or cells), and with backs "N patches and M backs (S sides)": the channel's
+// states.
 std::string state_count(const InfoTarget& t) {
     const std::size_t fronts = t.states.fronts(), sides = t.states.states.patches.size();
-    if (sides == fronts) return fmt::format("{} patches", fronts);
-    return fmt::format("{} patches and {} backs ({} sides)", fronts, sides - fronts, sides);
+    if (sides == fronts) return fmt::format("{} {}", fronts, t.noun);
+    return fmt::format("{} {} and {} backs ({} sides)", fronts, t.noun, sides - fronts, sides);
 }
 
 void print_table(const InfoTarget& t, const InformationMeasures& m, double seconds) {
@@ -81,7 +86,8 @@ void print_json(const InfoTarget& t, const InformationMeasures& m, double open, 
     nlohmann::json j = to_json(m);
     j["open_fraction"] = open;
     j["scene"] = t.label;
-    j["patches"] = t.states.fronts();
+    j["patches"] = t.states.fronts();  // the front states, patches or cells
+    j["states"] = t.noun;
     if (t.states.backs) j["backs"] = t.states.states.patches.size() - t.states.fronts();
     j["seconds"] = seconds;
     fmt::print("{}\n", j.dump(2));
@@ -90,7 +96,7 @@ void print_json(const InfoTarget& t, const InformationMeasures& m, double open, 
 // The measures describe a closed scene's channel, with every row of F sampled.
 void warn_assumptions(const InformationMeasures& m, double open, const InfoTarget& t) {
     const std::size_t states = t.states.states.patches.size();
-    const char* noun = t.states.backs ? "sides" : "patches";
+    const char* noun = t.states.backs ? "sides" : t.noun;
     if (open > 0.01) {
         fmt::print(
             stderr,
@@ -149,7 +155,7 @@ Command info_command(CLI::App& app) {
         "info", "information measures of a scene's patches (entropies, mutual information)");
     cmd->add_option("scene", a->scene,
                     "bundled scene name, scene .json, .obj, .mgf, or a solution's .vtp (its "
-                    "leaves)")
+                    "cells)")
         ->required();
     cmd->add_option("--scene", a->solution_scene,
                     "with a .vtp: the scene it solves (checked against the solution)");

@@ -22,6 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// "27 cells," as info's first line counts a solution's states.
+std::string fmt_cells(int n) { return "): " + std::to_string(n) + " cells,"; }
+
 class Cli : public testing::Test {
 protected:
     CliRun hmcr(const std::string& args) const { return run_hmcr(args, m_dir); }
@@ -88,6 +91,26 @@ TEST_F(Cli, OraclesAndScenesAreListed) {
     EXPECT_NE(o.out.find("power"), std::string::npos);
     const CliRun s = hmcr("scenes");
     EXPECT_NE(s.out.find("cube-room"), std::string::npos);
+}
+
+// `info` on a solution names what it measures: the file's cells, which for a clustered solution
+// outnumber its leaves (a cluster is one leaf of several cells).
+TEST_F(Cli, InfoOnASolutionSaysItMeasuresItsCells) {
+    ASSERT_EQ(hmcr("solve cornell --clustering isotropic --budget 20 --budget-tolerance 0.3 "
+                   "--rays 1e5 -q -o c.vtp")
+                  .exit_code,
+              0);
+    const auto summary = nlohmann::json::parse(read_file(m_dir / "c.json"));
+    ASSERT_GT(summary["counts"]["cluster_leaves"].get<int>(), 0);  // a clustered solution
+    const CliRun info = hmcr("info c.vtp --lines 1e4 --json");
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    const auto j = nlohmann::json::parse(info.out);
+    EXPECT_EQ(j["states"], "cells");
+    EXPECT_EQ(j["scene"], "cornell (cells of c.vtp: its leaves, a cluster's cells each apart)");
+    EXPECT_GT(j["patches"].get<int>(), summary["counts"]["leaves"].get<int>());
+    const CliRun table = hmcr("info c.vtp --lines 1e4");
+    EXPECT_NE(table.out.find(fmt_cells(j["patches"].get<int>())), std::string::npos) << table.out;
+    EXPECT_EQ(table.out.find("leaves of"), std::string::npos) << table.out;
 }
 
 // A sweep script that holds much memory starts each solve with posix_spawn, as Python's
