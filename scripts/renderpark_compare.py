@@ -363,38 +363,52 @@ def hmcr_error(args, solution, foreign):
             "psnr_a": {v: m["psnr_a"] for v, m in metrics["views"].items()}}
 
 
-def hmcr_solve_command(args, config, rays, out):
+def hmcr_solve_command(args, config, rays, seed, out):
     """hmcr's solve of the Cornell box in one of the measured settings, at `rays` rays."""
-    command = [args.hmcr, "solve", "cornell", "--threads", "1", "--rays", str(rays), "-q",
-               "-o", out]
+    command = [args.hmcr, "solve", "cornell", "--threads", "1", "--rays", str(rays), "--seed",
+               str(seed), "-q", "-o", out]
     if config == "matched":  # the timing comparison's: power, rpkCpp's leaves, refined once
         command += ["--oracle", "power", "--refine-share", "1", "--epsilon",
                     str(args.hmcr_epsilon)]
     return command
 
 
-def hmcr_at(args, config, rays, work, name):
-    """One hmcr solve: its CPU seconds, leaves, emitted power, repairs and errors."""
+def hmcr_at(args, config, rays, work, name, seed=1, repeats=None):
+    """One hmcr solve: its CPU seconds, leaves, powers, repairs and errors."""
     out = os.path.join(work, f"{name}.vtp")
-    cpu, _ = cpu_runs(hmcr_solve_command(args, config, rays, out), work, args.repeats)
+    cpu, _ = cpu_runs(hmcr_solve_command(args, config, rays, seed, out), work,
+                      repeats or args.repeats)
     with open(os.path.join(work, f"{name}.json")) as f:
         summary = json.load(f)
-    return {"rays": summary["counts"]["rays"], "leaves": summary["counts"]["leaves"],
-            "cpu_s": cpu, "emitted_w": summary["power"]["emitted_w"],
+    b, area = vtp_array(out, "ElementRadiosity"), vtp_array(out, "ElementArea")
+    return {"requested_rays": rays, "rays": summary["counts"]["rays"],
+            "leaves": summary["counts"]["leaves"], "cpu_s": cpu,
+            "emitted_w": summary["power"]["emitted_w"],
+            "total_w": [sum(b[3 * i + c] * a for i, a in enumerate(area)) for c in range(3)],
             "repairs": summary["scene"]["repairs"]["count"],
             "patches": summary["scene"]["patches"], **hmcr_error(args, out, False)}
+
+
+def with_seeds(args, config, first, work, name):
+    """The first seed's solve with the object errors of seeds 2..k at the same rays."""
+    errors = [first["object_error"]]
+    for seed in range(2, args.seeds + 1):
+        errors.append(hmcr_at(args, config, first["requested_rays"], work, f"{name}-{seed}",
+                              seed, 1)["object_error"])
+    return {**first, "seed_errors": errors, "mean_error": statistics.mean(errors)}
 
 
 def hmcr_at_equal_time(args, config, first, target_cpu, work):
     """hmcr's solve whose CPU time matches target_cpu: the rays scaled by the time ratio, then
     corrected once along the line through the two runs (a solve's time is a + b rays)."""
-    rays = int(first["rays"] * target_cpu / first["cpu_s"])
-    second = hmcr_at(args, config, rays, work, f"hmcr-{config}-time")
+    name = f"hmcr-{config}-time"
+    rays = int(first["requested_rays"] * target_cpu / first["cpu_s"])
+    second = hmcr_at(args, config, rays, work, name)
     slope = (second["cpu_s"] - first["cpu_s"]) / (second["rays"] - first["rays"])
     if slope > 0:
-        rays = int(second["rays"] + (target_cpu - second["cpu_s"]) / slope)
-        second = hmcr_at(args, config, rays, work, f"hmcr-{config}-time")
-    return second
+        rays = int(second["requested_rays"] + (target_cpu - second["cpu_s"]) / slope)
+        second = hmcr_at(args, config, rays, work, name)
+    return with_seeds(args, config, second, work, name)
 
 
 def rpk_solutions(args, rpk, mgf, clustering, work):
@@ -439,19 +453,35 @@ def make_reference(args, work):
 
 
 def print_errors(results):
-    def row(name, r):
-        psnr = ", ".join(f"{v} {p:.2f}" for v, p in r["psnr_a"].items())
-        return (f"  {name:34s} {r['object_error']:.4f} +- {r['standard_error']:.4f}"
-                f"  (PSNRa dB {psnr})")
+    """The comparison as a table: one row a solution."""
+    print("| solution | rays | leaves | CPU s | object error ± se | hmcr seeds | PSNRa, dB |")
+    print("|:--|--:|--:|--:|--:|--:|--:|")
+
+    def row(name, r, seeds=""):
+        psnr = ", ".join(f"{p:.2f}" for p in r["psnr_a"].values())
+        print(f"| {name} | {r['rays']:,} | {r['leaves']:,} | {r['cpu_s']:.2f} | "
+              f"{r['object_error']:.4f} ± {r['standard_error']:.4f} | {seeds} | {psnr} |")
 
     for clustering, rpk in results["rpk"].items():
-        print(f"rpkCpp ({clustering}): {rpk['rays']:,} rays, {rpk['leaves']:,} leaves, "
-              f"CPU {rpk['cpu_s']:.2f} s\n  checks: {json.dumps(rpk['checks'])}")
-        print(row(f"rpkCpp {clustering}, constant", rpk["constant"]))
-        print(row(f"rpkCpp {clustering}, Gouraud", rpk["gouraud"]))
+        for kind in ("constant", "gouraud"):
+            row(f"rpkCpp {clustering}, {kind}", {**rpk, **rpk[kind]})
     for name, h in results["hmcr"].items():
-        print(row(f"hmcr {name} ({h['rays']:,} rays, {h['leaves']:,} leaves, "
-                  f"{h['cpu_s']:.2f} s)", h))
+        seeds = ", ".join(f"{e:.4f}" for e in h["seed_errors"])
+        row(f"hmcr {name}", h, f"{seeds} (mean {h['mean_error']:.4f})")
+    for clustering, rpk in results["rpk"].items():
+        c = rpk["checks"]
+        print(f"rpkCpp {clustering}: emitted {fmt_w(c['emitted_w'])} W, total flux "
+              f"{fmt_w(c['total_w'])} W (its own: {fmt_w(rpk['total_flux'])}), Gouraud "
+              f"integral {fmt_w(rpk['gouraud']['integral_w'])} W; leaf areas "
+              f"{c['leaf_area_vs_rpk']:.1e} from rpkCpp's, faces {c['face_area_vs_scene']:.1e} "
+              f"from the scene's; Ed / sourceRad {c['ed_over_src']}")
+    for name, h in results["hmcr"].items():
+        print(f"hmcr {name}: emitted {fmt_w(h['emitted_w'])} W, total flux "
+              f"{fmt_w(h['total_w'])} W")
+
+
+def fmt_w(values):
+    return "(" + ", ".join(f"{v:.4f}" for v in values) + ")"
 
 
 def main_error(args, work, rpk, mgf):
@@ -466,7 +496,8 @@ def main_error(args, work, rpk, mgf):
         first = hmcr_at(args, config, rpk0["rays"], work, f"hmcr-{config}-rays")
         if first["repairs"] or first["patches"] != len(read_obj(CORNELL_OBJ)[1]):
             sys.exit("hmcr's patches are not the OBJ's faces (repaired): PatchId would be wrong")
-        results["hmcr"][f"{config}, equal rays"] = first
+        results["hmcr"][f"{config}, equal rays"] = with_seeds(args, config, first, work,
+                                                              f"hmcr-{config}-rays")
         results["hmcr"][f"{config}, equal CPU time"] = hmcr_at_equal_time(
             args, config, first, rpk0["cpu_s"], work)
     print_errors(results)
@@ -504,6 +535,7 @@ def main():
     ap.add_argument("--reference-points", type=int, default=200000)
     ap.add_argument("--reference-paths", type=int, default=64)
     ap.add_argument("--reference-spp", type=float, default=16)
+    ap.add_argument("--seeds", type=int, default=3, help="--error: hmcr's seeds 1..k")
     ap.add_argument("--repeats", type=int, default=3,
                     help="--error: runs whose median CPU time is each solve's time")
     args = ap.parse_args()
