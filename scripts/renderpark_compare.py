@@ -440,6 +440,16 @@ def rpk_solutions(args, rpk, mgf, clustering, work):
     return result
 
 
+def verify_units(clustering, rpk, hmcr_emitted):
+    """Stops unless the leaves emit hmcr's watts and hold rpkCpp's own total flux (1e-3)."""
+    checks = rpk["checks"]
+    for what, got, want in (("emitted power", checks["emitted_w"], hmcr_emitted),
+                            ("total flux", checks["total_w"], rpk["total_flux"])):
+        if any(abs(g - w) > 1e-3 * max(abs(w), 1e-12) for g, w in zip(got, want)):
+            sys.exit(f"rpkCpp ({clustering}): the leaves' {what} {fmt_w(got)} W is not "
+                     f"{fmt_w(want)} W: the units or the leaves are wrong")
+
+
 def make_reference(args, work):
     if args.reference:
         return os.path.abspath(args.reference)
@@ -496,6 +506,8 @@ def main_error(args, work, rpk, mgf):
         first = hmcr_at(args, config, rpk0["rays"], work, f"hmcr-{config}-rays")
         if first["repairs"] or first["patches"] != len(read_obj(CORNELL_OBJ)[1]):
             sys.exit("hmcr's patches are not the OBJ's faces (repaired): PatchId would be wrong")
+        for clustering, rpk_result in results["rpk"].items():
+            verify_units(clustering, rpk_result, first["emitted_w"])
         results["hmcr"][f"{config}, equal rays"] = with_seeds(args, config, first, work,
                                                               f"hmcr-{config}-rays")
         results["hmcr"][f"{config}, equal CPU time"] = hmcr_at_equal_time(
