@@ -82,7 +82,8 @@ hmcrWriteLeaves(FILE *file, std::map<const Vertex *, int> *ids,
     int middle[4];
     for ( int k = 0; k < n; k++ ) {
         corner[k] = hmcrVertexId(file, ids, element->vertices[k]);
-        middle[k] = hmcrVertexId(file, ids, stochasticRadiosityElementEdgeMidpointVertex(element, k));
+        middle[k] = hmcrVertexId(file, ids,
+                                 stochasticRadiosityElementEdgeMidpointVertex(element, k));
     }
     fprintf(file, "l %d %d %d", patch, level, n);
     for ( int k = 0; k < n; k++ ) {
@@ -171,6 +172,13 @@ def _finite(path, line, words):
     return values
 
 
+def _integers(path, line, words):
+    try:
+        return [int(w) for w in words]
+    except ValueError:
+        raise _bad(path, line, f"'{' '.join(words)}' is not a list of vertex ids") from None
+
+
 def _leaf(path, line, words, vertices):
     try:
         patch, level, n = int(words[1]), int(words[2]), int(words[3])
@@ -181,7 +189,7 @@ def _leaf(path, line, words, vertices):
     if len(words) != 4 + 2 * n + 10:
         raise _bad(path, line, f"a leaf of {n} corners has {4 + 2 * n + 10} words, not "
                    f"{len(words)}")
-    ids = [int(w) for w in words[4:4 + 2 * n]]
+    ids = _integers(path, line, words[4:4 + 2 * n])
     for k, v in enumerate(ids):
         if (v < 0 and k < n) or (v >= 0 and v not in vertices):
             raise _bad(path, line, f"vertex {v} is not defined above")
@@ -204,7 +212,8 @@ def read_leaves(path):
             if not words:
                 continue
             if words[0] == "v" and len(words) == 5:
-                out.vertices[int(words[1])] = tuple(_finite(path, line, words[2:]))
+                out.vertices[_integers(path, line, words[1:2])[0]] = tuple(
+                    _finite(path, line, words[2:]))
             elif words[0] == "l":
                 out.leaves.append(_leaf(path, line, words, out.vertices))
             else:
@@ -273,13 +282,13 @@ class FaceFinder:
         self.normals = [_unit(newell(f)) for f in self.faces]
         lo = [min(p[k] for f in self.faces for p in f) for k in range(3)]
         hi = [max(p[k] for f in self.faces for p in f) for k in range(3)]
-        self.tolerance = 1e-4 * math.sqrt(_dot(_sub(hi, lo), _sub(hi, lo)))
+        self.tolerance = 1e-3 * math.sqrt(_dot(_sub(hi, lo), _sub(hi, lo)))  # off the plane
         self.last = {}  # rpkCpp patch -> the face its previous leaf was found in
 
     def _holds(self, f, point, normal):
         n = self.normals[f]
         return (_dot(n, normal) > 0.99
-                and abs(_dot(n, _sub(point, self.faces[f][0]))) < 10 * self.tolerance
+                and abs(_dot(n, _sub(point, self.faces[f][0]))) < self.tolerance
                 and _inside(point, self.faces[f], n))
 
     def find(self, point, normal, patch):
@@ -295,7 +304,7 @@ class FaceFinder:
                     best = (d, f)
         if best is not None:
             self.last[patch] = best[1]
-        return best and best[1]
+        return None if best is None else best[1]
 
 
 # ---------------------------------------------------------------- the two solutions

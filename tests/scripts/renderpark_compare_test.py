@@ -200,6 +200,10 @@ class BadInputTest(unittest.TestCase):
         self.assertTrue(self.read(rpk_leaves.LEAF_FILE_VERSION + "\n" + v
                                   + ok.replace(" 0.5 ", " nan ")).startswith("FILE:5: "))
         self.assertTrue(self.read(rpk_leaves.LEAF_FILE_VERSION + "\n").startswith("FILE:1: "))
+        self.assertTrue(self.read(rpk_leaves.LEAF_FILE_VERSION + "\n" + v
+                                  + ok.replace("0 1 2", "0 x 2")).startswith("FILE:5: "))
+        self.assertTrue(self.read(rpk_leaves.LEAF_FILE_VERSION + "\nv a 0 0 0\n")
+                        .startswith("FILE:2: "))
 
     def test_a_leaf_on_no_face_or_on_a_back_is_refused(self):
         for corners in ([(0, 0, 0.5), (1, 0, 0.5), (0, 1, 0.5)],  # between the faces
