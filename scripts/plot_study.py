@@ -29,6 +29,9 @@ MARKERS = ["o", "s", "^", "D", "v", "P", "X", "<", ">", "h"]
 LINE_STYLES = ["-", "--", "-.", ":", (0, (5, 1.5)), (0, (3, 1, 1, 1, 1, 1)), (0, (1, 2))]
 PANEL_SIZE = (3.6, 2.9)  # inches: two panels fill a two-column paper's text width
 DODGE = 0.012  # series k apart are drawn k x DODGE of the x axis's span apart (log scale)
+# The values an axis draws: matplotlib's tick locators overflow, or take the log of 0, near the
+# ends of double's range (an object error of 1e308, a value of 5e-324 are a study's to write).
+DRAWABLE = (1e-300, 1e300)
 
 
 def style(i):
@@ -45,19 +48,28 @@ def finite(v):
     return isinstance(v, (int, float)) and math.isfinite(v)
 
 
+def drawable(v):
+    """A value a log axis can show: finite and within DRAWABLE."""
+    return finite(v) and DRAWABLE[0] <= v <= DRAWABLE[1]
+
+
 def se_or_zero(v):
-    return v if finite(v) else 0.0
+    return v if drawable(v) else 0.0
 
 
 def log_limits(lows, highs):
-    """Limits of a log axis holding [min(lows), max(highs)] with a margin of 6% of its span."""
-    lo, hi = math.log10(min(lows)), math.log10(max(highs))
+    """Limits of a log axis holding [min(lows), max(highs)] with a margin of 6% of its span,
+    within DRAWABLE."""
+    lo = math.log10(max(min(lows), DRAWABLE[0]))
+    hi = math.log10(min(max(highs), DRAWABLE[1]))
     pad = max(0.06 * (hi - lo), 0.02)
-    return 10 ** (lo - pad), 10 ** (hi + pad)
+    return (max(10 ** (lo - pad), DRAWABLE[0]), min(10 ** (hi + pad), DRAWABLE[1]))
 
 
 def plain_number(v, _pos=None):
     """19000 -> '19,000', 0.025 -> '0.025', 2e6 -> '2×10⁶' (mathtext): labels read at a glance."""
+    if not (finite(v) and v > 0):
+        return ""
     if v >= 1e5:
         e = math.floor(math.log10(v) + 1e-9)
         m = v / 10 ** e
@@ -76,6 +88,8 @@ def label_log_axis(axis, lo, hi, ticker):
     keep = None if span < 0.5 else (1, 2, 3, 5) if span < 1 else (1, 2, 5)
 
     def label(v, pos=None):
+        if not (finite(v) and v > 0):
+            return ""
         m = v / 10 ** math.floor(math.log10(v) + 1e-9)
         if keep is not None and not any(abs(m - k) < 1e-6 for k in keep):
             return ""
@@ -88,7 +102,7 @@ def label_log_axis(axis, lo, hi, ticker):
 def dodge_factors(panel):
     """Per series, a factor on x that sets series apart by DODGE of the x axis's decades: the
     error bars of series at the same x would otherwise hide one another."""
-    xs = [p["x"] for s in panel["series"] for p in s["points"] if finite(p["x"]) and p["x"] > 0]
+    xs = [p["x"] for s in panel["series"] for p in s["points"] if drawable(p["x"])]
     if not xs:
         return [1.0] * len(panel["series"])
     span = max(math.log10(max(xs) / min(xs)), 0.3)
@@ -100,8 +114,7 @@ def draw_lines(ax, panel, ticker):
     xs_lo, xs_hi, ys_lo, ys_hi = [], [], [], []
     drawn = 0
     for i, (series, dodge) in enumerate(zip(panel["series"], dodge_factors(panel))):
-        pts = [p for p in series["points"] if finite(p["x"]) and finite(p["y"])
-               and p["x"] > 0 and p["y"] > 0]
+        pts = [p for p in series["points"] if drawable(p["x"]) and drawable(p["y"])]
         if not pts:
             continue
         x = [p["x"] * dodge for p in pts]
@@ -122,7 +135,10 @@ def draw_lines(ax, panel, ticker):
     ax.set_xscale("log")
     ax.set_yscale("log")
     if drawn == 0:
-        ax.text(0.5, 0.5, "no successful cell", transform=ax.transAxes, ha="center")
+        beyond = any(finite(p["x"]) and finite(p["y"]) and p["x"] > 0 and p["y"] > 0
+                     for series in panel["series"] for p in series["points"])
+        text = "values beyond 1e-300..1e300: not drawn" if beyond else "no successful cell"
+        ax.text(0.5, 0.5, text, transform=ax.transAxes, ha="center")
         return
     ax.set_xlim(*log_limits(xs_lo, xs_hi))
     ax.set_ylim(*log_limits(ys_lo, ys_hi))
@@ -145,11 +161,12 @@ def draw_bars(ax, panel):
     width = 0.8 / max(len(groups), 1)
     for g, group in enumerate(groups):
         xs = [c + (g - (len(groups) - 1) / 2) * width for c in range(len(categories))]
-        ys = [v["y"] if finite(v["y"]) else 0.0 for v in group["values"]]
+        ys = [v["y"] if drawable(v["y"]) else 0.0 for v in group["values"]]
         ax.bar(xs, ys, width, label=group["name"], color=COLOURS[g % len(COLOURS)],
                hatch=["", "//", ".."][g % 3], edgecolor="white", linewidth=0.5, zorder=3)
         # Error bars where there is a standard error (two seeds or more) only.
-        bars = [(x, y, v["y_se"]) for x, y, v in zip(xs, ys, group["values"]) if finite(v["y_se"])]
+        bars = [(x, y, v["y_se"]) for x, y, v in zip(xs, ys, group["values"])
+                if drawable(v["y_se"])]
         if bars:
             ax.errorbar([b[0] for b in bars], [b[1] for b in bars], yerr=[b[2] for b in bars],
                         fmt="none", ecolor="black", elinewidth=0.8, capsize=2.5, capthick=0.8,

@@ -42,6 +42,10 @@ void validate(const SamplingStudyOptions& o) {
         }
     }
     check_study_size(std::uint64_t(o.samplers.size()) * o.spps.size(), o.seeds, o.trace.seed);
+    if (o.spps.size() > kMaxPlotPoints) {
+        throw InputError(fmt::format("study: {} spp values; at most {}, the points a plot shows",
+                                     o.spps.size(), kMaxPlotPoints));
+    }
     if (o.output.empty()) throw InputError("study: no output folder given");
     for (double spp : o.spps)
         for (const Criterion* s : o.samplers) {

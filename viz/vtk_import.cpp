@@ -41,6 +41,44 @@ void read_points(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
     }
 }
 
+// The cells run as the leaves of docs/design.md §5.3: every patch's front, patch by patch, then
+// the backs that exist, patch by patch. A Side array of a solution with backs that says all 0,
+// all 1 or is shuffled, or cells of another order, are not an hmcr solution's.
+void check_cell_order(const ShadedMesh& m, const VtpChecker& check, std::uint64_t patch_count) {
+    std::uint64_t front_patches = 0;  // patches 0 .. front_patches - 1 have front cells
+    for (std::size_t c = 0; c < m.cell_count(); ++c) {
+        const std::uint64_t patch = std::uint64_t(m.patch_id[c]);
+        if (m.side[c] == kFront) {
+            if (c > 0 && m.side[c - 1] == kBack) {
+                check.fail(
+                    fmt::format("cell {} is a front after a back: a solution's fronts come "
+                                "first (is its Side array another's?)",
+                                c));
+            }
+            if (patch > front_patches) {
+                check.fail(fmt::format("patch {} has no front cell before cell {} (patch {}'s)",
+                                       front_patches, c, patch));
+            }
+            if (patch + 1 < front_patches) {
+                check.fail(
+                    fmt::format("cell {} is patch {}'s front after patch {}'s: a "
+                                "solution's cells run patch by patch",
+                                c, patch, front_patches - 1));
+            }
+            front_patches = patch + 1;
+        } else if (c > 0 && m.side[c - 1] == kBack && patch < std::uint64_t(m.patch_id[c - 1])) {
+            check.fail(
+                fmt::format("cell {} is patch {}'s back after patch {}'s: a solution's "
+                            "cells run patch by patch",
+                            c, patch, m.patch_id[c - 1]));
+        }
+    }
+    if (front_patches < patch_count) {
+        check.fail(
+            fmt::format("patch {} has no front cell (of {} patches)", front_patches, patch_count));
+    }
+}
+
 void read_cell_data(vtkPolyData* data, const VtpChecker& check, std::uint64_t patch_count,
                     ShadedMesh& m) {
     const vtkIdType n = vtkIdType(m.cell_count());
@@ -67,13 +105,15 @@ void read_cell_data(vtkPolyData* data, const VtpChecker& check, std::uint64_t pa
     }
     // Side: present only in a solution with two-sided patches; every cell is a front without it.
     m.side.assign(std::size_t(n), kFront);
-    if (!cd->HasArray("Side")) return;
-    auto* side = check.array<vtkUnsignedCharArray>(cd, "Side", 1, n);
-    for (vtkIdType c = 0; c < n; ++c) {
-        const unsigned value = side->GetValue(c);
-        if (value > kBack) check.fail(fmt::format("cell {} has Side {}, not 0 or 1", c, value));
-        m.side[std::size_t(c)] = std::uint8_t(value);
+    if (cd->HasArray("Side")) {
+        auto* side = check.array<vtkUnsignedCharArray>(cd, "Side", 1, n);
+        for (vtkIdType c = 0; c < n; ++c) {
+            const unsigned value = side->GetValue(c);
+            if (value > kBack) check.fail(fmt::format("cell {} has Side {}, not 0 or 1", c, value));
+            m.side[std::size_t(c)] = std::uint8_t(value);
+        }
     }
+    check_cell_order(m, check, patch_count);
 }
 
 template <class A>

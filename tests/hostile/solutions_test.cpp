@@ -7,6 +7,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -115,6 +116,44 @@ TEST_F(HostileSolution, NegativeRadiosityIsAValue) {
 TEST_F(HostileSolution, ASolutionOfAnotherSceneIsRefused) {
     refused("render good.vtp --scene cornell -o x.png", "is a solution of scene 'plates'");
     refused("info good.vtp --scene cornell", "not of 'cornell'");
+}
+
+// The Side array must be the scene's: backs only on two-sided patches, one on every patch whose
+// back emits (the plates' emitter, two-sided here), and the cells in their order, fronts patch
+// by patch, then backs. Each of these changed a study's or info's results, or ended a study in
+// an internal error.
+TEST_F(HostileSolution, SidesThatAreNotTheScenesAreRefused) {
+    m_temp.write("one.json", with(kPlatesJson, "{", R"({"sides": 1, )"));
+    refused("render good.vtp --scene one.json -o x.png",
+            "is the back of patch 0, which is one-sided in scene 'one'");
+    refused("info good.vtp --scene one.json", "which is one-sided in scene 'one'");
+    refused("error good.vtp --scene one.json --reference nowhere", "one-sided in scene 'one'");
+    accepted("solve one.json --rays 2000 -q -o one-sided.vtp");
+    refused("render one-sided.vtp --scene plates.json -o x.png",
+            "one-sided.vtp: patch 0 has no back cell, but its back emits in scene 'plates'");
+    const auto set_sides = [](const std::function<unsigned char(vtkIdType, unsigned char)>& f) {
+        return [f](vtkPolyData* d) {
+            auto* side = vtkUnsignedCharArray::SafeDownCast(d->GetCellData()->GetArray("Side"));
+            for (vtkIdType c = 0; c < side->GetNumberOfTuples(); ++c)
+                side->SetValue(c, f(c, side->GetValue(c)));
+        };
+    };
+    spoilt("fronts.vtp", set_sides([](vtkIdType, unsigned char) { return 0; }));
+    spoilt("backs.vtp", set_sides([](vtkIdType, unsigned char) { return 1; }));
+    spoilt("shuffled.vtp", set_sides([](vtkIdType c, unsigned char s) { return c == 0 ? 1 : s; }));
+    for (const char* vtp : {"fronts.vtp", "backs.vtp", "shuffled.vtp"}) {
+        const std::string needle = std::string(vtp) + ": ";
+        expect_refused(vtp, needle);
+        refused(std::string("info ") + vtp, needle);  // without the scene, the order alone
+    }
+    expect_refused("fronts.vtp", "is patch 0's front after patch 1's");
+    expect_refused("backs.vtp", "is patch 0's back after patch 1's");
+    expect_refused("shuffled.vtp", "cell 1 is a front after a back");
+    spoilt("patch0.vtp", [](vtkPolyData* d) {
+        auto* patch = vtkIntArray::SafeDownCast(d->GetCellData()->GetArray("PatchId"));
+        for (vtkIdType c = 0; c < patch->GetNumberOfTuples(); ++c) patch->SetValue(c, 0);
+    });
+    expect_refused("patch0.vtp", "patch0.vtp: patch 1 has no front cell (of 2 patches)");
 }
 
 TEST_F(HostileSolution, GarbageIsRefused) {

@@ -84,6 +84,14 @@ TEST_F(Hostile, SamplingStudyOptionsAreChecked) {
         {"--samplers uniform --bounces -2", "bounces must be in 0..100000"},
     };
     for (const auto& [option, needle] : cases) refused(study + option, needle);
+    // More spp values than a plot shows: refused before the first cell, not after the last.
+    std::string spps = "1";
+    for (int spp = 2; spp <= 1001; ++spp) {
+        spps += ',';
+        spps += std::to_string(spp);
+    }
+    refused(study + "--samplers uniform --spp " + spps,
+            "study: 1001 spp values; at most 1000, the points a plot shows");
     refused("study plates.json --samplers uniform --reference ref -o ref/s", "lies in the input");
     refused("study plates.json --samplers uniform --reference nowhere -o s",
             "nowhere/reference.json");
