@@ -12,7 +12,6 @@
 #include <charconv>
 #include <cmath>
 #include <memory>
-#include <sstream>
 
 #include "app/command.h"
 #include "app/count.h"
@@ -46,14 +45,18 @@ struct StudyArgs {
     SceneFlags scene_flags;
 };
 
+// The items of a comma-separated list (no list: none); an empty item, at either end as between
+// two commas ("20,", ",20", "20,,40"), is refused.
 std::vector<std::string> split_commas(const std::string& text) {
     std::vector<std::string> out;
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ',');) {
-        if (item.empty()) throw InputError("empty item in the list " + quote(text));
-        out.push_back(item);
+    if (text.empty()) return out;
+    for (std::size_t start = 0;;) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        if (comma == start) throw InputError("empty item in the list " + quote(text));
+        out.push_back(text.substr(start, comma - start));
+        if (comma == text.size()) return out;
+        start = comma + 1;
     }
-    return out;
 }
 
 double parse_spp(const std::string& text) {

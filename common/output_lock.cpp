@@ -7,6 +7,10 @@
 
 #include <cerrno>
 #include <cstring>
+#include <mutex>
+#include <set>
+#include <string>
+#include <utility>
 
 #include "common/error.h"
 #include "common/file_names.h"
@@ -27,6 +31,87 @@ bool still_there(int fd, const fs::path& path) {
     }, named{};
     return ::fstat(fd, &open_file) == 0 && ::stat(path.c_str(), &named) == 0 &&
            open_file.st_dev == named.st_dev && open_file.st_ino == named.st_ino;
+}
+
+// The lock files this process holds, by device and inode: a probe of one of them is no other
+// run (a flock of the same file through another descriptor would conflict with our own).
+class HeldLocks {
+public:
+    void add(int fd) {
+        with(fd, [this](const Key& k) { m_keys.insert(k); });
+    }
+    void remove(int fd) {
+        with(fd, [this](const Key& k) { m_keys.erase(k); });
+    }
+    bool has(int fd) {
+        bool found = false;
+        with(fd, [&](const Key& k) { found = m_keys.count(k) > 0; });
+        return found;
+    }
+
+private:
+    using Key = std::pair<dev_t, ino_t>;
+    template <class F>
+    void with(int fd, F&& f) {
+        struct stat st {};
+        if (::fstat(fd, &st) != 0) return;
+        const std::lock_guard lock(m_mutex);
+        f(Key{st.st_dev, st.st_ino});
+    }
+    std::mutex m_mutex;
+    std::set<Key> m_keys;
+};
+
+HeldLocks& held_locks() {
+    static HeldLocks locks;
+    return locks;
+}
+
+// Whether another run holds the lock file at `lock` (no such file: nobody). The probe takes a
+// shared lock for an instant, which fails while a run holds its exclusive one.
+bool held_by_another_run(const fs::path& lock) {
+    const int fd = ::open(lock.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) return false;
+    struct stat st {};
+    bool held = false;
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && !held_locks().has(fd)) {
+        held = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+    }
+    ::close(fd);  // releases the probe's lock
+    return held;
+}
+
+bool is_lock_name(const std::string& name) {
+    return name.size() > 6 && name.front() == '.' && name.ends_with(".lock");
+}
+
+// Runs on nested outputs (docs/design.md §5.7): a folder being written by another run around
+// `output` (its .hmcr.lock in any folder above), or, for an output folder, another run's lock
+// on anything in it (a file's, or a folder's below).
+void refuse_locked_around(const fs::path& output, bool is_folder) {
+    std::error_code ec;
+    const fs::path full = fs::weakly_canonical(fs::absolute(output, ec), ec);
+    if (ec) return;
+    for (fs::path folder = full.parent_path();; folder = folder.parent_path()) {
+        const fs::path lock = folder / ".hmcr.lock";
+        if (held_by_another_run(lock)) {
+            lock_failed(output, "another hmcr run is writing the folder " + folder.string() +
+                                    " (its lock is " + lock.string() +
+                                    "; wait for that run to end)");
+        }
+        if (folder == folder.parent_path()) break;
+    }
+    if (!is_folder) return;
+    for (fs::recursive_directory_iterator
+             it(full, fs::directory_options::skip_permission_denied, ec),
+         end;
+         !ec && it != end; it.increment(ec)) {
+        const fs::path& path = it->path();
+        if (is_lock_name(path.filename().string()) && held_by_another_run(path)) {
+            lock_failed(output, "another hmcr run is writing in it (its lock is " + path.string() +
+                                    "; wait for that run to end)");
+        }
+    }
 }
 
 }  // namespace
@@ -52,17 +137,29 @@ OutputLock::OutputLock(const fs::path& output, bool is_folder)
             lock_failed(output, "another hmcr run is writing it (its lock is " + m_file.string() +
                                     "; wait for that run to end)");
         }
-        if (still_there(m_fd, m_file)) return;
+        if (still_there(m_fd, m_file)) break;
         ::close(m_fd);  // the holder released and removed it as we opened it: again
         m_fd = -1;
         if (attempt == 100) lock_failed(output, "its lock " + m_file.string() + " keeps changing");
     }
+    // Ours now; then the runs around it, each of which, locked first, sees ours in turn.
+    held_locks().add(m_fd);
+    try {
+        refuse_locked_around(output, is_folder);
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
-OutputLock::~OutputLock() {
+OutputLock::~OutputLock() { release(); }
+
+void OutputLock::release() noexcept {
     if (m_fd < 0) return;
+    held_locks().remove(m_fd);
     ::unlink(m_file.c_str());
     ::close(m_fd);
+    m_fd = -1;
 }
 
 }  // namespace hmcr

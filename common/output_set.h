@@ -34,7 +34,6 @@ public:
     void commit();
 
 private:
-    void make_folders(const std::filesystem::path& folder, const std::filesystem::path& output);
     void lock(const std::filesystem::path& output, bool is_folder);
     void abandon() noexcept;
 
@@ -43,5 +42,36 @@ private:
     std::vector<std::unique_ptr<OutputLock>> m_locks;
     bool m_committed = false;
 };
+
+// Files written as one batch without an OutputSet's checks and locks: the files of one study
+// cell, in the study's locked folder, checked before its first cell. temp() makes a temporary
+// file beside a file (and the file's folder, if missing); commit() flushes them, renames them
+// all into place and flushes their folders. A batch not committed (a failure, a signal) leaves
+// none of its files: the destructor removes the temporary files and the folders it made, if
+// they hold nothing else.
+class FileBatch {
+public:
+    FileBatch() = default;
+    ~FileBatch();
+    FileBatch(const FileBatch&) = delete;
+    FileBatch& operator=(const FileBatch&) = delete;
+
+    // Where `file` is to be written before commit() (the same temporary file at every call).
+    // Throws InputError "cannot write FILE: why".
+    std::filesystem::path temp(const std::filesystem::path& file);
+    // Throws InputError "cannot write FILE: why" when a flush or a rename fails.
+    void commit();
+
+private:
+    std::vector<std::filesystem::path> m_files, m_temps;
+    std::vector<std::filesystem::path> m_made_folders;  // outermost first
+    bool m_committed = false;
+};
+
+// Proves that a file can be made in `file`'s folder, when the folder exists, by making and
+// removing a temporary file there (a folder not made yet is made when the file is written).
+// Throws InputError "cannot write FILE: why": a read-only folder, or a file in the folder's
+// place. A study checks its cells' folders so, before its first cell.
+void check_folder_takes(const std::filesystem::path& file);
 
 }  // namespace hmcr

@@ -2,6 +2,7 @@
 #include "meshes/mgf_color.h"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 
 namespace hmcr {
@@ -19,8 +20,22 @@ constexpr double kFirst = 360.0, kLast = 830.0;
 
 std::optional<Chromaticity> from_xyz(const Eigen::Vector3d& xyz) {
     const double sum = xyz.sum();
-    if (!(sum > 0) || !(xyz.y() > 0)) return std::nullopt;
+    if (!(sum > 0) || !(xyz.y() > 0) || !std::isfinite(sum)) return std::nullopt;
     return Chromaticity{xyz.x() / sum, xyz.y() / sum};
+}
+
+// The largest magnitude of `values`: a chromaticity does not see a common factor, so sums are
+// taken of the values divided by it, which cannot overflow (a spectrum of 1e308 everywhere).
+template <class Range, class Value>
+double largest(const Range& values, Value&& value) {
+    double m = 0;
+    for (const auto& v : values) m = std::max(m, std::abs(value(v)));
+    return m;
+}
+
+// log(e^x - 1) for x > 0, without overflow where e^x does (x > 709).
+double log_expm1(double x) {
+    return x > 30 ? x + std::log1p(-std::exp(-x)) : std::log(std::expm1(x));
 }
 
 // XYZ of a chromaticity at luminance Y.
@@ -51,36 +66,52 @@ Eigen::Vector3d cie_matching(double l) {
 std::optional<Chromaticity> spectrum_chromaticity(double lmin, double lmax,
                                                   const std::vector<double>& values) {
     if (values.size() < 2 || !(lmax > lmin)) return std::nullopt;
-    const double spacing = (lmax - lmin) / double(values.size() - 1);
+    const double intervals = double(values.size() - 1);
+    const double spacing = lmax / intervals - lmin / intervals;  // lmax - lmin may overflow
+    const double scale = largest(values, [](double v) { return v; });
+    if (!(scale > 0) || !std::isfinite(spacing)) return std::nullopt;
     Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
     for (double l = std::max(kFirst, lmin); l <= std::min(kLast, lmax); l += kStep) {
         const double at = (l - lmin) / spacing;
         const std::size_t i = std::min(std::size_t(at), values.size() - 2);
         const double t = at - double(i);
-        xyz += ((1 - t) * values[i] + t * values[i + 1]) * cie_matching(l);
+        xyz += ((1 - t) * values[i] / scale + t * values[i + 1] / scale) * cie_matching(l);
     }
     return from_xyz(xyz);
 }
 
 std::optional<Chromaticity> blackbody_chromaticity(double kelvin) {
     if (!(kelvin > 0)) return std::nullopt;
+    // Below 1 K the band's radiance is its longest wavelength's alone, in double precision (the
+    // next is e^-16000 times smaller): the colour of every colder body, whose exponents would
+    // overflow.
+    kelvin = std::max(kelvin, 1e-3);
     constexpr double c2 = 1.438777e-2;  // second radiation constant h c / k, m K
-    Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+    // Planck's law up to a constant factor, which the chromaticity does not see, in logarithms:
+    // the radiance itself overflows or underflows far from everyday temperatures (1e300 K, whose
+    // colour is the Rayleigh-Jeans limit's), its ratio to the largest over the band does not.
+    std::vector<double> log_radiance;
     for (double l = kFirst; l <= kLast; l += kStep) {
         const double metres = l * 1e-9;
-        // Planck's law up to a constant factor, which the chromaticity does not see.
-        const double radiance = 1.0 / (std::pow(metres, 5) * std::expm1(c2 / (metres * kelvin)));
-        xyz += radiance * cie_matching(l);
+        log_radiance.push_back(-5 * std::log(metres) - log_expm1(c2 / (metres * kelvin)));
+    }
+    const double top = *std::max_element(log_radiance.begin(), log_radiance.end());
+    Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+    std::size_t i = 0;
+    for (double l = kFirst; l <= kLast; l += kStep) {
+        xyz += std::exp(log_radiance[i++] - top) * cie_matching(l);
     }
     return from_xyz(xyz);
 }
 
 std::optional<Chromaticity> mix_chromaticity(
     const std::vector<std::pair<double, Chromaticity>>& parts) {
+    const double scale = largest(parts, [](const auto& part) { return part.first; });
+    if (!(scale > 0)) return std::nullopt;
     Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
     for (const auto& [weight, c] : parts) {
         if (!(weight >= 0)) return std::nullopt;
-        xyz += to_xyz(c, weight);
+        xyz += to_xyz(c, weight / scale);
     }
     return from_xyz(xyz);
 }

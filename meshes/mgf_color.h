@@ -25,12 +25,14 @@ struct Chromaticity {
 // the CIE XYZ color matching functions", JCGT 2(2), 2013 (within about 1% of the tables).
 Eigen::Vector3d cie_matching(double nanometres);
 
-// The chromaticity of a spectrum sampled evenly from lmin to lmax nm (zero outside); nothing
-// when it has no visible energy or a negative XYZ sum.
+// The chromaticity of a spectrum sampled evenly from lmin to lmax nm (zero outside), of values of
+// any finite size; nothing when it has no visible energy or a negative XYZ sum.
 std::optional<Chromaticity> spectrum_chromaticity(double lmin, double lmax,
                                                   const std::vector<double>& values);
 
-// The chromaticity of a black body at the temperature (kelvin, > 0).
+// The chromaticity of a black body at the temperature (kelvin, > 0): any finite temperature
+// has one, the limits included (a red at the band's end below 1 K, the Rayleigh-Jeans blue
+// above 10^9 K); nothing for one not above 0.
 std::optional<Chromaticity> blackbody_chromaticity(double kelvin);
 
 // The chromaticity of colours mixed by relative luminance weights (>= 0, not all 0).

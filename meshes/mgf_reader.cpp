@@ -250,7 +250,13 @@ private:
             c = spectrum_chromaticity(number(w, 1), number(w, 2), values);
         } else if (e == "cct") {
             need(w, 1, 1);
-            c = blackbody_chromaticity(number(w, 1));
+            const double kelvin = number(w, 1);
+            if (!(kelvin > 0)) {
+                throw InputError(
+                    m_where,
+                    fmt::format("cct: a temperature must be above 0 K, got {}", quote(w[1])));
+            }
+            c = blackbody_chromaticity(kelvin);
         } else {
             c = mix(w);
         }
@@ -276,11 +282,11 @@ private:
         const Chromaticity& c = m_colors.current();
         const Eigen::Vector3d grey = Eigen::Vector3d::Constant(luminance);
         if (c.x == 1.0 / 3 && c.y == 1.0 / 3) return grey;
-        if (c.y == 0) {
+        const Eigen::Vector3d out = chromaticity_rgb(c, luminance);
+        if (c.y == 0 || !out.allFinite()) {  // no luminance to scale, or x / y overflows
             m_ignored.add("(colours moved toward grey to fit RGB)", m_where);
             return grey;
         }
-        const Eigen::Vector3d out = chromaticity_rgb(c, luminance);
         double t = 1;  // how much of the colour is kept
         for (int k = 0; k < 3; ++k) {
             if (out[k] < 0) t = std::min(t, luminance / (luminance - out[k]));

@@ -161,6 +161,7 @@ BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& option
     if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
     validate(budget);
     validate(options);
+    check_root_count(mesh.n_faces(), options.max_elements);
     return Search(mesh, options, budget, progress, ranks, known).run();
 }
 
@@ -174,6 +175,8 @@ void validate(const BudgetOptions& budget) {
 BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
                         Progress& progress, const Ranks& ranks) {
     if (budget.leaves > 0) return solve_for_budget(mesh, options, budget, progress, ranks);
+    validate(options);
+    check_root_count(mesh.n_faces(), options.max_elements);  // a root per face, at least
     const auto start = std::chrono::steady_clock::now();
     PatchSet patches = build_patch_set(mesh);
     release(mesh);

@@ -9,8 +9,37 @@
 
 namespace hmcr {
 
+std::size_t root_count(const PatchSet& patches) {
+    std::size_t roots = patches.patches.size();
+    if (patches.back_materials.empty()) return roots;
+    for (std::size_t i = 0; i < patches.patches.size(); ++i) {
+        if (patches.two_sided(i) && (patches.material(i, kBack).emission > 0).any()) ++roots;
+    }
+    return roots;
+}
+
+void check_root_count(std::size_t roots, std::uint64_t max_elements) {
+    if (roots <= max_elements) return;
+    throw ElementLimitReached(fmt::format(
+        "the scene's patches alone are {} elements, more than --max-elements {}: raise it to at "
+        "least {} (about {} of memory)",
+        roots, max_elements, roots, human_bytes(double(roots) * sizeof(Element))));
+}
+
+namespace {
+
+// `patches`, once their roots are known to fit: the check comes before the roots' memory.
+PatchSet with_roots_within(PatchSet patches, std::uint64_t max_elements) {
+    check_root_count(root_count(patches), max_elements);
+    return patches;
+}
+
+}  // namespace
+
 Hierarchy::Hierarchy(PatchSet patches, HierarchyLimits limits)
-    : m_patches(std::move(patches)), m_limits(limits), m_roots(m_patches.patches.size()) {
+    : m_patches(with_roots_within(std::move(patches), limits.max_elements)),
+      m_limits(limits),
+      m_roots(m_patches.patches.size()) {
     if (m_limits.max_depth < 0 || m_limits.max_depth > 24) {
         throw std::invalid_argument("max depth must be between 0 and 24");
     }

@@ -31,8 +31,16 @@ public:
     using InputError::InputError;
 };
 
+// The elements a hierarchy of `patches` holds before any subdivision: a root for every patch's
+// front, and for every two-sided patch whose back emits.
+std::size_t root_count(const PatchSet& patches);
+// Throws ElementLimitReached when `roots` root elements alone pass `max_elements` (the user's
+// --max-elements): no refinement could help, so the message says what to raise.
+void check_root_count(std::size_t roots, std::uint64_t max_elements);
+
 class Hierarchy {
 public:
+    // Throws ElementLimitReached when the roots alone pass limits.max_elements.
     Hierarchy(PatchSet patches, HierarchyLimits limits);
 
     const PatchSet& patch_set() const { return m_patches; }

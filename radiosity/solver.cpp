@@ -129,6 +129,7 @@ struct StartMesh {
 // peak of a scene of many patches (docs/performance.md).
 std::unique_ptr<Hierarchy> roots(PatchSet patches, const SolverOptions& o,
                                  std::shared_ptr<const EmbreeScene>& scene) {
+    check_root_count(root_count(patches), o.max_elements);  // before the BVH's memory
     if (!scene) scene = std::make_shared<const EmbreeScene>(patches);
     return std::make_unique<Hierarchy>(std::move(patches),
                                        HierarchyLimits{o.min_area, o.max_depth, o.max_elements});

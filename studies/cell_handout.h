@@ -31,10 +31,11 @@ std::vector<Cell> hand_out_cells(const CellLoop<Cell>& loop, Progress& progress,
     };
     std::vector<std::optional<Cell>> cells(loop.count);
     std::vector<std::size_t> todo;
+    std::set<std::filesystem::path> folders;
     try {
         for (std::size_t i = 0; i < loop.count; ++i) {
             throw_if_interrupted();
-            cells[i] = check_cell(loop, i);
+            cells[i] = check_cell(loop, i, folders);
             if (!cells[i]) todo.push_back(i);
         }
     } catch (...) {
@@ -97,10 +98,8 @@ void work_on_cells(const CellLoop<Cell>& loop, const Ranks& ranks) {
         if (work.empty()) return;
         const std::size_t i = std::stoull(work);
         try {
-            const nlohmann::json j = loop.to_json(loop.compute(i));
-            const std::string text = j.dump(2) + "\n";
-            write_text_atomically(loop.file(i), text);
-            ranks.send(0, handout::kDone, std::to_string(i) + "\n" + text);
+            const nlohmann::json j = compute_cell(loop, i);
+            ranks.send(0, handout::kDone, std::to_string(i) + "\n" + j.dump(2) + "\n");
         } catch (...) {
             const Failure f = failure_of(std::current_exception());
             ranks.send(0, handout::kDone, "!" + std::to_string(f.exit_code) + " " + f.message);

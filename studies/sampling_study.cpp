@@ -83,8 +83,8 @@ private:
     }
     std::vector<fs::path> outputs(std::size_t index) const;
     std::optional<SamplingCell> previous_cell(std::size_t index);
-    SamplingCell compute(std::size_t index);
-    SamplingView trace_view(const CellTask& t, const View& view, Progress& notes);
+    SamplingCell compute(std::size_t index, FileBatch& files);
+    SamplingView trace_view(const CellTask& t, const View& view, Progress& notes, FileBatch& files);
     void write_figures(OutputSet& out, const View& view, double spp) const;
     SppErrorSplits error_splits(const std::vector<SamplingCell>& cells) const;
     std::string where(std::size_t i) const {
@@ -133,6 +133,11 @@ std::optional<SamplingCell> SamplingStudy::previous_cell(std::size_t index) {
     };
     rule.settings = m_settings;
     rule.redo_other_settings = m_options.redo_other_settings;
+    rule.lacks = [this](const SamplingCell& c) {
+        std::vector<std::string> views;
+        for (const View& v : m_scene.views) views.push_back(v.name);
+        return c.ok() ? missing_view(c.views, views) : std::string();
+    };
     CellNotes notes(m_progress, where(index) + ": ");
     return read_previous_cell(file("cells", t.name, ".json"), rule, notes);
 }
@@ -166,7 +171,7 @@ void SamplingStudy::run() {
     CellLoop<SamplingCell> loop;
     loop.count = m_tasks.size();
     loop.previous = [this](std::size_t i) { return previous_cell(i); };
-    loop.compute = [this](std::size_t i) { return compute(i); };
+    loop.compute = [this](std::size_t i, FileBatch& files) { return compute(i, files); };
     loop.to_json = sampling_cell_to_json;
     loop.from_json = sampling_cell_from_json;
     loop.file = [this](std::size_t i) { return file("cells", m_tasks[i].name, ".json"); };
@@ -206,7 +211,7 @@ SppErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cell
     return splits;
 }
 
-SamplingCell SamplingStudy::compute(std::size_t index) {
+SamplingCell SamplingStudy::compute(std::size_t index, FileBatch& files) {
     const CellTask& t = m_tasks[index];
     SamplingCell cell{
         m_scene.name, std::string(t.sampler->name()), t.spp, t.seed, m_settings, "ok", "", {}, 0};
@@ -214,7 +219,7 @@ SamplingCell SamplingStudy::compute(std::size_t index) {
     for (const View& v : m_scene.views) {
         CellNotes notes(m_progress, where(index) + ": view " + v.name + ": ");
         try {
-            cell.views[v.name] = trace_view(t, v, notes);
+            cell.views[v.name] = trace_view(t, v, notes, files);
         } catch (const SppNotReached& e) {
             cell.status = "failed";
             cell.message = "view " + v.name + ": " + e.what();
@@ -226,8 +231,9 @@ SamplingCell SamplingStudy::compute(std::size_t index) {
     return cell;
 }
 
-// The view at the reference image's size, traced, written and measured.
-SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Progress& notes) {
+// The view at the reference image's size, traced, written (into the cell's batch) and measured.
+SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Progress& notes,
+                                       FileBatch& files) {
     const TracedView& ref = m_reference.at(view.name);
     View v = view;
     v.width = ref.image.width;
@@ -240,8 +246,8 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
     const TraceResult r = trace_image(*m_tracer, v, o, notes);
     const Image8 image = quantise(r.image, ref.exposure);
     const std::string name = t.name + "-" + v.name;
-    write_png(file("images", name, ".png"), image);
-    write_png(file("density", name, ".png"), density_map(r.samples, v.width, v.height));
+    write_png(files.temp(file("images", name, ".png")), image);
+    write_png(files.temp(file("density", name, ".png")), density_map(r.samples, v.width, v.height));
     const SampleCounts c = r.counts();
     return {image_errors(image, m_reference8.at(v.name)),
             c.mean,

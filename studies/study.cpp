@@ -80,6 +80,7 @@ public:
     StudyRunner(const Scene& scene, const StudyOptions& o, Progress& progress)
         : m_options(o), m_progress(progress), m_scene(scene) {
         validate(o);
+        check_root_count(scene.mesh.n_faces(), o.solver.max_elements);  // before any cell
         for (std::size_t b : o.budgets)
             for (const Oracle* oracle : o.oracles)
                 for (int s = 0; s < o.seeds; ++s) {
@@ -100,6 +101,7 @@ public:
 
 private:
     std::optional<CellResult> previous_cell(std::size_t index);
+    std::string lacks(const CellResult& cell, const MeshingCell& t) const;
     std::filesystem::path cell_file(const MeshingCell& t) const {
         return named_file(m_options.output / "cells", t.name, ".json");
     }
@@ -112,9 +114,10 @@ private:
         return named_file(m_options.output / "images", name + "-" + view.name, ".png");
     }
     std::vector<std::filesystem::path> outputs(std::size_t index) const;
-    CellResult compute(std::size_t index);
+    CellResult compute(std::size_t index, FileBatch& files);
     ObjectError measure(const Solution& solution, const MeshingCell& t, const std::string& name,
-                        std::map<std::string, ImageErrors>& views, double* finer_share = nullptr);
+                        std::map<std::string, ImageErrors>& views, FileBatch& files,
+                        double* finer_share = nullptr);
     void write_mesh_collection(OutputSet& out) const;
     void check_resolution(const CellResult& cell, CellNotes& notes) const;
     std::string where(std::size_t index) const;
@@ -147,8 +150,25 @@ std::optional<CellResult> StudyRunner::previous_cell(std::size_t index) {
     };
     rule.settings = m_settings;
     rule.redo_other_settings = m_options.redo_other_settings;
+    rule.lacks = [&](const CellResult& c) { return lacks(c, t); };
     CellNotes notes(m_progress, where(index) + ": ");
     return read_previous_cell<CellResult>(cell_file(t), rule, notes);
+}
+
+// What an earlier cell of the same settings lacks: a result for every view, and the rays and
+// mesh error these settings give a cell (a failed cell has none).
+std::string StudyRunner::lacks(const CellResult& c, const MeshingCell& t) const {
+    if (!c.ok()) return "";
+    std::vector<std::string> views;
+    for (const View& v : m_scene.views) views.push_back(v.name);
+    const std::uint64_t rays = cell_rays(m_options, t.budget);
+    const std::uint64_t mesh_rays = cell_mesh_rays(m_options, t.budget);
+    if (c.rays != rays) return fmt::format("rays {}, not the {} of this cell", c.rays, rays);
+    if (c.mesh_rays != mesh_rays) {
+        return fmt::format("mesh_rays {}, not the {} of this cell", c.mesh_rays, mesh_rays);
+    }
+    if (std::string m = missing_view(c.views, views); !m.empty()) return m;
+    return mesh_rays > 0 ? missing_view(c.mesh_views, views, "mesh error") : "";
 }
 
 // Every file a cell writes, for the checks before any cell is computed.
@@ -169,7 +189,7 @@ void StudyRunner::run() {
     CellLoop<CellResult> loop;
     loop.count = m_tasks.size();
     loop.previous = [this](std::size_t i) { return previous_cell(i); };
-    loop.compute = [this](std::size_t i) { return compute(i); };
+    loop.compute = [this](std::size_t i, FileBatch& files) { return compute(i, files); };
     loop.to_json = cell_to_json;
     loop.from_json = cell_from_json;
     loop.file = [this](std::size_t i) { return cell_file(m_tasks[i]); };
@@ -205,7 +225,7 @@ void StudyRunner::write_mesh_collection(OutputSet& out) const {
     write_paraview_collection(out.temp(m_options.output / "meshes.pvd"), entries);
 }
 
-CellResult StudyRunner::compute(std::size_t index) {
+CellResult StudyRunner::compute(std::size_t index, FileBatch& files) {
     const MeshingCell& t = m_tasks[index];
     CellResult cell;
     cell.settings = m_settings;
@@ -229,14 +249,14 @@ CellResult StudyRunner::compute(std::size_t index) {
         cell.epsilon = r.solution.stats.epsilon;
         cell.leaves = r.solution.stats.leaves;
         notes.note("rendering and measuring");
-        cell.object_error = measure(r.solution, t, t.name, cell.views, &cell.finer_share);
+        cell.object_error = measure(r.solution, t, t.name, cell.views, files, &cell.finer_share);
         check_resolution(cell, notes);
         cell.mesh_rays = cell_mesh_rays(m_options, t.budget);
         if (cell.mesh_rays > 0) {
             notes.note(fmt::format("mesh error: the mesh frozen, {} rays", cell.mesh_rays));
             so.rays = cell.mesh_rays;
             const Solution frozen = solve_on_mesh(m_scene.mesh, so, r.solution);
-            cell.mesh_object_error = measure(frozen, t, t.name + "-mesh", cell.mesh_views);
+            cell.mesh_object_error = measure(frozen, t, t.name + "-mesh", cell.mesh_views, files);
         }
     } catch (const BudgetNotReached& e) {
         cell.seconds = seconds_since(start);
@@ -260,15 +280,16 @@ void StudyRunner::check_resolution(const CellResult& cell, CellNotes& notes) con
     notes.note("warning: " + what);
 }
 
-// The mesh file NAME.vtp, the images NAME-VIEW.png and the metrics of a solution: the image
-// errors of every view into `views`, the object-space error returned.
+// The mesh file NAME.vtp, the images NAME-VIEW.png (into the cell's batch) and the metrics of a
+// solution: the image errors of every view into `views`, the object-space error returned.
 ObjectError StudyRunner::measure(const Solution& solution, const MeshingCell& t,
                                  const std::string& name, std::map<std::string, ImageErrors>& views,
-                                 double* finer_share) {
-    const ShadedMesh mesh = write_solution(mesh_file(name), solution, m_scene,
+                                 FileBatch& files, double* finer_share) {
+    const ShadedMesh mesh = write_solution(files.temp(mesh_file(name)), solution, m_scene,
                                            m_options.crease_degrees, double(t.budget));
     SolutionErrors e = measure_solution(m_reference, mesh, m_scene, m_options.samples_per_axis);
-    for (const View& v : m_scene.views) write_png(image_file(name, v), e.images.at(v.name));
+    for (const View& v : m_scene.views)
+        write_png(files.temp(image_file(name, v)), e.images.at(v.name));
     views = std::move(e.views);
     if (finer_share) *finer_share = e.finer_share;
     return e.object;

@@ -106,5 +106,29 @@ TEST(OutputSet, ALockLeftByAKilledRunIsTakenOver) {
     EXPECT_EQ(dir.files(), std::vector<std::string>{"x.vtp"});
 }
 
+// A study cell's files: all into place at the commit, or none (nor the folders made for them).
+TEST(FileBatch, PutsItsFilesInPlaceTogetherOrLeavesNone) {
+    TempDir dir;
+    dir.write("cells/old.json", "kept");
+    const fs::path image = dir.path() / "images" / "c-side.png",
+                   cell = dir.path() / "cells" / "c.json";
+    {
+        FileBatch files;
+        write_text_atomically(files.temp(image), "png");
+        EXPECT_EQ(files.temp(image), files.temp(image));  // one temporary file per file
+        write_text_atomically(files.temp(cell), "json");
+    }  // abandoned: a signal during the cell
+    EXPECT_EQ(dir.files(), std::vector<std::string>{"cells/old.json"});
+    EXPECT_FALSE(fs::exists(dir.path() / "images"));
+    FileBatch files;
+    write_text_atomically(files.temp(image), "png");
+    write_text_atomically(files.temp(cell), "json");
+    EXPECT_FALSE(fs::exists(image));
+    files.commit();
+    EXPECT_EQ(read_file(image), "png");
+    EXPECT_EQ(dir.files(),
+              (std::vector<std::string>{"cells/c.json", "cells/old.json", "images/c-side.png"}));
+}
+
 }  // namespace
 }  // namespace hmcr::test

@@ -3,8 +3,12 @@
 // and where, no hang, and not one file of the working folder written, removed or changed.
 #pragma once
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <linux/fs.h>
 #include <signal.h>
+#include <sys/ioctl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,6 +51,46 @@ inline int interrupted(const std::string& args, const std::filesystem::path& dir
     waitpid(child, &status, 0);
     return status;
 }
+
+// A folder no file can be made in while this lives: read-only for a user, immutable for root
+// (whom file modes do not stop). ok() is false where neither can be had (a file system without
+// the immutable flag).
+class Unwritable {
+public:
+    explicit Unwritable(const std::filesystem::path& folder) : m_folder(folder) {
+        if (::geteuid() != 0) {
+            m_ok = ::chmod(folder.c_str(), 0555) == 0;
+            return;
+        }
+        m_ok = set_immutable(true);
+    }
+    ~Unwritable() {
+        if (!m_ok) return;
+        if (::geteuid() != 0) {
+            ::chmod(m_folder.c_str(), 0755);
+        } else {
+            set_immutable(false);
+        }
+    }
+    Unwritable(const Unwritable&) = delete;
+    Unwritable& operator=(const Unwritable&) = delete;
+    bool ok() const { return m_ok; }
+
+private:
+    bool set_immutable(bool on) const {
+        const int fd = ::open(m_folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        if (fd < 0) return false;
+        int flags = 0;
+        bool done = ::ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0;
+        flags = on ? flags | FS_IMMUTABLE_FL : flags & ~FS_IMMUTABLE_FL;
+        done = done && ::ioctl(fd, FS_IOC_SETFLAGS, &flags) == 0;
+        ::close(fd);
+        return done;
+    }
+
+    std::filesystem::path m_folder;
+    bool m_ok = false;
+};
 
 class Hostile : public testing::Test {
 protected:

@@ -1,6 +1,9 @@
 // Hostile options: values that once were accepted and ran for ever or gave a silent wrong
 // result, and lists with a value twice.
+#include <fmt/format.h>
+
 #include "tests/hostile/hostile.h"
+#include "tests/support/hmcr_child.h"
 
 namespace hmcr::test {
 namespace {
@@ -38,6 +41,48 @@ TEST_F(Hostile, TheElementLimitStopsAGrowingHierarchy) {
         "would grow beyond --max-elements 1000");
 }
 
+// Every patch is an element from the start: a limit below the patch count is refused before
+// any work, whether or not the solve would refine (a huge epsilon refines nothing).
+TEST_F(Hostile, TheElementLimitCountsThePatchRoots) {
+    plates();
+    for (const char* solve : {"solve plates.json -o out.vtp --max-elements 1",
+                              "solve plates.json -o out.vtp --max-elements 1 --epsilon 1e30",
+                              "solve plates.json -o out.vtp --max-elements 1 --budget 2"}) {
+        refused(solve, "the scene's patches alone are 2 elements, more than --max-elements 1");
+    }
+    std::filesystem::create_directories(dir() / "ref");
+    refused("study plates.json --reference ref -o st --budgets 2 --max-elements 1",
+            "the scene's patches alone are 2 elements");
+}
+
+// A scene of 90,000 patches under --max-elements 1000: refused once loaded, in the time and
+// memory of the load, with advice that can help (not "refine less").
+TEST_F(Hostile, ASceneOfMorePatchesThanTheElementLimitIsRefusedAtOnce) {
+    constexpr int n = 300;
+    std::string obj = "mtllib plates.mtl\nusemtl receiver\n";
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) obj += fmt::format("v {} {} 0\n", i, j);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const int a = j * (n + 1) + i + 1;
+            obj += fmt::format("f {} {} {} {}\n", a, a + 1, a + n + 2, a + n + 1);
+        }
+    obj += "v 0 0 9\nv 300 0 9\nv 300 300 9\nv 0 300 9\nusemtl emitter\nf -1 -2 -3 -4\n";
+    plates(obj);
+    const auto before = snapshot(dir());
+    HmcrChild child("solve plates.obj -o out.vtp --max-elements 1000", dir(), 60);
+    const ChildExit e = child.wait();
+    EXPECT_EQ(e.code, 2) << e.err;
+    EXPECT_NE(e.err.find("patches alone are 90001 elements, more than --max-elements 1000: "
+                         "raise it to at least 90001"),
+              std::string::npos)
+        << e.err;
+    EXPECT_EQ(e.err.find("refine less"), std::string::npos) << e.err;
+    EXPECT_LT(e.seconds, 10.0);
+    EXPECT_LT(e.peak_bytes, 300u << 20);
+    EXPECT_TRUE(snapshot(dir()) == before);
+}
+
 TEST_F(Hostile, RenderOptionsAreChecked) {
     plates();
     accepted("solve plates.json --rays 2000 -q -o p.vtp");
@@ -66,6 +111,14 @@ TEST_F(Hostile, StudyListsWithAValueTwiceAreRefused) {
     refused(study + "--budgets 5 --oracles all,kl", "oracle kl is given twice");
     refused(study + "--budgets 500,500", "budget 500 is given twice");
     refused(study + "--budgets 500,,600", "empty item in the list");
+    // An empty item at either end is refused alike, in every list.
+    refused(study + "--budgets 20,", "empty item in the list '20,'");
+    refused(study + "--budgets ,20", "empty item in the list ',20'");
+    refused(study + "--budgets , ", "empty item in the list ','");
+    refused(study + "--budgets 5 --oracles kl,", "empty item in the list 'kl,'");
+    refused(study + "--samplers uniform, --spp 16", "empty item in the list 'uniform,'");
+    refused(study + "--samplers uniform --spp 16,", "empty item in the list '16,'");
+    refused(study + "--samplers uniform --spp 16,32,", "empty item in the list '16,32,'");
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/hostile/hostile.h"
+#include "tests/support/hmcr_child.h"
 #include "viz/solution_file.h"
 
 namespace hmcr::test {
@@ -46,6 +47,48 @@ TEST_F(Hostile, TwoSolvesOfOneOutputLeaveOneRunsFiles) {
         ASSERT_EQ(summary_seed, solution_seed) << "round " << round << ": a mixed set";
     }
     std::cout << refusals << " of 24 runs refused\n";
+}
+
+// Waits up to 30 s for `file` to appear: the lock of a run started in the background.
+bool appears(const std::filesystem::path& file) {
+    for (int i = 0; i < 1500 && !std::filesystem::exists(file); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return std::filesystem::exists(file);
+}
+
+// Outputs that nest: a folder being written by one run, a file in it by another. Whichever
+// starts second is refused at once, and the first run's files stay its own.
+TEST_F(Hostile, ARunIntoAFolderAnotherRunWritesIsRefused) {
+    plates();
+    // The first run works from bg/, where its .stdout and .stderr are out of the way of the
+    // second's.
+    const std::filesystem::path bg = dir() / "bg";
+    std::filesystem::create_directories(bg);
+    {
+        HmcrChild solve("solve ../plates.json --rays 1e12 -q -o ../ref/reference.vtp", bg, 60);
+        ASSERT_TRUE(appears(dir() / "ref" / ".reference.pvsm.lock"));  // its last lock
+        refused("reference plates.json -q -o ref",
+                "cannot write ref: another hmcr run is writing in it");
+        refused("study plates.json --reference elsewhere -q --budgets 5 -o ref",
+                "cannot write ref: another hmcr run is writing in it");
+        solve.signal(SIGTERM);
+        EXPECT_EQ(solve.wait().code, 128 + SIGTERM);
+    }
+    {
+        HmcrChild reference("trace-reference ../plates.json --spp 1e6 -q -o ../ref", bg, 60);
+        ASSERT_TRUE(appears(dir() / "ref" / ".hmcr.lock"));
+        refused("solve plates.json --rays 1000 -q -o ref/reference.vtp",
+                "cannot write ref/reference.vtp: another hmcr run is writing the folder");
+        refused("solve plates.json --rays 1000 -q -o ref/deeper/x.vtp",
+                "cannot write ref/deeper/x.vtp: another hmcr run is writing the folder");
+        refused("reference plates.json -q -o ref/views",
+                "cannot write ref/views: another hmcr run is writing the folder");
+        reference.signal(SIGTERM);
+        EXPECT_EQ(reference.wait().code, 128 + SIGTERM);
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir() / "ref"));  // each run took back what it made
+    accepted("solve plates.json --rays 1000 -q -o ref/reference.vtp");  // free again
 }
 
 // The first run of the test below, seed 1, into x.vtp in `dir`, under ptrace (exit 126 when

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "tests/hostile/hostile.h"
+#include "tests/support/hmcr_child.h"
 
 namespace hmcr::test {
 namespace {
@@ -83,6 +84,47 @@ TEST_F(HostileStudy, CellsWhoseValuesDoNotCheckOutAreComputedAgain) {
     }
 }
 
+// A cell of the study's settings that lacks what the study needs of it (a view's result, the
+// mesh error, the rays of its budget) is computed again, not tabled short of a seed.
+TEST_F(HostileStudy, CellsThatLackWhatTheStudyNeedsAreComputedAgain) {
+    const std::string study = std::string(kStudy) + " --budget-tolerance 0.1 --mesh-rays 20000";
+    accepted(study);
+    const nlohmann::json good = nlohmann::json::parse(read_file(cell(1)));
+    ASSERT_EQ(good["status"], "ok");
+    const std::vector<std::tuple<std::string, nlohmann::json, std::string>> spoiled = {
+        {"/views", nlohmann::json::object(), "no result for view 'side'"},
+        {"/mesh_views", nlohmann::json::object(), "no mesh error for view 'side'"},
+        {"/rays", 5, "rays 5, not the 20000 of this cell"},
+        {"/mesh_rays", 0, "mesh_rays 0, not the 20000 of this cell"},
+    };
+    for (const auto& [pointer, value, note] : spoiled) {
+        nlohmann::json bad = good;
+        bad[nlohmann::json::json_pointer(pointer)] = value;
+        m_temp.write("st/cells/plates-power-B20-s1.json", bad.dump(2));
+        const CliRun r = accepted(study);
+        EXPECT_NE(
+            r.err.find("plates-power-B20-s1: the file holds " + note + "; computing it again"),
+            std::string::npos)
+            << pointer << "\n"
+            << r.err;
+        EXPECT_EQ(nlohmann::json::parse(read_file(cell(1)))["views"], good["views"]) << pointer;
+        EXPECT_NE(read_file(dir() / "st" / "table.md").find("| power | 2/2 |"), std::string::npos)
+            << pointer;
+    }
+    const std::string sampling =
+        "study plates.json --reference ref --samplers uniform --spp 2 --seeds 1 -o sst";
+    accepted(sampling);
+    const std::filesystem::path file = dir() / "sst" / "cells" / "plates-uniform-spp2-s1.json";
+    nlohmann::json bad = nlohmann::json::parse(read_file(file));
+    bad["views"] = nlohmann::json::object();
+    m_temp.write("sst/cells/plates-uniform-spp2-s1.json", bad.dump(2));
+    const CliRun r = accepted(sampling);
+    EXPECT_NE(r.err.find("the file holds no result for view 'side'; computing it again"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(nlohmann::json::parse(read_file(file))["views"].size(), 1u);
+}
+
 TEST_F(HostileStudy, TheCellCountAndTheSeedsAreBounded) {
     refused("study plates.json --reference ref --budgets 20 --oracles all --seeds 2000 -o big",
             "7 x 2000 seeds = 14000 cells");
@@ -96,6 +138,45 @@ TEST_F(HostileStudy, TheCellCountAndTheSeedsAreBounded) {
         "study plates.json --reference ref --samplers uniform "
         "--first-seed 18446744073709551615 --seeds 2 -o big",
         "pass the largest seed");
+}
+
+// A cells/ folder that takes no file is found before the first cell is computed: the one line
+// of the refusal is all the study prints (no budget probe before it).
+TEST_F(HostileStudy, ACellsFolderThatTakesNoFileIsFoundBeforeAnyCell) {
+    m_temp.write("st/cells", "a file where the folder goes");
+    refused(kStudy, "cannot write st/cells/plates-power-B20-s1.json: not a folder: st/cells");
+    std::filesystem::remove(dir() / "st" / "cells");
+    std::filesystem::create_directories(dir() / "st" / "cells");
+    const Unwritable read_only(dir() / "st" / "cells");
+    if (!read_only.ok()) GTEST_SKIP() << "no read-only folder can be made here";
+    refused(kStudy, "cannot write st/cells/plates-power-B20-s1.json");
+    refused("study plates.json --reference ref --samplers uniform --spp 2 --seeds 1 -o st",
+            "cannot write st/cells/plates-uniform-spp2-s1.json");
+}
+
+// A signal during a cell's frozen re-solve, after its own mesh and images are made: none of the
+// cell's files is left, as the study says ("no partial output left").
+TEST_F(HostileStudy, ACellInterruptedInItsReSolveLeavesNoneOfItsFiles) {
+    HmcrChild child(
+        "study plates.json --reference ref --budgets 20 --oracles power --seeds 1 "
+        "--budget-tolerance 0.1 --mesh-rays 1e12 -o st",
+        dir(), 60);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (read_file(dir() / ".stderr").find("mesh error: the mesh frozen") == std::string::npos &&
+           std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // well into the re-solve
+    child.signal(SIGTERM);
+    const ChildExit e = child.wait();
+    EXPECT_EQ(e.code, 128 + SIGTERM) << e.err;
+    EXPECT_NE(e.err.find("mesh error: the mesh frozen"), std::string::npos) << e.err;
+    EXPECT_NE(e.err.find("no partial output left"), std::string::npos) << e.err;
+    std::vector<std::string> left;  // the folder goes too, made by this run
+    std::error_code none;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(dir() / "st", none))
+        left.push_back(entry.path().lexically_relative(dir()).string());
+    EXPECT_TRUE(left.empty()) << left.front();
 }
 
 TEST_F(HostileStudy, QuietMeansQuiet) {

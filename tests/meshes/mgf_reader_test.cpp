@@ -179,6 +179,41 @@ TEST(MgfReader, SpectraBlackBodiesAndMixes) {
     EXPECT_TRUE(contains(read_error("c\n cmix 1 nope\n"), "undefined name 'nope'"));
 }
 
+// Colours of extreme but finite numbers have a chromaticity, computed without overflow: a black
+// body at 1e300 K is the Rayleigh-Jeans limit (as at 1e12 K), one at 1e-300 K the band's red end
+// (as at 0.5 K), a spectrum or a mix does not see a common factor. Through the reader each is a
+// finite reflectance of the luminance asked, and a temperature not above 0 K is refused at its
+// own line.
+TEST(MgfReader, ExtremeColoursAreComputedOrRefusedAtTheirLine) {
+    const auto same = [](const std::optional<Chromaticity>& a,
+                         const std::optional<Chromaticity>& b) {
+        ASSERT_TRUE(a && b);
+        EXPECT_NEAR(a->x, b->x, 1e-9);
+        EXPECT_NEAR(a->y, b->y, 1e-9);
+    };
+    same(blackbody_chromaticity(1e300), blackbody_chromaticity(1e12));
+    same(blackbody_chromaticity(1.7e308), blackbody_chromaticity(1e12));
+    same(blackbody_chromaticity(1e-300), blackbody_chromaticity(0.5));
+    same(blackbody_chromaticity(5e-324), blackbody_chromaticity(0.5));
+    const std::vector<double> ramp = {1, 2, 3, 4}, huge = {1e305, 2e305, 3e305, 4e305};
+    same(spectrum_chromaticity(380, 780, huge), spectrum_chromaticity(380, 780, ramp));
+    same(spectrum_chromaticity(380, 780, std::vector<double>(41, 1e308)),
+         spectrum_chromaticity(380, 780, std::vector<double>(41, 1.0)));
+    same(mix_chromaticity({{1e308, {0.64, 0.33}}, {1e308, {0.3, 0.6}}}),
+         mix_chromaticity({{1, {0.64, 0.33}}, {1, {0.3, 0.6}}}));
+    for (const std::string colour :
+         {"cct 1e300", "cct 1e-300", "cspec 380 780 1e308 1e308 1e308", "cxy 0.3 1e-320"}) {
+        const PolygonSoup soup = read(std::string(kSquareVertices) + "m a =\n c\n  " + colour +
+                                      "\n rd 0.5\nf q0 q1 q2\n");
+        const Eigen::Vector3d kd = soup.materials[0].material.kd;
+        EXPECT_TRUE(kd.allFinite()) << colour << ": " << kd.transpose();
+        EXPECT_NEAR(rgb_luminance(kd), 0.5, 1e-6) << colour << ": " << kd.transpose();
+    }
+    EXPECT_TRUE(contains(read_error("c a =\n cct -5\n"),
+                         "scene.mgf:2: cct: a temperature must be above 0 K, got '-5'"));
+    EXPECT_TRUE(contains(read_error("c a =\n cct 0\n"), "scene.mgf:2: cct: a temperature"));
+}
+
 TEST(MgfReader, TransformationsActInOrderInnerFirst) {
     const std::string text = std::string(kSquareVertices) +
                              "xf -t 1 0 0\n"
