@@ -47,6 +47,10 @@ void validate(const StudyOptions& o) {
     if (o.budgets.empty()) throw InputError("study: no budget given");
     if (o.oracles.empty()) throw InputError("study: no oracle given");
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    if (!(o.budget_tolerance > 0 && o.budget_tolerance < 1)) {
+        throw InputError(
+            fmt::format("study: budget-tolerance {:g} is not in (0, 1)", o.budget_tolerance));
+    }
     check_study_size(std::uint64_t(o.budgets.size()) * o.oracles.size(), o.seeds, o.solver.seed);
     refuse_repeats(o.budgets, "budget");
     if (o.budgets.size() > kMaxPlotPoints) {

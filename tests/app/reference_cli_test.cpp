@@ -92,10 +92,29 @@ TEST_F(ReferenceCli, TheKindsFlagsAreKeptApart) {
             "--max-area is for a mesh reference; this one is a point reference");
     refused("reference plates.json --kind mesh --paths 8 -o ref",
             "--paths is for a point reference; this one is a mesh reference");
+    refused("reference plates.json --kind points --sequence sobol -o ref",
+            "--sequence is for a mesh reference; this one is a point reference");
+    // Settings of a refining solve, which a uniform mesh and the points have no use for.
+    refused("reference plates.json --importance views -o ref", "--importance");
+    refused("reference plates.json --link-weight total -o ref", "--link-weight");
     refused("reference plates.json --kind cloud -o ref", "kind must be auto, points or mesh");
     refused("reference plates.json --paths 1 -o ref", "paths must be at least 2");
     refused("reference plates.json --for-budget 0 -o ref", "not a positive leaf count");
     EXPECT_EQ(snapshot(m_temp.path()), before);
+}
+
+// The help says what the study takes: spp values, not one spp; what the tolerance is relative to.
+TEST_F(ReferenceCli, StudysHelpSaysWhatItTakes) {
+    const CliRun top = run("--help"), study = run("study --help");
+    EXPECT_NE(top.out.find("pixel samplers at spp values (--samplers)"), std::string::npos)
+        << top.out;
+    EXPECT_EQ(top.out.find("one spp"), std::string::npos) << top.out;
+    EXPECT_NE(study.out.find("accepted relative distance of a cell's leaf count to its budget"),
+              std::string::npos)
+        << study.out;
+    plates();
+    refused("study plates.json --reference ref --budgets 20 --budget-tolerance 2 -o out",
+            "study: budget-tolerance 2 is not in (0, 1)");
 }
 
 TEST_F(ReferenceCli, ForBudgetSizesTheReferenceAndSaysSo) {
