@@ -75,6 +75,12 @@ TEST_F(ReferenceCli, AMeshFlagMakesAMeshReferenceThatChecksItselfAgainstPoints) 
     const nlohmann::json summary = json_of("ref/reference.json");
     const nlohmann::json& ref = summary["reference"];
     const auto points = 4 * summary["counts"]["leaves"].get<std::uint64_t>();  // 4 an element
+    // The counts the summary has, by its names.
+    EXPECT_NE(r.out.find(fmt::format("reference of {} leaves ({} elements with their parents)",
+                                     summary["counts"]["leaves"].get<std::uint64_t>(),
+                                     summary["counts"]["elements"].get<std::uint64_t>())),
+              std::string::npos)
+        << r.out;
     EXPECT_NE(r.out.find("against " + std::to_string(points) + " points the mesh is off by"),
               std::string::npos)
         << r.out;
