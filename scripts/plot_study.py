@@ -214,6 +214,11 @@ def main(argv):
     if len(argv) != 2:
         sys.stderr.write(__doc__)
         return BAD_INPUT
+    try:  # run again in /usr/bin/python3 where this Python lacks matplotlib
+        import system_python
+        system_python.run_where_importable("matplotlib")
+    except ImportError:  # the script copied alone, to restyle a figure
+        pass
     try:
         import matplotlib
         matplotlib.use("Agg")
