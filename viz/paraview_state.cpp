@@ -80,6 +80,19 @@ std::string collections(const std::filesystem::path& vtp) {
         kReader, xml_escape(vtp.filename().string()), kRepresentation, kView, kLayout);
 }
 
+// The layout of the one view, in preview mode at the view's image size (ParaView's View >
+// Preview): the GUI draws the view at exactly that size, or scaled down to fit its window with
+// the same aspect, so that it frames what `hmcr render` draws. ViewSize alone gives way to the
+// window.
+std::string layout(const View& view) {
+    return fmt::format(
+        R"(    <Proxy group="misc" type="ViewLayout" id="{}" servers="20">)"
+        "\n{}"
+        R"(      <Layout number_of_elements="1"><Item direction="0" fraction="0.5" view="{}"/></Layout>)"
+        "\n    </Proxy>\n",
+        kLayout, property(kLayout, "PreviewMode", view.width, view.height), kView);
+}
+
 }  // namespace
 
 std::string xml_escape(const std::string& text) {
@@ -110,14 +123,11 @@ std::string xml_escape(const std::string& text) {
 
 std::string paraview_state(const std::filesystem::path& vtp, const View& view,
                            bool cull_backfaces) {
-    const std::string layout = fmt::format(
-        R"(    <Proxy group="misc" type="ViewLayout" id="{}" servers="20"><Layout number_of_elements="1"><Item direction="0" fraction="0.5" view="{}"/></Layout></Proxy>)"
-        "\n",
-        kLayout, kView);
     return fmt::format(
         "<?xml version=\"1.0\"?>\n<ParaView>\n  <ServerManagerState version=\"5.11.0\">\n"
         "{}{}{}{}{}  </ServerManagerState>\n</ParaView>\n",
-        reader(vtp), representation(cull_backfaces), render_view(view), layout, collections(vtp));
+        reader(vtp), representation(cull_backfaces), render_view(view), layout(view),
+        collections(vtp));
 }
 
 void write_paraview_state(const std::filesystem::path& pvsm, const std::filesystem::path& vtp,

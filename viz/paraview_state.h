@@ -2,7 +2,8 @@
 // through ParaView's XMLPolyDataReader, coloured by RadiosityColor with Map Scalars off (the
 // array is already sRGB), Gouraud interpolation, and no lighting (ambient 1, diffuse 0, the
 // light kit off), so that the colours on screen are the radiosity; the camera is a view of the
-// scene. `paraview --state=out/cornell.pvsm` opens it.
+// scene, and the view is held at its image size (preview mode), so that ParaView frames it as
+// `hmcr render` does. `paraview --state=out/cornell.pvsm` opens it.
 //
 // Only the proxies and properties that differ from ParaView's defaults are written; ParaView
 // (checked with 5.11) fills in the rest when it loads the state.

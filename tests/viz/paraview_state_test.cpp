@@ -38,7 +38,8 @@ std::vector<std::string> values(vtkXMLDataElement* p, const std::string& name) {
     std::vector<std::string> out;
     for (int i = 0; p && i < p->GetNumberOfNestedElements(); ++i) {
         vtkXMLDataElement* prop = p->GetNestedElement(i);
-        if (name != prop->GetAttribute("name")) continue;
+        const char* attribute = prop->GetAttribute("name");  // a layout's <Layout> has none
+        if (attribute == nullptr || name != attribute) continue;
         for (int k = 0; k < prop->GetNumberOfNestedElements(); ++k) {
             const char* v = prop->GetNestedElement(k)->GetAttribute("value");
             out.push_back(v ? v : "");
@@ -83,6 +84,18 @@ TEST(ParaviewState, SolveWritesAStateThatShowsTheRadiosity) {
     EXPECT_EQ(numbers(view, "CameraFocalPoint"), (std::vector<double>{0.5, 0.5, 0.5}));
     EXPECT_EQ(numbers(view, "CameraViewUp"), (std::vector<double>{0, 1, 0}));
     EXPECT_EQ(values(view, "UseLight"), std::vector<std::string>{"0"});
+}
+
+// ParaView's window gives the view its own size, whatever ViewSize says; the layout's preview
+// mode holds it at the scene view's image size, so that it frames what `hmcr render` draws.
+TEST(ParaviewState, TheLayoutHoldsTheViewAtItsImageSize) {
+    View view;
+    view.width = 384;
+    view.height = 288;
+    const auto root = parse(paraview_state("/x.vtp", view));
+    ASSERT_TRUE(root);
+    EXPECT_EQ(numbers(proxy(root, "ViewLayout"), "PreviewMode"), (std::vector<double>{384, 288}));
+    EXPECT_EQ(numbers(proxy(root, "RenderView"), "ViewSize"), (std::vector<double>{384, 288}));
 }
 
 TEST(ParaviewState, FileNamesAreEscaped) {
