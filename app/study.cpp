@@ -143,7 +143,7 @@ int run_meshing_study(StudyArgs& a) {
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     warn_specular(scene, a.quiet, SpecularUse::solve);
     apply_scene_settings(a.flags, scene, a.options.solver);
-    refuse_study_output(a.options.output, a.options.reference, study_output_files(a.options),
+    refuse_study_output(a.options.output, a.options.reference, study_output_files(scene, a.options),
                         scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_study(scene, a.options, progress);

@@ -22,8 +22,8 @@
 #include "studies/cell_handout.h"
 #include "studies/plot_data.h"
 #include "studies/reference_measure.h"
+#include "studies/study_figures.h"
 #include "studies/traced_reference.h"
-#include "viz/paraview_collection.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
 #include "viz/solution_file.h"
@@ -95,7 +95,7 @@ public:
         // Rank 0 writes the tables: it alone checks, locks and holds them, before any work;
         // every rank learns of a refusal.
         together(Ranks::world(), [&] {
-            if (Ranks::world().root()) m_tables.emplace(study_output_files(o), o.output);
+            if (Ranks::world().root()) m_tables.emplace(study_output_files(scene, o), o.output);
         });
         m_settings = study_settings(m_scene, m_options);
     }
@@ -119,7 +119,6 @@ private:
     CellResult compute(std::size_t index);
     ObjectError measure(const Solution& solution, const MeshingCell& t, const std::string& name,
                         std::map<std::string, ImageErrors>& views, double* finer_share = nullptr);
-    void write_mesh_collection(OutputSet& out) const;
     void check_resolution(const CellResult& cell, CellNotes& notes) const;
     std::string where(std::size_t index) const;
 
@@ -187,26 +186,13 @@ void StudyRunner::run() {
     std::vector<std::string> views;
     for (const View& v : m_scene.views) views.push_back(v.name);
     write_study_tables(*m_tables, m_scene.name, m_options, views, cells);
-    write_mesh_collection(*m_tables);
+    write_study_figures(*m_tables, m_scene, m_options, cells, m_reference.images);
     m_tables->commit();
     for (std::size_t b : m_options.budgets) {
         if (const std::string w = finer_warning(cells, b); !w.empty()) {
             m_progress.note(fmt::format("warning: at {} leaves, {}", b, w));
         }
     }
-}
-
-// meshes.pvd: every cell's mesh as one time step, to step through them in one ParaView session.
-void StudyRunner::write_mesh_collection(OutputSet& out) const {
-    std::vector<CollectionEntry> entries;
-    for (const MeshingCell& t : m_tasks) {
-        const std::filesystem::path mesh = mesh_file(t.name);
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(mesh, ec)) {
-            entries.push_back({std::filesystem::path("meshes") / mesh.filename(), t.name});
-        }
-    }
-    write_paraview_collection(out.temp(m_options.output / "meshes.pvd"), entries);
 }
 
 CellResult StudyRunner::compute(std::size_t index) {
@@ -333,10 +319,15 @@ std::string cell_name(const std::string& scene, const std::string& oracle, std::
     return fmt::format("{}-{}-B{}-s{}", scene, oracle, budget, seed);
 }
 
-std::vector<std::filesystem::path> study_output_files(const StudyOptions& o) {
+std::vector<std::filesystem::path> study_table_files(const StudyOptions& o) {
     return {o.output / "table.json", o.output / "table.csv", o.output / "patches.csv",
-            o.output / "table.md",   o.output / "table.tex", plot_data_file(o.output),
-            o.output / "meshes.pvd"};
+            o.output / "table.md",   o.output / "table.tex", plot_data_file(o.output)};
+}
+
+std::vector<std::filesystem::path> study_output_files(const Scene& scene, const StudyOptions& o) {
+    std::vector<std::filesystem::path> files = study_table_files(o);
+    for (std::filesystem::path& f : study_figure_files(scene, o)) files.push_back(std::move(f));
+    return files;
 }
 
 void run_study(const Scene& scene, const StudyOptions& options, Progress& progress) {

@@ -98,6 +98,42 @@ TEST(ParaviewState, TheLayoutHoldsTheViewAtItsImageSize) {
     EXPECT_EQ(numbers(proxy(root, "RenderView"), "ViewSize"), (std::vector<double>{384, 288}));
 }
 
+// A study's meshes: one source each, named, coloured alike, the first alone shown.
+TEST(ParaviewState, SeveralSourcesAreNamedAndTheFirstAloneShown) {
+    View view;
+    const auto root = parse(paraview_state(
+        {{"/s/meshes/a.vtp", "a.vtp", true}, {"/s/meshes/b.vtp", "b.vtp", false}}, view, true));
+    ASSERT_TRUE(root);
+    vtkXMLDataElement* state = root->FindNestedElementWithName("ServerManagerState");
+    std::vector<std::string> files, visible, colours, culled;
+    for (int i = 0; i < state->GetNumberOfNestedElements(); ++i) {
+        vtkXMLDataElement* e = state->GetNestedElement(i);
+        const std::string type = e->GetAttribute("type") ? e->GetAttribute("type") : "";
+        if (type == "XMLPolyDataReader") files.push_back(values(e, "FileName").at(0));
+        if (type == "GeometryRepresentation") {
+            visible.push_back(values(e, "Visibility").at(0));
+            colours.push_back(values(e, "ColorArrayName").at(4));
+            culled.push_back(values(e, "BackfaceRepresentation").at(0));
+        }
+    }
+    EXPECT_EQ(files, (std::vector<std::string>{"/s/meshes/a.vtp", "/s/meshes/b.vtp"}));
+    EXPECT_EQ(visible, (std::vector<std::string>{"1", "0"}));
+    EXPECT_EQ(colours, (std::vector<std::string>{"RadiosityColor", "RadiosityColor"}));
+    EXPECT_EQ(culled, (std::vector<std::string>{"401", "401"}));
+    vtkXMLDataElement* shown =
+        proxy(root, "RenderView")
+            ->FindNestedElementWithNameAndAttribute("Property", "name", "Representations");
+    ASSERT_TRUE(shown);
+    EXPECT_EQ(shown->GetNumberOfNestedElements(), 2);
+    const std::string xml =
+        paraview_state({{"/x/a.vtp", "a.vtp", true}, {"/x/b.vtp", "b.vtp", false}}, view, false);
+    EXPECT_NE(
+        xml.find(
+            R"(<ProxyCollection name="sources"><Item id="10" name="a.vtp"/><Item id="12" name="b.vtp"/></ProxyCollection>)"),
+        std::string::npos)
+        << xml;
+}
+
 TEST(ParaviewState, FileNamesAreEscaped) {
     View view;
     const std::string xml = paraview_state("/a & b/\"x\" <y>.vtp", view);
