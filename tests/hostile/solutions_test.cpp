@@ -2,11 +2,13 @@
 // bound to the scene it was solved for.
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -25,10 +27,11 @@ protected:
         plates();
         accepted("solve plates.json --rays 2000 -q -o good.vtp");
     }
-    // good.vtp changed by `spoil`, written as NAME.
-    void spoilt(const std::string& name, const std::function<void(vtkPolyData*)>& spoil) const {
+    // FROM (good.vtp) changed by `spoil`, written as NAME.
+    void spoilt(const std::string& name, const std::function<void(vtkPolyData*)>& spoil,
+                const std::string& from = "good.vtp") const {
         vtkNew<vtkXMLPolyDataReader> reader;
-        reader->SetFileName((dir() / "good.vtp").c_str());
+        reader->SetFileName((dir() / from).c_str());
         reader->Update();
         vtkPolyData* data = reader->GetOutput();
         spoil(data);
@@ -154,6 +157,63 @@ TEST_F(HostileSolution, SidesThatAreNotTheScenesAreRefused) {
         for (vtkIdType c = 0; c < patch->GetNumberOfTuples(); ++c) patch->SetValue(c, 0);
     });
     expect_refused("patch0.vtp", "patch0.vtp: patch 1 has no front cell (of 2 patches)");
+}
+
+// ClusterId and Clustering: a known clustering, ids only with clustering, whole numbers from -1
+// to below the clusters a tree over the patches' sides has, one per side of a patch.
+TEST_F(HostileSolution, ClusterIdsThatNoSolveWritesAreRefused) {
+    accepted("solve plates.json --rays 2000 --clustering isotropic -q -o clustered.vtp");
+    accepted("render clustered.vtp --scene plates.json -o clustered.png");
+    const auto set_ids = [](const std::function<int(vtkIdType, int)>& f) {
+        return [f](vtkPolyData* d) {
+            auto* ids = vtkIntArray::SafeDownCast(d->GetCellData()->GetArray("ClusterId"));
+            for (vtkIdType c = 0; c < ids->GetNumberOfTuples(); ++c)
+                ids->SetValue(c, f(c, ids->GetValue(c)));
+        };
+    };
+    spoilt("minus.vtp", set_ids([](vtkIdType c, int id) { return c == 0 ? -5 : id; }),
+           "clustered.vtp");
+    expect_refused("minus.vtp",
+                   "minus.vtp: cell 0 has ClusterId -5, not -1 or one of the 3 "
+                   "clusters of 2 patches");
+    spoilt("largest.vtp", set_ids([](vtkIdType c, int id) { return c == 0 ? 2147483647 : id; }),
+           "clustered.vtp");
+    expect_refused("largest.vtp", "cell 0 has ClusterId 2147483647");
+    // Cells 0 and 1 are one side of one patch (the first patch's front is refined).
+    spoilt("split.vtp", set_ids([](vtkIdType c, int id) { return c == 1 ? id + 1 : id; }),
+           "clustered.vtp");
+    expect_refused("split.vtp", "one side of a patch is in one cluster");
+    spoilt(
+        "float.vtp",
+        [](vtkPolyData* d) {
+            vtkNew<vtkFloatArray> ids;
+            ids->SetName("ClusterId");
+            ids->SetNumberOfTuples(d->GetNumberOfCells());
+            ids->Fill(0.5f);
+            d->GetCellData()->RemoveArray("ClusterId");
+            d->GetCellData()->AddArray(ids);
+        },
+        "clustered.vtp");
+    expect_refused("float.vtp", "float.vtp: ");
+    spoilt(
+        "anisotropic.vtp",
+        [](vtkPolyData* d) {
+            vtkNew<vtkStringArray> clustering;
+            clustering->SetName("Clustering");
+            clustering->InsertNextValue("anisotropic");
+            d->GetFieldData()->RemoveArray("Clustering");
+            d->GetFieldData()->AddArray(clustering);
+        },
+        "clustered.vtp");
+    expect_refused("anisotropic.vtp", "has Clustering 'anisotropic', not none or isotropic");
+    spoilt("unclustered.vtp", [](vtkPolyData* d) {
+        vtkNew<vtkIntArray> ids;
+        ids->SetName("ClusterId");
+        ids->SetNumberOfTuples(d->GetNumberOfCells());
+        ids->Fill(-1);
+        d->GetCellData()->AddArray(ids);
+    });
+    expect_refused("unclustered.vtp", "has a ClusterId array, but Clustering 'none'");
 }
 
 TEST_F(HostileSolution, GarbageIsRefused) {
