@@ -2,6 +2,7 @@
 // bound to the scene it was solved for.
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIntArray.h>
@@ -101,7 +102,20 @@ TEST_F(HostileSolution, ValuesOutOfRangeAreRefused) {
     spoilt("nan.vtp", [](vtkPolyData* d) {
         vtkFloatArray::SafeDownCast(d->GetPointData()->GetArray("Radiosity"))->SetValue(0, NAN);
     });
-    expect_refused("nan.vtp", "Radiosity nan");
+    expect_refused("nan.vtp", "Radiosity nan is not a finite number\n");
+    // Not "is not a finite number of at least -inf": a radiosity may be negative (§3.11).
+    for (const float value : {-INFINITY, INFINITY, NAN}) {
+        spoilt("inf.vtp", [value](vtkPolyData* d) {
+            vtkFloatArray::SafeDownCast(d->GetCellData()->GetArray("ElementRadiosity"))
+                ->SetValue(1, value);
+        });
+        const std::string shown = std::isnan(value) ? "nan" : value < 0 ? "-inf" : "inf";
+        expect_refused("inf.vtp", "ElementRadiosity " + shown + " is not a finite number\n");
+    }
+    spoilt("area.vtp", [](vtkPolyData* d) {
+        vtkDoubleArray::SafeDownCast(d->GetCellData()->GetArray("ElementArea"))->SetValue(0, -2);
+    });
+    expect_refused("area.vtp", "ElementArea -2 is negative\n");
 }
 
 // A signed estimator (the control variate, docs/design.md §3.11) may leave a dim leaf below 0:
