@@ -16,9 +16,11 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkVariant.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/error.h"
+#include "radiosity/solver_options.h"
 #include "viz/vtp_io.h"
 
 namespace hmcr {
@@ -76,6 +78,39 @@ void check_cell_order(const ShadedMesh& m, const VtpChecker& check, std::uint64_
     if (front_patches < patch_count) {
         check.fail(
             fmt::format("patch {} has no front cell (of {} patches)", front_patches, patch_count));
+    }
+}
+
+// ClusterId, only in a clustered solution: per cell the cluster leaf holding its side
+// (docs/design.md §2.7), -1 where the side is in the mesh itself. A tree over the sides of P
+// patches has fewer than 2 P - 1 clusters; every cell of one side names the same one.
+void read_cluster_ids(vtkCellData* cd, const VtpChecker& check, const VtpMetadata& meta,
+                      ShadedMesh& m) {
+    if (!cd->HasArray("ClusterId")) return;
+    if (meta.clustering != "isotropic") {
+        check.fail(fmt::format("has a ClusterId array, but Clustering {}", quote(meta.clustering)));
+    }
+    const vtkIdType n = vtkIdType(m.cell_count());
+    auto* ids = check.array<vtkIntArray>(cd, "ClusterId", 1, n);
+    const std::int64_t clusters = 2 * std::int64_t(meta.patch_count) - 1;
+    m.cluster_id.resize(std::size_t(n));
+    for (vtkIdType c = 0; c < n; ++c) {
+        const int id = ids->GetValue(c);
+        if (id < -1 || id >= clusters) {
+            check.fail(
+                fmt::format("cell {} has ClusterId {}, not -1 or one of the {} clusters "
+                            "of {} patches",
+                            c, id, std::max<std::int64_t>(clusters, 0), meta.patch_count));
+        }
+        const std::size_t k = std::size_t(c);
+        if (k > 0 && m.patch_id[k] == m.patch_id[k - 1] && m.side[k] == m.side[k - 1] &&
+            id != m.cluster_id[k - 1]) {
+            check.fail(
+                fmt::format("cell {} has ClusterId {}, the cell before it {}: one side of "
+                            "a patch is in one cluster",
+                            c, id, m.cluster_id[k - 1]));
+        }
+        m.cluster_id[k] = id;
     }
 }
 
@@ -137,6 +172,10 @@ VtpMetadata read_metadata(vtkPolyData* data, const VtpChecker& check) {
     meta.element_count = check.count_field(fd, "ElementCount");
     meta.iterations = check.count_field(fd, "Iterations");
     meta.time_value = value_field<vtkDoubleArray>(fd, "TimeValue", check);
+    meta.clustering = check.string_field(fd, "Clustering", kOldSolution);
+    if (!SettingNames<Clustering>::parse(meta.clustering)) {
+        check.fail(fmt::format("has Clustering {}, not none or isotropic", quote(meta.clustering)));
+    }
     return meta;
 }
 
@@ -174,6 +213,7 @@ ShadedMesh read_vtp(const fs::path& path, VtpMetadata* metadata) {
     read_points(data, check, m);
     read_polygon_cells(data, check, m);
     read_cell_data(data, check, meta.patch_count, m);
+    read_cluster_ids(data->GetCellData(), check, meta, m);
     if (m.cell_count() != meta.element_count) {
         check.fail(fmt::format("has {} cells but records {} elements", m.cell_count(),
                                meta.element_count));
