@@ -4,6 +4,7 @@
 
 #include "common/error.h"
 #include "common/memory.h"
+#include "common/text_file.h"
 
 namespace hmcr {
 
@@ -116,6 +117,24 @@ void warn_specular(const Scene& scene, bool quiet, SpecularUse use) {
                    ? ", so this image shows them with their diffuse radiosity alone, without "
                      "reflections; `hmcr trace` reflects them"
                    : "; `hmcr trace` reflects it");
+}
+
+void refuse_replacing_scene_files(const std::vector<std::filesystem::path>& outputs) {
+    for (const std::filesystem::path& file : outputs) {
+        std::error_code ec;
+        if (file.extension() != ".json" || !std::filesystem::is_regular_file(file, ec)) continue;
+        nlohmann::json j;
+        try {
+            j = read_json_file(file);
+        } catch (const InputError&) {
+            continue;  // no JSON: no scene file either
+        }
+        if (j.is_object() && j.contains("mesh")) {
+            throw InputError(file.string(),
+                             "is a scene file (it names a \"mesh\"), which this command's summary "
+                             "would replace; give the output another name or folder");
+        }
+    }
 }
 
 }  // namespace hmcr

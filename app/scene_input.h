@@ -3,7 +3,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "meshes/scene.h"
 
@@ -38,5 +40,11 @@ enum class SpecularUse { solve, render };
 // One warning line when some of the scene's patches reflect specularly (Ks, rs), saying how
 // many and what the command makes of them; nothing otherwise or when quiet.
 void warn_specular(const Scene& scene, bool quiet, SpecularUse use);
+
+// Throws InputError when one of `outputs` is an existing scene file (a JSON object naming a
+// "mesh"): a summary named after the output (`solve dir/X.obj -o dir/X.vtp` writes dir/X.json)
+// would replace the scene file beside its mesh. Another file there, or one that is no JSON, is
+// an earlier summary's place and is replaced as before.
+void refuse_replacing_scene_files(const std::vector<std::filesystem::path>& outputs);
 
 }  // namespace hmcr

@@ -89,6 +89,7 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     json.replace_extension(".json");
     pvsm.replace_extension(".pvsm");  // ParaView's view of the .vtp (viz/paraview_state.h)
     refuse_overwriting({vtp, json, pvsm}, scene.inputs);
+    refuse_replacing_scene_files({json});
     // Rank 0 writes: it alone checks, locks and holds the set; every rank learns of a refusal.
     std::optional<OutputSet> out;
     together(Ranks::world(), [&] {

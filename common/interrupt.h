@@ -1,7 +1,8 @@
-// Ending a run cleanly on SIGINT (Ctrl-C) or SIGTERM (a cluster's time limit). The signal only
-// raises a flag; long work checks it at safe points (between ray batches, probes, study cells,
-// stages) and throws Interrupted, whose unwinding removes temporary files, while what is
-// complete stays (a study's finished cells). A second signal ends the process at once.
+// Ending a run cleanly on SIGINT (Ctrl-C), SIGTERM (a cluster's time limit) or SIGHUP (its
+// terminal closed; ignored under nohup, which asks for that). The signal only raises a flag;
+// long work checks it at safe points (between ray batches, probes, study cells, stages) and
+// throws Interrupted, whose unwinding removes temporary files, while what is complete stays (a
+// study's finished cells). A second signal ends the process at once.
 #pragma once
 
 #include <stdexcept>
@@ -17,7 +18,8 @@ private:
     int m_signal;
 };
 
-// Installs the handlers for SIGINT and SIGTERM (the command line does, once).
+// Installs the handlers for SIGINT, SIGTERM and SIGHUP, SIGHUP only where it is not ignored (the
+// command line does, once).
 void install_interrupt_handlers();
 // Throws Interrupted if a signal came since the handlers were installed.
 void throw_if_interrupted();

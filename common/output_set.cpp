@@ -70,6 +70,7 @@ OutputSet::OutputSet(std::vector<fs::path> files, const fs::path& folder)
             fs::remove(create_temp_beside(file), ignored);  // the folder takes files
         }
         m_temps.resize(m_files.size());
+        for (std::size_t i = 0; i < m_files.size(); ++i) m_index.emplace(m_files[i], i);
     } catch (...) {
         abandon();
         throw;
@@ -81,12 +82,13 @@ OutputSet::~OutputSet() {
 }
 
 const fs::path& OutputSet::temp(const fs::path& file) {
-    for (std::size_t i = 0; i < m_files.size(); ++i) {
-        if (m_files[i] != file) continue;
-        if (m_temps[i].empty()) m_temps[i] = create_temp_beside(file);
-        return m_temps[i];
+    const auto it = m_index.find(file);
+    if (it == m_index.end()) {
+        throw std::logic_error(file.string() + " is not an output of this command");
     }
-    throw std::logic_error(file.string() + " is not an output of this command");
+    fs::path& tmp = m_temps[it->second];
+    if (tmp.empty()) tmp = create_temp_beside(file);
+    return tmp;
 }
 
 void OutputSet::commit() {

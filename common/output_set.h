@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -37,8 +38,9 @@ private:
     void lock(const std::filesystem::path& output, bool is_folder);
     void abandon() noexcept;
 
-    std::vector<std::filesystem::path> m_files, m_temps;  // a temp is empty until temp()
-    std::vector<std::filesystem::path> m_made_folders;    // outermost first
+    std::vector<std::filesystem::path> m_files, m_temps;   // a temp is empty until temp()
+    std::map<std::filesystem::path, std::size_t> m_index;  // of m_files: temp() of thousands
+    std::vector<std::filesystem::path> m_made_folders;     // outermost first
     std::vector<std::unique_ptr<OutputLock>> m_locks;
     bool m_committed = false;
 };

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "common/error.h"
 #include "common/file_names.h"
@@ -29,16 +30,18 @@ using Clock = std::chrono::steady_clock;
 
 void validate(const SamplingStudyOptions& o) {
     if (o.samplers.empty()) throw InputError("study: no sampler given");
-    for (auto it = o.samplers.begin(); it != o.samplers.end(); ++it) {
-        if (std::find(o.samplers.begin(), it, *it) != it) {
-            throw InputError(fmt::format("study: sampler {} is given twice", (*it)->name()));
+    std::set<const Criterion*> samplers;
+    for (const Criterion* c : o.samplers) {
+        if (!samplers.insert(c).second) {
+            throw InputError(fmt::format("study: sampler {} is given twice", c->name()));
         }
     }
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
     if (o.spps.empty()) throw InputError("study: no spp given");
-    for (auto it = o.spps.begin(); it != o.spps.end(); ++it) {
-        if (std::find(o.spps.begin(), it, *it) != it) {
-            throw InputError(fmt::format("study: spp {} is given twice", *it));
+    std::set<double> spps;  // n log n: a study may list a thousand
+    for (double spp : o.spps) {
+        if (!spps.insert(spp).second) {
+            throw InputError(fmt::format("study: spp {} is given twice", spp));
         }
     }
     check_study_size(std::uint64_t(o.samplers.size()) * o.spps.size(), o.seeds, o.trace.seed);
@@ -190,24 +193,27 @@ void SamplingStudy::run() {
 }
 
 SppErrorSplits SamplingStudy::error_splits(const std::vector<SamplingCell>& cells) const {
+    // The finished cells by sampler and spp, found in one pass (a study may have thousands).
+    std::map<std::pair<std::string, double>, std::vector<const SamplingCell*>> seeds;
+    for (const SamplingCell& c : cells) {
+        if (c.ok()) seeds[{c.sampler, c.spp}].push_back(&c);
+    }
     SppErrorSplits splits;
-    for (double spp : m_options.spps)
-        for (const Criterion* sampler : m_options.samplers) {
-            const std::string s(sampler->name());
-            for (const View& v : m_scene.views) {
-                std::vector<Image8> images;
-                for (const SamplingCell& c : cells) {
-                    const fs::path png =
-                        file("images",
-                             sampling_cell_name(c.scene, c.sampler, c.spp, c.seed) + "-" + v.name,
-                             ".png");
-                    if (c.sampler == s && c.spp == spp && c.ok() && fs::exists(png))
-                        images.push_back(read_png(png));
-                }
-                if (images.size() >= 2)
-                    splits[spp][s][v.name] = split_error(images, m_reference8.at(v.name));
+    for (const auto& [key, of_seeds] : seeds) {
+        const auto& [sampler, spp] = key;
+        for (const View& v : m_scene.views) {
+            std::vector<Image8> images;
+            for (const SamplingCell* c : of_seeds) {
+                const fs::path png =
+                    file("images",
+                         sampling_cell_name(c->scene, c->sampler, c->spp, c->seed) + "-" + v.name,
+                         ".png");
+                if (fs::exists(png)) images.push_back(read_png(png));
             }
+            if (images.size() >= 2)
+                splits[spp][sampler][v.name] = split_error(images, m_reference8.at(v.name));
         }
+    }
     return splits;
 }
 

@@ -94,7 +94,7 @@ nlohmann::json sampling_study_settings(const Scene& scene, const SamplingStudyOp
 
 // Runs (or resumes) the study; each cell is a note of `progress`. Throws InputError on bad
 // options or an unusable reference, Interrupted (common/interrupt.h) between cells and between
-// pixels after a SIGINT or SIGTERM (finished cells stay).
+// pixels after a SIGINT, SIGTERM or SIGHUP (finished cells stay).
 void run_sampling_study(const Scene& scene, const SamplingStudyOptions& options,
                         Progress& progress = no_progress());
 

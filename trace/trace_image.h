@@ -87,7 +87,7 @@ void validate_trace_options(const TraceOptions& options);
 void check_trace_memory(const TraceOptions& options, const View& view);
 
 // Throws InputError on bad options or memory, SppNotReached when the search fails, and
-// Interrupted (common/interrupt.h) within a pixel after a SIGINT or SIGTERM.
+// Interrupted (common/interrupt.h) within a pixel after a SIGINT, SIGTERM or SIGHUP.
 TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceOptions& options,
                         Progress& progress = no_progress());
 

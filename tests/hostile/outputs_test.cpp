@@ -2,6 +2,7 @@
 // written is refused before the work, in hmcr's words: every file of the command's set is
 // checked first, so that a refusal leaves none of them.
 #include "tests/hostile/hostile.h"
+#include "tests/support/hmcr_child.h"
 
 namespace hmcr::test {
 namespace {
@@ -27,6 +28,22 @@ TEST_F(Hostile, NoCommandWritesOverItsInputs) {
     plates(with_mtllib("m.pvsm"));
     m_temp.write("m.pvsm", kPlatesMtl);
     refused("solve plates.obj -o m.vtp", "is an input of this command");
+}
+
+// The bundled layout, DIR/X.obj beside DIR/X.json: a solve of the mesh alone names its summary
+// DIR/X.json, the scene file, which is no input of that run; a trace's IMAGE.json alike. Refused;
+// an earlier summary, or a file that is no JSON, is replaced as ever.
+TEST_F(Hostile, NoSummaryReplacesASceneFileBesideIt) {
+    plates();
+    refused("solve plates.obj --rays 2000 -q -o plates.vtp",
+            "plates.json: is a scene file (it names a \"mesh\")");
+    m_temp.write("v/side.json", R"({"mesh": "../plates.obj"})");
+    refused("trace plates.obj --spp 1 -q -o v/side.png", "v/side.json: is a scene file");
+    accepted("solve plates.obj --rays 2000 -q -o p.vtp");
+    accepted("solve plates.obj --rays 2000 -q -o p.vtp");  // over its own summary
+    m_temp.write("q.json", "not json");
+    accepted("solve plates.obj --rays 2000 -q -o q.vtp");
+    EXPECT_NE(read_file(dir() / "q.json").find("hmcr_version"), std::string::npos);
 }
 
 TEST_F(Hostile, AStudyMayNotWriteIntoItsReference) {
@@ -92,6 +109,38 @@ TEST_F(Hostile, AnInterruptedReferenceLeavesNoFolder) {
     std::filesystem::remove(dir() / ".stdout");
     std::filesystem::remove(dir() / ".stderr");
     EXPECT_TRUE(std::filesystem::is_empty(dir()));
+}
+
+// A hang-up (the terminal closed) stops a run as SIGTERM does: exit code 129, one line, no
+// output and no lock file left. Under nohup (SIGHUP ignored from the start) the run goes on.
+TEST_F(Hostile, AHangUpEndsARunCleanlyUnlessIgnored) {
+    plates();
+    const auto wait_for_lock = [&] {
+        for (int i = 0; i < 1500 && !std::filesystem::exists(dir() / "out" / ".x.pvsm.lock"); ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    };
+    {
+        HmcrChild solve("solve plates.json --rays 1e12 -q -o out/x.vtp", dir(), 60);
+        wait_for_lock();
+        solve.signal(SIGHUP);
+        const ChildExit e = solve.wait();
+        EXPECT_EQ(e.code, 128 + SIGHUP) << e.err;
+        EXPECT_EQ(e.err, "hmcr: error: interrupted by SIGHUP; no partial output left\n");
+        EXPECT_LT(e.seconds, 5.0);
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir() / "out"));  // nor its lock files
+    struct sigaction ignore {
+    }, before{};
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGHUP, &ignore, &before);  // as nohup starts it
+    HmcrChild solve("solve plates.json --rays 1e12 -q -o out/x.vtp", dir(), 60);
+    sigaction(SIGHUP, &before, nullptr);
+    wait_for_lock();
+    solve.signal(SIGHUP);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    EXPECT_TRUE(std::filesystem::exists(dir() / "out" / ".x.pvsm.lock"));  // still running
+    solve.signal(SIGTERM);
+    EXPECT_EQ(solve.wait().code, 128 + SIGTERM);
 }
 
 TEST_F(Hostile, RenderIsQuietWhenAsked) {
