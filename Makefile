@@ -16,7 +16,7 @@ PREFIX ?= /usr/local
 # Debian's Python, which python3-matplotlib serves (another python3 may come first on the PATH).
 PLOT_PYTHON ?= /usr/bin/python3
 
-.PHONY: deps build run install test test-quick test-sanitize bench scenes format format-check clean
+.PHONY: deps view-deps build run install test test-quick test-sanitize bench scenes format format-check clean
 
 # Installs only what is missing, so it is quick when everything is present.
 deps:
@@ -25,6 +25,26 @@ deps:
 	  echo "make deps: installing $$missing"; \
 	  export DEBIAN_FRONTEND=noninteractive; \
 	  apt-get update -qq && apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+# What looking at results takes, not the build: ParaView, and Xvfb to run it and
+# scripts/render_vtp.py without a display. Without recommended packages: paraview recommends
+# python3-paraview, which conflicts with the python3-vtk9 of libvtk9-dev, and apt would remove
+# both (and break the build) to install it. Installs nothing where apt would still remove a
+# package.
+VIEW_DEPS := paraview xvfb
+view-deps:
+	@missing=$$(for p in $(VIEW_DEPS); do dpkg -s $$p >/dev/null 2>&1 || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  export DEBIAN_FRONTEND=noninteractive; \
+	  apt-get update -qq || exit 1; \
+	  removed=$$(apt-get install -s --no-install-recommends $$missing | sed -n 's/^Remv \([^ ]*\).*/\1/p'); \
+	  if [ -n "$$removed" ]; then \
+	    echo "make view-deps: installing" $$missing "would remove" $$removed": nothing installed" >&2; \
+	    exit 1; \
+	  fi; \
+	  echo "make view-deps: installing $$missing"; \
+	  apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
 
 $(BUILD)/CMakeCache.txt:

@@ -1,6 +1,7 @@
 #include "app/count.h"
 
 #include <cmath>
+#include <cstdlib>
 
 namespace hmcr {
 
@@ -32,6 +33,29 @@ const CLI::Validator& count_notation() {
         },
         "COUNT");
     return validator;
+}
+
+namespace {
+
+const CLI::Validator& finite_number() {
+    static const CLI::Validator validator(
+        [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0') return "'" + text + "' is not a number";
+            return std::isfinite(v) ? std::string() : "'" + text + "' is not a finite number";
+        },
+        "");
+    return validator;
+}
+
+}  // namespace
+
+void require_finite_reals(CLI::App& app) {
+    for (CLI::Option* option : app.get_options()) {
+        if (option->get_type_name().rfind("FLOAT", 0) == 0) option->check(finite_number());
+    }
+    for (CLI::App* command : app.get_subcommands({})) require_finite_reals(*command);
 }
 
 }  // namespace hmcr

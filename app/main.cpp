@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/command.h"
+#include "app/count.h"
 #include "common/error.h"
 #include "common/exit_code.h"
 #include "common/interrupt.h"
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
                                            trace_command(app, command_line),
                                            samplers_command(app),
                                            trace_reference_command(app, command_line)};
+    require_finite_reals(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

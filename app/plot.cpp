@@ -32,7 +32,11 @@ int run_plot(const PlotArgs& a) {
     OutputSet out({file}, a.study);
     write_text_atomically(out.temp(file), plot_data_text(data));
     out.commit();
-    draw_plots(*python, file);
+    try {
+        draw_plots(*python, file);
+    } catch (const InputError& e) {
+        throw InputError(std::string("plot: ") + e.what());
+    }
     if (!a.quiet) fmt::print("plots written to {}\n", (a.study / "plots").string());
     return 0;
 }

@@ -22,8 +22,9 @@ std::filesystem::path plot_script();
 std::string why_no_plots(const std::optional<std::string>& python,
                          const std::filesystem::path& study);
 
-// Runs the script on the data file. Throws Interrupted after a signal, std::runtime_error when
-// the script fails (its own message is on stderr).
+// Runs the script on the data file. Throws Interrupted after a signal, InputError when the
+// script fails, in one line with the last line the script wrote on stderr (a Python error's
+// own message).
 void draw_plots(const std::string& python, const std::filesystem::path& data);
 
 // What `hmcr study` does at the end: draws the plots of the study's plot data, or, when they

@@ -129,11 +129,12 @@ int run_mesh(ReferenceArgs& a, const Scene& scene, const std::string& command_li
     if (!a.quiet) {
         const Rgb& bias = ref.truncation.relative;
         fmt::print(
-            "{}: reference of {} elements, 2 x {} rays, {:.1f} s; seeds differ by {:.4f} "
-            "(object-space relative L2); stopping left out {:.2g}/{:.2g}/{:.2g} of the "
-            "reflected light (R/G/B)",
-            scene.name, ref.solution.stats.leaves, a.options.solver.rays, ref.seconds,
-            ref.object_error.relative_l2, bias[0], bias[1], bias[2]);
+            "{}: reference of {} leaves ({} elements with their parents), 2 x {} rays, {:.1f} "
+            "s; seeds differ by {:.4f} (object-space relative L2); stopping left out "
+            "{:.2g}/{:.2g}/{:.2g} of the reflected light (R/G/B)",
+            scene.name, ref.solution.stats.leaves, ref.solution.stats.elements,
+            a.options.solver.rays, ref.seconds, ref.object_error.relative_l2, bias[0], bias[1],
+            bias[2]);
         if (ref.discretisation.samples > 0) {
             fmt::print("; against {} points the mesh is off by {:.4f} +- {:.4f}",
                        ref.discretisation.samples, ref.discretisation.relative_l2,
@@ -189,7 +190,8 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
                                 {"oracle", "epsilon", "lines", "min_area", "max_depth", "cache_mb",
                                  "link_weight", "refine_share", "clustering", "importance"},
                                 {"rays", "seed"});
-    for (const char* name : {"--rays", "--stop", "--max-elements", "--control-variate"}) {
+    for (const char* name :
+         {"--rays", "--stop", "--max-elements", "--control-variate", "--sequence"}) {
         if (auto* option = cmd->get_option_no_throw(name)) a->mesh_only.push_back(option);
     }
     a->mesh_only.push_back(

@@ -8,19 +8,6 @@
 namespace hmcr {
 namespace {
 
-// CLI11 reads "nan" and "inf" as numbers; no setting means them.
-const CLI::Validator& finite_number() {
-    static const CLI::Validator validator(
-        [](std::string& text) -> std::string {
-            char* end = nullptr;
-            const double v = std::strtod(text.c_str(), &end);
-            if (end == text.c_str() || *end != '\0') return "'" + text + "' is not a number";
-            return std::isfinite(v) ? std::string() : "'" + text + "' is not a finite number";
-        },
-        "NUMBER");
-    return validator;
-}
-
 template <class T>
 CLI::Option* add_flag(CLI::App& command, const Setting<T>& s, T& field) {
     if constexpr (NamedSetting<T>) {  // resolved here, where the name is read
@@ -32,8 +19,8 @@ CLI::Option* add_flag(CLI::App& command, const Setting<T>& s, T& field) {
     } else {
         CLI::Option* option = command.add_option(s.flag(), field, std::string(s.help));
         if constexpr (std::is_same_v<T, std::uint64_t>) option->transform(count_notation());
+        // (a real's text is checked to be finite for every command: app/count.h)
         if constexpr (std::is_floating_point_v<T>) {
-            option->check(finite_number());
             if (std::isnan(field)) return option;  // "the oracle's": the help says so
         }
         return option->capture_default_str();

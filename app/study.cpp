@@ -146,7 +146,7 @@ int run_meshing_study(StudyArgs& a) {
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
     warn_specular(scene, a.quiet, SpecularUse::solve);
     apply_scene_settings(a.flags, scene, a.options.solver);
-    refuse_study_output(a.options.output, a.options.reference, study_output_files(a.options),
+    refuse_study_output(a.options.output, a.options.reference, study_output_files(scene, a.options),
                         scene);
     TerminalProgress progress(progress_mode_for("auto", a.quiet), "hmcr study");
     run_study(scene, a.options, progress);
@@ -191,8 +191,11 @@ void add_meshing_flags(CLI::App& cmd, StudyArgs& a) {
                    fmt::format("rays of each cell's frozen re-solve, the mesh error (default: "
                                "{} x the cell's rays; 0: none)",
                                kMeshRaysPerCellRay));
-    cmd.add_option("--budget-tolerance", o.budget_tolerance, "relative")->capture_default_str();
-    cmd.add_option("--samples", o.samples_per_axis, "n x n rays per pixel")->capture_default_str();
+    cmd.add_option("--budget-tolerance", o.budget_tolerance,
+                   "accepted relative distance of a cell's leaf count to its budget, in (0, 1)")
+        ->capture_default_str();
+    cmd.add_option("--samples", o.samples_per_axis, "n x n rays per pixel of the images")
+        ->capture_default_str();
 }
 
 void add_sampling_flags(CLI::App& cmd, StudyArgs& a) {
@@ -216,7 +219,7 @@ Command study_command(CLI::App& app) {
     auto a = std::make_shared<StudyArgs>();
     auto* cmd = app.add_subcommand(
         "study",
-        "oracles at element budgets (--budgets) or pixel samplers at one spp (--samplers) "
+        "oracles at element budgets (--budgets) or pixel samplers at spp values (--samplers) "
         "against a reference: tables, images, plots");
     StudyOptions& o = a->options;
     cmd->add_option("scene", a->scene, "bundled scene name, scene .json, .obj or .mgf")->required();

@@ -26,6 +26,13 @@ namespace hmcr {
 void resolve_coincident_faces(PolygonSoup& soup, const std::vector<int>& welded,
                               RepairReport& report);
 
+// The same rules on the faces of 5 corners or more, before the repairs cut them into triangles
+// (with their repeated and collinear corners out): two such faces facing away from each other
+// would each be cut its own way, their triangles overlapping without one matching, so they are
+// compared as polygons. A face with a corner twice is left as it is.
+void resolve_coincident_polygons(PolygonSoup& soup, const std::vector<int>& welded,
+                                 RepairReport& report);
+
 // A strict load's part of that: exactly two faces on the same vertices, facing away from each
 // other, are joined (sides_joined). Anything else is left for the builder to refuse.
 void join_opposite_faces(PolygonSoup& soup, const std::vector<int>& welded, RepairReport& report);

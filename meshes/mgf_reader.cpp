@@ -25,8 +25,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Counts and first place of the statements hmcr ignores, for one warning.
-struct Ignored {
+// Counts and first place of what a warning reports: the statements hmcr ignores, by entity, and
+// the colours it fits to RGB.
+struct Tally {
     std::map<std::string, std::pair<std::size_t, std::string>> by_entity;
     void add(const std::string& entity, const std::string& where) {
         auto& [count, first] = by_entity[entity];
@@ -284,7 +285,7 @@ private:
         if (c.x == 1.0 / 3 && c.y == 1.0 / 3) return grey;
         const Eigen::Vector3d out = chromaticity_rgb(c, luminance);
         if (c.y == 0 || !out.allFinite()) {  // no luminance to scale, or x / y overflows
-            m_ignored.add("(colours moved toward grey to fit RGB)", m_where);
+            m_fitted.add("colours", m_where);
             return grey;
         }
         double t = 1;  // how much of the colour is kept
@@ -293,7 +294,7 @@ private:
             if (out[k] > upper) t = std::min(t, (upper - luminance) / (out[k] - luminance));
         }
         if (t == 1) return out;
-        m_ignored.add("(colours moved toward grey to fit RGB)", m_where);
+        m_fitted.add("colours", m_where);
         return (grey + t * (out - grey)).cwiseMax(0.0).cwiseMin(upper);
     }
 
@@ -388,7 +389,8 @@ private:
     std::size_t m_objects = 0;
     SourcePlace m_at;
     std::string m_where;
-    Ignored m_ignored;
+    Tally m_ignored;  // statements and entities skipped
+    Tally m_fitted;   // colours moved toward grey to fit RGB
 };
 
 // The polygons of one geometric entity, in the material and transformation in effect; false
@@ -525,10 +527,17 @@ void MgfReader::fit_reflectances(const MgfMaterial& m, Material& out) {
     const Eigen::Vector3d grey_s = Eigen::Vector3d::Constant(m.rs);
     out.kd = t == 0 ? grey_d : (grey_d + t * (m.kd - grey_d)).cwiseMax(0.0);
     out.ks = t == 0 ? grey_s : (grey_s + t * (m.ks - grey_s)).cwiseMax(0.0);
-    m_ignored.add("(colours moved toward grey to fit RGB)", m_soup.where(m.ks_at));
+    m_fitted.add("colours", m_soup.where(m.ks_at));
 }
 
 void MgfReader::finish_warnings() {
+    // Read, and changed: a warning of its own, not among the statements ignored.
+    for (const auto& [what, seen] : m_fitted.by_entity) {
+        m_soup.warnings.push_back(fmt::format(
+            "{}: {} {} moved toward the grey of {} luminance to fit RGB (first at {})",
+            m_soup.files.front().string(), seen.first, seen.first == 1 ? "colour" : "colours",
+            seen.first == 1 ? "its" : "their", seen.second));
+    }
     if (!m_ignored.by_entity.empty()) {
         std::string list;
         for (const auto& [entity, seen] : m_ignored.by_entity) {

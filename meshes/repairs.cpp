@@ -1,6 +1,7 @@
-// The repair pass: per polygon, take out repeated and collinear corners, drop what has no area
-// left, cut what is not a triangle or a planar convex quad into triangles; then settle the faces
-// on the same vertices (meshes/coincident_faces.h), and accept reflectance 1.
+// The repair pass: per polygon, take out repeated and collinear corners and drop what has no area
+// left; settle the faces of 5 corners or more on the same vertices; per polygon, cut what is not
+// a triangle or a planar convex quad into triangles; then settle the faces on the same vertices
+// (meshes/coincident_faces.h), and accept reflectance 1.
 #include "meshes/repairs.h"
 
 #include <fmt/format.h>
@@ -118,30 +119,52 @@ std::vector<Corners> ear_clip(const Corners& c, const Where& where) {
     return out;
 }
 
-enum class Outcome { dropped, whole, pieces };
-
-// What one polygon becomes (itself, repaired in place, or `pieces`), and the repairs that took.
-Outcome repair_polygon(Corners& c, const Where& where, RepairReport& report,
-                       std::vector<Corners>& pieces) {
-    if (remove_degenerate_corners(c)) {
-        if (c.size() < 3) {
-            report.add(RepairKind::degenerate_dropped, where);
-            return Outcome::dropped;
-        }
-        report.add(RepairKind::corners_removed, where);
+// Takes the repeated and collinear corners out of polygon c, or drops it (false) when fewer
+// than 3 are left.
+bool remove_corners(Corners& c, const Where& where, RepairReport& report) {
+    if (!remove_degenerate_corners(c)) return true;
+    if (c.size() < 3) {
+        report.add(RepairKind::degenerate_dropped, where);
+        return false;
     }
-    if (c.size() == 3 || (c.size() == 4 && !check_face_geometry(c.p, c.ids))) return Outcome::whole;
+    report.add(RepairKind::corners_removed, where);
+    return true;
+}
+
+enum class Cut { whole, pieces };
+
+// What a polygon without degenerate corners becomes (itself, or `pieces`).
+Cut cut_polygon(const Corners& c, const Where& where, RepairReport& report,
+                std::vector<Corners>& pieces) {
+    if (c.size() == 3 || (c.size() == 4 && !check_face_geometry(c.p, c.ids))) return Cut::whole;
     if (c.size() == 4 && !quad_is_planar(c.p)) {
         std::optional<std::vector<Corners>> halves = split_quad(c);
         if (!halves)
             throw InputError(std::string(where), "self-intersecting quad: its edges cross");
         report.add(RepairKind::quad_split, where);
         pieces = std::move(*halves);
-        return Outcome::pieces;
+        return Cut::pieces;
     }
     report.add(RepairKind::triangulated, where);
     pieces = ear_clip(c, where);
-    return Outcome::pieces;
+    return Cut::pieces;
+}
+
+// The soup's polygons replaced by what `make` turns each into: make(c, k, out) adds polygon k's
+// pieces (c its corners) to out.
+template <class Make>
+void rebuild(PolygonSoup& soup, const std::vector<int>& welded, Make&& make) {
+    PolygonSoup out;
+    Corners c;
+    for (std::size_t k = 0; k < soup.polygon_count(); ++k) {
+        corners_of(soup, k, welded, c);
+        make(c, k, out);
+    }
+    soup.corner_offsets = std::move(out.corner_offsets);
+    soup.corner_ids = std::move(out.corner_ids);
+    soup.material = std::move(out.material);
+    soup.back = std::move(out.back);
+    soup.place = std::move(out.place);
 }
 
 // Whether a face (either side) uses each of the soup's materials.
@@ -203,31 +226,22 @@ RepairReport repair_soup(PolygonSoup& soup) { return repair_soup(soup, weld(soup
 RepairReport repair_soup(PolygonSoup& soup, const Welding& welding) {
     RepairReport report;
     const std::vector<int>& welded = welding.id;
-    PolygonSoup out;
-    const auto keep = [&](const Corners& c, std::size_t k) {
+    const auto keep = [&](const Corners& c, std::size_t k, PolygonSoup& out) {
         out.add_polygon(c.soup, soup.material[k], soup.place[k], soup.back[k]);
     };
-    Corners c;
+    // The corners first, so that faces of 5 or more are compared as what they are, then cut.
+    rebuild(soup, welded, [&](Corners& c, std::size_t k, PolygonSoup& out) {
+        if (remove_corners(c, Where{soup, soup.place[k]}, report)) keep(c, k, out);
+    });
+    resolve_coincident_polygons(soup, welded, report);
     std::vector<Corners> pieces;
-    for (std::size_t k = 0; k < soup.polygon_count(); ++k) {
-        const Where where{soup, soup.place[k]};
-        corners_of(soup, k, welded, c);
-        switch (repair_polygon(c, where, report, pieces)) {
-            case Outcome::dropped:
-                break;
-            case Outcome::whole:
-                keep(c, k);
-                break;
-            case Outcome::pieces:
-                for (const Corners& piece : pieces) keep(piece, k);
-                break;
+    rebuild(soup, welded, [&](Corners& c, std::size_t k, PolygonSoup& out) {
+        if (cut_polygon(c, Where{soup, soup.place[k]}, report, pieces) == Cut::whole) {
+            keep(c, k, out);
+        } else {
+            for (const Corners& piece : pieces) keep(piece, k, out);
         }
-    }
-    soup.corner_offsets = std::move(out.corner_offsets);
-    soup.corner_ids = std::move(out.corner_ids);
-    soup.material = std::move(out.material);
-    soup.back = std::move(out.back);
-    soup.place = std::move(out.place);
+    });
     resolve_coincident_faces(soup, welded, report);
     reduce_specular(soup, report);
     accept_reflectance_one(soup, report);

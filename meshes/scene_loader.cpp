@@ -233,7 +233,8 @@ Scene load_json_scene(const fs::path& path, const std::string& name, LoadOptions
     scene.name = name;
     scene.source = path;
     scene.inputs.push_back(path);
-    scene.mesh_path = path.parent_path() / j["mesh"].get<std::string>();
+    // Normal, as the readers name their files: `scenes/../x.mgf` is `x.mgf` in every message.
+    scene.mesh_path = (path.parent_path() / j["mesh"].get<std::string>()).lexically_normal();
     check_mesh_extension(scene.mesh_path, file);
     if (j.contains("generator")) {
         if (!j["generator"].is_string()) fail(file, "\"generator\" must be a string");
@@ -267,9 +268,9 @@ Scene load_mesh_scene(const fs::path& path, LoadOptions options) {
     Scene scene;
     scene.name = path.stem().string();
     scene.source = path;
-    scene.mesh_path = path;
+    scene.mesh_path = path.lexically_normal();
     options.default_material.reset();
-    take_mesh(scene, path, options);
+    take_mesh(scene, scene.mesh_path, options);
     scene.views.push_back(default_view(scene.mesh));
     return scene;
 }

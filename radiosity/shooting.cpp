@@ -105,6 +105,7 @@ struct ShootingBuffers::Impl {
     };
     std::array<Batch, 2> batches;  // the second while the first descends (2 threads or more)
     DescentScratch descent;
+    RayStrata strata;
 };
 
 ShootingBuffers::ShootingBuffers() : m_impl(std::make_unique<Impl>()) {}
@@ -119,6 +120,9 @@ constexpr std::uint64_t kGrain = 256;
 constexpr std::uint64_t kPilotStream = std::uint64_t(1) << 62;
 // The zero surfaces' pilot rays (§3.11): the pilot streams of an iteration no solve reaches.
 constexpr std::uint32_t kZeroPilotKey = UINT32_MAX;
+// The strata's offset of a part whose first ray is F: stream 2^63 + 2^62 + F, beyond the
+// rays' (below 2^62) and the Sobol scrambles' (rays/sobol.h).
+constexpr std::uint64_t kStrataStream = (std::uint64_t(1) << 63) + (std::uint64_t(1) << 62);
 
 // The side of its patch that ray k hit: the front when the ray meets the front's normal, the
 // back when it comes from behind a two-sided patch; none when it escaped or met the back of a
@@ -157,7 +161,7 @@ void trace_pilots(const RefinementContext& ctx, const IterationSources& sources,
     std::vector<BatchHit> hits(rays);
     // Pseudo-random whatever the shooting's sequence: the pilots estimate a share, not the field.
     generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, key, kPilotStream,
-                  rays, batch, 0, RaySequence::random);
+                  rays, batch, 0, RaySequence::random, nullptr);
     ctx.scene.first_hits(batch, 0, rays, hits);
     const PatchSet& ps = ctx.hierarchy.patch_set();
     for (std::uint64_t k = 0; k < rays; ++k) {
@@ -228,6 +232,14 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
         if (!overlap) break;
     }
     if (!fixed) buffers->impl().descent.reserve(batch_rays);
+    const RayStrata* strata = nullptr;
+    if (ctx.sequence == RaySequence::sobol) {  // a Sobol ray's source is dealt, not picked
+        RayStrata& s = buffers->impl().strata;
+        s.assign(sources.weights(), rays,
+                 Rng(ctx.seed, iteration, kStrataStream + part.first_key).uniform(),
+                 part.first_key);
+        strata = &s;
+    }
     const Hierarchy& h = ctx.hierarchy;
     const PatchSet& ps = h.patch_set();
     // One chunk of rays through the stages: generated, traced, then each ray's power and fate
@@ -236,7 +248,8 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     auto trace_chunk = [&](Batch& b, std::uint64_t begin, std::uint64_t end,
                            ShootingBuffers::Impl::Chunk& chunk) {
         generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration,
-                      part.first_key + b.first + begin, end - begin, b.rays, begin, ctx.sequence);
+                      part.first_key + b.first + begin, end - begin, b.rays, begin, ctx.sequence,
+                      strata);
         ctx.scene.first_hits(b.rays, begin, end, b.hits);
         for (std::uint64_t k = begin; k < end; ++k) {
             const std::uint32_t leaf = b.rays.region[k];

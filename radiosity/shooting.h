@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "radiosity/refinement.h"
@@ -36,6 +37,8 @@ struct IterationSources {
     void rebuild(const Hierarchy& h, const Rgb& beta = Rgb::Zero());
     // The zero surfaces, each shooting the radiosity `shot` (-beta) over its area.
     void rebuild(const ZeroSurfaces& zero, const Rgb& shot);
+    // Each region's weight, A_l sum_c |share|: what the alias table and the strata deal by.
+    std::span<const double> weights() const { return m_weights; }
 
 private:
     void clear(std::size_t most);  // and makes room for `most` sources

@@ -138,8 +138,10 @@ concept NamedSetting = requires(T v) {
       scene_file, "clusters of patches above the patch roots, each receiving and emitting as an "\
                   "isotropic cloud of surfaces (none: the hierarchy starts at the patches)")    \
     X(RaySequence,   sequence,  RaySequence::random, true,           "random or sobol",           \
-      scene_file, "where the shooting rays' uniforms come from: their keyed pseudo-random "      \
-                  "streams, or those streams' Owen-scrambled Sobol sequence")                   \
+      scene_file, "where the shooting rays' sources and uniforms come from: keyed pseudo-random "\
+                  "streams, each ray picking its source leaf (random); or the rays dealt to the "\
+                  "source leaves by their power, each leaf's from its own Owen-scrambled Sobol " \
+                  "sequence (sobol)")                                                            \
     X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \

@@ -2,10 +2,12 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/stopwatch.h"
 #include "radiosity/solver.h"
 #include "rays/camera.h"
@@ -13,6 +15,10 @@
 
 namespace hmcr {
 namespace {
+
+// The pixels traced at once: the sides they meet are kept until the batch is summed, 4 bytes
+// each (4 MiB), whatever the views' size.
+constexpr std::int64_t kBatchPixels = std::int64_t(1) << 20;
 
 // Keys the importance solve's streams apart from the radiance solve of the same seed.
 constexpr std::uint64_t kImportanceKey = 0x696d706f7274616eULL;  // "importan"
@@ -65,24 +71,33 @@ std::vector<double> view_pixel_shares(const PatchSet& patches, const EmbreeScene
     for (const View& view : views) {
         const Camera camera = make_camera(view);
         const double weight = 1.0 / (double(camera.width) * camera.height * views.size());
-        // Rows in parallel, each row's sides summed in order, then the rows in order: the
-        // same sums for any thread count.
-        std::vector<std::vector<std::uint32_t>> row_sides(std::size_t(camera.height));
-        tbb::parallel_for(0, camera.height, [&](int y) {
-            set_tracing_float_mode();
-            auto& sides = row_sides[std::size_t(y)];
-            for (int x = 0; x < camera.width; ++x) {
-                const Vec3 d = camera.direction(x + 0.5, y + 0.5);
-                const std::optional<Hit> hit = scene.first_hit(camera.origin, d);
-                if (!hit) continue;
-                const int side = side_met(patches, hit->patch, d);
-                if (side >= 0) sides.push_back(2 * hit->patch + std::uint32_t(side));
+        // Rows in batches of about kBatchPixels pixels: the rows of a batch in parallel, each
+        // row's sides summed in order, then the rows in order (the same sums for any thread
+        // count); a signal is heard between batches.
+        const int rows = int(std::max<std::int64_t>(1, kBatchPixels / camera.width));
+        std::vector<std::vector<std::uint32_t>> row_sides(
+            std::size_t(std::min(rows, camera.height)));
+        for (int first = 0; first < camera.height; first += rows) {
+            throw_if_interrupted();
+            const int end = std::min(camera.height, first + rows);
+            tbb::parallel_for(first, end, [&](int y) {
+                set_tracing_float_mode();
+                auto& sides = row_sides[std::size_t(y - first)];
+                sides.clear();
+                for (int x = 0; x < camera.width; ++x) {
+                    const Vec3 d = camera.direction(x + 0.5, y + 0.5);
+                    const std::optional<Hit> hit = scene.first_hit(camera.origin, d);
+                    if (!hit) continue;
+                    const int side = side_met(patches, hit->patch, d);
+                    if (side >= 0) sides.push_back(2 * hit->patch + std::uint32_t(side));
+                }
+            });
+            for (int y = first; y < end; ++y) {
+                for (const std::uint32_t s : row_sides[std::size_t(y - first)]) shares[s] += weight;
             }
-        });
-        for (const auto& sides : row_sides) {
-            for (const std::uint32_t s : sides) shares[s] += weight;
         }
     }
+    throw_if_interrupted();
     return shares;
 }
 

@@ -185,16 +185,18 @@ EmbreeScene::EmbreeScene(const std::vector<Vec3>& points,
         m_triangle_patch.push(false);  // a soup's "patch" is the triangle itself
     }
     if (points.empty()) lo = hi = Vec3::Zero();
-    build(points.size(), triangles.size(), lo, hi, [&](float* vertex, unsigned* index) {
+    const auto fill = [&](float* vertex, unsigned* index) {
         for (const Vec3& c : points) {
             for (int k = 0; k < 3; ++k) *vertex++ = float(c[k]);
         }
         for (const auto& t : triangles) index = std::copy(t.begin(), t.end(), index);
-    });
+    };
+    build(points.size(), triangles.size(), lo, hi, fill, /*robust=*/true);
 }
 
 void EmbreeScene::build(std::size_t vertex_count, std::size_t triangle_count, const Vec3& lo,
-                        const Vec3& hi, const std::function<void(float*, unsigned*)>& fill) {
+                        const Vec3& hi, const std::function<void(float*, unsigned*)>& fill,
+                        bool robust) {
     // No "threads=N": with TBB in the process it would cap all TBB parallelism.
     m_impl->device = rtcNewDevice(nullptr);
     if (!m_impl->device) throw std::runtime_error("cannot create the Embree device");
@@ -203,6 +205,7 @@ void EmbreeScene::build(std::size_t vertex_count, std::size_t triangle_count, co
 
     m_impl->scene = rtcNewScene(m_impl->device);
     rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_MEDIUM);
+    if (robust) rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST);
     // An empty soup is a valid scene that nothing hits; Embree rejects empty buffers.
     if (triangle_count > 0) {
         m_impl->vertices.resize(3 * vertex_count + 4);

@@ -52,7 +52,11 @@ public:
     // there: at 10^6 patches 13 MB of vertices instead of 50. The patches must have their mesh
     // vertices (throws std::invalid_argument otherwise).
     explicit EmbreeScene(const PatchSet& set);
-    // A triangle soup: indices into `vertices`. Degenerate triangles are allowed (never hit).
+    // A triangle soup: indices into `vertices`. Degenerate triangles are allowed. Built robust
+    // (Embree's RTC_SCENE_FLAG_ROBUST: watertight edge tests and conservative traversal): an
+    // image's rays come on a regular grid, and with Embree's fast tests a ray through the edge
+    // two triangles share, or through the float sliver between an edge and a point on it (a
+    // conforming polygon's T-vertex), can meet neither: a black pixel in a closed room.
     // Throws std::invalid_argument on an index out of range.
     EmbreeScene(const std::vector<Vec3>& vertices,
                 const std::vector<std::array<unsigned, 3>>& triangles);
@@ -84,7 +88,7 @@ private:
     // The BVH of `triangle_count` triangles over `vertex_count` vertices, which fill(vertices,
     // triangles) writes straight into Embree's buffers: 3 floats, 3 vertex indices each.
     void build(std::size_t vertex_count, std::size_t triangle_count, const Vec3& lo, const Vec3& hi,
-               const std::function<void(float*, unsigned*)>& fill);
+               const std::function<void(float*, unsigned*)>& fill, bool robust = false);
 
     // build() for patches: their bounds, and the triangles add_patch_triangles() writes.
     void build_patches(const std::vector<Patch>& patches, std::size_t vertex_count,

@@ -9,6 +9,7 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -126,11 +127,12 @@ HWY_INLINE void cross3(const V a[3], const V b[3], V out[3]) {
 }
 
 // `draws`, when given, holds every ray's uniforms (rays/sobol.h's layout, `stride` apart and
-// readable a whole vector past n); otherwise they come from the rays' keyed streams.
+// readable a whole vector past n); otherwise they come from the rays' keyed streams. `given`,
+// when given, holds every ray's region (as readable), which the alias table otherwise picks.
 void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t region_count,
                   const AliasTable::Bin* bins, std::uint64_t seed, std::uint64_t key,
                   std::uint64_t first, std::size_t n, const double* draws, std::size_t stride,
-                  GeneratedRays* out, std::size_t offset) {
+                  const std::uint32_t* given, GeneratedRays* out, std::size_t offset) {
     const D d;
     const DU du;
     const DI di;
@@ -162,8 +164,13 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
         const VI alias =
             hn::BitCast(di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(bins),
                                             hn::Add(hn::ShiftLeft<1>(bin), hn::Set(di, 1))));
-        const VI region = hn::IfThenElse(
+        const VI picked = hn::IfThenElse(
             hn::RebindMask(di, hn::Lt(hn::Sub(scaled, hn::ConvertTo(d, bin)), keep)), bin, alias);
+        const VI region =
+            given == nullptr
+                ? picked
+                : hn::BitCast(
+                      di, hn::PromoteTo(du, hn::LoadU(hn::Rebind<std::uint32_t, DU>(), given + k)));
 
         // The region's domain and patch.
         const VI at = hn::ShiftLeft<2>(region);
@@ -324,10 +331,12 @@ void GeneratedRays::resize(std::size_t n) {
 
 RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
                           const AliasTable& table, std::uint64_t seed, std::uint64_t key,
-                          std::uint64_t index, RaySequence sequence) {
+                          std::uint64_t index, RaySequence sequence, const RayStrata* strata) {
     double xi[kRayDraws];
-    if (sequence == RaySequence::sobol) {
-        sobol_draws(seed, key, index, 1, xi, 1);
+    std::uint32_t source = 0;
+    const bool sobol = sequence == RaySequence::sobol;
+    if (sobol) {
+        sobol_draws(seed, key, *strata, index, 1, xi, 1, &source);
     } else {
         Rng rng(seed, key, index);
         for (double& x : xi) x = rng.uniform();
@@ -335,7 +344,7 @@ RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const Ray
     const double xi_region = xi[0], xi_u = xi[1], xi_v = xi[2], xi_r = xi[3], xi_phi = xi[4];
     RayStartSample out;
     out.dither = xi[5];
-    out.region = std::uint32_t(table.sample(xi_region));
+    out.region = sobol ? source : std::uint32_t(table.sample(xi_region));
     const RayRegion& reg = regions[out.region];
     const Patch& p = patches[reg.patch];
     const bool triangle = reg.map == RegionMap::triangle;
@@ -390,20 +399,32 @@ RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const Ray
 void generate_rays(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
                    const AliasTable& table, std::uint64_t seed, std::uint64_t key,
                    std::uint64_t first, std::size_t n, GeneratedRays& out, std::size_t offset,
-                   RaySequence sequence) {
+                   RaySequence sequence, const RayStrata* strata) {
     const double* draws = nullptr;
-    std::size_t stride = 0;
+    const std::uint32_t* given = nullptr;
+    // Padded by more lanes than the widest vector of any target has, so that the last rays'
+    // loads stay inside (HWY_MAX_BYTES, here outside the targets' code, is the last target's).
+    constexpr std::size_t kPadding = 64;
+    const std::size_t stride = n + kPadding;
     if (sequence == RaySequence::sobol) {
-        // Padded by the widest vector, so that the last rays' loads stay inside.
-        stride = n + HWY_MAX_BYTES / sizeof(double);
         thread_local std::vector<double> buffer;
+        thread_local std::vector<std::uint32_t> sources;
         resize_populated(buffer, kRayDraws * stride);
-        sobol_draws(seed, key, first, n, buffer.data(), stride);
+        resize_populated(sources, stride);
+        sobol_draws(seed, key, *strata, first, n, buffer.data(), stride, sources.data());
+        // The padding is read too: uniforms and the first source, so that its gathers stay
+        // inside.
+        for (std::size_t d = 0; d < kRayDraws; ++d) {
+            std::fill(buffer.begin() + std::ptrdiff_t(d * stride + n),
+                      buffer.begin() + std::ptrdiff_t((d + 1) * stride), 0.0);
+        }
+        std::fill(sources.begin() + std::ptrdiff_t(n), sources.end(), 0);
         draws = buffer.data();
+        given = sources.data();
     }
     HWY_DYNAMIC_DISPATCH(GenerateRays)
     (patches.data(), regions.data(), regions.size(), table.bins(), seed, key, first, n, draws,
-     stride, &out, offset);
+     stride, given, &out, offset);
 }
 
 }  // namespace hmcr

@@ -12,6 +12,7 @@
 
 #include "rays/alias_table.h"
 #include "rays/patch.h"
+#include "rays/ray_strata.h"
 #include "rays/sobol.h"
 
 namespace hmcr {
@@ -44,7 +45,8 @@ struct GeneratedRays {
 
 // One ray's draws, in this order from the stream keyed (seed, key, index) (rays/rng.h), or from
 // that stream's scrambled Sobol sequence (rays/sobol.h): the region (one uniform for the alias
-// table), the point (two), the direction (two), the dither.
+// table), the point (two), the direction (two), the dither. With the Sobol sequence the region
+// is the one `strata` deals the ray to (rays/ray_strata.h) and its uniform goes unused.
 struct RayStartSample {
     std::uint32_t region = 0;
     Vec2 uv{0, 0};
@@ -55,13 +57,14 @@ struct RayStartSample {
 // The same ray one lane at a time, with the arithmetic of the vector code: the reference.
 RayStartSample scalar_ray(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
                           const AliasTable& table, std::uint64_t seed, std::uint64_t key,
-                          std::uint64_t index, RaySequence sequence);
+                          std::uint64_t index, RaySequence sequence, const RayStrata* strata);
 
 // Fills out[offset, offset + n) with the rays first, first + 1, ... of the stream (seed, key).
-// `table` picks among `regions` (at least one), whose patches are `patches`.
+// `table` picks among `regions` (at least one), whose patches are `patches`, each pseudo-random
+// ray's; a Sobol ray starts from the region `strata` (over the regions, required) deals it to.
 void generate_rays(const std::vector<Patch>& patches, std::span<const RayRegion> regions,
                    const AliasTable& table, std::uint64_t seed, std::uint64_t key,
                    std::uint64_t first, std::size_t n, GeneratedRays& out, std::size_t offset,
-                   RaySequence sequence);
+                   RaySequence sequence, const RayStrata* strata);
 
 }  // namespace hmcr

@@ -2,6 +2,7 @@
 
 #include <boost/random/sobol.hpp>
 
+#include "rays/ray_strata.h"
 #include "rays/rng.h"
 
 namespace hmcr {
@@ -16,7 +17,13 @@ std::uint32_t reverse_bits(std::uint32_t x) {
 }
 
 // Outside the rays' indices (below 2^62), so that no ray's stream is a scramble's.
-constexpr std::uint64_t kScrambleStream = std::uint64_t(1) << 63;
+constexpr std::uint64_t kScrambleStreams = (std::uint64_t(1) << 63) + (std::uint64_t(1) << 32);
+
+// 32 scrambled digits and the stream's next 21: a uniform of 53 bits.
+double with_low_digits(std::uint32_t digits, std::uint32_t scramble, Rng& rng) {
+    const std::uint64_t high = owen_scramble(digits, scramble);
+    return double((high << 21) | (rng.next_u64() >> 43)) * 0x1.0p-53;
+}
 
 }  // namespace
 
@@ -32,28 +39,39 @@ std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed) {
     return reverse_bits(x);
 }
 
-void sobol_draws(std::uint64_t seed, std::uint64_t key, std::uint64_t first, std::size_t n,
-                 double* out, std::size_t stride) {
-    std::uint32_t scramble[kSequenceDimensions];
-    for (std::size_t d = 0; d < kSequenceDimensions; ++d) {
-        scramble[d] = std::uint32_t(Rng(seed, key, kScrambleStream + d).next_u64() >> 32);
-    }
+void sobol_draws(std::uint64_t seed, std::uint64_t key, const RayStrata& strata,
+                 std::uint64_t first, std::size_t n, double* out, std::size_t stride,
+                 std::uint32_t* source) {
     // Boost's engine (Joe and Kuo's direction numbers) runs in Gray-code order from the
-    // sequence's second point: its state after seed(i - 1) is point i (point 0 is all zeros),
-    // so that the first 2^m rays are the net they should be. Seeding costs a few XORs a digit of
-    // the index, each next point one XOR a dimension.
+    // sequence's second point: its state after seed(p - 1) is point p (point 0 is all zeros),
+    // so that a source's first 2^m rays are the net they should be. Seeding costs a few XORs a
+    // digit of the index, each next point one XOR a dimension.
     boost::random::sobol engine(kSequenceDimensions);
-    if (first > 0) engine.seed(first - 1);
+    std::uint32_t scramble[kSequenceDimensions];
+    std::uint32_t current = 0;
+    std::uint64_t end = 0;  // of the current source's rays: none yet
     for (std::size_t i = 0; i < n; ++i) {
-        const bool origin = first + i == 0;
-        Rng rng(seed, key, first + i);
+        const std::uint64_t ray = first + i;
+        if (ray >= end) {  // a new source: its scrambles, and its sequence from the ray's point
+            current = strata.source_of(ray);
+            end = strata.first_ray(current + 1);
+            const std::uint64_t at = kScrambleStreams + 4 * (current + strata.first());
+            for (std::size_t d = 0; d < kSequenceDimensions; ++d) {
+                scramble[d] = std::uint32_t(Rng(seed, key, at + d).next_u64() >> 32);
+            }
+            const std::uint64_t point = ray - strata.first_ray(current);
+            engine.seed(point > 0 ? point - 1 : 0);
+        }
+        const bool origin = ray == strata.first_ray(current);
+        Rng rng(seed, key, ray);
+        rng.next_u64();  // the alias pick's draw, unused: the others keep their places
+        out[i] = 0;
         for (std::size_t d = 0; d < kSequenceDimensions; ++d) {
             const auto digits = origin ? std::uint32_t(0) : std::uint32_t(engine() >> 32);
-            const std::uint64_t high = owen_scramble(digits, scramble[d]);
-            const std::uint64_t low = rng.next_u64() >> 43;
-            out[d * stride + i] = double((high << 21) | low) * 0x1.0p-53;
+            out[(d + 1) * stride + i] = with_low_digits(digits, scramble[d], rng);
         }
         out[(kRayDraws - 1) * stride + i] = rng.uniform();
+        source[i] = current;
     }
 }
 

@@ -1,8 +1,10 @@
-// Randomised quasi-random draws for the rays leaving the sources (docs/design.md §3.1): the
-// Sobol sequence in the five dimensions of a ray's start (the region, the point's u and v, the
-// direction's r and phi), Owen-scrambled in each dimension by a hash keyed (seed, key,
-// dimension), so that two seeds are independent estimates and each is unbiased. Ray i of the
-// stream (seed, key) is the sequence's point i, whatever batch or thread makes it.
+// Randomised quasi-random draws for the rays leaving the sources (docs/design.md §3.2): the
+// rays of an iteration are dealt to their sources (rays/ray_strata.h), and each source's rays
+// are the points 0, 1, 2, ... of its own Sobol sequence in the four dimensions of a ray's start
+// (the point's u and v, the direction's r and phi), Owen-scrambled in each dimension by a hash
+// keyed (seed, key, source, dimension), so that two seeds are independent estimates and each
+// is unbiased. A ray's draws are a function of its index alone, whatever batch or thread
+// makes it.
 #pragma once
 
 #include <cstddef>
@@ -10,20 +12,27 @@
 
 namespace hmcr {
 
-// Where a ray's uniforms come from: its keyed pseudo-random stream (rays/rng.h), or the
-// scrambled Sobol sequence of its stream.
+class RayStrata;
+
+// Where a ray's uniforms come from: its keyed pseudo-random stream (rays/rng.h), its source
+// picked by an alias table; or its source's scrambled Sobol sequence, the rays dealt to the
+// sources.
 enum class RaySequence { random, sobol };
 
 // A ray's draws, in the order rays/ray_generator.h takes them: region, u, v, r, phi, dither.
 inline constexpr std::size_t kRayDraws = 6;
-inline constexpr std::size_t kSequenceDimensions = 5;  // the dither stays pseudo-random
+inline constexpr std::size_t kSequenceDimensions = 4;  // u, v, r, phi; the dither stays random
 
-// The draws of rays first .. first + n - 1 of the stream (seed, key): draw d of ray first + i at
-// out[d * stride + i]. Each of the five sequence dimensions takes its first 32 binary digits
-// from the scrambled sequence and the next 21 from the ray's keyed stream (a full Owen scramble
-// makes those uniform and independent); the dither is the stream's next uniform.
-void sobol_draws(std::uint64_t seed, std::uint64_t key, std::uint64_t first, std::size_t n,
-                 double* out, std::size_t stride);
+// The draws of rays first .. first + n - 1 of the stream (seed, key), which `strata` deals to
+// their sources: draw d of ray first + i at out[d * stride + i], and its source at source[i].
+// Ray r of source l is point r - strata.first_ray(l) of l's sequence, dimension d scrambled by
+// the hash keyed (seed, key, 2^63 + 2^32 + 4 (l + strata.first()) + d). Each dimension takes
+// its first 32 binary digits from the scrambled sequence and the next 21 from the ray's keyed
+// stream (a full Owen scramble makes those uniform and independent); draw 0 (an alias pick's)
+// is 0, and the dither is the stream's last uniform.
+void sobol_draws(std::uint64_t seed, std::uint64_t key, const RayStrata& strata,
+                 std::uint64_t first, std::size_t n, double* out, std::size_t stride,
+                 std::uint32_t* source);
 
 // Owen's nested uniform scramble of the 32-digit fraction x, by a hash (Burley, "Practical
 // Hash-based Owen Scrambling", JCGT 2020, after Laine and Karras): digit k is flipped by a

@@ -45,7 +45,11 @@ import math
 import os
 import sys
 
-from cycles_compare import LUMINANCE, box_reduce, luminance, read_pfm
+import system_python
+
+system_python.need("numpy")  # before cycles_compare, which imports it
+
+from cycles_compare import LUMINANCE, box_reduce, luminance, read_pfm  # noqa: E402
 
 SCENES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scenes")
 sys.path.insert(0, SCENES)

@@ -435,6 +435,9 @@ def main():
         blender_render(ap.parse_args(sys.argv[sys.argv.index("--") + 1:]))
         return
 
+    import system_python  # outside Blender only: Blender's Python has its own numpy
+
+    system_python.need("numpy")
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--hmcr", default=os.path.join(HERE, "..", "build", "hmcr"))
     ap.add_argument("--blender", default="blender")

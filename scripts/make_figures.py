@@ -12,8 +12,12 @@ import os
 import shutil
 import sys
 
-import matplotlib.image
-import numpy as np
+import system_python
+
+system_python.need("matplotlib", "numpy")
+
+import matplotlib.image  # noqa: E402
+import numpy as np  # noqa: E402
 
 
 def read_png(path):

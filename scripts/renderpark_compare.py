@@ -1,20 +1,27 @@
 #!/usr/bin/python3
-"""hmcr against RenderPark's port (rpkCpp), whole process, one thread, the Cornell box.
+"""hmcr against RenderPark's port (rpkCpp), one thread, the Cornell box: times, or errors.
 
 What it does, in order (docs/performance.md#against-renderpark shows a run):
 
 1. Converts hmcr's Cornell box (an OBJ with Kd reflectances and Ke radiances, metres) to MGF so
    that rpkCpp solves the same scene (see `write_mgf` for the colour and emission semantics).
 2. Builds rpkCpp in a temporary folder from its public repository: the tarball of a pinned commit
-   from GitHub, or, with `--rpk-source DIR`, a git directory already on the machine (a clone or a
-   bare mirror: its tree is exported with `git archive`), or a source folder.  Nothing of rpkCpp
-   is kept in hmcr's repository.
-3. Runs each program once to read its element and ray counts, then N pairs of whole-process runs,
-   alternated (hmcr first in odd pairs, rpkCpp first in even ones) under /usr/bin/time, and prints
-   both medians, the ratio of the medians and the median of the paired ratios.
+   from GitHub, or, with `--rpk-source DIR` (or $RPK_SOURCE), a git directory already on the
+   machine (a clone or a bare mirror: its tree is exported with `git archive`), or a source
+   folder.  Nothing of rpkCpp is kept in hmcr's repository.
+3. Times: runs each program once to read its element and ray counts, then N pairs of
+   whole-process runs, alternated (hmcr first in odd pairs, rpkCpp first in even ones) under
+   /usr/bin/time, and prints both medians, the ratio of the medians and the median of the
+   paired ratios.
+   Errors (`--error`): adds to the copy of rpkCpp a writer of its final leaves (rpk_leaves.py),
+   runs it, turns the leaves into two foreign solutions (constant per leaf, and rpkCpp's own
+   Gouraud display) and measures them with `hmcr error --foreign` against a point reference,
+   beside hmcr's solves at rpkCpp's ray count and at rpkCpp's CPU time
+   (docs/performance.md#renderparks-error).
 
 Standard library only.  Usage:
     scripts/renderpark_compare.py --hmcr build/hmcr [--rpk-source DIR] [--pairs 7]
+    scripts/renderpark_compare.py --error --hmcr build/hmcr [--rpk-source DIR] [--reference DIR]
 """
 
 import argparse
@@ -46,6 +53,8 @@ RPK_WHITE = (1.0 / 3.0, 1.0 / 3.0)
 RPK_WHITE_EFFICACY = 183.07
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import rpk_leaves  # noqa: E402  (beside this script)
 CORNELL_OBJ = os.path.join(HERE, "..", "scenes", "cornell", "cornell.obj")
 
 
@@ -321,13 +330,202 @@ def compare(name, commands, cwd, pairs):
             "cpu_median_paired_ratio": statistics.median(cpu_ratios)}
 
 
+# ---------------------------------------------------------------- errors (--error)
+
+
+def cpu_runs(command, cwd, repeats, env=None):
+    """The median whole-process CPU seconds of `repeats` runs, and the last run's stderr."""
+    cpu, stderr = [], ""
+    for _ in range(repeats):
+        r = subprocess.run(["/usr/bin/time", "-f", "TIME %e %U %S %M"] + command, cwd=cwd,
+                           capture_output=True, text=True, env=env)
+        if r.returncode != 0:
+            sys.exit(f"{command[0]} failed ({r.returncode}):\n{r.stderr[-2000:]}")
+        _, user, system, _ = re.findall(r"TIME (\S+) (\S+) (\S+) (\S+)", r.stderr)[-1]
+        cpu.append(float(user) + float(system))
+        stderr = r.stderr
+    return statistics.median(cpu), stderr
+
+
+def hmcr_error(args, solution, foreign):
+    """`hmcr error`'s object error (with its standard error) and view PSNRs of one solution."""
+    out = solution + ".error.json"
+    command = [args.hmcr, "error", solution, "--reference", args.reference, "--scene", "cornell",
+               "-o", out] + (["--foreign"] if foreign else [])
+    r = subprocess.run(command, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"hmcr error failed ({r.returncode}):\n{r.stderr[-2000:]}")
+    with open(out) as f:
+        metrics = json.load(f)
+    o = metrics["object_error"]
+    return {"object_error": o["relative_l2"], "standard_error": o["standard_error"],
+            "unmatched": o["unmatched"],
+            "psnr_a": {v: m["psnr_a"] for v, m in metrics["views"].items()}}
+
+
+def hmcr_solve_command(args, config, rays, seed, out):
+    """hmcr's solve of the Cornell box in one of the measured settings, at `rays` rays."""
+    command = [args.hmcr, "solve", "cornell", "--threads", "1", "--rays", str(rays), "--seed",
+               str(seed), "-q", "-o", out]
+    if config == "matched":  # the timing comparison's: power, rpkCpp's leaves, refined once
+        command += ["--oracle", "power", "--refine-share", "1", "--epsilon",
+                    str(args.hmcr_epsilon)]
+    return command
+
+
+def hmcr_at(args, config, rays, work, name, seed=1, repeats=None):
+    """One hmcr solve: its CPU seconds, leaves, powers, repairs and errors."""
+    out = os.path.join(work, f"{name}.vtp")
+    cpu, _ = cpu_runs(hmcr_solve_command(args, config, rays, seed, out), work,
+                      repeats or args.repeats)
+    with open(os.path.join(work, f"{name}.json")) as f:
+        summary = json.load(f)
+    b, area = vtp_array(out, "ElementRadiosity"), vtp_array(out, "ElementArea")
+    return {"requested_rays": rays, "rays": summary["counts"]["rays"],
+            "leaves": summary["counts"]["leaves"], "cpu_s": cpu,
+            "emitted_w": summary["power"]["emitted_w"],
+            "total_w": [sum(b[3 * i + c] * a for i, a in enumerate(area)) for c in range(3)],
+            "repairs": summary["scene"]["repairs"]["count"],
+            "patches": summary["scene"]["patches"], **hmcr_error(args, out, False)}
+
+
+def with_seeds(args, config, first, work, name):
+    """The first seed's solve with the object errors of seeds 2..k at the same rays."""
+    errors = [first["object_error"]]
+    for seed in range(2, args.seeds + 1):
+        errors.append(hmcr_at(args, config, first["requested_rays"], work, f"{name}-{seed}",
+                              seed, 1)["object_error"])
+    return {**first, "seed_errors": errors, "mean_error": statistics.mean(errors)}
+
+
+def hmcr_at_equal_time(args, config, first, target_cpu, work):
+    """hmcr's solve whose CPU time matches target_cpu: the rays scaled by the time ratio, then
+    corrected once along the line through the two runs (a solve's time is a + b rays)."""
+    name = f"hmcr-{config}-time"
+    rays = int(first["requested_rays"] * target_cpu / first["cpu_s"])
+    second = hmcr_at(args, config, rays, work, name)
+    slope = (second["cpu_s"] - first["cpu_s"]) / (second["rays"] - first["rays"])
+    if slope > 0:
+        rays = int(second["requested_rays"] + (target_cpu - second["cpu_s"]) / slope)
+        second = hmcr_at(args, config, rays, work, name)
+    return with_seeds(args, config, second, work, name)
+
+
+def rpk_solutions(args, rpk, mgf, clustering, work):
+    """rpkCpp's run with its leaves written, their checks and both foreign solutions' errors."""
+    command = rpk_command(rpk, mgf, args, clustering)
+    cpu, stderr = cpu_runs(command, work, args.repeats)
+    leaf_file = os.path.join(work, f"rpk-{clustering}.leaves")
+    _, stderr = cpu_runs(command, work, 1, env={**os.environ,
+                                                 rpk_leaves.LEAF_FILE_VARIABLE: leaf_file})
+    if not os.path.exists(leaf_file):
+        sys.exit(f"{rpk} wrote no leaves: it is not a build of this script's (use --rpk-source)")
+    vertices, faces, _ = read_obj(CORNELL_OBJ)
+    faces = [[vertices[v] for v in corners] for _, _, corners in faces]
+    try:
+        leaves = rpk_leaves.read_leaves(leaf_file)
+        patches = rpk_leaves.leaf_patches(leaves, rpk_leaves.FaceFinder(faces), leaf_file)
+    except ValueError as e:
+        sys.exit(str(e))
+    result = {"command": command[2:], "cpu_s": cpu, **rpk_counts(stderr, len(faces)),
+              "leaves": len(leaves.leaves),
+              "checks": rpk_leaves.check_units(leaves, faces, patches)}
+    for kind, make in (("constant", rpk_leaves.constant_solution),
+                       ("gouraud", rpk_leaves.gouraud_solution)):
+        solution = make(leaves, patches)
+        path = os.path.join(work, f"rpk-{clustering}-{kind}.vtp")
+        rpk_leaves.write_vtp(solution, path)
+        result[kind] = {"integral_w": rpk_leaves.solution_power(solution),
+                        **hmcr_error(args, path, True)}
+    return result
+
+
+def verify_units(clustering, rpk, hmcr_emitted):
+    """Stops unless the leaves emit hmcr's watts and hold rpkCpp's own total flux (1e-3)."""
+    checks = rpk["checks"]
+    for what, got, want in (("emitted power", checks["emitted_w"], hmcr_emitted),
+                            ("total flux", checks["total_w"], rpk["total_flux"])):
+        if any(abs(g - w) > 1e-3 * max(abs(w), 1e-12) for g, w in zip(got, want)):
+            sys.exit(f"rpkCpp ({clustering}): the leaves' {what} {fmt_w(got)} W is not "
+                     f"{fmt_w(want)} W: the units or the leaves are wrong")
+
+
+def make_reference(args, work):
+    if args.reference:
+        return os.path.abspath(args.reference)
+    ref = os.path.join(work, "reference")
+    command = [args.hmcr, "reference", "cornell", "-o", ref, "-q", "--points",
+               str(args.reference_points), "--paths", str(args.reference_paths), "--spp",
+               str(args.reference_spp)]
+    print("reference:", " ".join(["hmcr"] + command[1:]), flush=True)
+    subprocess.run(command, check=True)
+    return ref
+
+
+def print_errors(results):
+    """The comparison as a table: one row a solution."""
+    print("| solution | rays | leaves | CPU s | object error ± se | hmcr seeds | PSNRa, dB |")
+    print("|:--|--:|--:|--:|--:|--:|--:|")
+
+    def row(name, r, seeds=""):
+        psnr = ", ".join(f"{p:.2f}" for p in r["psnr_a"].values())
+        print(f"| {name} | {r['rays']:,} | {r['leaves']:,} | {r['cpu_s']:.2f} | "
+              f"{r['object_error']:.4f} ± {r['standard_error']:.4f} | {seeds} | {psnr} |")
+
+    for clustering, rpk in results["rpk"].items():
+        for kind in ("constant", "gouraud"):
+            row(f"rpkCpp {clustering}, {kind}", {**rpk, **rpk[kind]})
+    for name, h in results["hmcr"].items():
+        seeds = ", ".join(f"{e:.4f}" for e in h["seed_errors"])
+        row(f"hmcr {name}", h, f"{seeds} (mean {h['mean_error']:.4f})")
+    for clustering, rpk in results["rpk"].items():
+        c = rpk["checks"]
+        print(f"rpkCpp {clustering}: emitted {fmt_w(c['emitted_w'])} W, total flux "
+              f"{fmt_w(c['total_w'])} W (its own: {fmt_w(rpk['total_flux'])}), Gouraud "
+              f"integral {fmt_w(rpk['gouraud']['integral_w'])} W; leaf areas "
+              f"{c['leaf_area_vs_rpk']:.1e} from rpkCpp's, faces {c['face_area_vs_scene']:.1e} "
+              f"from the scene's; Ed / sourceRad {c['ed_over_src']}")
+    for name, h in results["hmcr"].items():
+        print(f"hmcr {name}: emitted {fmt_w(h['emitted_w'])} W, total flux "
+              f"{fmt_w(h['total_w'])} W")
+
+
+def fmt_w(values):
+    return "(" + ", ".join(f"{v:.4f}" for v in values) + ")"
+
+
+def main_error(args, work, rpk, mgf):
+    """--error: every object error, printed and (with --json) written."""
+    args.reference = make_reference(args, work)
+    results = {"machine": os.uname().nodename, "reference": args.reference, "rpk": {},
+               "hmcr": {}}
+    for clustering in args.clustering.split(","):
+        results["rpk"][clustering] = rpk_solutions(args, rpk, mgf, clustering, work)
+    rpk0 = results["rpk"][args.clustering.split(",")[0]]
+    for config in ("matched", "default"):
+        first = hmcr_at(args, config, rpk0["rays"], work, f"hmcr-{config}-rays")
+        if first["repairs"] or first["patches"] != len(read_obj(CORNELL_OBJ)[1]):
+            sys.exit("hmcr's patches are not the OBJ's faces (repaired): PatchId would be wrong")
+        for clustering, rpk_result in results["rpk"].items():
+            verify_units(clustering, rpk_result, first["emitted_w"])
+        results["hmcr"][f"{config}, equal rays"] = with_seeds(args, config, first, work,
+                                                              f"hmcr-{config}-rays")
+        results["hmcr"][f"{config}, equal CPU time"] = hmcr_at_equal_time(
+            args, config, first, rpk0["cpu_s"], work)
+    print_errors(results)
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(results, f, indent=1)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--hmcr", default=os.path.join(HERE, "..", "build", "hmcr"))
-    ap.add_argument("--rpk-source", help="rpkCpp's git directory or source folder on this "
-                    "machine (default: download the pinned commit's tarball from GitHub)")
+    ap.add_argument("--rpk-source", default=os.environ.get("RPK_SOURCE"),
+                    help="rpkCpp's git directory or source folder on this machine (default: "
+                    "$RPK_SOURCE, else download the pinned commit's tarball from GitHub)")
     ap.add_argument("--rpk-commit", default=RPK_COMMIT)
-    ap.add_argument("--rpk", help="an rpkCpp binary already built (skips the build)")
+    ap.add_argument("--rpk", help="an rpkCpp binary this script built before (skips the build)")
     ap.add_argument("--work", help="working folder (default: a temporary one, removed)")
     ap.add_argument("--pairs", type=int, default=7)
     ap.add_argument("--clustering", default="oriented,isotropic",
@@ -342,6 +540,16 @@ def main():
     ap.add_argument("--rays", type=int, default=2684000)
     ap.add_argument("--jobs", type=int, default=2, help="build jobs")
     ap.add_argument("--json", help="write every time and count here")
+    ap.add_argument("--error", action="store_true",
+                    help="measure object errors against a point reference instead of times")
+    ap.add_argument("--reference", help="--error: an hmcr reference of cornell (default: make "
+                    "one in the working folder)")
+    ap.add_argument("--reference-points", type=int, default=200000)
+    ap.add_argument("--reference-paths", type=int, default=64)
+    ap.add_argument("--reference-spp", type=float, default=16)
+    ap.add_argument("--seeds", type=int, default=3, help="--error: hmcr's seeds 1..k")
+    ap.add_argument("--repeats", type=int, default=3,
+                    help="--error: runs whose median CPU time is each solve's time")
     args = ap.parse_args()
     args.hmcr = os.path.abspath(args.hmcr)
 
@@ -353,8 +561,12 @@ def main():
         rpk = os.path.abspath(args.rpk) if args.rpk else None
         if rpk is None:
             how = fetch_rpk_source(args.rpk_source, args.rpk_commit, os.path.join(work, "rpkCpp"))
-            print(f"building rpkCpp from {how} ...", flush=True)
+            rpk_leaves.add_leaf_writer(os.path.join(work, "rpkCpp"))
+            print(f"building rpkCpp from {how}, with a leaf writer ...", flush=True)
             rpk = build_rpk(os.path.join(work, "rpkCpp"), args.jobs)
+        if args.error:
+            main_error(args, work, rpk, mgf)
+            return
         hmcr_out = os.path.join(work, "hmcr")
         os.makedirs(hmcr_out, exist_ok=True)
         results = {"machine": os.uname().nodename, "hmcr_command": hmcr_command(args, hmcr_out)}

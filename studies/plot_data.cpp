@@ -238,6 +238,22 @@ ErrorSplits splits_from_json(const json& j) {
     return splits;
 }
 
+// table.json's error_split: by sampler and view for a study of one spp value, else by spp first
+// (keyed as the tables name an spp value, {:g}).
+SppErrorSplits spp_splits_from_json(const json& j, const std::vector<double>& spps, bool by_spp) {
+    SppErrorSplits splits;
+    if (!by_spp) {
+        for (double spp : spps) splits[spp] = splits_from_json(j);  // one value
+        return splits;
+    }
+    for (double spp : spps) {
+        if (const auto it = j.find(fmt::format("{:g}", spp)); it != j.end()) {
+            splits[spp] = splits_from_json(*it);
+        }
+    }
+    return splits;
+}
+
 template <class Registry, class Cell, class Name>
 void check_names(const Registry& registry, const std::vector<Cell>& cells, Name&& name_of) {
     for (const Cell& c : cells) (void)find_named(registry, name_of(c));
@@ -270,14 +286,22 @@ json meshing_plot_data(const std::string& scene, const std::vector<CellResult>& 
 }
 
 json sampling_plot_data(const std::string& scene, const std::vector<SamplingCell>& cells,
-                        const ErrorSplits& splits) {
+                        const SppErrorSplits& splits) {
     const std::vector<double> spps = distinct(cells, &SamplingCell::spp, "target spp");
     const std::vector<std::string> samplers =
         names_in_order(cells, [](const SamplingCell& c) { return c.sampler; });
-    // The splits are the seeds' images at the study's one spp.
-    const ErrorSplits* split = spps.size() == 1 && !splits.empty() ? &splits : nullptr;
+    // Each panel's bias and noise are of its own spp's seeds, where any sampler has a split.
+    const bool split =
+        std::any_of(splits.begin(), splits.end(), [](const auto& s) { return !s.second.empty(); });
+    static const ErrorSplits kNone;
     json bars = json::array();
-    for (double spp : spps) bars.push_back(spp_bars(cells, samplers, spp, split));
+    for (double spp : spps) {
+        const auto it = splits.find(spp);
+        bars.push_back(spp_bars(cells, samplers, spp,
+                                !split               ? nullptr
+                                : it == splits.end() ? &kNone
+                                                     : &it->second));
+    }
     json figures = json::array({{{"name", "error_by_sampler"}, {"panels", bars}}});
     if (spps.size() >= 2) {
         figures.push_back({{"name", "error_vs_spp"},
@@ -301,11 +325,12 @@ json plot_data_of_table(const std::filesystem::path& table) {
             for (const json& c : j.at("cells")) cells.push_back(sampling_cell_from_json(c));
             check_names(criterion_registry(), cells,
                         [](const SamplingCell& c) { return c.sampler; });
-            // With several spp values the splits are by spp first, and the plots show none.
             const json& spp = options.at("spp");
-            const bool one_spp = !spp.is_array() || spp.size() == 1;
+            const bool by_spp = spp.is_array() && spp.size() > 1;
             return sampling_plot_data(
-                scene, cells, one_spp ? splits_from_json(j.at("error_split")) : ErrorSplits{});
+                scene, cells,
+                spp_splits_from_json(j.at("error_split"),
+                                     distinct(cells, &SamplingCell::spp, "target spp"), by_spp));
         }
         throw InputError(
             "neither a meshing study's table (options.budgets) nor a sampling "

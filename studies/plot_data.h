@@ -9,8 +9,9 @@
 // solution's object error beside the mesh's (the frozen re-solve's); RMSEp instead against a
 // traced reference, which has no object error.
 // Sampling study: `error_by_sampler`, RMSEp per sampler at each target spp, with the bias and
-// noise split as two more bars where the study has one spp; and, where its cells hold two or
-// more target spp, `error_vs_spp`: RMSEp against the spp reached, per sampler.
+// noise split of that spp's seeds as two more bars (empty where a sampler has fewer than two);
+// and, where its cells hold two or more target spp, `error_vs_spp`: RMSEp against the spp
+// reached, per sampler.
 #pragma once
 
 #include <cstddef>
@@ -30,7 +31,7 @@ inline constexpr std::size_t kMaxPlotPoints = 1000;
 
 nlohmann::json meshing_plot_data(const std::string& scene, const std::vector<CellResult>& cells);
 nlohmann::json sampling_plot_data(const std::string& scene, const std::vector<SamplingCell>& cells,
-                                  const ErrorSplits& splits);
+                                  const SppErrorSplits& splits);
 
 // The plot data of the study whose table.json is `table`, of either kind. Throws InputError
 // naming the file when it is no study's table, names an unknown oracle or sampler, or holds

@@ -45,6 +45,10 @@ void validate(const SamplingStudyOptions& o) {
         }
     }
     check_study_size(std::uint64_t(o.samplers.size()) * o.spps.size(), o.seeds, o.trace.seed);
+    if (o.spps.size() > kMaxPlotPoints) {
+        throw InputError(fmt::format("study: {} spp values; at most {}, the points a plot shows",
+                                     o.spps.size(), kMaxPlotPoints));
+    }
     if (o.output.empty()) throw InputError("study: no output folder given");
     for (double spp : o.spps)
         for (const Criterion* s : o.samplers) {
@@ -261,10 +265,11 @@ SamplingView SamplingStudy::trace_view(const CellTask& t, const View& view, Prog
 }
 
 // The first seed's images and density maps of every sampler at one spp (a white tile where a
-// cell failed).
+// cell failed), each tile labelled with its sampler (and "failed" under a white tile).
 void SamplingStudy::write_figures(OutputSet& out, const View& view, double spp) const {
     const Image8& ref = m_reference8.at(view.name);
     std::vector<Image8> images{ref}, maps;
+    std::vector<std::string> image_labels{"reference"}, map_labels;
     for (const Criterion* sampler : m_options.samplers) {
         const std::string name = sampling_cell_name(m_scene.name, std::string(sampler->name()), spp,
                                                     m_options.trace.seed) +
@@ -275,10 +280,15 @@ void SamplingStudy::write_figures(OutputSet& out, const View& view, double spp) 
         for (Srgb8& p : blank.pixels) p = {255, 255, 255};
         images.push_back(ok ? read_png(image) : blank);
         maps.push_back(ok ? read_png(map) : blank);
+        const std::string label = std::string(sampler->name()) + (ok ? "" : " failed");
+        image_labels.push_back(label);
+        map_labels.push_back(label);
     }
     const int shrink = ref.width >= 128 ? 2 : 1;
-    write_png(out.temp(figure_file(m_options, view, spp, "images")), montage(images, 4, shrink));
-    write_png(out.temp(figure_file(m_options, view, spp, "density")), montage(maps, 4, shrink));
+    write_png(out.temp(figure_file(m_options, view, spp, "images")),
+              montage(images, 4, shrink, image_labels));
+    write_png(out.temp(figure_file(m_options, view, spp, "density")),
+              montage(maps, 4, shrink, map_labels));
 }
 
 }  // namespace

@@ -292,11 +292,8 @@ void write_sampling_tables(OutputSet& out, const std::string& scene, const Sampl
         fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}} "
                     "and \\usepackage{{graphicx}}.\n% {}\n{}",
                     latex_text(scene), latex_text(description(o, o.spps.front())), tex));
-    // The plots' bias and noise bars are those of a study of one spp.
-    const ErrorSplits one_spp =
-        splits.size() == 1 && !several ? splits.begin()->second : ErrorSplits{};
     write_text_atomically(out.temp(plot_data_file(o.output)),
-                          plot_data_text(sampling_plot_data(scene, cells, one_spp)));
+                          plot_data_text(sampling_plot_data(scene, cells, splits)));
 }
 
 }  // namespace hmcr

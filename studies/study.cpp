@@ -23,8 +23,8 @@
 #include "studies/cell_handout.h"
 #include "studies/plot_data.h"
 #include "studies/reference_measure.h"
+#include "studies/study_figures.h"
 #include "studies/traced_reference.h"
-#include "viz/paraview_collection.h"
 #include "viz/renderer.h"
 #include "viz/shaded_tracer.h"
 #include "viz/solution_file.h"
@@ -48,6 +48,10 @@ void validate(const StudyOptions& o) {
     if (o.budgets.empty()) throw InputError("study: no budget given");
     if (o.oracles.empty()) throw InputError("study: no oracle given");
     if (o.seeds < 1) throw InputError("study: seeds must be at least 1");
+    if (!(o.budget_tolerance > 0 && o.budget_tolerance < 1)) {
+        throw InputError(
+            fmt::format("study: budget-tolerance {:g} is not in (0, 1)", o.budget_tolerance));
+    }
     check_study_size(std::uint64_t(o.budgets.size()) * o.oracles.size(), o.seeds, o.solver.seed);
     refuse_repeats(o.budgets, "budget");
     if (o.budgets.size() > kMaxPlotPoints) {
@@ -93,7 +97,7 @@ public:
         // Rank 0 writes the tables: it alone checks, locks and holds them, before any work;
         // every rank learns of a refusal.
         together(Ranks::world(), [&] {
-            if (Ranks::world().root()) m_tables.emplace(study_output_files(o), o.output);
+            if (Ranks::world().root()) m_tables.emplace(study_output_files(scene, o), o.output);
         });
         m_settings = study_settings(m_scene, m_options);
     }
@@ -119,7 +123,6 @@ private:
     ObjectError measure(const Solution& solution, const MeshingCell& t, const std::string& name,
                         std::map<std::string, ImageErrors>& views, FileBatch& files,
                         double* finer_share = nullptr);
-    void write_mesh_collection(OutputSet& out) const;
     void check_resolution(const CellResult& cell, CellNotes& notes) const;
     std::string where(std::size_t index) const;
 
@@ -204,26 +207,13 @@ void StudyRunner::run() {
     std::vector<std::string> views;
     for (const View& v : m_scene.views) views.push_back(v.name);
     write_study_tables(*m_tables, m_scene.name, m_options, views, cells);
-    write_mesh_collection(*m_tables);
+    write_study_figures(*m_tables, m_scene, m_options, cells, m_reference.images);
     m_tables->commit();
     for (std::size_t b : m_options.budgets) {
         if (const std::string w = finer_warning(cells, b); !w.empty()) {
             m_progress.note(fmt::format("warning: at {} leaves, {}", b, w));
         }
     }
-}
-
-// meshes.pvd: every cell's mesh as one time step, to step through them in one ParaView session.
-void StudyRunner::write_mesh_collection(OutputSet& out) const {
-    std::vector<CollectionEntry> entries;
-    for (const MeshingCell& t : m_tasks) {
-        const std::filesystem::path mesh = mesh_file(t.name);
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(mesh, ec)) {
-            entries.push_back({std::filesystem::path("meshes") / mesh.filename(), t.name});
-        }
-    }
-    write_paraview_collection(out.temp(m_options.output / "meshes.pvd"), entries);
 }
 
 CellResult StudyRunner::compute(std::size_t index, FileBatch& files) {
@@ -351,10 +341,15 @@ std::string cell_name(const std::string& scene, const std::string& oracle, std::
     return fmt::format("{}-{}-B{}-s{}", scene, oracle, budget, seed);
 }
 
-std::vector<std::filesystem::path> study_output_files(const StudyOptions& o) {
+std::vector<std::filesystem::path> study_table_files(const StudyOptions& o) {
     return {o.output / "table.json", o.output / "table.csv", o.output / "patches.csv",
-            o.output / "table.md",   o.output / "table.tex", plot_data_file(o.output),
-            o.output / "meshes.pvd"};
+            o.output / "table.md",   o.output / "table.tex", plot_data_file(o.output)};
+}
+
+std::vector<std::filesystem::path> study_output_files(const Scene& scene, const StudyOptions& o) {
+    std::vector<std::filesystem::path> files = study_table_files(o);
+    for (std::filesystem::path& f : study_figure_files(scene, o)) files.push_back(std::move(f));
+    return files;
 }
 
 void run_study(const Scene& scene, const StudyOptions& options, Progress& progress) {

@@ -16,7 +16,8 @@
 //   OUT/table.md                   per budget, one row per oracle: mean +- standard error over
 //                                  seeds, best error of each column in bold
 //   OUT/plots/error_vs_elements.png  object-space error against leaves, log-log, per oracle
-//   OUT/meshes.pvd                 a ParaView collection of every cell's mesh, one time step each
+//   OUT/figures/VIEW-B{budget}-images.png, -meshes.png: every oracle's image and mesh side by side
+//   OUT/meshes.pvsm, OUT/meshes.pvd: every cell's mesh in ParaView (studies/study_figures.h)
 //
 // The mesh error: each cell's final mesh is solved again frozen (the same leaves, no oracle)
 // with many more rays and measured the same way. The cell's own error is what a user of its
@@ -123,17 +124,20 @@ nlohmann::json study_settings(const Scene& scene, const StudyOptions& options);
 nlohmann::json cell_to_json(const CellResult& cell);
 CellResult cell_from_json(const nlohmann::json& j);
 
-// The files a study writes at its end, once (its tables, plot data and meshes.pvd): checked and
-// locked before any cell, written as one set (common/output_set.h). The plots drawn from the
-// plot data come after the set (docs/studies.md, "Plots").
-std::vector<std::filesystem::path> study_output_files(const StudyOptions& options);
+// The files a study writes at its end, once (its tables and plot data, and the figures and
+// ParaView files of studies/study_figures.h): checked and locked before any cell, written as one
+// set (common/output_set.h). The plots drawn from the plot data come after the set
+// (docs/studies.md, "Plots"). study_table_files: the tables and plot data alone.
+std::vector<std::filesystem::path> study_output_files(const Scene& scene,
+                                                      const StudyOptions& options);
+std::vector<std::filesystem::path> study_table_files(const StudyOptions& options);
 
 // The one-line warning of table.md and of the study's end, naming the cells at `budget` whose
 // finer share is above kFinerShareLimit (studies/reference_resolution.h); empty where none is.
 std::string finer_warning(const std::vector<CellResult>& cells, std::size_t budget);
 
 // table.json, table.csv, table.md, table.tex and the plot data, from every cell of the study in
-// order, into `out`, the set of study_output_files().
+// order, into `out`, a set holding study_table_files().
 void write_study_tables(OutputSet& out, const std::string& scene, const StudyOptions& options,
                         const std::vector<std::string>& views,
                         const std::vector<CellResult>& cells);

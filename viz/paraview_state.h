@@ -2,7 +2,8 @@
 // through ParaView's XMLPolyDataReader, coloured by RadiosityColor with Map Scalars off (the
 // array is already sRGB), Gouraud interpolation, and no lighting (ambient 1, diffuse 0, the
 // light kit off), so that the colours on screen are the radiosity; the camera is a view of the
-// scene. `paraview --state=out/cornell.pvsm` opens it.
+// scene, and the view is held at its image size (preview mode), so that ParaView frames it as
+// `hmcr render` does. `paraview --state=out/cornell.pvsm` opens it.
 //
 // Only the proxies and properties that differ from ParaView's defaults are written; ParaView
 // (checked with 5.11) fills in the rest when it loads the state.
@@ -10,6 +11,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "meshes/scene.h"
 
@@ -24,6 +26,22 @@ std::string paraview_state(const std::filesystem::path& vtp, const View& view,
 // Writes paraview_state() atomically.
 void write_paraview_state(const std::filesystem::path& pvsm, const std::filesystem::path& vtp,
                           const View& view, bool cull_backfaces = false);
+
+// One solution of a state of several (a study's meshes): its file, its name in ParaView's
+// pipeline browser, and whether it is shown when the state opens (the eye beside the name
+// shows or hides it).
+struct StateSource {
+    std::filesystem::path vtp;
+    std::string name;
+    bool visible = false;
+};
+
+// The state of several solutions of one scene, each coloured as above, seen from the view.
+std::string paraview_state(const std::vector<StateSource>& sources, const View& view,
+                           bool cull_backfaces);
+void write_paraview_state(const std::filesystem::path& pvsm,
+                          const std::vector<StateSource>& sources, const View& view,
+                          bool cull_backfaces);
 
 // Characters of text that XML gives a meaning (& < > " ') as entities.
 std::string xml_escape(const std::string& text);

@@ -3,8 +3,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <cstdint>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "image/tone_map.h"
 #include "rays/camera.h"
@@ -50,6 +52,34 @@ Image render(const ShadedTracer& tracer, const View& view, const RenderOptions& 
                 }
             }
         });
+    return image;
+}
+
+Image8 draw_cell_edges(const ShadedTracer& tracer, const View& view, Image8 image, Srgb8 ink) {
+    if (image.width != view.width || image.height != view.height) {
+        throw std::invalid_argument("draw_cell_edges: the image is not of the view's size");
+    }
+    const Camera camera = make_camera(view);
+    constexpr std::int64_t kNone = -1;
+    std::vector<std::int64_t> cells(image.pixels.size(), kNone);
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, view.height), [&](const tbb::blocked_range<int>& rows) {
+            set_tracing_float_mode();
+            for (int y = rows.begin(); y < rows.end(); ++y)
+                for (int x = 0; x < view.width; ++x) {
+                    const auto c =
+                        tracer.cell_along(camera.origin, camera.direction(x + 0.5, y + 0.5));
+                    cells[std::size_t(y) * view.width + x] = c ? std::int64_t(*c) : kNone;
+                }
+        });
+    const auto cell = [&](int x, int y) { return cells[std::size_t(y) * view.width + x]; };
+    for (int y = 0; y < view.height; ++y)
+        for (int x = 0; x < view.width; ++x) {
+            const std::int64_t c = cell(x, y);
+            const bool right = x + 1 < view.width && cell(x + 1, y) != c;
+            const bool below = y + 1 < view.height && cell(x, y + 1) != c;
+            if (right || below) image.at(x, y) = ink;
+        }
     return image;
 }
 

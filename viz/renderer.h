@@ -30,6 +30,11 @@ Image render(const ShadedMesh& mesh, const View& view, const RenderOptions& opti
 // The same with a tracer built once for several views of one mesh.
 Image render(const ShadedTracer& tracer, const View& view, const RenderOptions& options = {});
 
+// The image (of the view's size) with the boundaries of the mesh's cells, its leaf elements,
+// drawn over it in `ink`: a pixel is on one where the ray through its centre meets another cell
+// than the ray through its right or lower neighbour's, or where one of the two meets nothing.
+Image8 draw_cell_edges(const ShadedTracer& tracer, const View& view, Image8 image, Srgb8 ink);
+
 // The fixed exposure a study takes from its reference image and applies to every image of the
 // study: it maps the mean luminance of the reference's non-background pixels to middle grey
 // (kMiddleGrey = 0.18), as auto_exposure does for meshes. Non-background means a luminance

@@ -2,9 +2,12 @@
 // object-space error's point lookups both ask "what radiosity does the mesh show here".
 //
 // Each polygon is fan-triangulated from its first point (leaf polygons are convex, so the fan
-// covers it exactly; points lying on the fan vertex's own edges give zero-area triangles that
-// are never hit). Within a triangle the radiosity is the barycentric interpolation of the
-// point radiosity of its three points: Gouraud shading as a rasteriser would draw it.
+// covers it exactly). Points lying on the fan vertex's own edges give zero-area triangles,
+// which in single precision are slivers between the fan's edge over such a point and the
+// neighbour's two edges through it: kept, they close the mesh for Embree's watertight tests
+// (the soup is built robust, rays/embree_scene.h), so no ray passes between cells. Within a
+// triangle the radiosity is the barycentric interpolation of the point radiosity of its three
+// points: Gouraud shading as a rasteriser would draw it.
 #pragma once
 
 #include <array>

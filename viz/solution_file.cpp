@@ -65,6 +65,38 @@ SolutionFile read_solution(const std::filesystem::path& vtp) {
     return file;
 }
 
+namespace {
+
+// The solution's backs are the scene's: a back cell only on a two-sided patch, and one on every
+// patch whose back emits (its root is made at the start, docs/design.md §1.3).
+void check_sides(const std::filesystem::path& vtp, const ShadedMesh& m, const Scene& scene) {
+    const FaceMaterials materials(scene.mesh);
+    std::vector<bool> has_back(scene.mesh.n_faces(), false);
+    for (std::size_t c = 0; c < m.cell_count(); ++c) {
+        if (m.side[c] != kBack) continue;
+        const int p = m.patch_id[c];
+        if (materials.back_index(OpenMesh::FaceHandle(p)) == kOneSided) {
+            throw InputError(vtp.string(),
+                             fmt::format("cell {} is the back of patch {}, which is one-sided in "
+                                         "scene {} (a solution of it with other sides?)",
+                                         c, p, quote(scene.name)));
+        }
+        has_back[std::size_t(p)] = true;
+    }
+    for (const auto f : scene.mesh.faces()) {
+        const std::uint32_t back = materials.back_index(f);
+        if (back == kOneSided || has_back[std::size_t(f.idx())]) continue;
+        if (materials.table()[back].emission.max() > 0) {
+            throw InputError(vtp.string(),
+                             fmt::format("patch {} has no back cell, but its back emits in scene "
+                                         "{} (a solution of it with other sides?)",
+                                         f.idx(), quote(scene.name)));
+        }
+    }
+}
+
+}  // namespace
+
 SolutionFile read_solution(const std::filesystem::path& vtp, const Scene& scene) {
     SolutionFile file = read_solution(vtp);
     const SceneIdentity id = scene_identity(scene);
@@ -76,6 +108,7 @@ SolutionFile read_solution(const std::filesystem::path& vtp, const Scene& scene)
                         quote(file.meta.scene), file.meta.patch_count, file.meta.geometry_hash,
                         quote(id.name), id.patches, id.geometry_hash));
     }
+    check_sides(vtp, file.mesh, scene);
     return file;
 }
 

@@ -16,9 +16,11 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkVariant.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/error.h"
+#include "radiosity/solver_options.h"
 #include "viz/vtp_io.h"
 
 namespace hmcr {
@@ -38,6 +40,77 @@ void read_points(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
         for (int k = 0; k < 3; ++k)
             r[k] = check.finite_at_least<double>(b->GetValue(3 * i + k), -HUGE_VAL, "Radiosity");
         m.point_radiosity.push_back(r);
+    }
+}
+
+// The cells run as the leaves of docs/design.md §5.3: every patch's front, patch by patch, then
+// the backs that exist, patch by patch. A Side array of a solution with backs that says all 0,
+// all 1 or is shuffled, or cells of another order, are not an hmcr solution's.
+void check_cell_order(const ShadedMesh& m, const VtpChecker& check, std::uint64_t patch_count) {
+    std::uint64_t front_patches = 0;  // patches 0 .. front_patches - 1 have front cells
+    for (std::size_t c = 0; c < m.cell_count(); ++c) {
+        const std::uint64_t patch = std::uint64_t(m.patch_id[c]);
+        if (m.side[c] == kFront) {
+            if (c > 0 && m.side[c - 1] == kBack) {
+                check.fail(
+                    fmt::format("cell {} is a front after a back: a solution's fronts come "
+                                "first (is its Side array another's?)",
+                                c));
+            }
+            if (patch > front_patches) {
+                check.fail(fmt::format("patch {} has no front cell before cell {} (patch {}'s)",
+                                       front_patches, c, patch));
+            }
+            if (patch + 1 < front_patches) {
+                check.fail(
+                    fmt::format("cell {} is patch {}'s front after patch {}'s: a "
+                                "solution's cells run patch by patch",
+                                c, patch, front_patches - 1));
+            }
+            front_patches = patch + 1;
+        } else if (c > 0 && m.side[c - 1] == kBack && patch < std::uint64_t(m.patch_id[c - 1])) {
+            check.fail(
+                fmt::format("cell {} is patch {}'s back after patch {}'s: a solution's "
+                            "cells run patch by patch",
+                            c, patch, m.patch_id[c - 1]));
+        }
+    }
+    if (front_patches < patch_count) {
+        check.fail(
+            fmt::format("patch {} has no front cell (of {} patches)", front_patches, patch_count));
+    }
+}
+
+// ClusterId, only in a clustered solution: per cell the cluster leaf holding its side
+// (docs/design.md §2.7), -1 where the side is in the mesh itself. A tree over the sides of P
+// patches has fewer than 2 P - 1 clusters; every cell of one side names the same one.
+void read_cluster_ids(vtkCellData* cd, const VtpChecker& check, const VtpMetadata& meta,
+                      ShadedMesh& m) {
+    if (!cd->HasArray("ClusterId")) return;
+    if (meta.clustering != "isotropic") {
+        check.fail(fmt::format("has a ClusterId array, but Clustering {}", quote(meta.clustering)));
+    }
+    const vtkIdType n = vtkIdType(m.cell_count());
+    auto* ids = check.array<vtkIntArray>(cd, "ClusterId", 1, n);
+    const std::int64_t clusters = 2 * std::int64_t(meta.patch_count) - 1;
+    m.cluster_id.resize(std::size_t(n));
+    for (vtkIdType c = 0; c < n; ++c) {
+        const int id = ids->GetValue(c);
+        if (id < -1 || id >= clusters) {
+            check.fail(
+                fmt::format("cell {} has ClusterId {}, not -1 or one of the {} clusters "
+                            "of {} patches",
+                            c, id, std::max<std::int64_t>(clusters, 0), meta.patch_count));
+        }
+        const std::size_t k = std::size_t(c);
+        if (k > 0 && m.patch_id[k] == m.patch_id[k - 1] && m.side[k] == m.side[k - 1] &&
+            id != m.cluster_id[k - 1]) {
+            check.fail(
+                fmt::format("cell {} has ClusterId {}, the cell before it {}: one side of "
+                            "a patch is in one cluster",
+                            c, id, m.cluster_id[k - 1]));
+        }
+        m.cluster_id[k] = id;
     }
 }
 
@@ -67,13 +140,15 @@ void read_cell_data(vtkPolyData* data, const VtpChecker& check, std::uint64_t pa
     }
     // Side: present only in a solution with two-sided patches; every cell is a front without it.
     m.side.assign(std::size_t(n), kFront);
-    if (!cd->HasArray("Side")) return;
-    auto* side = check.array<vtkUnsignedCharArray>(cd, "Side", 1, n);
-    for (vtkIdType c = 0; c < n; ++c) {
-        const unsigned value = side->GetValue(c);
-        if (value > kBack) check.fail(fmt::format("cell {} has Side {}, not 0 or 1", c, value));
-        m.side[std::size_t(c)] = std::uint8_t(value);
+    if (cd->HasArray("Side")) {
+        auto* side = check.array<vtkUnsignedCharArray>(cd, "Side", 1, n);
+        for (vtkIdType c = 0; c < n; ++c) {
+            const unsigned value = side->GetValue(c);
+            if (value > kBack) check.fail(fmt::format("cell {} has Side {}, not 0 or 1", c, value));
+            m.side[std::size_t(c)] = std::uint8_t(value);
+        }
     }
+    check_cell_order(m, check, patch_count);
 }
 
 template <class A>
@@ -97,6 +172,10 @@ VtpMetadata read_metadata(vtkPolyData* data, const VtpChecker& check) {
     meta.element_count = check.count_field(fd, "ElementCount");
     meta.iterations = check.count_field(fd, "Iterations");
     meta.time_value = value_field<vtkDoubleArray>(fd, "TimeValue", check);
+    meta.clustering = check.string_field(fd, "Clustering", kOldSolution);
+    if (!SettingNames<Clustering>::parse(meta.clustering)) {
+        check.fail(fmt::format("has Clustering {}, not none or isotropic", quote(meta.clustering)));
+    }
     return meta;
 }
 
@@ -134,6 +213,7 @@ ShadedMesh read_vtp(const fs::path& path, VtpMetadata* metadata) {
     read_points(data, check, m);
     read_polygon_cells(data, check, m);
     read_cell_data(data, check, meta.patch_count, m);
+    read_cluster_ids(data->GetCellData(), check, meta, m);
     if (m.cell_count() != meta.element_count) {
         check.fail(fmt::format("has {} cells but records {} elements", m.cell_count(),
                                meta.element_count));

@@ -71,10 +71,16 @@ public:
         return a;
     }
 
+    // The value when it is finite and at least `lowest` (-HUGE_VAL: any finite value); else a
+    // failure "Radiosity nan is not a finite number", "PatchId -1 is negative" or "X 2 is below
+    // 3".
     template <class T>
     T finite_at_least(T value, T lowest, const char* what) const {
-        if (!(std::isfinite(double(value)) && value >= lowest)) {
-            fail(fmt::format("{} {} is not a finite number of at least {}", what, value, lowest));
+        if (!std::isfinite(double(value)))
+            fail(fmt::format("{} {} is not a finite number", what, value));
+        if (value < lowest) {
+            fail(lowest == T(0) ? fmt::format("{} {} is negative", what, value)
+                                : fmt::format("{} {} is below {}", what, value, lowest));
         }
         return value;
     }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "image/image.h"
 #include "studies/point_reference.h"
 #include "tests/hostile/hostile.h"
 #include "tests/support/cli_run.h"
@@ -75,6 +76,12 @@ TEST_F(ReferenceCli, AMeshFlagMakesAMeshReferenceThatChecksItselfAgainstPoints) 
     const nlohmann::json summary = json_of("ref/reference.json");
     const nlohmann::json& ref = summary["reference"];
     const auto points = 4 * summary["counts"]["leaves"].get<std::uint64_t>();  // 4 an element
+    // The counts the summary has, by its names.
+    EXPECT_NE(r.out.find(fmt::format("reference of {} leaves ({} elements with their parents)",
+                                     summary["counts"]["leaves"].get<std::uint64_t>(),
+                                     summary["counts"]["elements"].get<std::uint64_t>())),
+              std::string::npos)
+        << r.out;
     EXPECT_NE(r.out.find("against " + std::to_string(points) + " points the mesh is off by"),
               std::string::npos)
         << r.out;
@@ -92,10 +99,29 @@ TEST_F(ReferenceCli, TheKindsFlagsAreKeptApart) {
             "--max-area is for a mesh reference; this one is a point reference");
     refused("reference plates.json --kind mesh --paths 8 -o ref",
             "--paths is for a point reference; this one is a mesh reference");
+    refused("reference plates.json --kind points --sequence sobol -o ref",
+            "--sequence is for a mesh reference; this one is a point reference");
+    // Settings of a refining solve, which a uniform mesh and the points have no use for.
+    refused("reference plates.json --importance views -o ref", "--importance");
+    refused("reference plates.json --link-weight total -o ref", "--link-weight");
     refused("reference plates.json --kind cloud -o ref", "kind must be auto, points or mesh");
     refused("reference plates.json --paths 1 -o ref", "paths must be at least 2");
     refused("reference plates.json --for-budget 0 -o ref", "not a positive leaf count");
     EXPECT_EQ(snapshot(m_temp.path()), before);
+}
+
+// The help says what the study takes: spp values, not one spp; what the tolerance is relative to.
+TEST_F(ReferenceCli, StudysHelpSaysWhatItTakes) {
+    const CliRun top = run("--help"), study = run("study --help");
+    EXPECT_NE(top.out.find("pixel samplers at spp values (--samplers)"), std::string::npos)
+        << top.out;
+    EXPECT_EQ(top.out.find("one spp"), std::string::npos) << top.out;
+    EXPECT_NE(study.out.find("accepted relative distance of a cell's leaf count to its budget"),
+              std::string::npos)
+        << study.out;
+    plates();
+    refused("study plates.json --reference ref --budgets 20 --budget-tolerance 2 -o out",
+            "study: budget-tolerance 2 is not in (0, 1)");
 }
 
 TEST_F(ReferenceCli, ForBudgetSizesTheReferenceAndSaysSo) {
@@ -131,6 +157,53 @@ TEST_F(ReferenceCli, TheStudyWarnsExactlyWhereItsCellsAreFinerThanTheReference) 
     ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
     EXPECT_EQ(quiet.err.find("warning"), std::string::npos) << quiet.err;
     EXPECT_EQ(read_file(m_temp.path() / "st-fine" / "table.md").find("Warning"), std::string::npos);
+}
+
+// Pure black pixels in a box of an image.
+int black(const Image8& im, int x0, int y0, int x1, int y1) {
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) n += im.at(x, y) == Srgb8{0, 0, 0};
+    return n;
+}
+
+// A meshing study's figures: the reference's image and each oracle's side by side, the same
+// with the elements' edges drawn, each tile labelled under it; and a ParaView state of every
+// cell's mesh, each source named by its file, the first alone shown.
+TEST_F(ReferenceCli, AStudyShowsItsOraclesSideBySideAndInParaView) {
+    plates();
+    ASSERT_EQ(run("reference plates.json --points 2000 --paths 4 --spp 1 -q -o ref").exit_code, 0);
+    const CliRun r = run(
+        "study plates.json --reference ref --budgets 20 --budget-tolerance 0.1 --oracles power,kl "
+        "--seeds 1 --rays 20000 --mesh-rays 0 -q -o st");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Image8 ref = read_png(m_temp.path() / "ref/views/side.png");
+    const Image8 images = read_png(m_temp.path() / "st/figures/side-B20-images.png");
+    const Image8 meshes = read_png(m_temp.path() / "st/figures/side-B20-meshes.png");
+    const Image8 power = read_png(m_temp.path() / "st/images/plates-power-B20-s1-side.png");
+    // 32-pixel tiles in columns as wide as "reference" (9 glyphs of 6 pixels, less one, and a
+    // pixel each side: 55), under each a strip of 7 + 4 pixels.
+    ASSERT_EQ(ref.width, 32);
+    EXPECT_EQ(images.width, 3 * 55 + 2 * 2);
+    EXPECT_EQ(images.height, 32 + 11);
+    EXPECT_EQ(meshes.width, 2 * 32 + 2);  // power and kl: labels narrower than the tiles
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            EXPECT_EQ(images.at(11 + x, y), ref.at(x, y)) << x << ", " << y;
+            EXPECT_EQ(images.at(57 + 11 + x, y), power.at(x, y)) << x << ", " << y;
+        }
+    EXPECT_GT(black(images, 0, 32, 55, 43), 0);                          // "reference"
+    EXPECT_GT(black(images, 57, 32, 112, 43), 0);                        // "power"
+    EXPECT_GT(black(meshes, 0, 0, 32, 32), black(power, 0, 0, 32, 32));  // the edges
+    const std::string pvsm = read_file(m_temp.path() / "st/meshes.pvsm");
+    EXPECT_NE(pvsm.find(R"(name="plates-power-B20-s1.vtp")"), std::string::npos) << pvsm;
+    EXPECT_NE(pvsm.find(R"(name="plates-kl-B20-s1.vtp")"), std::string::npos) << pvsm;
+    EXPECT_NE(pvsm.find((m_temp.path() / "st/meshes/plates-kl-B20-s1.vtp").string()),
+              std::string::npos);
+    EXPECT_NE(
+        pvsm.find(
+            R"(name="PreviewMode" id="5.PreviewMode" number_of_elements="2"><Element index="0" value="32"/>)"),
+        std::string::npos);
 }
 
 // `hmcr error` on a study's own cell gives the cell file's numbers, bit for bit; read as a

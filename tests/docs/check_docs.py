@@ -3,7 +3,9 @@
 that exists and, with #anchor, one of its headings; every docs/... citation in the sources
 resolves (docs/design.md §N to a heading numbered N, docs/X.md#anchor to a heading); and every
 registered oracle and pixel criterion has its entry in docs/oracles.md or docs/criteria.md,
-holding line 2 of its source file's opening comment (its paper, or why it has none).
+holding line 2 of its source file's opening comment (its paper, or why it has none); and the
+viewing advice keeps the build: `make view-deps` installs ParaView without its recommended
+packages (python3-paraview, which would remove libvtk9-dev), and the docs send readers there.
 Usage: check_docs.py REPO_ROOT. Prints one line per problem; exit code 1 if there is any."""
 import pathlib
 import re
@@ -114,6 +116,40 @@ def plugin_entries(registry, folder, doc):
 
 plugin_entries("oracles/registry.cpp", "oracles", "docs/oracles.md")
 plugin_entries("trace/criteria/registry.cpp", "trace/criteria", "docs/criteria.md")
+
+# 4. ParaView without what would remove libvtk9-dev: `make view-deps`, and no doc that installs
+# it another way.
+def recipe(makefile, target):
+    lines, out = makefile.read_text().splitlines(), None
+    for line in lines:
+        if out is None and line.startswith(target + ":"):
+            out = []
+        elif out is not None:
+            if not line.startswith("\t"):
+                break
+            out.append(line)
+    return "\n".join(out) if out is not None else None
+
+
+makefile = root / "Makefile"
+view = recipe(makefile, "view-deps")
+view_packages = re.search(r"^VIEW_DEPS\s*:?=\s*(.*)$", makefile.read_text(), re.M)
+if view is None:
+    problems.append("Makefile: no view-deps target (ParaView and Xvfb for viewing results)")
+elif "--no-install-recommends" not in view or "apt-get install" not in view:
+    problems.append("Makefile: view-deps does not install with apt-get --no-install-recommends")
+elif not view_packages or "paraview" not in view_packages.group(1).split():
+    problems.append("Makefile: VIEW_DEPS does not name paraview")
+for md in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
+    text = md.read_text()
+    for n, line in enumerate(text.splitlines(), 1):
+        if re.search(r"\bapt(-get)? install\b", line) and "paraview" in line \
+                and "--no-install-recommends" not in line:
+            problems.append(f"{md.relative_to(root)}:{n}: installs paraview with its recommended "
+                            "packages (python3-paraview removes libvtk9-dev): say make view-deps")
+for doc in ("README.md", "docs/usage.md"):
+    if "make view-deps" not in (root / doc).read_text():
+        problems.append(f"{doc}: the viewing advice does not say make view-deps")
 
 for p in problems:
     print(p)

@@ -84,6 +84,22 @@ TEST_F(Hostile, RepairsAreMadeAndSaidInOneLine) {
         << r.err;
 }
 
+// A repair line names the mesh one way, its folder and its first place alike, however the path to
+// the scene file or the mesh went.
+TEST_F(Hostile, ARepairLineNamesTheFileOneWay) {
+    plates(with(kPlatesObj, "v 0 1 0", "v 0 1 0.5"));
+    m_temp.write("scenes/p.json",
+                 with(kPlatesJson, R"({"mesh": "plates.obj", )", R"({"mesh": "../plates.obj", )"));
+    for (const char* scene : {"scenes/p.json", "./scenes/../plates.obj"}) {
+        const CliRun r = accepted(std::string("solve ") + scene + " --rays 2000 -o out.vtp");
+        EXPECT_NE(r.err.find("hmcr: repaired plates.obj: 1 non-planar quad split (plates.obj:11) "
+                             "(--strict refuses them)\n"),
+                  std::string::npos)
+            << scene << "\n"
+            << r.err;
+    }
+}
+
 // A face on another's corners facing the other way is its back side (docs/usage.md#repairs):
 // joined with or without --strict, said in one line without the note that --strict refuses it.
 TEST_F(Hostile, OppositeFacesAreJoinedAlsoUnderStrict) {

@@ -2,11 +2,15 @@
 // bound to the scene it was solved for.
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -24,10 +28,11 @@ protected:
         plates();
         accepted("solve plates.json --rays 2000 -q -o good.vtp");
     }
-    // good.vtp changed by `spoil`, written as NAME.
-    void spoilt(const std::string& name, const std::function<void(vtkPolyData*)>& spoil) const {
+    // FROM (good.vtp) changed by `spoil`, written as NAME.
+    void spoilt(const std::string& name, const std::function<void(vtkPolyData*)>& spoil,
+                const std::string& from = "good.vtp") const {
         vtkNew<vtkXMLPolyDataReader> reader;
-        reader->SetFileName((dir() / "good.vtp").c_str());
+        reader->SetFileName((dir() / from).c_str());
         reader->Update();
         vtkPolyData* data = reader->GetOutput();
         spoil(data);
@@ -97,7 +102,20 @@ TEST_F(HostileSolution, ValuesOutOfRangeAreRefused) {
     spoilt("nan.vtp", [](vtkPolyData* d) {
         vtkFloatArray::SafeDownCast(d->GetPointData()->GetArray("Radiosity"))->SetValue(0, NAN);
     });
-    expect_refused("nan.vtp", "Radiosity nan");
+    expect_refused("nan.vtp", "Radiosity nan is not a finite number\n");
+    // Not "is not a finite number of at least -inf": a radiosity may be negative (§3.11).
+    for (const float value : {-INFINITY, INFINITY, NAN}) {
+        spoilt("inf.vtp", [value](vtkPolyData* d) {
+            vtkFloatArray::SafeDownCast(d->GetCellData()->GetArray("ElementRadiosity"))
+                ->SetValue(1, value);
+        });
+        const std::string shown = std::isnan(value) ? "nan" : value < 0 ? "-inf" : "inf";
+        expect_refused("inf.vtp", "ElementRadiosity " + shown + " is not a finite number\n");
+    }
+    spoilt("area.vtp", [](vtkPolyData* d) {
+        vtkDoubleArray::SafeDownCast(d->GetCellData()->GetArray("ElementArea"))->SetValue(0, -2);
+    });
+    expect_refused("area.vtp", "ElementArea -2 is negative\n");
 }
 
 // A signed estimator (the control variate, docs/design.md §3.11) may leave a dim leaf below 0:
@@ -115,6 +133,101 @@ TEST_F(HostileSolution, NegativeRadiosityIsAValue) {
 TEST_F(HostileSolution, ASolutionOfAnotherSceneIsRefused) {
     refused("render good.vtp --scene cornell -o x.png", "is a solution of scene 'plates'");
     refused("info good.vtp --scene cornell", "not of 'cornell'");
+}
+
+// The Side array must be the scene's: backs only on two-sided patches, one on every patch whose
+// back emits (the plates' emitter, two-sided here), and the cells in their order, fronts patch
+// by patch, then backs. Each of these changed a study's or info's results, or ended a study in
+// an internal error.
+TEST_F(HostileSolution, SidesThatAreNotTheScenesAreRefused) {
+    m_temp.write("one.json", with(kPlatesJson, "{", R"({"sides": 1, )"));
+    refused("render good.vtp --scene one.json -o x.png",
+            "is the back of patch 0, which is one-sided in scene 'one'");
+    refused("info good.vtp --scene one.json", "which is one-sided in scene 'one'");
+    refused("error good.vtp --scene one.json --reference nowhere", "one-sided in scene 'one'");
+    accepted("solve one.json --rays 2000 -q -o one-sided.vtp");
+    refused("render one-sided.vtp --scene plates.json -o x.png",
+            "one-sided.vtp: patch 0 has no back cell, but its back emits in scene 'plates'");
+    const auto set_sides = [](const std::function<unsigned char(vtkIdType, unsigned char)>& f) {
+        return [f](vtkPolyData* d) {
+            auto* side = vtkUnsignedCharArray::SafeDownCast(d->GetCellData()->GetArray("Side"));
+            for (vtkIdType c = 0; c < side->GetNumberOfTuples(); ++c)
+                side->SetValue(c, f(c, side->GetValue(c)));
+        };
+    };
+    spoilt("fronts.vtp", set_sides([](vtkIdType, unsigned char) { return 0; }));
+    spoilt("backs.vtp", set_sides([](vtkIdType, unsigned char) { return 1; }));
+    spoilt("shuffled.vtp", set_sides([](vtkIdType c, unsigned char s) { return c == 0 ? 1 : s; }));
+    for (const char* vtp : {"fronts.vtp", "backs.vtp", "shuffled.vtp"}) {
+        const std::string needle = std::string(vtp) + ": ";
+        expect_refused(vtp, needle);
+        refused(std::string("info ") + vtp, needle);  // without the scene, the order alone
+    }
+    expect_refused("fronts.vtp", "is patch 0's front after patch 1's");
+    expect_refused("backs.vtp", "is patch 0's back after patch 1's");
+    expect_refused("shuffled.vtp", "cell 1 is a front after a back");
+    spoilt("patch0.vtp", [](vtkPolyData* d) {
+        auto* patch = vtkIntArray::SafeDownCast(d->GetCellData()->GetArray("PatchId"));
+        for (vtkIdType c = 0; c < patch->GetNumberOfTuples(); ++c) patch->SetValue(c, 0);
+    });
+    expect_refused("patch0.vtp", "patch0.vtp: patch 1 has no front cell (of 2 patches)");
+}
+
+// ClusterId and Clustering: a known clustering, ids only with clustering, whole numbers from -1
+// to below the clusters a tree over the patches' sides has, one per side of a patch.
+TEST_F(HostileSolution, ClusterIdsThatNoSolveWritesAreRefused) {
+    accepted("solve plates.json --rays 2000 --clustering isotropic -q -o clustered.vtp");
+    accepted("render clustered.vtp --scene plates.json -o clustered.png");
+    const auto set_ids = [](const std::function<int(vtkIdType, int)>& f) {
+        return [f](vtkPolyData* d) {
+            auto* ids = vtkIntArray::SafeDownCast(d->GetCellData()->GetArray("ClusterId"));
+            for (vtkIdType c = 0; c < ids->GetNumberOfTuples(); ++c)
+                ids->SetValue(c, f(c, ids->GetValue(c)));
+        };
+    };
+    spoilt("minus.vtp", set_ids([](vtkIdType c, int id) { return c == 0 ? -5 : id; }),
+           "clustered.vtp");
+    expect_refused("minus.vtp",
+                   "minus.vtp: cell 0 has ClusterId -5, not -1 or one of the 3 "
+                   "clusters of 2 patches");
+    spoilt("largest.vtp", set_ids([](vtkIdType c, int id) { return c == 0 ? 2147483647 : id; }),
+           "clustered.vtp");
+    expect_refused("largest.vtp", "cell 0 has ClusterId 2147483647");
+    // Cells 0 and 1 are one side of one patch (the first patch's front is refined).
+    spoilt("split.vtp", set_ids([](vtkIdType c, int id) { return c == 1 ? id + 1 : id; }),
+           "clustered.vtp");
+    expect_refused("split.vtp", "one side of a patch is in one cluster");
+    spoilt(
+        "float.vtp",
+        [](vtkPolyData* d) {
+            vtkNew<vtkFloatArray> ids;
+            ids->SetName("ClusterId");
+            ids->SetNumberOfTuples(d->GetNumberOfCells());
+            ids->Fill(0.5f);
+            d->GetCellData()->RemoveArray("ClusterId");
+            d->GetCellData()->AddArray(ids);
+        },
+        "clustered.vtp");
+    expect_refused("float.vtp", "float.vtp: ");
+    spoilt(
+        "anisotropic.vtp",
+        [](vtkPolyData* d) {
+            vtkNew<vtkStringArray> clustering;
+            clustering->SetName("Clustering");
+            clustering->InsertNextValue("anisotropic");
+            d->GetFieldData()->RemoveArray("Clustering");
+            d->GetFieldData()->AddArray(clustering);
+        },
+        "clustered.vtp");
+    expect_refused("anisotropic.vtp", "has Clustering 'anisotropic', not none or isotropic");
+    spoilt("unclustered.vtp", [](vtkPolyData* d) {
+        vtkNew<vtkIntArray> ids;
+        ids->SetName("ClusterId");
+        ids->SetNumberOfTuples(d->GetNumberOfCells());
+        ids->Fill(-1);
+        d->GetCellData()->AddArray(ids);
+    });
+    expect_refused("unclustered.vtp", "has a ClusterId array, but Clustering 'none'");
 }
 
 TEST_F(HostileSolution, GarbageIsRefused) {

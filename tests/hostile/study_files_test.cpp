@@ -4,6 +4,7 @@
 // `hmcr plot` refuses a folder that holds no study's table, and a machine without matplotlib;
 // a study whose plotting script fails is still whole.
 #include <cstdlib>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -242,21 +243,69 @@ TEST_F(HostileStudy, NoMatplotlibLeavesTheStudyWhole) {
 }
 
 // A plotting script that fails (a broken matplotlib) costs the plots, not the finished study:
-// exit code 0, its tables written, and one warning on how to draw the plots.
+// exit code 0, its tables written, and one warning on how to draw the plots, with the script's
+// own last word. `hmcr plot` then fails in one line, exit code 2, not as an internal error.
 TEST_F(HostileStudy, AFailingPlotScriptLeavesTheStudyWhole) {
     const std::filesystem::path python = m_temp.write(
-        "broken-python", "#!/bin/sh\n[ \"$1\" = -c ] && exit 0\necho broken >&2\nexit 1\n");
+        "broken-python",
+        "#!/bin/sh\n[ \"$1\" = -c ] && exit 0\necho 'Traceback' >&2\necho 'Error: broken' >&2\n"
+        "exit 1\n");
     std::filesystem::permissions(python, std::filesystem::perms::owner_exec,
                                  std::filesystem::perm_options::add);
-    const CliRun study =
-        run_launched("env HMCR_PYTHON=" + python.string() + " ", kStudy, dir(), 60);
+    const std::string launcher = "env HMCR_PYTHON=" + python.string() + " ";
+    const CliRun study = run_launched(launcher, kStudy, dir(), 60);
     EXPECT_EQ(study.exit_code, 0) << study.err;
     EXPECT_TRUE(std::filesystem::exists(dir() / "st" / "table.tex"));
-    EXPECT_NE(study.err.find("broken\nhmcr: warning: plots not drawn: the plotting script "),
+    EXPECT_EQ(study.err.find("Traceback"), std::string::npos) << study.err;
+    EXPECT_NE(study.err.find("hmcr: warning: plots not drawn: the plotting script "),
               std::string::npos)
         << study.err;
-    EXPECT_NE(study.err.find("(exit 1); draw them with `hmcr plot st`\n"), std::string::npos)
+    EXPECT_NE(study.err.find("(exit 1: Error: broken); draw them with `hmcr plot st`\n"),
+              std::string::npos)
         << study.err;
+    const CliRun plot = run_launched(launcher, "plot st", dir(), 60);
+    EXPECT_EQ(plot.exit_code, 2) << plot.err;
+    EXPECT_EQ(std::count(plot.err.begin(), plot.err.end(), '\n'), 1) << plot.err;
+    EXPECT_EQ(plot.err.find("internal error"), std::string::npos) << plot.err;
+    EXPECT_NE(plot.err.find("hmcr: error: plot: the plotting script "), std::string::npos)
+        << plot.err;
+    EXPECT_NE(plot.err.find("(exit 1: Error: broken)\n"), std::string::npos) << plot.err;
+}
+
+// Values the cell checks accept, at the ends of double's range: an object error of 1e308 (its
+// error bars overflow) and every real value 5e-324 (its axis limits underflow to 0). The
+// plotting script draws them (what a log axis cannot show, it leaves out).
+TEST_F(HostileStudy, ThePlotScriptDrawsExtremeValues) {
+    if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0) {
+        GTEST_SKIP() << "no matplotlib in /usr/bin/python3";
+    }
+    // One-sided plates, whose budgets are reached: cells with object errors to spoil.
+    m_temp.write("one.json", with(read_file(dir() / "plates.json"), "{", R"({"sides": 1, )"));
+    accepted("reference one.json --max-area 0.1 --rays 20000 -q -o ref1");
+    accepted(
+        "study one.json --reference ref1 --budgets 20,40 --oracles power,kl --seeds 2 -q -o st");
+    const nlohmann::json table = nlohmann::json::parse(read_file(dir() / "st" / "table.json"));
+    nlohmann::json huge = table, tiny = table;
+    for (std::size_t k = 0; k < table["cells"].size(); ++k) {
+        nlohmann::json& error = huge["cells"][k]["object_error"];
+        if (error.is_null()) continue;
+        error["relative_l2"] = k % 2 ? 1e308 : 1e307;
+        error["standard_error"] = 1e307;
+    }
+    const std::function<void(nlohmann::json&)> smallest = [&](nlohmann::json& j) {
+        if (j.is_number_float()) j = 5e-324;
+        if (!j.is_structured()) return;
+        for (auto& item : j) smallest(item);
+    };
+    for (auto& cell : tiny["cells"]) smallest(cell);
+    for (const nlohmann::json* t : {&huge, &tiny}) {
+        m_temp.write("st/table.json", t->dump());
+        std::filesystem::remove(dir() / "st" / "plots" / "error_vs_elements.png");
+        const CliRun plot = run_launched("env HMCR_PYTHON=/usr/bin/python3 ", "plot st", dir(), 60);
+        EXPECT_EQ(plot.exit_code, 0) << plot.err;
+        EXPECT_EQ(plot.err, "");
+        EXPECT_TRUE(std::filesystem::exists(dir() / "st" / "plots" / "error_vs_elements.png"));
+    }
 }
 
 // The plotting script, run by hand on plot data that names a figure by a path: it writes

@@ -152,6 +152,25 @@ TEST(MgfReader, ColoursBecomeRgbAtTheirLuminance) {
     EXPECT_TRUE(contains(read_error("c a =\n cxy 0.8 0.5\n"), "scene.mgf:2: cxy: needs"));
 }
 
+// A colour outside the RGB gamut is read and fitted: its warning says so, apart from the
+// statements hmcr ignores.
+TEST(MgfReader, AColourFitIsNotAmongTheIgnoredStatements) {
+    const PolygonSoup soup = read(std::string(kSquareVertices) +
+                                  "c green =\n cxy 0.1 0.8\n"  // far outside Rec. 709
+                                  "m a =\n c green\n rd 0.3\n ts 0.1 0\nf q0 q1 q2\n");
+    ASSERT_EQ(soup.warnings.size(), 2u);
+    EXPECT_TRUE(contains(soup.warnings[0],
+                         "scene.mgf: 1 colour moved toward the grey of its luminance to fit RGB "
+                         "(first at "))
+        << soup.warnings[0];
+    EXPECT_TRUE(contains(soup.warnings[0], "scene.mgf:13)")) << soup.warnings[0];
+    EXPECT_TRUE(contains(soup.warnings[1],
+                         "ignored (hmcr reads reflection rd and rs and emission "
+                         "ed): ts 1 time"))
+        << soup.warnings[1];
+    EXPECT_FALSE(contains(soup.warnings[1], "colour")) << soup.warnings[1];
+}
+
 TEST(MgfReader, SpectraBlackBodiesAndMixes) {
     // A flat spectrum is equal-energy grey (the fit of the matching functions: within 0.001).
     const auto flat = spectrum_chromaticity(380, 780, std::vector<double>(41, 7.0));

@@ -6,8 +6,13 @@
 // material.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <vector>
+
 #include "meshes/scene.h"
 #include "tests/meshes/scene_files.h"
+#include "tests/support/thin_walls.h"
 
 namespace hmcr::sides_test {
 namespace {
@@ -198,6 +203,79 @@ TEST(Sides, AThirdFaceOnTheSameCornersIsAnError) {
     EXPECT_EQ(ok.mesh.n_faces(), 2u);
     EXPECT_EQ(ok.repairs[RepairKind::duplicate_dropped].count, 1u);
     EXPECT_EQ(ok.repairs[RepairKind::sides_joined].count, 1u);
+}
+
+// The wall's faces (after the two lamps): each two-sided, paint (0.8) in front and tiles (0.3)
+// behind, and their area.
+double two_sided_wall_area(const MeshFile& file) {
+    const FaceMaterials m(file.mesh);
+    double area = 0;
+    for (auto f : file.mesh.faces()) {
+        if (f.idx() < 2) continue;
+        EXPECT_EQ(m[f].reflectance[0], 0.8) << "face " << f.idx();
+        EXPECT_NE(m.back_index(f), kOneSided) << "face " << f.idx();
+        if (m.back_index(f) == kOneSided) continue;
+        EXPECT_EQ(m.table()[m.back_index(f)].reflectance[0], 0.3) << "face " << f.idx();
+        std::vector<Eigen::Vector3d> p;
+        for (auto v : file.mesh.fv_range(f)) {
+            const auto& q = file.mesh.point(v);
+            p.emplace_back(q[0], q[1], q[2]);
+        }
+        for (std::size_t k = 1; k + 1 < p.size(); ++k)
+            area += 0.5 * (p[k] - p[0]).cross(p[k + 1] - p[0]).norm();
+    }
+    return area;
+}
+
+// A thin wall of N corners written as two faces facing away from each other is one surface
+// with two sides, whatever N and whichever corner each face starts from: the faces are
+// compared as polygons, before they are cut into triangles (each cut its own way, their
+// triangles would overlap without one matching). The same wall as a fan of quads agrees.
+TEST(Sides, AThinWallOfAnyCornerCountIsOneTwoSidedSurface) {
+    SceneFiles files;
+    for (int n = 5; n <= 9; ++n) {
+        for (int start : {0, 2, n - 1}) {
+            SCOPED_TRACE("corners " + std::to_string(n) + ", tiles from " + std::to_string(start));
+            files.write("wall.mgf", test::thin_wall_mgf(n, test::WallFaces::polygon, start));
+            files.write("quads.mgf", test::thin_wall_mgf(n, test::WallFaces::quads));
+            const MeshFile wall = load(files, "wall.mgf"), quads = load(files, "quads.mgf");
+            EXPECT_EQ(wall.mesh.n_faces(), 2u + std::size_t(n - 2));  // the wall's triangles
+            EXPECT_EQ(wall.repairs[RepairKind::sides_joined].count, 1u);
+            EXPECT_EQ(wall.repairs[RepairKind::triangulated].count, 1u);
+            EXPECT_EQ(quads.repairs[RepairKind::sides_joined].count, std::size_t(n - 1) / 2);
+            EXPECT_NEAR(two_sided_wall_area(wall), two_sided_wall_area(quads), 1e-12);
+        }
+    }
+}
+
+// The polygons are compared once their repeated and collinear corners are out; a copy of a
+// pentagon is dropped, and a third pentagon on its corners is an error, as for triangles.
+TEST(Sides, PolygonsAreComparedAsTheyAreCut) {
+    SceneFiles files;
+    const std::string wall = test::thin_wall_mgf(5, test::WallFaces::polygon);
+    const std::string paint = wall.substr(0, wall.find("m tile\n"));
+    const std::size_t tile_line = std::size_t(std::count(paint.begin(), paint.end(), '\n')) + 2;
+    // The tiles with a corner between w1 and w0 and w0 twice.
+    files.write("collinear.mgf",
+                paint + "v h =\n p 0.6545085 0.4755285 0\n" + "m tile\nf w2 w1 h w0 w0 w4 w3\n");
+    const MeshFile collinear = load(files, "collinear.mgf");
+    EXPECT_EQ(collinear.mesh.n_faces(), 2u + 3u);
+    EXPECT_EQ(collinear.repairs[RepairKind::sides_joined].count, 1u);
+    EXPECT_EQ(collinear.repairs[RepairKind::corners_removed].count, 1u);
+    two_sided_wall_area(collinear);
+
+    files.write("copy.mgf", wall + "m paint\nf w3 w4 w0 w1 w2\n");
+    const MeshFile copy = load(files, "copy.mgf");
+    EXPECT_EQ(copy.mesh.n_faces(), 2u + 3u);
+    EXPECT_EQ(copy.repairs[RepairKind::duplicate_dropped].count, 1u);
+    EXPECT_TRUE(contains(copy.repairs[RepairKind::sides_joined].first,
+                         "copy.mgf:" + std::to_string(tile_line)));
+
+    files.write("third.mgf", wall + "m lamp\nf w1 w2 w3 w4 w0\n");
+    EXPECT_TRUE(contains(scene_error([&] { load(files, "third.mgf"); }),
+                         "third.mgf:" + std::to_string(tile_line + 2) +
+                             ": a third face on the same vertices as the faces on lines " +
+                             std::to_string(tile_line - 2) + " and " + std::to_string(tile_line)));
 }
 
 TEST(Sides, TheRepairSummaryNamesTheNewKinds) {

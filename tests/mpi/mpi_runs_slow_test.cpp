@@ -106,6 +106,11 @@ TEST(MpiRuns, TheControlVariateIsTheSameBitsOnAnyRankCount) {
 
 // Clusters as leaves (docs/design.md §2.7): at this epsilon the Cornell box's 24 patches become
 // 17 leaves, 6 of them clusters; the ranks' open clusters are united like their subdivisions.
+TEST(MpiRuns, TheSobolSequenceIsTheSameBitsOnAnyRankCount) {
+    expect_same_solve_on_ranks("--oracle kl --refine-share 0.4 --sequence sobol --rays 300000",
+                               {1, 2, 3});
+}
+
 TEST(MpiRuns, ClusterLeavesAreTheSameBitsOnAnyRankCount) {
     expect_same_solve_on_ranks(
         "--oracle kl --clustering isotropic --epsilon 0.3 --refine-share 0.4 --rays 300000",

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -55,19 +56,20 @@ GeneratedRays generated(const Regions& r, std::uint64_t seed, std::uint64_t key,
     const AliasTable table(r.weights);
     GeneratedRays out;
     out.resize(n);
-    generate_rays(r.set.patches, r.regions, table, seed, key, 0, n, out, 0, RaySequence::random);
+    generate_rays(r.set.patches, r.regions, table, seed, key, 0, n, out, 0, RaySequence::random,
+                  nullptr);
     return out;
 }
 
 void expect_equal_to_reference(const Regions& r, const AliasTable& table, const char* target,
-                               RaySequence sequence) {
+                               RaySequence sequence, const RayStrata* strata) {
     GeneratedRays out;
     out.resize(kRays + 3);
     // An odd count at an offset: the last vector is partial.
-    generate_rays(r.set.patches, r.regions, table, 7, 11, 1000, kRays, out, 3, sequence);
+    generate_rays(r.set.patches, r.regions, table, 7, 11, 1000, kRays, out, 3, sequence, strata);
     for (std::size_t k = 0; k < kRays; ++k) {
         const RayStartSample s =
-            scalar_ray(r.set.patches, r.regions, table, 7, 11, 1000 + k, sequence);
+            scalar_ray(r.set.patches, r.regions, table, 7, 11, 1000 + k, sequence, strata);
         const std::size_t o = k + 3;
         ASSERT_EQ(out.region[o], s.region) << target << " ray " << k;
         ASSERT_EQ(out.u[o], float(s.uv.x())) << target << " ray " << k;
@@ -83,12 +85,15 @@ void expect_equal_to_reference(const Regions& r, const AliasTable& table, const 
 TEST(RayGenerator, EveryInstructionSetGivesTheReferenceBits) {
     const Regions r = test_regions();
     const AliasTable table(r.weights);
+    RayStrata strata;
+    strata.assign(r.weights, kRays, 0.375, 1000);
     const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
     ASSERT_FALSE(targets.empty());
     for (const std::int64_t target : targets) {
         hwy::SetSupportedTargetsForTest(target);
         for (const RaySequence sequence : {RaySequence::random, RaySequence::sobol}) {
-            expect_equal_to_reference(r, table, hwy::TargetName(target), sequence);
+            expect_equal_to_reference(r, table, hwy::TargetName(target), sequence,
+                                      sequence == RaySequence::sobol ? &strata : nullptr);
         }
     }
     hwy::SetSupportedTargetsForTest(0);

@@ -1,6 +1,7 @@
-// The scrambled Sobol draws (rays/sobol.h): a function of the ray's index alone, a (0, m, 2)-net
-// in their first two dimensions and stratified in each (the properties Owen's scramble keeps),
-// uniform over seeds, and independent of the batch that makes them.
+// The scrambled Sobol draws (rays/sobol.h): a function of the ray's index alone, each source's
+// rays a (0, m, 2)-net in the point's two dimensions and stratified in each of the four (the
+// properties Owen's scramble keeps), uniform over seeds, and independent of the batch that
+// makes them.
 #include "rays/sobol.h"
 
 #include <gtest/gtest.h>
@@ -8,39 +9,61 @@
 #include <cmath>
 #include <vector>
 
+#include "rays/ray_strata.h"
 #include "tests/support/statistics.h"
 
 namespace hmcr::test {
 namespace {
 
-std::vector<double> draws(std::uint64_t seed, std::uint64_t key, std::uint64_t first,
-                          std::size_t n) {
-    std::vector<double> out(kRayDraws * n);
-    sobol_draws(seed, key, first, n, out.data(), n);
-    return out;
+struct Draws {
+    std::vector<double> x;
+    std::vector<std::uint32_t> source;
+};
+
+Draws draws(std::uint64_t seed, std::uint64_t key, const RayStrata& strata, std::uint64_t first,
+            std::size_t n) {
+    Draws d{std::vector<double>(kRayDraws * n), std::vector<std::uint32_t>(n)};
+    sobol_draws(seed, key, strata, first, n, d.x.data(), n, d.source.data());
+    return d;
+}
+
+RayStrata one_source(std::uint64_t rays) {
+    RayStrata s;
+    s.assign(std::vector<double>{1.0}, rays, 0.5);
+    return s;
 }
 
 TEST(Sobol, ARaysDrawsDoNotDependOnItsBatch) {
-    const std::vector<double> whole = draws(3, 4, 0, 300);
-    for (std::uint64_t first : {0u, 1u, 127u, 255u}) {
-        const std::vector<double> part = draws(3, 4, first, 300 - first);
-        for (std::size_t d = 0; d < kRayDraws; ++d) {
-            for (std::size_t i = 0; i + first < 300; ++i) {
-                ASSERT_EQ(part[d * (300 - first) + i], whole[d * 300 + first + i])
+    RayStrata strata;
+    strata.assign(std::vector<double>{0.3, 0.1, 0, 0.6}, 300, 0.25);
+    const Draws whole = draws(3, 4, strata, 0, 300);
+    for (std::uint64_t first : {0u, 1u, 29u, 127u, 255u}) {
+        const Draws part = draws(3, 4, strata, first, 300 - first);
+        for (std::size_t i = 0; i + first < 300; ++i) {
+            ASSERT_EQ(part.source[i], whole.source[first + i]) << "ray " << first + i;
+            ASSERT_EQ(part.source[i], strata.source_of(first + i)) << "ray " << first + i;
+            for (std::size_t d = 0; d < kRayDraws; ++d) {
+                ASSERT_EQ(part.x[d * (300 - first) + i], whole.x[d * 300 + first + i])
                     << "draw " << d << " of ray " << first + i;
             }
         }
     }
 }
 
-// The first 2^m points: one in each interval of length 2^-m in every sequence dimension, and in
-// the first two dimensions one in each box 2^-a x 2^-(m - a).
-TEST(Sobol, TheFirstPowerOfTwoPointsAreStratified) {
+// A source's first 2^m rays, wherever they start among the iteration's: one in each interval
+// of length 2^-m in every sequence dimension, and in the point's two dimensions one in each box
+// 2^-a x 2^-(m - a).
+TEST(Sobol, ASourcesFirstPowerOfTwoPointsAreStratified) {
     constexpr int m = 10;
     constexpr std::size_t n = std::size_t(1) << m;
+    RayStrata strata;  // the second source gets exactly 2^m rays, from ray 333 on
+    strata.assign(std::vector<double>{333, double(n), 100}, 333 + n + 100, 0.5);
+    ASSERT_EQ(strata.first_ray(1), 333u);
+    ASSERT_EQ(strata.first_ray(2), 333u + n);
     for (std::uint64_t seed : {1u, 2u, 99u}) {
-        const std::vector<double> x = draws(seed, 7, 0, n);
-        for (std::size_t d = 0; d < kSequenceDimensions; ++d) {
+        const Draws all = draws(seed, 7, strata, 333, n);
+        const std::vector<double>& x = all.x;
+        for (std::size_t d = 1; d <= kSequenceDimensions; ++d) {
             std::vector<int> count(n);
             for (std::size_t i = 0; i < n; ++i) ++count[std::size_t(x[d * n + i] * double(n))];
             for (std::size_t k = 0; k < n; ++k) ASSERT_EQ(count[k], 1) << "dimension " << d;
@@ -48,8 +71,8 @@ TEST(Sobol, TheFirstPowerOfTwoPointsAreStratified) {
         for (int a = 0; a <= m; ++a) {
             std::vector<int> count(n);
             for (std::size_t i = 0; i < n; ++i) {
-                const auto u = std::size_t(std::ldexp(x[i], a));
-                const auto v = std::size_t(std::ldexp(x[n + i], m - a));
+                const auto u = std::size_t(std::ldexp(x[n + i], a));
+                const auto v = std::size_t(std::ldexp(x[2 * n + i], m - a));
                 ++count[(u << (m - a)) + v];
             }
             for (std::size_t k = 0; k < n; ++k) ASSERT_EQ(count[k], 1) << "box 2^-" << a;
@@ -61,10 +84,12 @@ TEST(Sobol, TheFirstPowerOfTwoPointsAreStratified) {
 // sqrt(1 / 12 / seeds), for every draw and for rays at both ends of a dyadic block.
 TEST(Sobol, EachDrawIsUniformOverSeeds) {
     constexpr int kSeeds = 4000;
+    const RayStrata strata = one_source(2048);
     for (std::uint64_t index : {0u, 1u, 1023u}) {
-        for (std::size_t d = 0; d < kRayDraws; ++d) {
+        for (std::size_t d = 1; d < kRayDraws; ++d) {
             double sum = 0;
-            for (int s = 0; s < kSeeds; ++s) sum += draws(std::uint64_t(s), 5, index, 1)[d];
+            for (int s = 0; s < kSeeds; ++s)
+                sum += draws(std::uint64_t(s), 5, strata, index, 1).x[d];
             EXPECT_TRUE(within_standard_errors("mean draw", sum / kSeeds, 0.5,
                                                std::sqrt(1.0 / 12 / kSeeds)))
                 << "draw " << d << " of ray " << index;

@@ -81,8 +81,8 @@ SamplingCell sampling_cell(const std::string& sampler, double spp, double rmse_p
     return c;
 }
 
-TEST(PlotData, SamplingBarsWithTheSplitAtOneSppAndErrorAgainstSppAtSeveral) {
-    const ErrorSplits splits = {{"uniform", {{"a", {3, 4}}, {"b", {0, 0}}}}};
+TEST(PlotData, SamplingBarsWithTheSplitOfEachSppAndErrorAgainstSppAtSeveral) {
+    const SppErrorSplits splits = {{16, {{"uniform", {{"a", {3, 4}}, {"b", {0, 0}}}}}}};
     const json one = sampling_plot_data(
         "box", {sampling_cell("uniform", 16, 1), sampling_cell("srhe", 16, 2)}, splits);
     ASSERT_EQ(one.at("figures").size(), 1u);
@@ -96,10 +96,36 @@ TEST(PlotData, SamplingBarsWithTheSplitAtOneSppAndErrorAgainstSppAtSeveral) {
     const json several = sampling_plot_data(
         "box", {sampling_cell("uniform", 16, 2), sampling_cell("uniform", 64, 1)}, splits);
     ASSERT_EQ(several.at("figures").size(), 2u);
-    EXPECT_EQ(panel(several, 0, 1).at("groups").size(), 1u);  // the split is of one spp
+    // Every panel has the bias and noise bars, of its own spp's seeds: 16 has a split, 64 none.
+    ASSERT_EQ(panel(several, 0, 0).at("groups").size(), 3u);
+    EXPECT_DOUBLE_EQ(
+        panel(several, 0, 0).at("groups").at(1).at("values").at(0).at("y").get<double>(),
+        std::sqrt(4.5));
+    ASSERT_EQ(panel(several, 0, 1).at("groups").size(), 3u);
+    EXPECT_TRUE(panel(several, 0, 1).at("groups").at(2).at("values").at(0).at("y").is_null());
     const json& lines = panel(several, 1, 0);
     EXPECT_EQ(several.at("figures").at(1).at("name"), "error_vs_spp");
     EXPECT_DOUBLE_EQ(lines.at("series").at(0).at("points").at(1).at("x").get<double>(), 65);
+}
+
+// A table.json of several spp values holds its splits by spp first: each panel gets its own.
+TEST(PlotData, ASamplingTableOfSeveralSppGivesEachPanelItsSplit) {
+    TempDir dir;
+    json cells = json::array();
+    for (double spp : {16.0, 64.0})
+        cells.push_back(sampling_cell_to_json(sampling_cell("srhe", spp, 1)));
+    const json split = {{"bias_rmse_p", 3}, {"noise_rmse_p", 4}};
+    const json table = {{"scene", "box"},
+                        {"options", {{"samplers", {"srhe"}}, {"spp", {16, 64}}}},
+                        {"error_split", {{"64", {{"srhe", {{"a", split}}}}}}},
+                        {"cells", cells}};
+    const json data = plot_data_of_table(dir.write("table.json", table.dump()));
+    const json& at16 = panel(data, 0, 0).at("groups");
+    const json& at64 = panel(data, 0, 1).at("groups");
+    ASSERT_EQ(at64.size(), 3u);
+    EXPECT_DOUBLE_EQ(at64.at(1).at("values").at(0).at("y").get<double>(), 3);  // bias
+    EXPECT_DOUBLE_EQ(at64.at(2).at("values").at(0).at("y").get<double>(), 4);  // noise
+    EXPECT_TRUE(at16.at(1).at("values").at(0).at("y").is_null());
 }
 
 TEST(PlotData, TableOfNoStudyUnknownOracleOrTooManyBudgetsIsRefused) {

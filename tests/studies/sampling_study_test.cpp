@@ -87,8 +87,10 @@ TEST(SamplingStudy, WritesEveryFileAndResumes) {
     const auto before = nlohmann::json::parse(read_file(o.output / "cells" / (cell + ".json")));
     EXPECT_NEAR(before["views"]["camera"]["spp"].get<double>(), 12, 0.24);
     EXPECT_GT(before["views"]["camera"]["errors"]["rmse_a"].get<double>(), 0);
-    // Figures: reference + 3 samplers, 4 to a row at full size (tiles under 128 pixels).
-    EXPECT_EQ(read_png(o.output / "figures" / "camera-images.png").width, 4 * 12 + 3 * 2);
+    // Figures: reference + 3 samplers, 4 to a row at full size (tiles under 128 pixels), each
+    // column as wide as the widest label, "reference": 9 glyphs of 6 pixels less one, and one
+    // pixel each side.
+    EXPECT_EQ(read_png(o.output / "figures" / "camera-images.png").width, 4 * 55 + 3 * 2);
 
     fs::remove(o.output / "cells" / (cell + ".json"));
     Counting counting;

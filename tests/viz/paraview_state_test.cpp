@@ -38,7 +38,8 @@ std::vector<std::string> values(vtkXMLDataElement* p, const std::string& name) {
     std::vector<std::string> out;
     for (int i = 0; p && i < p->GetNumberOfNestedElements(); ++i) {
         vtkXMLDataElement* prop = p->GetNestedElement(i);
-        if (name != prop->GetAttribute("name")) continue;
+        const char* attribute = prop->GetAttribute("name");  // a layout's <Layout> has none
+        if (attribute == nullptr || name != attribute) continue;
         for (int k = 0; k < prop->GetNumberOfNestedElements(); ++k) {
             const char* v = prop->GetNestedElement(k)->GetAttribute("value");
             out.push_back(v ? v : "");
@@ -83,6 +84,54 @@ TEST(ParaviewState, SolveWritesAStateThatShowsTheRadiosity) {
     EXPECT_EQ(numbers(view, "CameraFocalPoint"), (std::vector<double>{0.5, 0.5, 0.5}));
     EXPECT_EQ(numbers(view, "CameraViewUp"), (std::vector<double>{0, 1, 0}));
     EXPECT_EQ(values(view, "UseLight"), std::vector<std::string>{"0"});
+}
+
+// ParaView's window gives the view its own size, whatever ViewSize says; the layout's preview
+// mode holds it at the scene view's image size, so that it frames what `hmcr render` draws.
+TEST(ParaviewState, TheLayoutHoldsTheViewAtItsImageSize) {
+    View view;
+    view.width = 384;
+    view.height = 288;
+    const auto root = parse(paraview_state("/x.vtp", view));
+    ASSERT_TRUE(root);
+    EXPECT_EQ(numbers(proxy(root, "ViewLayout"), "PreviewMode"), (std::vector<double>{384, 288}));
+    EXPECT_EQ(numbers(proxy(root, "RenderView"), "ViewSize"), (std::vector<double>{384, 288}));
+}
+
+// A study's meshes: one source each, named, coloured alike, the first alone shown.
+TEST(ParaviewState, SeveralSourcesAreNamedAndTheFirstAloneShown) {
+    View view;
+    const auto root = parse(paraview_state(
+        {{"/s/meshes/a.vtp", "a.vtp", true}, {"/s/meshes/b.vtp", "b.vtp", false}}, view, true));
+    ASSERT_TRUE(root);
+    vtkXMLDataElement* state = root->FindNestedElementWithName("ServerManagerState");
+    std::vector<std::string> files, visible, colours, culled;
+    for (int i = 0; i < state->GetNumberOfNestedElements(); ++i) {
+        vtkXMLDataElement* e = state->GetNestedElement(i);
+        const std::string type = e->GetAttribute("type") ? e->GetAttribute("type") : "";
+        if (type == "XMLPolyDataReader") files.push_back(values(e, "FileName").at(0));
+        if (type == "GeometryRepresentation") {
+            visible.push_back(values(e, "Visibility").at(0));
+            colours.push_back(values(e, "ColorArrayName").at(4));
+            culled.push_back(values(e, "BackfaceRepresentation").at(0));
+        }
+    }
+    EXPECT_EQ(files, (std::vector<std::string>{"/s/meshes/a.vtp", "/s/meshes/b.vtp"}));
+    EXPECT_EQ(visible, (std::vector<std::string>{"1", "0"}));
+    EXPECT_EQ(colours, (std::vector<std::string>{"RadiosityColor", "RadiosityColor"}));
+    EXPECT_EQ(culled, (std::vector<std::string>{"401", "401"}));
+    vtkXMLDataElement* shown =
+        proxy(root, "RenderView")
+            ->FindNestedElementWithNameAndAttribute("Property", "name", "Representations");
+    ASSERT_TRUE(shown);
+    EXPECT_EQ(shown->GetNumberOfNestedElements(), 2);
+    const std::string xml =
+        paraview_state({{"/x/a.vtp", "a.vtp", true}, {"/x/b.vtp", "b.vtp", false}}, view, false);
+    EXPECT_NE(
+        xml.find(
+            R"(<ProxyCollection name="sources"><Item id="10" name="a.vtp"/><Item id="12" name="b.vtp"/></ProxyCollection>)"),
+        std::string::npos)
+        << xml;
 }
 
 TEST(ParaviewState, FileNamesAreEscaped) {

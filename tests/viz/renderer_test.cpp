@@ -72,6 +72,26 @@ TEST(Renderer, LinearFieldGivesItsValuesAtPixelCentres) {
     }
 }
 
+// The square's two cells seen from above: a pixel is inked where its right or lower neighbour
+// shows another cell or the background; the rest of the image is left as it was.
+TEST(Renderer, CellEdgesAreDrawnWhereNeighbouringPixelsSeeAnotherCell) {
+    const View v = square_view();
+    Image8 grey(v.width, v.height);
+    for (Srgb8& p : grey.pixels) p = {100, 100, 100};
+    const Image8 edges =
+        draw_cell_edges(ShadedTracer(unit_square(constant_field)), v, grey, {255, 0, 0});
+    for (int y = 0; y < v.height; ++y)
+        for (int x = 0; x < v.width; ++x) {
+            const bool column = (x == 5 || x == 7 || x == 9) && y >= 2 && y <= 5;
+            const bool row = (y == 1 || y == 5) && x >= 6 && x <= 9;
+            EXPECT_EQ(edges.at(x, y), (column || row ? Srgb8{255, 0, 0} : Srgb8{100, 100, 100}))
+                << x << "," << y;
+        }
+    EXPECT_THROW(
+        draw_cell_edges(ShadedTracer(unit_square(constant_field)), v, Image8(4, 4), {255, 0, 0}),
+        std::invalid_argument);
+}
+
 TEST(Renderer, EightBitPixelsAreExposedSrgbQuantised) {
     const double exposure = 1.5;
     const Image8 im = quantise(render(unit_square(linear_field), square_view()), exposure);

@@ -1,0 +1,33 @@
+// The rays of an iteration dealt to its sources in proportion to their weights, by systematic
+// sampling (docs/design.md §3.1): with N rays, cumulative weights W_l and total S, source l
+// shoots the rays [floor(N W_l / S + o), floor(N W_(l+1) / S + o)) for one uniform offset o.
+// Each source gets N w_l / S rays in expectation, as with an alias pick a ray, but the counts
+// vary by at most one, and a source's rays are consecutive: one region's rays start together.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace hmcr {
+
+class RayStrata {
+public:
+    // The rays first .. first + rays - 1 over `weights` (not all zero, none negative), shifted
+    // by `offset` in [0, 1).
+    void assign(std::span<const double> weights, std::uint64_t rays, double offset,
+                std::uint64_t first = 0);
+
+    // The source that shoots ray `ray` (one of the rays assigned).
+    std::uint32_t source_of(std::uint64_t ray) const;
+    // The first ray of `source`: ray r is its (r - first_ray(source))th.
+    std::uint64_t first_ray(std::uint32_t source) const { return m_start[source]; }
+    std::size_t sources() const { return m_start.empty() ? 0 : m_start.size() - 1; }
+    std::uint64_t first() const { return m_first; }
+
+private:
+    std::vector<std::uint64_t> m_start;  // one a source, and the end of the rays last
+    std::uint64_t m_first = 0;
+};
+
+}  // namespace hmcr

@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""Noise per CPU second of hmcr's sequences on a fixed mesh (docs/performance.md, "The Sobol
+sequence").
+
+Solves a scene on its patches alone (`--max-depth 0`: no element is split, so every solve has
+the same leaves) with each sequence over several seeds, one thread, and a converged solve of the
+same leaves with `--converged-rays`. Prints, per sequence, the per-patch relative RMS deviation
+from the converged solve (over the lit patches and the three channels), the median CPU seconds
+of one solve (the whole process: user + system), and the efficiency 1 / (deviation^2 x seconds)
+relative to the first sequence's.
+
+Needs VTK's Python module (Debian's python3-vtk9).  Usage:
+    scripts/fixed_mesh_noise.py --hmcr build/hmcr [--scene cornell] [--rays 2.684e6] \\
+        [--seeds 8] [--sequences random,sobol] [--converged-rays 2.684e8] [--work DIR]
+"""
+
+import argparse
+import math
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+import numpy
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def radiosity(path):
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return vtk_to_numpy(reader.GetOutput().GetCellData().GetArray("ElementRadiosity")).astype(float)
+
+
+def solve(args, out, seed, sequence, rays):
+    """Solves once; returns the process's CPU seconds."""
+    command = [args.hmcr, "solve", args.scene, "--max-depth", "0", "--threads", "1", "--seed",
+               str(seed), "--sequence", sequence, "--rays", str(rays), "-q", "-o", out]
+    process = subprocess.Popen(command)
+    _, status, usage = os.wait4(process.pid, 0)
+    if status != 0:
+        sys.exit(f"fixed_mesh_noise.py: {' '.join(command)} failed")
+    return usage.ru_utime + usage.ru_stime
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--hmcr", required=True)
+    parser.add_argument("--scene", default="cornell")
+    parser.add_argument("--rays", default="2.684e6")
+    parser.add_argument("--seeds", type=int, default=8)
+    parser.add_argument("--sequences", default="random,sobol")
+    parser.add_argument("--converged-rays", default="2.684e8")
+    parser.add_argument("--work", help="keep the solutions here (default: a temporary folder)")
+    args = parser.parse_args()
+    work = args.work or tempfile.mkdtemp(prefix="hmcr-noise-")
+    converged_path = os.path.join(work, "converged.vtp")
+    if not os.path.exists(converged_path):
+        solve(args, converged_path, 1000, "sobol", args.converged_rays)
+    converged = radiosity(converged_path)
+    lit = converged > 0
+    rows = []
+    for sequence in args.sequences.split(","):
+        squares, seconds = [], []
+        for seed in range(1, args.seeds + 1):
+            path = os.path.join(work, f"{sequence}-{seed}.vtp")
+            seconds.append(solve(args, path, seed, sequence, args.rays))
+            relative = (radiosity(path) - converged)[lit] / converged[lit]
+            squares.append(float(numpy.mean(relative**2)))
+        rms = math.sqrt(statistics.fmean(squares))
+        rows.append((sequence, rms, statistics.median(seconds)))
+    print(f"{args.scene}, {int(lit.sum())} lit patch channels, {args.rays} rays, {args.seeds} seeds, "
+          f"converged at {args.converged_rays}")
+    print("| sequence | per-patch RMS deviation | CPU s | efficiency |")
+    print("|:--|--:|--:|--:|")
+    base = 1 / (rows[0][1] ** 2 * rows[0][2])
+    for sequence, rms, cpu in rows:
+        print(f"| `{sequence}` | {100 * rms:.3f}% | {cpu:.2f} | {1 / (rms**2 * cpu) / base:.1f}× |")
+
+
+if __name__ == "__main__":
+    main()
