@@ -9,7 +9,7 @@ SANITIZE ?= OFF
 DEPS := g++ cmake make libpng-dev libembree-dev libopenmesh-dev libvtk9-dev libeigen3-dev \
         libhwy-dev libtbb-dev libexpat1-dev libcli11-dev nlohmann-json3-dev libfmt-dev \
         libopenmpi-dev openmpi-bin libgtest-dev libboost-dev zlib1g-dev clang libclang-rt-14-dev \
-        clang-format python3 python3-matplotlib
+        clang-format python3 python3-matplotlib xvfb xauth
 
 SANITIZE_BUILD ?= build-sanitize
 PREFIX ?= /usr/local
@@ -27,12 +27,12 @@ deps:
 	  apt-get update -qq && apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
 
-# What looking at results takes, not the build: ParaView, and Xvfb to run it and
-# scripts/render_vtp.py without a display. Without recommended packages: paraview recommends
+# What looking at results takes, not the build: ParaView, and Xvfb (with the xauth that xvfb-run
+# needs) to run it without a display. Without recommended packages: paraview recommends
 # python3-paraview, which conflicts with the python3-vtk9 of libvtk9-dev, and apt would remove
 # both (and break the build) to install it. Installs nothing where apt would still remove a
 # package.
-VIEW_DEPS := paraview xvfb
+VIEW_DEPS := paraview xvfb xauth
 view-deps:
 	@missing=$$(for p in $(VIEW_DEPS); do dpkg -s $$p >/dev/null 2>&1 || echo $$p; done); \
 	if [ -n "$$missing" ]; then \

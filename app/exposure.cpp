@@ -50,4 +50,17 @@ double image_exposure(double fixed, const Image& image) {
     return fixed > 0 ? fixed : exposure_from(image);
 }
 
+void warn_if_black(const Image& image, double exposure, const std::string& png,
+                   const std::string& scene, const std::string& view, bool quiet) {
+    if (quiet) return;
+    const Image8 bytes = quantise(image, exposure);
+    for (const Srgb8& p : bytes.pixels) {
+        if (p[0] > 0 || p[1] > 0 || p[2] > 0) return;
+    }
+    fmt::print(stderr,
+               "hmcr: warning: {} is black: view {} sees no lit surface (`hmcr info --bounds {}` "
+               "prints the scene's bounding box, up axis and views)\n",
+               png, quote(view), scene);
+}
+
 }  // namespace hmcr

@@ -38,4 +38,10 @@ double fixed_exposure(const ExposureChoice& choice, const std::string& view);
 // `fixed` when positive, else exposure_from(image).
 double image_exposure(double fixed, const Image& image);
 
+// One warning line, unless quiet, when every pixel of the image at this exposure is black (0 in
+// all 8 bits): the view sees no lit surface (or the exposure hides it). `png` is the image's
+// file, `scene` the scene as the user named it, for the `hmcr info --bounds` to run.
+void warn_if_black(const Image& image, double exposure, const std::string& png,
+                   const std::string& scene, const std::string& view, bool quiet);
+
 }  // namespace hmcr

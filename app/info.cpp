@@ -1,4 +1,5 @@
-// `hmcr info SCENE|SOLUTION.vtp`: the information measures of a discretisation (docs/design.md §7).
+// `hmcr info SCENE|SOLUTION.vtp`: the information measures of a discretisation (docs/design.md §7);
+// `hmcr info --bounds SCENE`: what a view needs, the scene's bounding box, up axis and emitters.
 #include <fmt/core.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "information/back_sides.h"
 #include "information/scene_information.h"
 #include "meshes/scene.h"
+#include "meshes/scene_bounds.h"
 #include "viz/solution_file.h"
 
 namespace hmcr {
@@ -27,6 +29,7 @@ struct InfoArgs {
     std::uint64_t lines = 1'000'000;
     std::uint64_t seed = 1;
     bool json = false;
+    bool bounds = false;  // print the scene's bounds instead of measuring it
     SceneFlags scene_flags;
 };
 
@@ -127,7 +130,74 @@ InformationMeasures measure(const InfoTarget& target, const LineOptions& o) {
     return scene_information(target.states, o, progress);
 }
 
+std::string point_text(const Eigen::Vector3d& p) {
+    return fmt::format("({:.4g}, {:.4g}, {:.4g})", p.x(), p.y(), p.z());
+}
+
+nlohmann::json point_json(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
+
+std::string view_text(const View& v) {
+    return fmt::format("{}: from {} towards {}, up {}, {:g} degrees, {} x {}", v.name,
+                       point_text(v.position), point_text(v.look_at), point_text(v.up),
+                       v.fov_degrees, v.width, v.height);
+}
+
+nlohmann::json view_json(const View& v) {
+    return {{"name", v.name},
+            {"position", point_json(v.position)},
+            {"look_at", point_json(v.look_at)},
+            {"up", point_json(v.up)},
+            {"fov", v.fov_degrees},
+            {"width", v.width},
+            {"height", v.height}};
+}
+
+// The scene's bounding box, up axis guess, patches, emitters and views: what writing a view takes.
+int run_bounds(const InfoArgs& a) {
+    if (fs::path(a.scene).extension() == ".vtp") {
+        throw InputError("--bounds takes a scene, not a solution: " + quote(a.scene));
+    }
+    const Scene scene = load_scene_reporting(a.scene, false, SceneUse::geometry, a.scene_flags);
+    const SceneBounds b = scene_bounds(scene.mesh);
+    const bool own_views = !scene.default_views;
+    if (a.json) {
+        nlohmann::json views = nlohmann::json::array();
+        for (const View& v : scene.views) views.push_back(view_json(v));
+        const nlohmann::json j = {{"scene", scene.name},
+                                  {"lo", point_json(b.lo)},
+                                  {"hi", point_json(b.hi)},
+                                  {"up", axis_name(b.up)},
+                                  {"up_reason", b.up_reason},
+                                  {"patches", b.patches},
+                                  {"two_sided", b.two_sided},
+                                  {"emitters", b.emitters},
+                                  {"emitting_area", b.emitting_area},
+                                  {"emitted_power", point_json(b.emitted_power)},
+                                  {"views", views},
+                                  {"default_view", !own_views}};
+        fmt::print("{}\n", j.dump(2));
+        return 0;
+    }
+    const Eigen::Vector3d size = b.hi - b.lo;
+    fmt::print("{}: bounding box {} to {}, {:.4g} x {:.4g} x {:.4g} m\n", scene.name,
+               point_text(b.lo), point_text(b.hi), size.x(), size.y(), size.z());
+    fmt::print("up: {} ({})\n", axis_name(b.up), b.up_reason);
+    fmt::print("patches: {} ({} two-sided)\n", b.patches, b.two_sided);
+    fmt::print("emitters: {} patches, {:.4g} m^2, power {} W\n", b.emitters, b.emitting_area,
+               point_text(b.emitted_power));
+    if (!own_views) {
+        fmt::print("views: none of its own; the default view, {} the scene:\n  {}\n",
+                   default_view(scene.mesh, b).inside ? "inside" : "outside",
+                   view_text(scene.views[0]));
+        return 0;
+    }
+    fmt::print("views:\n");
+    for (const View& v : scene.views) fmt::print("  {}\n", view_text(v));
+    return 0;
+}
+
 int run_info(const InfoArgs& a) {
+    if (a.bounds) return run_bounds(a);
     LineOptions o;
     o.method = parse_line_method(a.method);
     o.lines = a.lines;
@@ -169,6 +239,9 @@ Command info_command(CLI::App& app) {
     cmd->add_option("--seed", a->seed, "random seed")
         ->transform(count_notation())
         ->capture_default_str();
+    cmd->add_flag("--bounds", a->bounds,
+                  "print the scene's bounding box, up axis guess, patches, emitters and views "
+                  "instead (what writing a view takes)");
     cmd->add_flag("--json", a->json, "machine-readable output");
     return {cmd, [a] { return run_info(*a); }};
 }

@@ -53,9 +53,11 @@ int run_render(const RenderArgs& a) {
     const double exposure = fixed_exposure(a.exposure, view.name);
     const ShadedMesh mesh = read_solution(a.solution, scene).mesh;
     const Image image = render(mesh, view, a.options);
-    write_png(out.temp(a.output), image, image_exposure(exposure, image));
+    const double e = image_exposure(exposure, image);
+    write_png(out.temp(a.output), image, e);
     if (!a.pfm.empty()) write_pfm(out.temp(a.pfm), image);
     out.commit();
+    warn_if_black(image, e, a.output, a.scene, view.name, a.quiet);
     return 0;
 }
 

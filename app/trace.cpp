@@ -122,6 +122,7 @@ int run_trace(TraceArgs& a, const std::string& command_line) {
     write_text_atomically(out.temp(beside(png, "", ".json")),
                           summary(a, scene, view, r, exposure, command_line).dump(2) + "\n");
     out.commit();
+    warn_if_black(r.image, exposure, png.string(), a.scene, view.name, a.quiet);
     if (!a.quiet) {
         fmt::print("{} {}: {} at {:.2f} samples per pixel, {} rays, {:.1f} s -> {}\n", scene.name,
                    view.name, a.options.sampler->name(), r.counts().mean, r.rays_traced, r.seconds,

@@ -90,6 +90,7 @@ struct Scene {
     int curve_segments = kDefaultCurveSegments;  // MGF tessellation used
     PatchMesh mesh;                              // validated, with the hmcr:* face properties
     std::vector<View> views;
+    bool default_views = false;  // views is the "default" view alone: the scene has none of its own
     nlohmann::json solver_defaults = nlohmann::json::object();  // "solver" object of the file
 };
 

@@ -25,15 +25,13 @@
 //                                         mesh too large for git (named when it is missing)
 //   }
 // A scene without views (a bare .obj, or a JSON file without "views") gets one view named
-// "default": 40 degrees, 512x512, on the +z side of the bounding box looking along -z, far
-// enough for the bounding sphere to fit the vertical field of view.
+// "default", inside its room where it has one (meshes/scene_bounds.h).
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <numbers>
 #include <set>
 
 #include "common/data_directory.h"
@@ -44,6 +42,7 @@
 #include "meshes/obj_reader.h"
 #include "meshes/repairs.h"
 #include "meshes/scene.h"
+#include "meshes/scene_bounds.h"
 #include "meshes/validation.h"
 
 namespace hmcr {
@@ -162,25 +161,6 @@ Material parse_default_material(const json& j, const std::string& file, bool str
     return m;
 }
 
-// One view of the whole scene; see the file's opening comment.
-View default_view(const PatchMesh& mesh) {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY);
-    Eigen::Vector3d hi = -lo;
-    for (const auto vh : mesh.vertices()) {
-        const auto& p = mesh.point(vh);
-        const Eigen::Vector3d q(p[0], p[1], p[2]);
-        lo = lo.cwiseMin(q);
-        hi = hi.cwiseMax(q);
-    }
-    View v;
-    v.name = "default";
-    const double radius = std::max(0.5 * (hi - lo).norm(), 1e-3);
-    const double half_fov = 0.5 * v.fov_degrees * std::numbers::pi / 180;
-    v.look_at = 0.5 * (lo + hi);
-    v.position = v.look_at + Eigen::Vector3d(0, 0, radius / std::sin(half_fov));
-    return v;
-}
-
 bool is_mesh_extension(const fs::path& path) {
     return path.extension() == ".obj" || path.extension() == ".mgf";
 }
@@ -259,7 +239,10 @@ Scene load_json_scene(const fs::path& path, const std::string& name, LoadOptions
             parse_default_material(j["default_material"], file, options.strict);
     }
     take_mesh(scene, scene.mesh_path, options);
-    if (scene.views.empty()) scene.views.push_back(default_view(scene.mesh));
+    if (scene.views.empty()) {
+        scene.views.push_back(default_view(scene.mesh));
+        scene.default_views = true;
+    }
     return scene;
 }
 
@@ -272,6 +255,7 @@ Scene load_mesh_scene(const fs::path& path, LoadOptions options) {
     options.default_material.reset();
     take_mesh(scene, scene.mesh_path, options);
     scene.views.push_back(default_view(scene.mesh));
+    scene.default_views = true;
     return scene;
 }
 

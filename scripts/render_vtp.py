@@ -8,7 +8,11 @@ colour table) with Gouraud interpolation and lighting off, as in ParaView with "
 unchecked and the light kit off: what you see is the radiosity. --edges draws the element
 boundaries (the mesh the oracle made). --clusters colours a clustered solution's cells by their
 ClusterId instead: each cluster leaf one colour, its faces shaded by their radiosity, and the
-cells outside cluster leaves grey by theirs. Needs Debian's python3-vtk9 (`/usr/bin/python3`).
+cells outside cluster leaves grey by theirs. A solution with two-sided patches (its cells have a
+Side array) is drawn with back faces culled, as its .pvsm has ParaView draw it: a patch's two
+sides are coincident polygons facing away from each other, and each viewer sees the one that
+faces it (unculled, the two fight in the depth buffer and the dark side shows through). Needs
+Debian's python3-vtk9 (`/usr/bin/python3`).
 """
 import colorsys
 import json
@@ -85,6 +89,8 @@ def main(argv):
     prop.SetAmbient(1.0)
     prop.SetDiffuse(0.0)
     prop.SetSpecular(0.0)
+    if reader.GetOutput().GetCellData().GetArray("Side") is not None:
+        prop.BackfaceCullingOn()
     if "--edges" in argv:
         prop.EdgeVisibilityOn()
         prop.SetEdgeColor(0.1, 0.1, 0.1)
