@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "common/types.h"
+
 namespace hmcr {
 
 std::optional<std::uint64_t> parse_count(const std::string& text) {
@@ -43,7 +45,8 @@ const CLI::Validator& finite_number() {
             char* end = nullptr;
             const double v = std::strtod(text.c_str(), &end);
             if (end == text.c_str() || *end != '\0') return "'" + text + "' is not a number";
-            return std::isfinite(v) ? std::string() : "'" + text + "' is not a finite number";
+            if (!std::isfinite(v)) return "'" + text + "' is not a finite number";
+            return is_subnormal(v) ? "'" + text + "' " + kSubnormalReason : std::string();
         },
         "");
     return validator;

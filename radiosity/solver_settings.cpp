@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "common/memory.h"
+#include "common/types.h"
 #include "radiosity/element.h"
 
 namespace hmcr {
@@ -78,6 +79,13 @@ T json_value([[maybe_unused]] const Setting<T>& s, const json& j) {
 
 template <class T>
 void check(const Setting<T>& s, const T& value) {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (is_subnormal(value)) {
+            std::string name(s.name);
+            std::replace(name.begin(), name.end(), '_', '-');
+            throw InputError(fmt::format("{}: {} {}", name, value, kSubnormalReason));
+        }
+    }
     if (!s.valid(value)) refuse(s.name, s.range, shown(value));
 }
 

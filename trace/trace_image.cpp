@@ -51,6 +51,12 @@ void validate(const TraceOptions& o, const Criterion& c) {
     if (!std::isnan(o.threshold) && !(o.threshold > 0)) {
         throw InputError("threshold must be positive");
     }
+    if (!std::isnan(o.threshold) && c.scheme() != Scheme::uniform &&
+        o.allocation == Allocation::map) {
+        throw InputError(
+            "threshold is for --allocation refine: map spends --spp by the criterion's map of "
+            "its first samples, with no threshold");
+    }
     if (c.scheme() == Scheme::uniform) {
         if (!(o.spp >= 1 && o.spp <= kMostSamplesPerPixel && o.spp == std::floor(o.spp))) {
             throw InputError(

@@ -66,6 +66,25 @@ TEST_F(Hostile, EveryRealOptionRefusesValuesThatAreNotFinite) {
     EXPECT_GE(options, 20u);  // the help's FLOAT options were found
 }
 
+// A subnormal number (4.9e-324 is read as 5e-324, the smallest) is what the ray tracing threads
+// flush to 0, and a range check took it for 0: "must be in (0, 1], got 5e-324". Refused as what
+// it is, on the command line and in a scene file; the smallest normal number is a value.
+TEST_F(Hostile, SubnormalNumbersAreRefusedAsSuch) {
+    plates();
+    const std::string reason =
+        " is a subnormal number, which hmcr's ray tracing computes as 0 (the smallest normal "
+        "number is 2.2e-308)";
+    for (const char* option : {"--refine-share", "--epsilon", "--stop", "--min-area"}) {
+        refused(std::string("solve plates.json -o x.vtp ") + option + " 4.9e-324",
+                std::string(option) + ": '4.9e-324'" + reason);
+    }
+    refused("trace plates.json -o x.png --sampler kl --threshold 1e-310",
+            "--threshold: '1e-310'" + reason);
+    m_temp.write("sub.json", with(kPlatesJson, "{", R"({"solver": {"stop": 4.9e-324}, )"));
+    refused("solve sub.json -o x.vtp", "sub.json: solver.stop: stop: 5e-324" + reason);
+    accepted("solve plates.json -o x.vtp -q --rays 1000 --refine-share 2.3e-308");
+}
+
 TEST_F(Hostile, TheElementLimitStopsAGrowingHierarchy) {
     plates();
     refused(

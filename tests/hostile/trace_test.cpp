@@ -21,6 +21,8 @@ TEST_F(Hostile, TraceOptionsAreChecked) {
         {"--sampler entropy --spp 2000", "spp must be in 4..1024 for sampler entropy"},
         {"--sampler nope", "unknown sampler 'nope' (valid: uniform, cc, var"},
         {"--sampler kl --threshold -1", "threshold must be positive"},
+        {"--sampler kl --allocation map --threshold 0.01",
+         "threshold is for --allocation refine: map spends --spp by the criterion's map"},
         {"--sampler kl --spp-tolerance 0", "spp-tolerance must be in (0, 1)"},
         {"--sampler entropy --tree-depth 13", "tree-depth must be in 1..12"},
         {"--estimator fast", "estimator must be mis, nee or bsdf"},
