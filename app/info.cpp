@@ -5,6 +5,8 @@
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <utility>
 
 #include "app/command.h"
 #include "app/count.h"
@@ -34,13 +36,31 @@ struct InfoArgs {
 };
 
 // The discretisation `hmcr info` measures: a scene's patches, or a solution file's cells, by
-// side. The cells are the solution's leaves, but for a cluster (a leaf of several cells, all of
-// its radiosity), whose cells are measured each apart.
+// side. The cells are the solution's leaves but for its clusters (a leaf of several cells, which
+// share its radiosity), whose cells are measured each apart.
 struct InfoTarget {
     std::string label;
     ChannelStates states;
-    const char* noun = "patches";  // what a state is: patches, or a solution's cells
+    const char* noun = "patches";  // what a state is: patches, or a solution's leaves or cells
+    std::size_t leaves = 0;        // of a clustered solution: its leaves, clusters among them
+    std::size_t clusters = 0;
 };
+
+// A solution's leaves: each cell side outside the clusters, and each cluster (a leaf of several
+// cells, which share its radiosity); and how many are clusters.
+std::pair<std::size_t, std::size_t> leaves_and_clusters(const ShadedMesh& mesh) {
+    std::set<std::int32_t> clusters;
+    std::size_t unclustered = 0;
+    for (const std::int32_t id : mesh.cluster_id) {
+        if (id < 0) {
+            ++unclustered;
+        } else {
+            clusters.insert(id);
+        }
+    }
+    if (mesh.cluster_id.empty()) unclustered = mesh.cell_count();
+    return {unclustered + clusters.size(), clusters.size()};
+}
 
 InfoTarget info_target(const InfoArgs& a) {
     if (fs::path(a.scene).extension() != ".vtp") {
@@ -53,9 +73,16 @@ InfoTarget info_target(const InfoArgs& a) {
             ? read_solution(a.scene)
             : read_solution(a.scene, load_scene_reporting(a.solution_scene, false,
                                                           SceneUse::geometry, a.scene_flags));
-    return {solution.meta.scene + " (cells of " + fs::path(a.scene).filename().string() +
-                ": its leaves, a cluster's cells each apart)",
-            leaf_states(solution.mesh), "cells"};
+    const std::string file = fs::path(a.scene).filename().string();
+    const auto [leaves, clusters] = leaves_and_clusters(solution.mesh);
+    if (clusters == 0) {
+        return {solution.meta.scene + " (leaves of " + file + ")", leaf_states(solution.mesh),
+                "leaves"};
+    }
+    return {fmt::format("{} (cells of {}, not its {} leaves: {} of them clusters, whose cells are "
+                        "measured each apart)",
+                        solution.meta.scene, file, leaves, clusters),
+            leaf_states(solution.mesh), "cells", leaves, clusters};
 }
 
 // "N patches" (or cells), and with backs "N patches and M backs (S sides)": the channel's
@@ -91,6 +118,10 @@ void print_json(const InfoTarget& t, const InformationMeasures& m, double open, 
     j["scene"] = t.label;
     j["patches"] = t.states.fronts();  // the front states, patches or cells
     j["states"] = t.noun;
+    if (t.clusters > 0) {
+        j["leaves"] = t.leaves;
+        j["clusters"] = t.clusters;
+    }
     if (t.states.backs) j["backs"] = t.states.states.patches.size() - t.states.fronts();
     j["seconds"] = seconds;
     fmt::print("{}\n", j.dump(2));

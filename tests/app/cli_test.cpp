@@ -22,9 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// "27 cells," as info's first line counts a solution's states.
-std::string fmt_cells(int n) { return "): " + std::to_string(n) + " cells,"; }
-
 class Cli : public testing::Test {
 protected:
     CliRun hmcr(const std::string& args) const { return run_hmcr(args, m_dir); }
@@ -93,24 +90,33 @@ TEST_F(Cli, OraclesAndScenesAreListed) {
     EXPECT_NE(s.out.find("cube-room"), std::string::npos);
 }
 
-// `info` on a solution names what it measures: the file's cells, which for a clustered solution
-// outnumber its leaves (a cluster is one leaf of several cells).
-TEST_F(Cli, InfoOnASolutionSaysItMeasuresItsCells) {
+// `info` on a solution names what it measures: the file's cells, which are its leaves but in a
+// clustered solution, where a cluster is one leaf of several cells.
+TEST_F(Cli, InfoOnASolutionSaysWhatItMeasures) {
     ASSERT_EQ(hmcr("solve cornell --clustering isotropic --budget 20 --budget-tolerance 0.3 "
                    "--rays 1e5 -q -o c.vtp")
                   .exit_code,
               0);
-    const auto summary = nlohmann::json::parse(read_file(m_dir / "c.json"));
-    ASSERT_GT(summary["counts"]["cluster_leaves"].get<int>(), 0);  // a clustered solution
+    const auto counts = nlohmann::json::parse(read_file(m_dir / "c.json"))["counts"];
+    ASSERT_GT(counts["cluster_leaves"].get<int>(), 0);  // a clustered solution
     const CliRun info = hmcr("info c.vtp --lines 1e4 --json");
     ASSERT_EQ(info.exit_code, 0) << info.err;
     const auto j = nlohmann::json::parse(info.out);
     EXPECT_EQ(j["states"], "cells");
-    EXPECT_EQ(j["scene"], "cornell (cells of c.vtp: its leaves, a cluster's cells each apart)");
-    EXPECT_GT(j["patches"].get<int>(), summary["counts"]["leaves"].get<int>());
+    EXPECT_EQ(j["leaves"], counts["leaves"]);
+    EXPECT_EQ(j["clusters"], counts["cluster_leaves"]);
+    EXPECT_GT(j["patches"].get<int>(), counts["leaves"].get<int>());  // the cells
+    EXPECT_EQ(j["scene"], "cornell (cells of c.vtp, not its " + counts["leaves"].dump() +
+                              " leaves: " + counts["cluster_leaves"].dump() +
+                              " of them clusters, whose cells are measured each apart)");
     const CliRun table = hmcr("info c.vtp --lines 1e4");
-    EXPECT_NE(table.out.find(fmt_cells(j["patches"].get<int>())), std::string::npos) << table.out;
-    EXPECT_EQ(table.out.find("leaves of"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("): " + j["patches"].dump() + " cells,"), std::string::npos)
+        << table.out;
+    ASSERT_EQ(hmcr("solve plates --rays 1e4 -q -o p.vtp").exit_code, 0);
+    const auto plain = nlohmann::json::parse(hmcr("info p.vtp --lines 1e4 --json").out);
+    EXPECT_EQ(plain["states"], "leaves");
+    EXPECT_EQ(plain["scene"], "plates (leaves of p.vtp)");
+    EXPECT_FALSE(plain.contains("clusters"));
 }
 
 // A sweep script that holds much memory starts each solve with posix_spawn, as Python's
