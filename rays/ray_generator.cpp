@@ -156,21 +156,24 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
         const V xi_region = xi[0], xi_u = xi[1], xi_v = xi[2], xi_r = xi[3], xi_phi = xi[4];
         const V dither = xi[5];
 
-        // The region: Walker's alias table (rays/alias_table.h), bins of {keep, alias}.
-        const V scaled = hn::Mul(xi_region, hn::Set(d, double(region_count)));
-        const VI bin =
-            hn::Min(hn::ConvertTo(di, scaled), hn::Set(di, std::int64_t(region_count) - 1));
-        const V keep = hn::GatherIndex(d, bin_doubles, hn::ShiftLeft<1>(bin));
-        const VI alias =
-            hn::BitCast(di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(bins),
-                                            hn::Add(hn::ShiftLeft<1>(bin), hn::Set(di, 1))));
-        const VI picked = hn::IfThenElse(
-            hn::RebindMask(di, hn::Lt(hn::Sub(scaled, hn::ConvertTo(d, bin)), keep)), bin, alias);
-        const VI region =
-            given == nullptr
-                ? picked
-                : hn::BitCast(
-                      di, hn::PromoteTo(du, hn::LoadU(hn::Rebind<std::uint32_t, DU>(), given + k)));
+        // The region: the one the strata dealt (given), or Walker's alias table's pick
+        // (rays/alias_table.h), bins of {keep, alias}.
+        VI region;
+        if (given != nullptr) {
+            region = hn::BitCast(
+                di, hn::PromoteTo(du, hn::LoadU(hn::Rebind<std::uint32_t, DU>(), given + k)));
+        } else {
+            const V scaled = hn::Mul(xi_region, hn::Set(d, double(region_count)));
+            const VI bin =
+                hn::Min(hn::ConvertTo(di, scaled), hn::Set(di, std::int64_t(region_count) - 1));
+            const V keep = hn::GatherIndex(d, bin_doubles, hn::ShiftLeft<1>(bin));
+            const VI alias =
+                hn::BitCast(di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(bins),
+                                                hn::Add(hn::ShiftLeft<1>(bin), hn::Set(di, 1))));
+            region = hn::IfThenElse(
+                hn::RebindMask(di, hn::Lt(hn::Sub(scaled, hn::ConvertTo(d, bin)), keep)), bin,
+                alias);
+        }
 
         // The region's domain and patch.
         const VI at = hn::ShiftLeft<2>(region);

@@ -17,12 +17,12 @@ void RayStrata::assign(std::span<const double> weights, std::uint64_t rays, doub
     const double n = double(rays);
     double cumulative = 0;
     for (std::size_t l = 0; l < weights.size(); ++l) {
-        // Monotone in the cumulative weight, so no source's count is negative.
+        // Monotone in the cumulative weight, so no source's count is negative; the first source
+        // starts at `first`, as floor(offset) is 0.
         const auto k = std::min(rays, std::uint64_t(std::floor(n * (cumulative / total) + offset)));
         m_start[l] = first + k;
         cumulative += weights[l];
     }
-    m_start[0] = first;
     m_start[weights.size()] = first + rays;
 }
 
