@@ -190,8 +190,8 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
                                 {"oracle", "epsilon", "lines", "min_area", "max_depth", "cache_mb",
                                  "link_weight", "refine_share", "clustering", "importance"},
                                 {"rays", "seed"});
-    for (const char* name :
-         {"--rays", "--stop", "--max-elements", "--control-variate", "--sequence"}) {
+    for (const char* name : {"--rays", "--stop", "--max-elements", "--control-variate",
+                             "--sequence", "--bidirectional"}) {
         if (auto* option = cmd->get_option_no_throw(name)) a->mesh_only.push_back(option);
     }
     a->mesh_only.push_back(

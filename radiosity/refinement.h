@@ -31,6 +31,9 @@ struct RefinementContext {
     const LeafIndex* fixed_leaves = nullptr;
     LinkWeight link_weight = LinkWeight::unshot;  // w_ij from the source's Delta B or B
     RaySequence sequence = RaySequence::random;   // the shooting rays' uniforms (rays/sobol.h)
+    // On a fixed mesh, whether a line that lands also shoots its receiver leaf's unshot power
+    // back to its source (docs/design.md §3.13); never in a refining pass.
+    Bidirectional bidirectional = Bidirectional::no;
     ClusterTree* clusters = nullptr;  // descents start at its top (docs/design.md §2.7); none
     // Per side (SideRef::value), what a link's weight takes for the receiver's reflectance:
     // rho I / mean(I) under view importance (§3.12); empty: the reflectance itself.

@@ -27,6 +27,7 @@ void IterationSources::add(const RayRegion& region, double area, const Rgb& shot
     max_share = max_share.max(unit.cwiseAbs());
     regions.push_back(region);
     share.push_back(unit);
+    strength.push_back(sum);
     m_weights.push_back(w);
 }
 
@@ -44,6 +45,8 @@ void IterationSources::rebuild(const Hierarchy& h, const Rgb& beta) {
     clear(h.leaf_count());
     const std::vector<Patch>& ps = h.patch_set().patches;
     patches = &ps;
+    shift = beta;
+    leaves = true;
     h.for_each_leaf([&](const Element& e) {
         add({e.domain.u0, e.domain.v0, e.domain.s, e.id.patch, region_map(ps[e.id.patch]),
              e.id.side},
@@ -69,14 +72,18 @@ void IterationSources::rebuild(const ZeroSurfaces& zero, const Rgb& shot) {
 void IterationSources::clear(std::size_t most) {
     regions.clear();
     share.clear();
+    strength.clear();
     m_weights.clear();
     // Room for every leaf at once: grown a leaf at a time, a vector doubles and holds its old
     // block and the new one together while it copies, which raised a large scene's peak.
     regions.reserve(most);
     share.reserve(most);
+    strength.reserve(most);
     m_weights.reserve(most);
     total = 0;
     max_share = Rgb::Zero();
+    shift = Rgb::Zero();
+    leaves = false;
 }
 
 struct ShootingBuffers::Impl {
@@ -89,6 +96,9 @@ struct ShootingBuffers::Impl {
         Quanta quanta{};     // rho * Phi, for an element
         Quanta incident{};   // Phi, for a cluster (docs/design.md §2.7)
         bool lands = false;  // on a front face: the descent finds its element
+        // A line used both ways (docs/design.md §3.13): what it carries back to its source.
+        Element* back_receiver = nullptr;  // none: one way
+        Quanta back_quanta{}, back_incident{};
     };
     // The batch's descents are made together, after its rays are traced, so that rays between
     // the same patches decide their shared links once (refine_links).
@@ -137,6 +147,21 @@ std::optional<std::uint8_t> hit_side(const PatchSet& ps, const BatchHit& hit,
     if (facing < 0) return kFront;
     if (ps.two_sided(hit.patch)) return kBack;
     return std::nullopt;
+}
+
+// A line from source leaf l that lands in leaf r, used both ways (docs/design.md §3.13): with
+// s_l and s_r the leaves' strengths, it carries Phi s_l / (s_l + s_r) forward and
+// (S / N) (Delta B_r - beta) / (s_l + s_r) back. With s_r = 0 that is Phi forward, bit for bit,
+// and nothing back.
+struct BothWays {
+    Rgb forward, back;
+};
+BothWays both_ways(const IterationSources& sources, std::uint32_t leaf, const Rgb& power,
+                   double power_scale, const Element& landed) {
+    const Rgb back_shot = landed.unshot - sources.shift;
+    const double s_l = sources.strength[leaf], s_r = back_shot.cwiseAbs().sum();
+    if (!(s_r > 0)) return {power, Rgb::Zero()};
+    return {power * (s_l / (s_l + s_r)), power_scale / (s_l + s_r) * back_shot};
 }
 
 Vec3 hit_point(const GeneratedRays& rays, std::size_t k, float distance) {
@@ -223,6 +248,8 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     using Batch = ShootingBuffers::Impl::Batch;
     std::array<Batch, 2>& batches = buffers->impl().batches;
     const bool fixed = ctx.fixed_leaves != nullptr;  // no descents: no queries
+    // Lines both ways between the leaves (the zero surfaces' rays go one way: §3.13).
+    const bool both = fixed && ctx.bidirectional == Bidirectional::yes && sources.leaves;
     for (Batch& b : batches) {
         b.rays.resize(batch_rays);
         resize_populated(b.hits, batch_rays);
@@ -253,16 +280,16 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
         ctx.scene.first_hits(b.rays, begin, end, b.hits);
         for (std::uint64_t k = begin; k < end; ++k) {
             const std::uint32_t leaf = b.rays.region[k];
-            const Rgb power = power_scale * sources.share[leaf];
+            Rgb power = power_scale * sources.share[leaf];
             const double dither = b.rays.dither[k];
-            const Quanta quanta = out.quantum.count(power, dither);
-            add(chunk.shot, quanta);
             // Written field by field, once: a deposit built whole and copied in was read back
             // from the stack before its halves were stored there, a stall on every ray.
             ShootingBuffers::Impl::Deposit& deposit = b.deposits[k];
             const BatchHit& hit = b.hits[k];
             const std::optional<std::uint8_t> side = hit_side(ps, hit, b.rays, k);
             if (!side) {
+                const Quanta quanta = out.quantum.count(power, dither);
+                add(chunk.shot, quanta);
                 deposit.lands = false;  // all that is read of it
                 add(hit.patch == BatchHit::kNoHit ? chunk.escaped : chunk.back_face, quanta);
                 continue;
@@ -279,6 +306,29 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             } else {
                 b.queries[k] = query;
             }
+            deposit.back_receiver = nullptr;
+            if (both) {
+                // The leaf at the hit is a source of this iteration (its receiver may be the
+                // cluster above it); what it shoots back lands where a ray to x would.
+                const Element& landed =
+                    ctx.clusters
+                        ? ctx.fixed_leaves->locate(hit.patch, *side, query.y_uv.cast<double>())
+                        : *b.receivers[k];
+                const BothWays split = both_ways(sources, leaf, power, power_scale, landed);
+                power = split.forward;
+                if ((split.back != 0).any()) {
+                    const LinkQuery back{query.source, query.receiver, query.x_uv, query.y_uv};
+                    Element& to = fixed_receiver(ctx, back);
+                    const Quanta back_quanta = out.quantum.count(split.back, dither);
+                    add(chunk.shot, back_quanta);
+                    const Rgb& rho_x = ps.material(source.patch, source.side).reflectance;
+                    deposit.back_quanta = out.quantum.count(rho_x * split.back, dither);
+                    deposit.back_incident = back_quanta;
+                    deposit.back_receiver = &to;
+                }
+            }
+            const Quanta quanta = out.quantum.count(power, dither);
+            add(chunk.shot, quanta);
             // docs/design.md §3: received += rho * Phi (over A when pushed).
             const Rgb& rho = ps.material(hit.patch, *side).reflectance;
             deposit.quanta = out.quantum.count(rho * power, dither);
@@ -310,9 +360,12 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
         // In ray order, whichever thread traced the ray: the same bits for any thread count.
         for (std::uint64_t k = 0, q = 0; k < b.n; ++k) {
             if (!b.deposits[k].lands) continue;
+            const ShootingBuffers::Impl::Deposit& d = b.deposits[k];
             Element& receiver = *b.receivers[fixed ? k : q++];
-            add(receiver.received,
-                is_cluster(receiver) ? b.deposits[k].incident : b.deposits[k].quanta);
+            add(receiver.received, is_cluster(receiver) ? d.incident : d.quanta);
+            if (Element* to = d.back_receiver) {
+                add(to->received, is_cluster(*to) ? d.back_incident : d.back_quanta);
+            }
         }
         for (const auto& c : b.chunks) {
             add(out.shot_power, c.shot);

@@ -26,7 +26,10 @@ struct ZeroSurfaces;
 struct IterationSources {
     std::vector<RayRegion> regions;   // each leaf's domain and patch
     std::vector<Rgb> share;           // each leaf's (Delta B - beta) / sum_c |Delta B_c - beta_c|
+    std::vector<double> strength;     // each leaf's sum_c |Delta B_c - beta_c|: weight per area
     double total = 0;                 // S
+    Rgb shift = Rgb::Zero();          // beta: what the leaves' Delta B was shifted by
+    bool leaves = false;              // the hierarchy's leaves (not the zero surfaces)
     Rgb max_share = Rgb::Zero();      // the largest |share| of a leaf in each channel
     std::optional<AliasTable> alias;  // none when nothing is left to shoot
     // The patches the regions name: the scene's, or with `zero` its patches and background.

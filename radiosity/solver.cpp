@@ -238,18 +238,20 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     // A fixed mesh's leaves by parameter point, where its rays deposit.
     const std::unique_ptr<const LeafIndex> leaf_index =
         fixed_mesh ? std::make_unique<const LeafIndex>(h) : nullptr;
-    const RefinementContext ctx{.hierarchy = h,
-                                .oracle = oracle,
-                                .scene = scene,
-                                .threshold = st.epsilon * h.patch_set().max_emitted_power,
-                                .lines = options.lines,
-                                .seed = options.seed,
-                                .cache = cache.get(),
-                                .fixed_leaves = leaf_index.get(),
-                                .link_weight = options.link_weight,
-                                .sequence = options.sequence,
-                                .clusters = clusters.get(),
-                                .receiver_weights = receiver_weights};
+    const RefinementContext ctx{
+        .hierarchy = h,
+        .oracle = oracle,
+        .scene = scene,
+        .threshold = st.epsilon * h.patch_set().max_emitted_power,
+        .lines = options.lines,
+        .seed = options.seed,
+        .cache = cache.get(),
+        .fixed_leaves = leaf_index.get(),
+        .link_weight = options.link_weight,
+        .sequence = options.sequence,
+        .bidirectional = fixed_mesh ? options.bidirectional : Bidirectional::no,
+        .clusters = clusters.get(),
+        .receiver_weights = receiver_weights};
     st.setup_seconds = seconds_since(start);
 
     // The control variate needs every side that may receive light to exist from the start

@@ -50,6 +50,10 @@ enum class Clustering { none, isotropic };
 // importance for the scene's views (docs/design.md §3.12).
 enum class Importance { none, views };
 
+// Whether a line of a fixed mesh's pass also carries the unshot power of the leaf it lands on
+// back to the leaf it left, each way weighted by the two leaves' shares (docs/design.md §3.13).
+enum class Bidirectional { no, yes };
+
 // An enumerated setting's names, in the order of its values.
 template <class E>
 struct EnumNames;
@@ -72,6 +76,10 @@ struct EnumNames<RaySequence> {
 template <>
 struct EnumNames<Importance> {
     static constexpr std::array<std::string_view, 2> names{"none", "views"};
+};
+template <>
+struct EnumNames<Bidirectional> {
+    static constexpr std::array<std::string_view, 2> names{"no", "yes"};
 };
 template <class E>
 concept NamedEnum = requires {
@@ -142,6 +150,10 @@ concept NamedSetting = requires(T v) {
                   "streams, each ray picking its source leaf (random); or the rays dealt to the "\
                   "source leaves by their power, each leaf's from its own Owen-scrambled Sobol " \
                   "sequence (sobol)")                                                            \
+    X(Bidirectional, bidirectional, Bidirectional::no, true,         "no or yes",                 \
+      scene_file, "on a fixed mesh (the frozen pass, a reference's mesh), each line that lands " \
+                  "also carries the unshot power of the leaf it lands on back to the leaf it "   \
+                  "left, both ways weighted by the two leaves' unshot radiosity (no: one way)")  \
     X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \

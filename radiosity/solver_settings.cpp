@@ -103,6 +103,7 @@ template struct Setting<ControlVariate>;
 template struct Setting<Clustering>;
 template struct Setting<RaySequence>;
 template struct Setting<Importance>;
+template struct Setting<Bidirectional>;
 template struct Setting<double>;
 template struct Setting<int>;
 template struct Setting<std::uint64_t>;
@@ -118,6 +119,7 @@ template ControlVariate parse_named(const Setting<ControlVariate>&, std::string_
 template Clustering parse_named(const Setting<Clustering>&, std::string_view);
 template RaySequence parse_named(const Setting<RaySequence>&, std::string_view);
 template Importance parse_named(const Setting<Importance>&, std::string_view);
+template Bidirectional parse_named(const Setting<Bidirectional>&, std::string_view);
 
 const Oracle* default_oracle() { return oracle_registry().find("kl"); }
 

@@ -1,17 +1,18 @@
 #!/usr/bin/python3
-"""Noise per CPU second of hmcr's sequences on a fixed mesh (docs/performance.md, "The Sobol
-sequence").
+"""Noise per CPU second of hmcr's sequences, one way and both ways, on a fixed mesh
+(docs/performance.md, "The Sobol sequence" and "Lines used both ways").
 
 Solves a scene on its patches alone (`--max-depth 0`: no element is split, so every solve has
 the same leaves) with each sequence over several seeds, one thread, and a converged solve of the
-same leaves with `--converged-rays`. Prints, per sequence, the per-patch relative RMS deviation
+same leaves with `--converged-rays`. A variant is a sequence, or a sequence and `+both` for
+`--bidirectional yes` (`sobol+both`). Prints, per variant, the per-patch relative RMS deviation
 from the converged solve (over the lit patches and the three channels), the median CPU seconds
 of one solve (the whole process: user + system), and the efficiency 1 / (deviation^2 x seconds)
-relative to the first sequence's.
+relative to the first variant's.
 
 Needs VTK's Python module (Debian's python3-vtk9).  Usage:
     scripts/fixed_mesh_noise.py --hmcr build/hmcr [--scene cornell] [--rays 2.684e6] \\
-        [--seeds 8] [--sequences random,sobol] [--converged-rays 2.684e8] [--work DIR]
+        [--seeds 8] [--variants random,sobol,sobol+both] [--converged-rays 2.684e8] [--work DIR]
 """
 
 import argparse
@@ -34,10 +35,15 @@ def radiosity(path):
     return vtk_to_numpy(reader.GetOutput().GetCellData().GetArray("ElementRadiosity")).astype(float)
 
 
-def solve(args, out, seed, sequence, rays):
+def solve(args, out, seed, variant, rays):
     """Solves once; returns the process's CPU seconds."""
+    sequence, _, ways = variant.partition("+")
+    if ways not in ("", "both"):
+        sys.exit(f"fixed_mesh_noise.py: variant {variant!r} is a sequence or sequence+both")
     command = [args.hmcr, "solve", args.scene, "--max-depth", "0", "--threads", "1", "--seed",
                str(seed), "--sequence", sequence, "--rays", str(rays), "-q", "-o", out]
+    if ways:
+        command += ["--bidirectional", "yes"]
     process = subprocess.Popen(command)
     _, status, usage = os.wait4(process.pid, 0)
     if status != 0:
@@ -51,7 +57,7 @@ def main():
     parser.add_argument("--scene", default="cornell")
     parser.add_argument("--rays", default="2.684e6")
     parser.add_argument("--seeds", type=int, default=8)
-    parser.add_argument("--sequences", default="random,sobol")
+    parser.add_argument("--variants", default="random,sobol")
     parser.add_argument("--converged-rays", default="2.684e8")
     parser.add_argument("--work", help="keep the solutions here (default: a temporary folder)")
     args = parser.parse_args()
@@ -62,7 +68,7 @@ def main():
     converged = radiosity(converged_path)
     lit = converged > 0
     rows = []
-    for sequence in args.sequences.split(","):
+    for sequence in args.variants.split(","):
         squares, seconds = [], []
         for seed in range(1, args.seeds + 1):
             path = os.path.join(work, f"{sequence}-{seed}.vtp")
@@ -73,7 +79,7 @@ def main():
         rows.append((sequence, rms, statistics.median(seconds)))
     print(f"{args.scene}, {int(lit.sum())} lit patch channels, {args.rays} rays, {args.seeds} seeds, "
           f"converged at {args.converged_rays}")
-    print("| sequence | per-patch RMS deviation | CPU s | efficiency |")
+    print("| variant | per-patch RMS deviation | CPU s | efficiency |")
     print("|:--|--:|--:|--:|")
     base = 1 / (rows[0][1] ** 2 * rows[0][2])
     for sequence, rms, cpu in rows:

@@ -104,13 +104,22 @@ TEST(MpiRuns, TheControlVariateIsTheSameBitsOnAnyRankCount) {
         "--oracle kl --refine-share 0.4 --control-variate constant --rays 300000", {1, 2, 3});
 }
 
-// Clusters as leaves (docs/design.md §2.7): at this epsilon the Cornell box's 24 patches become
-// 17 leaves, 6 of them clusters; the ranks' open clusters are united like their subdivisions.
 TEST(MpiRuns, TheSobolSequenceIsTheSameBitsOnAnyRankCount) {
     expect_same_solve_on_ranks("--oracle kl --refine-share 0.4 --sequence sobol --rays 300000",
                                {1, 2, 3});
 }
 
+// Lines used both ways (docs/design.md §3.13) in a frozen pass of cluster leaves with the control
+// variate and the Sobol sequence: every back deposit, its cluster and beta on any rank count.
+TEST(MpiRuns, LinesUsedBothWaysAreTheSameBitsOnAnyRankCount) {
+    expect_same_solve_on_ranks(
+        "--oracle kl --clustering isotropic --epsilon 0.3 --refine-share 0.4 --bidirectional yes "
+        "--control-variate constant --sequence sobol --rays 300000",
+        {1, 2, 3});
+}
+
+// Clusters as leaves (docs/design.md §2.7): at this epsilon the Cornell box's 24 patches become
+// 17 leaves, 6 of them clusters; the ranks' open clusters are united like their subdivisions.
 TEST(MpiRuns, ClusterLeavesAreTheSameBitsOnAnyRankCount) {
     expect_same_solve_on_ranks(
         "--oracle kl --clustering isotropic --epsilon 0.3 --refine-share 0.4 --rays 300000",
