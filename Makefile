@@ -9,7 +9,7 @@ SANITIZE ?= OFF
 DEPS := g++ cmake make libpng-dev libembree-dev libopenmesh-dev libvtk9-dev libeigen3-dev \
         libhwy-dev libtbb-dev libexpat1-dev libcli11-dev nlohmann-json3-dev libfmt-dev \
         libopenmpi-dev openmpi-bin libgtest-dev libboost-dev zlib1g-dev clang libclang-rt-14-dev \
-        clang-format python3 python3-matplotlib xvfb xauth
+        clang-format python3 python3-matplotlib xvfb xauth texlive-latex-recommended
 
 SANITIZE_BUILD ?= build-sanitize
 PREFIX ?= /usr/local

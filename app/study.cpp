@@ -38,6 +38,7 @@ struct StudyArgs {
     std::string mesh_rays;    // empty: the default, kMeshRaysPerCellRay x the cell's rays
     std::string samplers;     // "all" or "uniform,srhe"; given: a sampling study
     std::string spps = "60";  // "16,32,60,128"
+    std::string columns;      // "seeds,psnr_p"; empty: every column in table.md, a few in .tex
     SamplingStudyOptions sampling;
     TraceFlags trace_flags;
     std::vector<const CLI::Option*> meshing_only, sampling_only;  // for the refusal of a mix
@@ -113,6 +114,7 @@ int run_sampling_study_command(StudyArgs& a) {
     o.trace.seed = a.options.solver.seed;
     o.trace.threads = a.options.solver.threads;
     o.redo_other_settings = a.options.redo_other_settings;
+    o.columns = split_commas(a.columns);
     o.samplers = named_list(criterion_registry(), split_commas(a.samplers));
     o.spps.clear();
     for (const std::string& spp : split_commas(a.spps)) o.spps.push_back(parse_spp(spp));
@@ -134,6 +136,7 @@ int run_meshing_study(StudyArgs& a) {
     }
     for (const auto& b : split_commas(a.budgets)) a.options.budgets.push_back(parse_budget(b));
     a.options.oracles = named_list(oracle_registry(), split_commas(a.oracles));
+    a.options.columns = split_commas(a.columns);
     if (!a.mesh_rays.empty()) {
         const auto rays = parse_count(a.mesh_rays);
         if (!rays || *rays > kMaxRays) {
@@ -238,6 +241,10 @@ Command study_command(CLI::App& app) {
                     "not depend on it")
         ->capture_default_str();
     cmd->add_option("-o,--output", o.output, "output folder (rerunning resumes)")->required();
+    cmd->add_option("--columns", a->columns,
+                    "columns of table.md and table.tex, comma-separated, or all (default: every "
+                    "one in table.md, a few that fit a page in table.tex); tables only, no cell "
+                    "setting");
     cmd->add_flag("--redo", o.redo_other_settings,
                   "compute again the cells of the output folder made with other settings");
     cmd->add_flag("-q,--quiet", a->quiet, "print only errors");

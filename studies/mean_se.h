@@ -1,12 +1,10 @@
-// Mean and standard error over a study's seeds (sample standard deviation / sqrt(n)), and how
-// a table prints them: "mean ± se", "mean" for one seed, "–" for none.
+// Mean and standard error over a study's seeds (sample standard deviation / sqrt(n)); how a
+// table prints them is studies/summary_table.h's.
 #pragma once
 
-#include <fmt/format.h>
-
 #include <cmath>
+#include <cstddef>
 #include <limits>
-#include <string>
 #include <vector>
 
 namespace hmcr {
@@ -29,14 +27,6 @@ inline MeanSe mean_se(const std::vector<double>& v) {
     for (double x : v) ss += (x - m.mean) * (x - m.mean);
     m.se = std::sqrt(ss / double(v.size() - 1)) / std::sqrt(double(v.size()));
     return m;
-}
-
-// `format` is a fmt format for one number, such as "{:.2f}".
-inline std::string format_mean_se(const MeanSe& m, const std::string& format) {
-    if (m.n == 0) return "–";
-    const std::string mean = fmt::format(fmt::runtime(format), m.mean);
-    if (m.n < 2 || !std::isfinite(m.se)) return mean;
-    return mean + " ± " + fmt::format(fmt::runtime(format), m.se);
 }
 
 }  // namespace hmcr

@@ -50,6 +50,7 @@ void validate(const SamplingStudyOptions& o) {
                                      o.spps.size(), kMaxPlotPoints));
     }
     if (o.output.empty()) throw InputError("study: no output folder given");
+    chosen_columns(o.columns, sampling_table_columns(), "sampling");
     for (double spp : o.spps)
         for (const Criterion* s : o.samplers) {
             TraceOptions t = o.trace;

@@ -42,6 +42,7 @@
 #include "common/progress.h"
 #include "meshes/scene.h"
 #include "studies/metrics.h"
+#include "studies/summary_table.h"
 #include "trace/trace_image.h"
 
 namespace hmcr {
@@ -59,6 +60,10 @@ struct SamplingStudyOptions {
     // A folder's cells must all be made with the same settings (sampling_study_settings): a
     // rerun with other settings is refused, unless this is set, when such cells are redone.
     bool redo_other_settings = false;
+    // The columns of table.md's and table.tex's tables per sampler, by
+    // sampling_table_columns()'s names or "all"; empty: every one in table.md, its tex_default
+    // in table.tex. Tables only: no cell setting.
+    std::vector<std::string> columns;
 };
 
 struct SamplingView {
@@ -117,6 +122,10 @@ ErrorSplit rms_over_views(const std::map<std::string, ErrorSplit>& by_view);
 // checked and locked before any cell, written as one set (common/output_set.h).
 std::vector<std::filesystem::path> sampling_study_output_files(const Scene& scene,
                                                                const SamplingStudyOptions& options);
+
+// The columns a sampling study's tables per sampler may hold (SamplingStudyOptions::columns),
+// and those of table.tex by default: few enough to fit a 10 pt article's line unscaled.
+TableColumns sampling_table_columns();
 
 // table.json, table.csv, table.md, table.tex and plots/plot_data.json, from every cell of the
 // study in order, into `out`, the set of sampling_study_output_files().

@@ -17,24 +17,34 @@
 namespace hmcr {
 namespace {
 
-// One column of table.md: a view's value, its format, which way is better (0: not an error).
+// One column of table.md: its name, a view's value, how it prints, which way is better (0: not
+// an error).
 struct Column {
+    const char* key;
     const char* title;
     std::function<double(const SamplingView&)> value;
-    const char* format;
+    NumberStyle style;
     int better;
 };
 
+constexpr NumberStyle kTwoDecimals{2, false}, kOneDecimal{1, false}, kNoDecimals{0, false};
+
 std::vector<Column> columns() {
     return {
-        {"RMSEa", [](const SamplingView& v) { return v.errors.rmse_a; }, "{:.2f}", -1},
-        {"RMSEp", [](const SamplingView& v) { return v.errors.rmse_p; }, "{:.2f}", -1},
-        {"PSNRa (dB)", [](const SamplingView& v) { return v.errors.psnr_a; }, "{:.2f}", 1},
-        {"PSNRp (dB)", [](const SamplingView& v) { return v.errors.psnr_p; }, "{:.2f}", 1},
-        {"spp", [](const SamplingView& v) { return v.spp; }, "{:.1f}", 0},
-        {"max spp", [](const SamplingView& v) { return double(v.max_spp); }, "{:.0f}", 0},
-        {"rays (M)", [](const SamplingView& v) { return 1e-6 * double(v.rays); }, "{:.1f}", 0},
-        {"seconds", [](const SamplingView& v) { return v.seconds; }, "{:.1f}", 0},
+        {"rmse_a", "RMSEa", [](const SamplingView& v) { return v.errors.rmse_a; }, kTwoDecimals,
+         -1},
+        {"rmse_p", "RMSEp", [](const SamplingView& v) { return v.errors.rmse_p; }, kTwoDecimals,
+         -1},
+        {"psnr_a", "PSNRa (dB)", [](const SamplingView& v) { return v.errors.psnr_a; },
+         kTwoDecimals, 1},
+        {"psnr_p", "PSNRp (dB)", [](const SamplingView& v) { return v.errors.psnr_p; },
+         kTwoDecimals, 1},
+        {"spp", "spp", [](const SamplingView& v) { return v.spp; }, kOneDecimal, 0},
+        {"max_spp", "max spp", [](const SamplingView& v) { return double(v.max_spp); }, kNoDecimals,
+         0},
+        {"rays", "rays (M)", [](const SamplingView& v) { return 1e-6 * double(v.rays); },
+         kOneDecimal, 0},
+        {"seconds", "seconds", [](const SamplingView& v) { return v.seconds; }, kOneDecimal, 0},
     };
 }
 
@@ -59,7 +69,8 @@ SummaryTable summary(const std::vector<SamplingCell>& cells, const std::string& 
     const std::vector<Column> cols = columns();
     SummaryTable table;
     table.row_title = "sampler";
-    for (const Column& col : cols) table.columns.push_back({col.title, col.format, col.better});
+    for (const Column& col : cols)
+        table.columns.push_back({col.key, col.title, col.style, col.better});
     for (const std::string& s : sampler_order(cells)) {
         SummaryRow row{s, "", {}};
         std::size_t runs = 0;
@@ -82,7 +93,8 @@ SummaryTable split_summary(const ErrorSplits& splits, const std::vector<std::str
     SummaryTable table;
     table.row_title = "sampler";
     table.seeds_column = false;
-    table.columns = {{"bias RMSEp", "{:.2f}", 0}, {"noise RMSEp", "{:.2f}", 0}};
+    table.columns = {{"bias_rmse_p", "bias RMSEp", kTwoDecimals, 0},
+                     {"noise_rmse_p", "noise RMSEp", kTwoDecimals, 0}};
     for (const std::string& s : samplers) {
         const auto it = splits.find(s);
         if (it == splits.end() || it->second.empty()) continue;
@@ -95,19 +107,20 @@ SummaryTable split_summary(const ErrorSplits& splits, const std::vector<std::str
 // The paragraph above the tables of one spp value.
 std::string description(const SamplingStudyOptions& o, double spp) {
     return fmt::format(
-        "{} samples per pixel (±{}%), {} seeds from {}, path estimator {}, at most {} bounces, "
-        "criteria on {}{}{}, reference {}. Mean ± "
-        "standard error over the seeds whose searches succeeded (seeds column). RMSE on the "
-        "0–255 scale and PSNR in dB against the reference at its exposure; spp: the mean "
-        "reached; rays: traced, the threshold search's included. The best mean of each error "
-        "column is in bold.",
-        spp, 100 * o.trace.spp_tolerance, o.seeds, o.trace.seed,
+        "{} samples per pixel (±{}%), {} from {}, path estimator {}, at most {} bounces, "
+        "criteria on {}{}{}, reference {}. Mean ± standard error over the seeds whose searches "
+        "succeeded (seeds column); a mean alone is of one seed (a standard error needs two or "
+        "more) or of seeds that agree exactly. RMSE on the 0–255 scale and PSNR in dB against "
+        "the reference at its exposure; spp: the mean reached; rays: traced, the threshold "
+        "search's included. {}",
+        spp, 100 * o.trace.spp_tolerance, counted(std::size_t(o.seeds), "seed"), o.trace.seed,
         estimator_name(o.trace.path.estimator), o.trace.path.max_depth,
         o.display_criteria ? "display values" : "radiance",
         o.trace.allocation == Allocation::map
             ? ", adaptive samples allocated from a map of 8 uniform samples per pixel"
             : "",
-        o.trace.fresh ? ", adaptive images from fresh samples" : "", o.reference.string());
+        o.trace.fresh ? ", adaptive images from fresh samples" : "", o.reference.string(),
+        kBoldRule);
 }
 
 constexpr const char* kSplitText =
@@ -116,37 +129,40 @@ constexpr const char* kSplitText =
     "noise and the 8-bit rounding, which every sampler shares; an unbiased sampler shows only "
     "that.";
 
-// The Markdown document of the cells at one spp.
+// The Markdown document of the cells at one spp; `keys`: the columns of its tables per sampler.
 std::string md_document(const std::string& scene, const SamplingStudyOptions& o, double spp,
                         const std::vector<std::string>& views,
-                        const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+                        const std::vector<SamplingCell>& cells, const ErrorSplits& splits,
+                        const std::vector<std::string>& keys) {
     std::string out =
         fmt::format("# Sampling study: {}\n\n{}\n\n## Mean over the views ({})\n\n{}\n", scene,
-                    description(o, spp), fmt::join(views, ", "), markdown(summary(cells, "")));
+                    description(o, spp), fmt::join(views, ", "),
+                    markdown(with_columns(summary(cells, ""), keys)));
     if (!splits.empty()) {
         out += fmt::format("## Bias and noise\n\n{}\n\n{}\n", kSplitText,
                            markdown(split_summary(splits, sampler_order(cells))));
     }
-    for (const std::string& v : views)
-        out += fmt::format("## View {}\n\n{}\n", v, markdown(summary(cells, v)));
+    for (const std::string& v : views) {
+        out +=
+            fmt::format("## View {}\n\n{}\n", v, markdown(with_columns(summary(cells, v), keys)));
+    }
     return out;
 }
 
 // table.tex's floats of the cells at one spp; `at` names the spp in captions and labels when the
-// study has several.
+// study has several; `keys`: the columns of the tables per sampler.
 std::string tex_floats(const std::string& scene, double spp, bool several,
                        const std::vector<std::string>& views,
-                       const std::vector<SamplingCell>& cells, const ErrorSplits& splits) {
+                       const std::vector<SamplingCell>& cells, const ErrorSplits& splits,
+                       const std::vector<std::string>& keys) {
     const std::string name = latex_text(scene);
     const std::string at = several ? fmt::format(" at {:g} spp", spp) : "";
     const std::string label =
         "tab:" + latex_label(scene) + "-sampling" + (several ? fmt::format("-spp{:g}", spp) : "");
-    const std::string what =
-        "mean $\\pm$ standard error over the seeds; the best mean of each "
-        "error column in bold.";
-    std::string out = latex_float(
-        fmt::format("Sampling study of {}{}, the mean over the views: {}", name, at, what), label,
-        summary(cells, ""));
+    const SummaryTable mean = with_columns(summary(cells, ""), keys);
+    std::string out = latex_float(fmt::format("Sampling study of {}{}, the mean over the views. {}",
+                                              name, at, latex_text(legend(mean))),
+                                  label, mean);
     if (!splits.empty()) {
         out +=
             latex_float(fmt::format("Sampling study of {}{}: RMSEp split into bias and noise. {}",
@@ -154,9 +170,10 @@ std::string tex_floats(const std::string& scene, double spp, bool several,
                         label + "-split", split_summary(splits, sampler_order(cells)));
     }
     for (const std::string& v : views) {
-        out += latex_float(
-            fmt::format("Sampling study of {}{}, view {}: {}", name, at, latex_text(v), what),
-            label + "-" + latex_label(v), summary(cells, v));
+        const SummaryTable view = with_columns(summary(cells, v), keys);
+        out += latex_float(fmt::format("Sampling study of {}{}, view {}. {}", name, at,
+                                       latex_text(v), latex_text(legend(view))),
+                           label + "-" + latex_label(v), view);
     }
     return out;
 }
@@ -238,6 +255,12 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
     return c;
 }
 
+TableColumns sampling_table_columns() {
+    TableColumns out{{"seeds"}, {"seeds", "rmse_p", "psnr_p", "spp", "rays"}};
+    for (const Column& col : columns()) out.all.push_back(col.key);
+    return out;
+}
+
 void write_sampling_tables(OutputSet& out, const std::string& scene, const SamplingStudyOptions& o,
                            const std::vector<std::string>& views,
                            const std::vector<SamplingCell>& cells, const SppErrorSplits& splits) {
@@ -274,6 +297,8 @@ void write_sampling_tables(OutputSet& out, const std::string& scene, const Sampl
                                   {"cells", all}};
     write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
     write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));
+    const TableColumns columns = sampling_table_columns();
+    const ColumnChoice keys = column_choice(o.columns, columns, "sampling");
     std::string md, tex;
     const bool several = o.spps.size() > 1;
     for (double spp : o.spps) {
@@ -283,15 +308,16 @@ void write_sampling_tables(OutputSet& out, const std::string& scene, const Sampl
         static const ErrorSplits kNone;
         const auto it = splits.find(spp);
         const ErrorSplits& split = it == splits.end() ? kNone : it->second;
-        md += (md.empty() ? "" : "\n") + md_document(scene, o, spp, views, at_spp, split);
-        tex += tex_floats(scene, spp, several, views, at_spp, split);
+        md += (md.empty() ? "" : "\n") +
+              md_document(scene, o, spp, views, at_spp, split, keys.markdown);
+        tex += tex_floats(scene, spp, several, views, at_spp, split, keys.latex);
     }
     write_text_atomically(out.temp(o.output / "table.md"), md);
-    write_text_atomically(
-        out.temp(o.output / "table.tex"),
-        fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}} "
-                    "and \\usepackage{{graphicx}}.\n% {}\n{}",
-                    latex_text(scene), latex_text(description(o, o.spps.front())), tex));
+    write_text_atomically(out.temp(o.output / "table.tex"),
+                          fmt::format("% Sampling study: {} (hmcr). Needs \\usepackage{{booktabs}} "
+                                      "and \\usepackage{{graphicx}}.\n% {}\n{}{}",
+                                      latex_text(scene), latex_text(description(o, o.spps.front())),
+                                      latex_columns_comment(keys.latex, columns), tex));
     write_text_atomically(out.temp(plot_data_file(o.output)),
                           plot_data_text(sampling_plot_data(scene, cells, splits)));
 }

@@ -62,6 +62,7 @@ void validate(const StudyOptions& o) {
     for (const Oracle* oracle : o.oracles) names.push_back(oracle->name());
     refuse_repeats(names, "oracle");
     if (o.output.empty()) throw InputError("study: no output folder given");
+    chosen_columns(o.columns, study_table_columns(), "meshing");
     validate(o.solver);
     for (std::size_t b : o.budgets) {
         // Each product is checked against the limit before it is formed (no wrap-around).

@@ -13,8 +13,8 @@
 //                                  a rerun skips every cell whose file exists (resume)
 //   OUT/table.json                 long form: options and every cell (cell_to_json)
 //   OUT/table.csv                  one row per cell and view
-//   OUT/table.md                   per budget, one row per oracle: mean +- standard error over
-//                                  seeds, best error of each column in bold
+//   OUT/table.md, OUT/table.tex    per budget, one row per oracle: mean +- standard error over
+//                                  seeds, the bold of studies/summary_table.h
 //   OUT/plots/error_vs_elements.png  object-space error against leaves, log-log, per oracle
 //   OUT/figures/VIEW-B{budget}-images.png, -meshes.png: every oracle's image and mesh side by side
 //   OUT/meshes.pvsm, OUT/meshes.pvd: every cell's mesh in ParaView (studies/study_figures.h)
@@ -44,6 +44,7 @@
 #include "radiosity/budget_search.h"
 #include "studies/metrics.h"
 #include "studies/object_space_error.h"
+#include "studies/summary_table.h"
 
 namespace hmcr {
 
@@ -72,6 +73,9 @@ struct StudyOptions {
     // Refuse a cell whose leaves are finer than the reference resolves (kFinerShareLimit of
     // studies/reference_resolution.h) instead of warning.
     bool strict = false;
+    // The columns of table.md and table.tex, by study_table_columns()'s names or "all"; empty:
+    // every one in table.md, its tex_default in table.tex. Tables only: no cell setting.
+    std::vector<std::string> columns;
 };
 
 struct CellResult {
@@ -135,6 +139,10 @@ std::vector<std::filesystem::path> study_table_files(const StudyOptions& options
 // The one-line warning of table.md and of the study's end, naming the cells at `budget` whose
 // finer share is above kFinerShareLimit (studies/reference_resolution.h); empty where none is.
 std::string finer_warning(const std::vector<CellResult>& cells, std::size_t budget);
+
+// The columns a meshing study's table.md and table.tex may hold (StudyOptions::columns), and
+// those of table.tex by default: few enough to fit a 10 pt article's line unscaled.
+TableColumns study_table_columns();
 
 // table.json, table.csv, table.md, table.tex and the plot data, from every cell of the study in
 // order, into `out`, a set holding study_table_files().

@@ -20,33 +20,40 @@
 namespace hmcr {
 namespace {
 
-// One column of table.md: how a cell gives its value, how it prints, which way is better.
+// One column of table.md: its name, how a cell gives its value, how it prints, which way is
+// better.
 struct MeshingColumn {
+    const char* key;
     const char* title;
     std::function<double(const CellResult&)> value;
-    const char* format;
+    NumberStyle style;
     int better;  // -1: lower is better, +1: higher, 0: not an error column
 };
 
+constexpr NumberStyle kDecimals2{2, false}, kDecimals1{1, false}, kWhole{0, false},
+    kSignificant3{3, true};
+
 std::vector<MeshingColumn> md_columns() {
     return {
-        {"RMSEa", [](const CellResult& c) { return view_mean(c, &ImageErrors::rmse_a); }, "{:.2f}",
-         -1},
-        {"RMSEp", [](const CellResult& c) { return view_mean(c, &ImageErrors::rmse_p); }, "{:.2f}",
-         -1},
-        {"PSNRa (dB)", [](const CellResult& c) { return view_mean(c, &ImageErrors::psnr_a); },
-         "{:.2f}", 1},
-        {"PSNRp (dB)", [](const CellResult& c) { return view_mean(c, &ImageErrors::psnr_p); },
-         "{:.2f}", 1},
-        {"object error", [](const CellResult& c) { return c.object_error.relative_l2; }, "{:.4f}",
-         -1},
-        {"mesh PSNRp (dB)",
-         [](const CellResult& c) { return mesh_view_mean(c, &ImageErrors::psnr_p); }, "{:.2f}", 1},
-        {"mesh object error", mesh_object_error, "{:.4f}", -1},
-        {"finer (%)", [](const CellResult& c) { return 100 * c.finer_share; }, "{:.1f}", 0},
-        {"leaves", [](const CellResult& c) { return double(c.leaves); }, "{:.0f}", 0},
-        {"ε", [](const CellResult& c) { return c.epsilon; }, "{:.3g}", 0},
-        {"seconds", [](const CellResult& c) { return c.seconds; }, "{:.1f}", 0},
+        {"rmse_a", "RMSEa", [](const CellResult& c) { return view_mean(c, &ImageErrors::rmse_a); },
+         kDecimals2, -1},
+        {"rmse_p", "RMSEp", [](const CellResult& c) { return view_mean(c, &ImageErrors::rmse_p); },
+         kDecimals2, -1},
+        {"psnr_a", "PSNRa (dB)",
+         [](const CellResult& c) { return view_mean(c, &ImageErrors::psnr_a); }, kDecimals2, 1},
+        {"psnr_p", "PSNRp (dB)",
+         [](const CellResult& c) { return view_mean(c, &ImageErrors::psnr_p); }, kDecimals2, 1},
+        {"object_error", "object error",
+         [](const CellResult& c) { return c.object_error.relative_l2; }, kSignificant3, -1},
+        {"mesh_psnr_p", "mesh PSNRp (dB)",
+         [](const CellResult& c) { return mesh_view_mean(c, &ImageErrors::psnr_p); }, kDecimals2,
+         1},
+        {"mesh_object_error", "mesh object error", mesh_object_error, kSignificant3, -1},
+        {"finer_share", "finer (%)", [](const CellResult& c) { return 100 * c.finer_share; },
+         kDecimals1, 0},
+        {"leaves", "leaves", [](const CellResult& c) { return double(c.leaves); }, kWhole, 0},
+        {"epsilon", "ε", [](const CellResult& c) { return c.epsilon; }, kSignificant3, 0},
+        {"seconds", "seconds", [](const CellResult& c) { return c.seconds; }, kDecimals1, 0},
     };
 }
 
@@ -76,7 +83,7 @@ SummaryTable budget_table(std::size_t budget, const std::vector<CellResult>& cel
     SummaryTable table;
     table.row_title = "oracle";
     for (const MeshingColumn& col : columns)
-        table.columns.push_back({col.title, col.format, col.better});
+        table.columns.push_back({col.key, col.title, col.style, col.better});
     for (const std::string& oracle : oracle_order(cells)) {
         SummaryRow row{oracle, "", {}};
         for (const MeshingColumn& col : columns) {
@@ -105,16 +112,14 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
             ? fmt::format("{} with {} rays, the error of the mesh itself", frozen, *o.mesh_rays)
             : std::string("mesh: not measured (--mesh-rays 0)");
     return fmt::format(
-        "{}, N_s = {}, link weight {}, refine share {}{}{}, budget tolerance {}%, {} seeds from "
-        "{}. "
-        "Mean ± standard "
-        "error over the seeds whose budget search succeeded (seeds column). RMSE on the 0–255 "
-        "scale and PSNR in dB, each averaged over the {} views ({}); object error: the "
-        "area-weighted relative L2 error of the reflected radiosity against the reference (– "
-        "against a traced reference, which has neither mesh nor points); "
-        "{}; finer: the share of the area in leaves finer than the reference resolves (above "
-        "{:.0f}% a cell's errors are bounded below by the reference's); seconds: the budget "
-        "search. The best mean of each error column is in bold.",
+        "{}, N_s = {}, link weight {}, refine share {}{}{}, budget tolerance {}%, {} from {}. "
+        "Mean ± standard error over the seeds whose budget search succeeded (seeds column); a "
+        "mean alone is of one seed (a standard error needs two or more) or of seeds that agree "
+        "exactly. RMSE on the 0–255 scale and PSNR in dB, each averaged over {} ({}); object "
+        "error: the area-weighted relative L2 error of the reflected radiosity against the "
+        "reference (– against a traced reference, which has neither mesh nor points); {}; finer: "
+        "the share of the area in leaves finer than the reference resolves (above {:.0f}% a "
+        "cell's errors are bounded below by the reference's); seconds: the budget search. {}",
         rays, o.solver.lines, name(o.solver.link_weight), o.solver.refine_share,
         // Named only when on, so that the tables of plain studies keep their bytes.
         o.solver.control_variate == ControlVariate::none
@@ -123,8 +128,9 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
         o.solver.importance == Importance::none
             ? std::string()
             : fmt::format(", importance {}", name(o.solver.importance)),
-        100 * o.budget_tolerance, o.seeds, o.solver.seed, views.size(), fmt::join(views, ", "),
-        mesh, 100 * kFinerShareLimit);
+        100 * o.budget_tolerance, counted(std::size_t(o.seeds), "seed"), o.solver.seed,
+        counted(views.size(), "view"), fmt::join(views, ", "), mesh, 100 * kFinerShareLimit,
+        kBoldRule);
 }
 
 }  // namespace
@@ -150,9 +156,12 @@ namespace {
 
 std::string md_table(const std::string& scene, const StudyOptions& o,
                      const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
+    const std::vector<std::string> keys =
+        column_choice(o.columns, study_table_columns(), "meshing").markdown;
     std::string out = fmt::format("# Meshing study: {}\n\n{}\n\n", scene, description(o, views));
     for (std::size_t b : o.budgets) {
-        out += fmt::format("## {} leaves\n\n{}\n", b, markdown(budget_table(b, cells)));
+        out += fmt::format("## {} leaves\n\n{}\n", b,
+                           markdown(with_columns(budget_table(b, cells), keys)));
         if (const std::string w = finer_warning(cells, b); !w.empty()) {
             out += "**Warning:** " + w + "\n\n";
         }
@@ -163,16 +172,17 @@ std::string md_table(const std::string& scene, const StudyOptions& o,
 // table.tex: one table float per budget, to \input into a paper with booktabs.
 std::string tex_table(const std::string& scene, const StudyOptions& o,
                       const std::vector<std::string>& views, const std::vector<CellResult>& cells) {
+    const TableColumns columns = study_table_columns();
+    const std::vector<std::string> keys = column_choice(o.columns, columns, "meshing").latex;
     std::string out = fmt::format(
         "% Meshing study: {} (hmcr). Needs \\usepackage{{booktabs}} and "
-        "\\usepackage{{graphicx}}.\n% {}\n",
-        latex_text(scene), latex_text(description(o, views)));
+        "\\usepackage{{graphicx}}.\n% {}\n{}",
+        latex_text(scene), latex_text(description(o, views)), latex_columns_comment(keys, columns));
     for (std::size_t b : o.budgets) {
-        out += latex_float(fmt::format("Meshing study of {} at {} leaves: mean $\\pm$ standard "
-                                       "error over the seeds; the best mean of each error column "
-                                       "in bold.",
-                                       latex_text(scene), b),
-                           fmt::format("tab:{}-{}", latex_label(scene), b), budget_table(b, cells));
+        const SummaryTable table = with_columns(budget_table(b, cells), keys);
+        out += latex_float(fmt::format("Meshing study of {} at {} leaves. {}", latex_text(scene), b,
+                                       latex_text(legend(table))),
+                           fmt::format("tab:{}-{}", latex_label(scene), b), table);
     }
     return out;
 }
@@ -294,6 +304,12 @@ CellResult cell_from_json(const nlohmann::json& j) {
         c.mesh_object_error = object_error_from_json(j.at("mesh_object_error"));
     }
     return c;
+}
+
+TableColumns study_table_columns() {
+    TableColumns out{{"seeds"}, {"seeds", "psnr_p", "object_error", "mesh_object_error"}};
+    for (const MeshingColumn& col : md_columns()) out.all.push_back(col.key);
+    return out;
 }
 
 void write_study_tables(OutputSet& out, const std::string& scene, const StudyOptions& o,

@@ -130,6 +130,29 @@ TEST_F(TraceCli, AMeshingStudyTakesATracedReference) {
     EXPECT_TRUE(drawn());
 }
 
+// --columns chooses the tables' columns and is no cell setting: a rerun with other columns
+// resumes (no cell computed again, none refused) and writes the tables with its own columns.
+TEST_F(TraceCli, OtherColumnsResumeAStudyAndRewriteOnlyItsTables) {
+    const std::string ref = (m_dir / "ref").string(), study = (m_dir / "study").string();
+    ASSERT_EQ(hmcr("trace-reference plates --width 8 --spp 16 -q -o " + ref).exit_code, 0);
+    const std::string run =
+        "study plates --reference " + ref + " --samplers uniform --spp 12 --seeds 2 -q -o " + study;
+    ASSERT_EQ(hmcr(run + " --columns seeds,rmse_p").exit_code, 0);
+    const fs::path cell = m_dir / "study" / "cells" / "plates-uniform-spp12-s2.json";
+    const std::string cell_before = read_file(cell);
+    const std::string md = read_file(m_dir / "study" / "table.md");
+    EXPECT_NE(md.find("| sampler | seeds | RMSEp |\n"), std::string::npos) << md;
+
+    const CliRun again = hmcr(run + " --columns psnr_p,spp");
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(read_file(cell), cell_before);
+    const std::string md_again = read_file(m_dir / "study" / "table.md");
+    EXPECT_EQ(md_again.find("| RMSEp |"), std::string::npos) << md_again;
+    EXPECT_NE(md_again.find("| sampler | PSNRp (dB) | spp |\n"), std::string::npos) << md_again;
+    EXPECT_NE(read_file(m_dir / "study" / "table.tex").find("sampler & PSNRp (dB) & spp \\\\\n"),
+              std::string::npos);
+}
+
 TEST_F(TraceCli, SamplersAreListed) {
     const CliRun r = hmcr("samplers");
     ASSERT_EQ(r.exit_code, 0);

@@ -173,5 +173,22 @@ TEST_F(Hostile, StudyListsWithAValueTwiceAreRefused) {
     refused(study + "--samplers uniform --spp 16,32,", "empty item in the list '16,32,'");
 }
 
+// --columns names the tables' columns of the study's kind: another name is refused in one line
+// naming the valid ones, before the reference is read or any cell computed ("ref" is empty).
+TEST_F(Hostile, StudyColumnsOfAnotherKindOrTwiceAreRefused) {
+    plates();
+    const std::string study = "study plates.json --reference ref -o st --seeds 1 ";
+    std::filesystem::create_directories(dir() / "ref");
+    refused(study + "--budgets 5 --columns psnr_p,spp",
+            "study: unknown column 'spp' of a meshing study's tables (valid: seeds, rmse_a, "
+            "rmse_p, psnr_a, psnr_p, object_error, mesh_psnr_p, mesh_object_error, finer_share, "
+            "leaves, epsilon, seconds, all)");
+    refused(study + "--samplers uniform --columns object_error",
+            "study: unknown column 'object_error' of a sampling study's tables (valid: seeds, "
+            "rmse_a, rmse_p, psnr_a, psnr_p, spp, max_spp, rays, seconds, all)");
+    refused(study + "--budgets 5 --columns leaves,all", "study: column leaves is given twice");
+    refused(study + "--budgets 5 --columns leaves,", "empty item in the list 'leaves,'");
+}
+
 }  // namespace
 }  // namespace hmcr::test

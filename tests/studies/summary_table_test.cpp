@@ -1,54 +1,210 @@
 // The readers' tables of a study (studies/summary_table.h): table.md and table.tex from one
-// model, the best mean of each error column marked in both, LaTeX's special characters escaped,
-// a table wider than a page scaled to the line,
-// and a meshing study's table.tex compiled by pdflatex where it is installed (Debian:
-// texlive-latex-recommended, for booktabs), else checked line by line.
+// model; numbers as LaTeX math, a power of ten shared by a mean and its standard error; the bold
+// of the best mean and of every mean a one-sided Welch t-test cannot call worse, on cases whose
+// t statistic and degrees of freedom are worked out by hand against the t table; the columns
+// chosen by name; LaTeX's special characters escaped. tests/studies/table_tex_test.cpp compiles
+// the studies' table.tex.
 #include "studies/summary_table.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cstdlib>
-#include <regex>
-#include <sstream>
+#include <cmath>
+#include <limits>
 
-#include "common/output_set.h"
-#include "studies/study.h"
-#include "tests/support/temp_dir.h"
+#include "common/error.h"
 
 namespace hmcr::test {
 namespace {
 
+constexpr double kNoSe = std::numeric_limits<double>::quiet_NaN();
+constexpr NumberStyle kTwo{2, false}, kOne{1, false}, kWhole{0, false}, kThreeSignificant{3, true};
+
+std::string md(double mean, double se, std::size_t n, NumberStyle style) {
+    return markdown_number(printed_number({mean, se, n}, style));
+}
+
+std::string tex(double mean, double se, std::size_t n, NumberStyle style, bool bold = false) {
+    return latex_number(printed_number({mean, se, n}, style), bold);
+}
+
+TEST(SummaryTable, NumbersAreMathWithAPowerOfTenWhereTheMagnitudeNeedsOne) {
+    EXPECT_EQ(tex(1.1, 0.0577, 3, kTwo), "$1.10 \\pm 0.06$");
+    EXPECT_EQ(md(1.1, 0.0577, 3, kTwo), "1.10 ± 0.06");
+    EXPECT_EQ(tex(1.1, 0.0577, 3, kTwo, true), "$\\mathbf{1.10 \\pm 0.06}$");
+    // ε: three significant digits, the standard error at the mean's last one, one exponent.
+    EXPECT_EQ(tex(6.75e-5, 6.8e-7, 3, kThreeSignificant), "$(6.75 \\pm 0.07) \\times 10^{-5}$");
+    EXPECT_EQ(md(6.75e-5, 6.8e-7, 3, kThreeSignificant), "(6.75 ± 0.07) × 10⁻⁵");
+    EXPECT_EQ(tex(6.75e-5, kNoSe, 1, kThreeSignificant), "$6.75 \\times 10^{-5}$");
+    EXPECT_EQ(tex(12345, kNoSe, 1, kThreeSignificant), "$1.23 \\times 10^{4}$");
+    // Plain decimals from 10^-4 to 10^3 (printf's %g), rounding first: 9.996e-5 is 1.00e-4.
+    EXPECT_EQ(tex(0.0478, 0.00031, 3, kThreeSignificant), "$0.0478 \\pm 0.0003$");
+    EXPECT_EQ(tex(0.108, 0.0049, 3, kThreeSignificant), "$0.108 \\pm 0.005$");
+    EXPECT_EQ(tex(6.75e-4, kNoSe, 1, kThreeSignificant), "$0.000675$");
+    EXPECT_EQ(tex(9.996e-5, kNoSe, 1, kThreeSignificant), "$0.000100$");
+    EXPECT_EQ(tex(0, 2e-6, 3, kThreeSignificant), "$(0.00 \\pm 2.00) \\times 10^{-6}$");
+}
+
+TEST(SummaryTable, AZeroStandardErrorIsNotPrintedAndATinyOneKeepsADigit) {
+    // Seeds that agree exactly: the mean alone, no "± 0.0".
+    EXPECT_EQ(tex(0, 0, 3, kOne), "$0.0$");
+    EXPECT_EQ(md(5000, 0, 3, kWhole), "5000");
+    // One seed: no standard error at all.
+    EXPECT_EQ(tex(3.71, kNoSe, 1, kTwo), "$3.71$");
+    // A standard error below the mean's last decimal: one significant digit of its own.
+    EXPECT_EQ(tex(39.96, 0.0041, 3, kTwo), "$39.96 \\pm 0.004$");
+    EXPECT_EQ(tex(39.96, 0.00096, 3, kTwo), "$39.96 \\pm 0.001$");
+    // No value, and the PSNR of identical images.
+    EXPECT_EQ(tex(kNoSe, kNoSe, 0, kTwo), "--");
+    EXPECT_EQ(md(kNoSe, kNoSe, 0, kTwo), "–");
+    EXPECT_EQ(tex(INFINITY, kNoSe, 2, kTwo), "$\\infty$");
+    EXPECT_EQ(md(INFINITY, kNoSe, 2, kTwo), "inf");
+}
+
+// One column, lower is better, a row per value.
+SummaryTable column_of(const std::vector<MeanSe>& values, int better = -1) {
+    SummaryTable t;
+    t.row_title = "oracle";
+    t.seeds_column = false;
+    t.columns = {{"rmse_p", "RMSEp", kTwo, better}};
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        t.rows.push_back({"row" + std::to_string(i), "", {values[i]}});
+    }
+    return t;
+}
+
+std::vector<bool> bold_rows(const SummaryTable& t) {
+    std::vector<bool> out;
+    for (std::size_t r = 0; r < t.rows.size(); ++r) out.push_back(is_bold(t, r, 0));
+    return out;
+}
+
+TEST(SummaryTable, OverlappingStandardErrorsAreBothBold) {
+    // 3.71 ± 0.26 and 3.72 ± 0.04: t = 0.01 / 0.263, far below any critical value.
+    EXPECT_EQ(bold_rows(column_of({{3.72, 0.04, 3}, {3.71, 0.26, 3}})),
+              (std::vector<bool>{true, true}));
+}
+
+// Equal standard errors 0.1 of 3 seeds each: Welch's degrees of freedom are (0.02)² / (2 ×
+// 0.01² / 2) = 4, and the one-sided 5% critical value of t with 4 degrees of freedom is 2.1318.
+// 1.30 against 1.00: t = 0.30 / √0.02 = 2.1213, not significant; 1.31: t = 2.1920, significant.
+TEST(SummaryTable, BoldStopsAtTheCriticalValueOfTheTTest) {
+    EXPECT_EQ(bold_rows(column_of({{1.0, 0.1, 3}, {1.30, 0.1, 3}, {1.31, 0.1, 3}})),
+              (std::vector<bool>{true, true, false}));
+    // The same where higher is better (a PSNR).
+    EXPECT_EQ(bold_rows(column_of({{40.0, 0.1, 3}, {39.70, 0.1, 3}, {39.69, 0.1, 3}}, 1)),
+              (std::vector<bool>{true, true, false}));
+}
+
+// A best of standard error 0 (its seeds agree) beside one of 0.1 with 3 seeds: Welch's degrees
+// of freedom are the other's alone, 2, whose critical value is 2.9200 (pooled ones, 4, would
+// give 2.1318). 1.290: t = 2.90, not significant; 1.295: t = 2.95, significant.
+TEST(SummaryTable, BoldTakesWelchsDegreesOfFreedom) {
+    EXPECT_EQ(bold_rows(column_of({{1.0, 0, 3}, {1.290, 0.1, 3}, {1.295, 0.1, 3}})),
+              (std::vector<bool>{true, true, false}));
+}
+
+TEST(SummaryTable, WithoutStandardErrorsOnlyTheBestIsBold) {
+    // One seed each: however close, only the best (and a tie with it).
+    EXPECT_EQ(bold_rows(column_of({{1.01, kNoSe, 1}, {1.0, kNoSe, 1}, {1.0, kNoSe, 1}})),
+              (std::vector<bool>{false, true, true}));
+    // A best of one seed tests nothing; nor does a row of one seed beside a best of three.
+    EXPECT_EQ(bold_rows(column_of({{1.0, kNoSe, 1}, {1.01, 0.5, 3}})),
+              (std::vector<bool>{true, false}));
+    EXPECT_EQ(bold_rows(column_of({{1.0, 0.5, 3}, {1.01, kNoSe, 1}})),
+              (std::vector<bool>{true, false}));
+    // Two exact rows of different means: the worse is worse. No value is never bold.
+    EXPECT_EQ(bold_rows(column_of({{1.0, 0, 2}, {1.01, 0, 2}, {kNoSe, kNoSe, 0}})),
+              (std::vector<bool>{true, false, false}));
+    // Not an error column: nothing bold.
+    EXPECT_EQ(bold_rows(column_of({{1.0, 0.1, 3}, {2.0, 0.1, 3}}, 0)),
+              (std::vector<bool>{false, false}));
+}
+
 SummaryTable two_oracles() {
     SummaryTable t;
     t.row_title = "oracle";
-    t.columns = {{"RMSEp", "{:.2f}", -1}, {"PSNRp (dB)", "{:.2f}", 1}, {"ε", "{:.3g}", 0}};
+    t.columns = {{"rmse_p", "RMSEp", kTwo, -1},
+                 {"psnr_p", "PSNRp (dB)", kTwo, 1},
+                 {"epsilon", "ε", kThreeSignificant, 0}};
     t.rows = {{"power", "3/3", {mean_se({1.0, 1.2, 1.1}), mean_se({40, 41, 42}), mean_se({1e-6})}},
               {"kl", "2/3", {mean_se({2.0, 2.2}), mean_se({43, 44}), mean_se({7e-7})}}};
     return t;
 }
 
-TEST(SummaryTable, MarksTheBestMeanOfEachErrorColumnOnly) {
+// RMSEp: 1.10 ± 0.06 against 2.10 ± 0.10, t = 8.6; PSNRp: 43.50 ± 0.50 against 41.00 ± 0.58,
+// t = 3.27 with 2.9 degrees of freedom (p ≈ 0.025): one bold each.
+TEST(SummaryTable, MarkdownAndLatexCarryTheSameCellsAndBold) {
     const SummaryTable t = two_oracles();
-    EXPECT_TRUE(is_best(t, 0, 0));  // lower RMSEp
-    EXPECT_FALSE(is_best(t, 1, 0));
-    EXPECT_TRUE(is_best(t, 1, 1));   // higher PSNR
-    EXPECT_FALSE(is_best(t, 0, 2));  // not an error column
-    EXPECT_FALSE(is_best(t, 1, 2));
     EXPECT_EQ(markdown(t),
               "| oracle | seeds | RMSEp | PSNRp (dB) | ε |\n"
               "|:--|--:|--:|--:|--:|\n"
-              "| power | 3/3 | **1.10 ± 0.06** | 41.00 ± 0.58 | 1e-06 |\n"
-              "| kl | 2/3 | 2.10 ± 0.10 | **43.50 ± 0.50** | 7e-07 |\n");
-}
-
-TEST(SummaryTable, LatexIsABooktabsTabularOfTheSameCells) {
-    EXPECT_EQ(latex_tabular(two_oracles()),
+              "| power | 3/3 | **1.10 ± 0.06** | 41.00 ± 0.58 | 1.00 × 10⁻⁶ |\n"
+              "| kl | 2/3 | 2.10 ± 0.10 | **43.50 ± 0.50** | 7.00 × 10⁻⁷ |\n");
+    EXPECT_EQ(latex_tabular(t),
               "\\begin{tabular}{@{}lrrrr@{}}\n\\toprule\n"
               "oracle & seeds & RMSEp & PSNRp (dB) & $\\varepsilon$ \\\\\n\\midrule\n"
-              "power & 3/3 & \\textbf{1.10 $\\pm$ 0.06} & 41.00 $\\pm$ 0.58 & 1e-06 \\\\\n"
-              "kl & 2/3 & 2.10 $\\pm$ 0.10 & \\textbf{43.50 $\\pm$ 0.50} & 7e-07 \\\\\n"
+              "power & 3/3 & $\\mathbf{1.10 \\pm 0.06}$ & $41.00 \\pm 0.58$ & "
+              "$1.00 \\times 10^{-6}$ \\\\\n"
+              "kl & 2/3 & $2.10 \\pm 0.10$ & $\\mathbf{43.50 \\pm 0.50}$ & "
+              "$7.00 \\times 10^{-7}$ \\\\\n"
               "\\bottomrule\n\\end{tabular}\n");
+}
+
+TEST(SummaryTable, TheLegendSaysWhyAMeanStandsAlone) {
+    const std::string rule =
+        " Bold: the best mean of each error column and every mean not significantly worse than "
+        "it (a one-sided Welch t-test at the 5% level); a mean without a standard error is bold "
+        "only where it is the best.";
+    EXPECT_EQ(legend(two_oracles()),
+              "Mean ± standard error over the seeds; a mean alone is of one seed (a standard "
+              "error needs two or more)." +
+                  rule);
+    EXPECT_EQ(legend(column_of({{1.0, 0.1, 3}, {1.0, 0, 3}})),
+              "Mean ± standard error over the seeds; a mean alone is of seeds that agree "
+              "exactly." +
+                  rule);
+    EXPECT_EQ(legend(column_of({{1.0, 0.1, 3}}, 0)), "Mean ± standard error over the seeds.");
+    EXPECT_EQ(counted(1, "view"), "1 view");
+    EXPECT_EQ(counted(3, "seed"), "3 seeds");
+}
+
+TEST(SummaryTable, ColumnsAreChosenByNameInTheirOrder) {
+    const TableColumns columns{{"seeds", "rmse_p", "psnr_p", "epsilon"}, {"seeds", "rmse_p"}};
+    EXPECT_EQ(chosen_columns({"psnr_p", "seeds"}, columns, "meshing"),
+              (std::vector<std::string>{"psnr_p", "seeds"}));
+    EXPECT_EQ(chosen_columns({"all"}, columns, "meshing"), columns.all);
+    const ColumnChoice none = column_choice({}, columns, "meshing");
+    EXPECT_EQ(none.markdown, columns.all);
+    EXPECT_EQ(none.latex, columns.tex_default);
+    const ColumnChoice chosen = column_choice({"epsilon"}, columns, "meshing");
+    EXPECT_EQ(chosen.markdown, chosen.latex);
+
+    // The seeds column stays second; the others follow the order given.
+    const SummaryTable t = with_columns(two_oracles(), {"epsilon", "seeds", "rmse_p"});
+    EXPECT_EQ(markdown(t),
+              "| oracle | seeds | ε | RMSEp |\n"
+              "|:--|--:|--:|--:|\n"
+              "| power | 3/3 | 1.00 × 10⁻⁶ | **1.10 ± 0.06** |\n"
+              "| kl | 2/3 | 7.00 × 10⁻⁷ | 2.10 ± 0.10 |\n");
+    EXPECT_EQ(markdown(with_columns(two_oracles(), {"psnr_p"})),
+              "| oracle | PSNRp (dB) |\n"
+              "|:--|--:|\n"
+              "| power | 41.00 ± 0.58 |\n"
+              "| kl | **43.50 ± 0.50** |\n");
+}
+
+TEST(SummaryTable, AnUnknownOrRepeatedColumnIsRefusedNamingTheValidOnes) {
+    const TableColumns columns{{"seeds", "rmse_p", "psnr_p"}, {"seeds"}};
+    try {
+        chosen_columns({"rmse_p", "spp"}, columns, "meshing");
+        ADD_FAILURE() << "spp accepted";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(),
+                     "study: unknown column 'spp' of a meshing study's tables (valid: seeds, "
+                     "rmse_p, psnr_p, all)");
+    }
+    EXPECT_THROW(chosen_columns({"rmse_p", "all"}, columns, "meshing"), InputError);
+    EXPECT_THROW(column_choice({"seeds", "seeds"}, columns, "sampling"), InputError);
 }
 
 TEST(SummaryTable, LatexTextEscapesWhatLatexWouldReadAsCode) {
@@ -58,105 +214,6 @@ TEST(SummaryTable, LatexTextEscapesWhatLatexWouldReadAsCode) {
     EXPECT_EQ(latex_text("– ± ² ×"), "-- $\\pm$ $^2$ $\\times$");
     EXPECT_EQ(latex_text("line\nbreak"), "line break");  // would end a % comment
     EXPECT_EQ(latex_label("my scene_2.obj"), "my-scene-2-obj");
-}
-
-bool has_pdflatex() { return std::system("command -v pdflatex >/dev/null 2>&1") == 0; }
-
-// `body` \input into an article with booktabs and graphicx, by pdflatex in `dir`: whether it
-// compiled, and its log.
-std::pair<bool, std::string> pdflatex(const TempDir& dir, const std::string& body) {
-    dir.write("paper.tex",
-              "\\documentclass{article}\n\\usepackage{booktabs}\n\\usepackage{graphicx}\n"
-              "\\begin{document}\n" +
-                  body + "\n\\end{document}\n");
-    const std::string cmd = "cd '" + dir.path().string() +
-                            "' && pdflatex -interaction=nonstopmode -halt-on-error paper.tex "
-                            ">/dev/null 2>&1";
-    const bool compiled = std::system(cmd.c_str()) == 0;
-    return {compiled, read_file(dir.path() / "paper.log")};
-}
-
-// A sampling study's summary: 10 columns, 8 of them "mean ± se", wider than a page's text in
-// \small; a table of a few columns is not.
-TEST(SummaryTable, AFloatWiderThanTheLineIsScaledToIt) {
-    SummaryTable wide;
-    wide.row_title = "sampler";
-    for (const char* title :
-         {"RMSEa", "RMSEp", "PSNRa (dB)", "PSNRp (dB)", "spp", "max spp", "rays (M)", "seconds"}) {
-        wide.columns.push_back({title, "{:.2f}", 0});
-    }
-    wide.rows = {{"uniform", "3/3", std::vector<MeanSe>(8, mean_se({32.37, 33.5, 31.2}))}};
-    const std::string shrunk =
-        "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%";
-    const std::string floats = latex_float("Wide.", "tab:wide", wide) +
-                               latex_float("Narrow.", "tab:narrow", two_oracles());
-    EXPECT_NE(floats.find(shrunk), std::string::npos) << floats;
-    if (!has_pdflatex()) GTEST_SKIP() << "no pdflatex: the floats checked by structure only";
-    TempDir dir;
-    const auto [compiled, log] = pdflatex(dir, floats);
-    EXPECT_TRUE(compiled) << log;
-    EXPECT_EQ(log.find("Overfull \\hbox"), std::string::npos) << log;
-}
-
-CellResult cell(const std::string& oracle, std::size_t budget, std::uint64_t seed, double error) {
-    CellResult c;
-    c.scene = "my_box";
-    c.oracle = oracle;
-    c.budget = budget;
-    c.seed = seed;
-    c.leaves = budget + seed;
-    c.epsilon = 1e-6;
-    c.views["camera"] = {1 + error, 2 + error, 40 - error, 30 - error};
-    c.object_error.relative_l2 = error;
-    c.object_error.samples = 100;
-    return c;
-}
-
-TEST(StudyTables, TexHoldsOneTableFloatPerBudgetThatPdflatexCompiles) {
-    TempDir dir;
-    StudyOptions o;
-    o.budgets = {100, 200};
-    o.seeds = 2;
-    o.output = dir.path();
-    o.mesh_rays = 0;
-    std::vector<CellResult> cells;
-    for (std::size_t b : o.budgets)
-        for (std::uint64_t s : {1, 2}) {
-            cells.push_back(cell("power", b, s, 0.05 * double(s)));
-            cells.push_back(cell("kl", b, s, 0.04 * double(s)));
-        }
-    OutputSet out(study_table_files(o), o.output);
-    write_study_tables(out, "my_box", o, {"camera"}, cells);
-    out.commit();
-    const std::string tex = read_file(dir.path() / "table.tex");
-    ASSERT_FALSE(tex.empty());
-    // One float per budget, each a booktabs tabular; every row as many cells as the header.
-    for (const char* part : {"\\begin{table}", "\\toprule", "\\midrule", "\\bottomrule",
-                             "\\end{table}", "\\label{tab:my-box-100}", "\\label{tab:my-box-200}",
-                             "Meshing study of my\\_box at 200 leaves"}) {
-        EXPECT_NE(tex.find(part), std::string::npos) << part;
-    }
-    const std::regex row(R"(^(power|kl|oracle) &.*\\\\$)");
-    int rows = 0;
-    std::size_t columns = 0;
-    std::istringstream lines(tex);
-    for (std::string line; std::getline(lines, line);) {
-        if (!std::regex_match(line, row)) continue;
-        ++rows;
-        const std::size_t amps = std::size_t(std::count(line.begin(), line.end(), '&'));
-        if (columns == 0) columns = amps;
-        EXPECT_EQ(amps, columns) << line;
-    }
-    EXPECT_EQ(rows, 6);       // header, power and kl, twice
-    EXPECT_EQ(columns, 12u);  // seeds and 11 measures
-    // kl's object error is the lower: bold, with its standard error.
-    EXPECT_NE(tex.find("kl & 2/2 & "), std::string::npos);
-    EXPECT_NE(tex.find("\\textbf{0.0600 $\\pm$ 0.0200}"), std::string::npos);
-    if (!has_pdflatex()) GTEST_SKIP() << "no pdflatex: table.tex checked by structure only";
-    const auto [compiled, log] = pdflatex(dir, "\\input{table.tex}");
-    EXPECT_TRUE(compiled) << log;
-    EXPECT_EQ(log.find("Overfull \\hbox"), std::string::npos) << log;
-    EXPECT_TRUE(std::filesystem::exists(dir.path() / "paper.pdf"));
 }
 
 }  // namespace
