@@ -110,5 +110,11 @@ format: deps
 format-check: deps
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.h')
 
+# The license line at the top of every tracked source that lacks it (docs/decisions.md#license;
+# git add a new file first). The docs test Docs.EverySourceNamesItsLicense checks them.
+.PHONY: spdx
+spdx:
+	python3 tests/docs/check_spdx.py . --add
+
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD)
