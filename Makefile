@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # hmcr: the two commands of the README (`make run`, `make test`) and their helpers.
 BUILD    ?= build
 TYPE     ?= Release

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mean and standard error over a study's seeds (sample standard deviation / sqrt(n)), and how
 // a table prints them: "mean ± se", "mean" for one seed, "–" for none.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tables of a study for a reader (docs/design.md §6): one row per oracle or sampler, each
 // column a mean ± standard error over the seeds, the best mean of each error column marked;
 // written as Markdown (table.md) and as LaTeX with booktabs (table.tex), from one model so that

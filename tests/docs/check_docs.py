@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """The docs stay true to the tree: every relative link of README.md and docs/*.md names a file
 that exists and, with #anchor, one of its headings; every docs/... citation in the sources
 resolves (docs/design.md §N to a heading numbered N, docs/X.md#anchor to a heading); and every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The readers' tables of a study (studies/summary_table.h): table.md and table.tex from one
 // model, the best mean of each error column marked in both, LaTeX's special characters escaped,
 // a table wider than a page scaled to the line,
