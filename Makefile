@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # hmcr: the two commands of the README (`make run`, `make test`) and their helpers.
 BUILD    ?= build
 TYPE     ?= Release
@@ -109,6 +110,12 @@ format: deps
 # Fails, naming each file and line, where a source differs from .clang-format (what CI checks).
 format-check: deps
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.h')
+
+# The license line at the top of every tracked source that lacks it (docs/decisions.md#license;
+# git add a new file first). The docs test Docs.EverySourceNamesItsLicense checks them.
+.PHONY: spdx
+spdx:
+	python3 tests/docs/check_spdx.py . --add
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD)

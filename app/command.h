@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The subcommands of `hmcr`. Each file of app/ adds one to the CLI11 application: its options,
 // bound to state that its run function owns, and the run function, called when the user chose
 // it. Errors are exceptions (common/error.h); main.cpp turns them into exit codes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Numbers on the command line: counts (--rays, --lines, --budget, --seed, study budgets:
 // 10000000, 1e7 or 2.5e6, whole numbers only) and real numbers (finite, every one).
 #pragma once

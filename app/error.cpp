@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr error SOLUTION.vtp --reference DIR`: a study's metrics for one solution (studies/
 // reference_measure.h): the object error with its standard error, each view's RMSE and PSNR,
 // the share of its area finer than the reference resolves and the patches that hold the most

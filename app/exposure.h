@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exposure rule of every image command (`render`, `trace`): a fixed --exposure, else the one
 // a reference folder (`hmcr reference` or `hmcr trace-reference`) fixed for the view, else one
 // from the image itself (exposure_from: its mean non-background luminance to middle grey).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr info SCENE|SOLUTION.vtp`: the information measures of a discretisation (docs/design.md §7);
 // `hmcr info --bounds SCENE`: what a view needs, the scene's bounding box, up axis and emitters.
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Large blocks in transparent huge pages. On the machine hmcr is measured on (a virtual
 // machine), the kernel takes a fault, zeroes and maps every 4 KiB page on its first touch; at a
 // million patches that was half of loading and setup (perf: clear_page and the fault path 39%

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // hmcr: the command line. Exit codes: 0 done, 2 bad input (anything the user can fix, said in
 // one line on stderr), 1 a fault of hmcr.
 #include <fmt/core.h>

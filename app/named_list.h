@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A comma-separated list of plug-in names on the command line (`--oracles kl,power`,
 // `--samplers all`), resolved where it is read.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr oracles`: the registered refinement oracles.
 #include <fmt/core.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr plot STUDY`: a study's plots drawn again from its table.json (studies/plot_data.h),
 // into STUDY/plots/: after installing matplotlib, or after changing the plotting script.
 #include <fmt/core.h>

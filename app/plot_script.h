@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A study's plots drawn by scripts/plot_study.py from STUDY/plots/plot_data.json
 // (studies/plot_data.h), in a Python that has matplotlib: $HMCR_PYTHON when set, else the first
 // of `python3` on the PATH and /usr/bin/python3 that imports it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr reference SCENE -o DIR`: a converged reference, of one of two kinds (docs/studies.md):
 // points traced independently of any mesh (studies/point_reference.h, the default), or a fixed
 // uniform mesh solved with many rays (studies/reference.h, `--kind mesh`).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr render SOLUTION.vtp --scene SCENE`: an image of a solution from one of the scene's views.
 #include <memory>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The JSON run summary written beside every solution (docs/design.md §5).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr samplers`: the registered pixel sampling criteria.
 #include <fmt/core.h>
 

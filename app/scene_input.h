@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loading a scene on the command line: the loader's warnings go to stderr, one line each and
 // at most kMaxWarningLines of them, and what it repaired in one summary line.
 #pragma once

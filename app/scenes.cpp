@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr scenes`: the bundled scenes, by name.
 #include <fmt/core.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr solve SCENE`: solve at epsilon or to a leaf budget, write SCENE.vtp and its summary.
 #include <fmt/core.h>
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The solver settings table (radiosity/solver_options.h) on the command line: one flag per
 // setting, with its help and default, and the rule that decides each setting's value.
 #pragma once

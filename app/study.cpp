@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr study SCENE --reference DIR -o OUT` and one of
 //   --budgets N,N [--oracles LIST]   a meshing study: every oracle x budget x seed
 //   (studies/study.h)

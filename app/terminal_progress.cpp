@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "app/terminal_progress.h"
 
 #include <fmt/core.h>

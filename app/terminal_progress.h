@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Progress on stderr (docs/design.md §5): a live bar on a terminal, a line every 10% otherwise;
 // notes are lines in both modes. Every line starts with the task's label ("hmcr cornell").
 #pragma once

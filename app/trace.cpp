@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr trace SCENE -o IMAGE.png`: a path-traced image of one view (trace/trace_image.h), with
 // its sampling density map (IMAGE-density.png) and a JSON summary (IMAGE.json) beside it.
 #include <fmt/core.h>

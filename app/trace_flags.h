@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The path tracer's options (trace/trace_image.h) on the command line, shared by `trace`,
 // `trace-reference` and the sampling study (`study --samplers`).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr trace-reference SCENE -o DIR`: every view path-traced with the uniform sampler at many
 // samples per pixel (studies/traced_reference.h), the yardstick of a sampling study.
 #include <fmt/core.h>

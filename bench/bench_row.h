@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One benchmark row: a scene solved with one oracle, epsilon, ray count and thread count, its
 // times, and the Embree floor of the same work measured right after it.
 #pragma once

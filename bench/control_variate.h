@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr_bench --control-variate SEEDS`: the constant control variate's variance gain on every
 // bundled scene (docs/results.md, "Constant control variate"). Each scene is solved on a fixed
 // uniform mesh of about kElements elements with each seed, without and with the control

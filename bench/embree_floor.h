@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Embree floor of a solve: the same number of queries as hmcr made, generated beforehand
 // and traced alone, so that the time hmcr spends beyond them is what the benchmark shows.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `make bench`: every oracle on `cornell` and `cube-room` at 2,684,000 rays and N_s = 10, at an
 // epsilon giving about 19,000 leaves, on 1 and 2 threads, against the Embree floor of the same
 // work measured in the same run: the same number of incoherent first-hit rays plus, for the

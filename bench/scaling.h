@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scaling study of `make bench`: kl on the generated office at 10^2 ... 10^6
 // patches (2,684,000 rays), on the 10^6-patch office at 10^6 ... 10^8 rays, and on 1 and 2
 // threads, each point in a fresh process (`hmcr_bench --row`) that reports its own peak memory.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Atomic, durable file output (docs/design.md §5.7): write a temporary file beside the target,
 // flush it to the disk, rename it into place and flush the folder. Readers see the old file or
 // the complete new one; a failed run leaves nothing; after a crash of the machine the target is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where hmcr finds the files it ships beside the program: the bundled scenes (scenes/) and the
 // plotting script of the studies (scripts/plot_study.py). An install (`cmake --install`) puts
 // them in PREFIX/share/hmcr/ and the program in PREFIX/bin/; the source tree has the same layout

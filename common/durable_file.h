@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The steps of durable file output (docs/design.md §5.7), for atomic_file.h and output_set.h:
 // a temporary file under a name no other writer can pick, and the flushes that make a rename
 // survive a crash of the machine (the file's bytes before the rename, its folder's entry after).

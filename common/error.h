@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Errors by audience (docs/usage.md#bad-input). An InputError is something the user can fix: a bad
 // option, scene, file or folder; its what() is one line, "where: what" ("cornell.obj:12: ...").
 // The command line answers it with exit code 2. Any other exception is a fault of hmcr (exit 1).

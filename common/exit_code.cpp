@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "common/exit_code.h"
 
 #include "common/error.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exit codes (docs/usage.md#bad-input): 0 done, 2 bad input (anything the user can fix), 1 a fault
 // of hmcr, 128 + N after signal N. One mapping for the command line and for MPI ranks, which relay
 // a failure to the others (ranks.h).

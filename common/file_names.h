@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Names that become parts of file names (docs/design.md §5.7). A name a user's file gives (a
 // view's, which names views/VIEW.pfm and a study's CELL-VIEW.png) holds only the POSIX portable
 // file name characters and '+' (A-Z a-z 0-9 . _ - +), does not start with '.' or '-', and is

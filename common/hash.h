@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FNV-1a, 64 bits (Fowler, Noll, Vo): fingerprints that are the same on every machine, for
 // recognising a scene's geometry or a reference file again. Not for security.
 #pragma once

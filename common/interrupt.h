@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ending a run cleanly on SIGINT (Ctrl-C), SIGTERM (a cluster's time limit) or SIGHUP (its
 // terminal closed; ignored under nohup, which asks for that). The signal only raises a flag;
 // long work checks it at safe points (between ray batches, probes, study cells, stages) and

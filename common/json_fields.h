@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading the members of a parsed JSON file (common/text_file.h) so that a missing member or one
 // of the wrong type is said with its path from the top, "reference.views.side.exposure: must be a
 // number, not a string", rather than in nlohmann's words, which name no key.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Memory of this machine and of this process, for sizing defaults and refusing work that could
 // not fit before it starts.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A lock on an output (docs/design.md §5.7), held by one hmcr run from the check of its outputs
 // to their last rename, so that two runs given the same output cannot mix their files: the
 // second is refused at once. The lock is a file locked with flock(2), which a shared file

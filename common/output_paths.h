@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks on where a command will write, made before any work: a run that would fail to write,
 // or write over one of its own inputs, is refused at once with one line, losing nothing.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A command's output files, written as one set (docs/design.md §5.7). Made before any work, it
 // checks every file (output_paths.h), creates the folders they go into, locks the outputs
 // (output_lock.h) and proves each folder writable by making and removing a temporary file

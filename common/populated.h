@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Growing a buffer whose every element is about to be written, with its new pages faulted in by
 // one system call instead of one page fault a page as the elements are written: on the virtual
 // machine hmcr is measured on, that halves what the kernel spends on them (docs/performance.md,

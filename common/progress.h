@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Progress of a long task: told by the code doing the work (a solve, a reference, a study, the
 // scene measures) and shown by the front end (app/ draws a bar or prints lines). Calls come from
 // the thread that started the task.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sorting many (key, value) records by an integer key in linear time: a stable least-
 // significant-digit radix sort, 8 bits per pass, only over the bits the largest key uses.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The processes of an MPI run (docs/cluster.md). hmcr initialises MPI only when a launcher
 // started it (mpirun, mpiexec or srun set their variables); otherwise it is rank 0 of 1 and
 // never touches MPI, so a plain run costs nothing and needs no daemon.

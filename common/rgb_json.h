@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An RGB triple in JSON files (summaries, reference.json): [r, g, b].
 #pragma once
 

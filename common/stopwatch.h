@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wall-clock seconds, for run summaries, study cells and progress.
 #pragma once
 

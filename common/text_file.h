@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading the files a user hands hmcr (scenes, meshes, materials, reference and study files):
 // one reader, so that every error names the file, and the line where there is one.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Basic numeric types of the engine.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sampling density map of an adaptive image (the papers' "supersampling temperature map"):
 // each pixel coloured by how many samples it got, warm for many, cold for few.
 //

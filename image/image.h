@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Images of the renderer and the study: linear radiance (Image) and 8-bit sRGB (Image8), with
 // their files. Pixels are row-major, top row first, in memory; each format's own row order is
 // handled by its reader and writer. Every write goes through write_file_atomically.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The glyphs of label.h, drawn for hmcr: each a row of 5 bits per line, top line first, the
 // leftmost pixel the highest bit.
 #include "image/label.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Text in a bitmap font of 5 x 7 pixels a glyph, to label the tiles of a study's figures without
 // a font library: lower-case letters, digits, space and - + . _ : ( ); upper case is drawn as
 // lower case and anything else as '?'.

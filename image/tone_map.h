@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tone mapping of linear radiosity to 8-bit sRGB for `RadiosityColor` and rendered images.
 //
 // Radiance L = B / pi (Lambertian surfaces). One fixed exposure per mesh maps the area-weighted

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The states of a channel whose surfaces may have two sides (docs/design.md §7.7): the fronts of
 // the patches (or of a solution's front leaves), which the rays meet, then the backs of the
 // two-sided ones, each a patch whose normal points out of the back. A ray that meets a front

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "information/channel_samples.h"
 
 #include <tbb/parallel_for.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Samples of a scene's visibility channel (docs/design.md §7): rays leaving a state (a patch's
 // front, or the back of a two-sided one, §7.7) from an area-uniform point in a
 // cosine-distributed direction, each with the state it meets first. F_ij is the share of i's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "information/form_factors.h"
 
 #include <tbb/parallel_for.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sparse form factors between all pairs of a discretisation, from samples of its visibility
 // channel (information/channel_samples.h): F_ij is the share of patch i's samples that land on j.
 // Rows keep only the patches actually reached, so 100,000 patches fit.

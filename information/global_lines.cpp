@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Global lines: uniformly distributed lines through the scene's bounding sphere (a uniform
 // direction, then a uniform point of the disk across the sphere perpendicular to it). Each
 // line is followed through every surface it crosses.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The leaves of a solution as a discretisation of their own (docs/design.md §7: "measures of a
 // discretisation can be taken ... for the leaves of a solution").
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Local lines: n_i cosine-distributed rays from area-uniform points of each patch i.
 #include <fmt/format.h>
 

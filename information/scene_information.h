@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Information measures of a scene's visibility channel (docs/design.md §7; Feixas, del Acebo,
 // Bekaert, Sbert, "An information theory framework for the analysis of scene complexity",
 // Eurographics 1999). The states are the sides of a discretisation's patches, the transition

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Groups of faces on the same vertices, found by sorting (vertex set, index) records: at 10^6
 // faces a hash map's node per face was a seventh of the load.
 #include "meshes/coincident_faces.h"

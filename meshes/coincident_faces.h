@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Faces on the same vertices (docs/design.md §1.6): a copy is dropped, two faces facing away
 // from each other are one surface with two sides, and a copy in another material loses to the
 // first. Part of the repairs (meshes/repairs.h); the joining of opposite faces is also made by a

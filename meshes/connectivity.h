@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The patch mesh's connectivity as plain arrays: which mesh vertex each face corner is, and
 // which mesh edge each face side is. 16 bytes a face each, where the OpenMesh mesh takes about
 // 115: `hmcr solve` keeps these and releases the mesh before it shoots the rays

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Which polygons have a back (docs/design.md §1.3): a polygon of a two-sided material gets a back
 // of the same material. The sides of a material are the load's (LoadOptions::sides,
 // material_sides), else its file's (MGF's `sides`), else kDefaultSides.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CIE chromaticities to RGB for the MGF reader (see mgf_color.h for the conversion chosen).
 #include "meshes/mgf_color.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MGF colours (cxy, cspec, cct, cmix) reduced to the linear RGB hmcr computes in.
 //
 // Every MGF colour is kept as a CIE 1931 (x, y) chromaticity: a spectrum (cspec, cct) is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MGF's named contexts (mgf_reader.cpp): the vertex and material values, and the scratch-space
 // selection rule shared by c, m and v.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One MGF file as statements: lines joined at an escaped newline, split into words, comments
 // and blank lines dropped, and every `xf` that opens a transformation paired with the `xf`
 // that closes it (the specification requires them to balance within a file).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "meshes/mgf_polygon_count.h"
 
 #include <algorithm>

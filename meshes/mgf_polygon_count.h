@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The polygons MGF statements would make, counted without making them: the reader
 // (mgf_reader.cpp) asks before it runs an array, so that three lines asking for 10^8 spheres are
 // refused at once rather than after building the polygons the limit allows. A surface counts its

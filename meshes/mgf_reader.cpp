@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // read_mgf: an interpreter of MGF statements (mgf_reader.h). Named contexts (colours,
 // materials, vertices) are scratch spaces selected by c, m and v; geometry takes the current
 // material and transformation when it is read. An xf with arrays, or an include with one, runs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MGF, the Materials and Geometry Format (Ward, LBNL, 1995; version 2.0 of the specification):
 // RenderPark's and Radiance's scene format. Written from the public specification.
 //

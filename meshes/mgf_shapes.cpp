@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tessellation of MGF's curved primitives into bands of quads between circles (mgf_shapes.h).
 #include "meshes/mgf_shapes.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MGF's surface primitives as polygons (docs/usage.md#mgf). A circle is cut into `segments` equal
 // segments (--mgf-segments, default 24), a sphere into `segments` around and segments / 2 from
 // pole to pole. Corners lie on the true surface, so the polygons' area is below it: by at most

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Parsing and composing MGF transformations (mgf_transform.h).
 #include "meshes/mgf_transform.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MGF transformations (the arguments of `xf` and `i`): -t, -rx, -ry, -rz, -s, -mx, -my, -mz,
 // and the repeats -i N (apply what follows N times) and arrays -a N (N instances, the k-th
 // moved by what follows k times). Each argument acts on the geometry as the previous ones left

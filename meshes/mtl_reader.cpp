@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // read_mtl: MTL statements -> the soup's materials (mtl_reader.h).
 #include "meshes/mtl_reader.h"
 

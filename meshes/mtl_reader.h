@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wavefront MTL material libraries (docs/design.md §11.2): `newmtl NAME` starts a material,
 // `Kd r g b` and `Ke r g b` set its reflectance and emitted radiance, and `Ks r g b` its mirror
 // reflectance when the material has `illum 3` (illum 0 to 2 leave Ks unused; other illumination

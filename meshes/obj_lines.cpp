@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lines, statements and numbers of OBJ and MTL text (obj_lines.h).
 #include "meshes/obj_lines.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The lexical layer of hmcr's OBJ and MTL readers (docs/design.md §11.2): lines, the tokens of
 // a statement, comments and numbers, every problem reported as "file:line: why". A statement's
 // tokens are read one at a time, in place, so that a line costs no memory beyond the file's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // read_obj: OBJ + MTL -> polygon soup (docs/design.md §11.2). One pass over the OBJ text reads
 // the positions and the faces (each face's corners, the name its `usemtl` gave it, its line);
 // then the material libraries its `mtllib` statements name are read (mtl_reader.h), and every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wavefront OBJ with its MTL material libraries, read by hmcr itself (docs/design.md §11.2).
 #pragma once
 

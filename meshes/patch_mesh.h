@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The patch mesh: every input polygon (triangle or planar convex quad) is one face of an
 // OpenMesh PolyMesh; material data lives in named properties: a table of the mesh's materials
 // and, per face, its index in the table (4 bytes a face instead of 48 for two colours: 44 MB

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // build_patch_mesh: a polygon soup -> the validated OpenMesh patch mesh with its hmcr:* face
 // properties (docs/design.md §1).
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the repairs did (meshes/repairs.h): each kind counted with the place of its first case,
 // for the one summary line on stderr and the run summary's "repairs".
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The repair pass: per polygon, take out repeated and collinear corners and drop what has no area
 // left; settle the faces of 5 corners or more on the same vertices; per polygon, cut what is not
 // a triangle or a planar convex quad into triangles; then settle the faces on the same vertices

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Repairs of a polygon soup that have one safe meaning (docs/usage.md#repairs), made between a
 // reader and the patch-mesh builder unless the load is strict.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene: the patch mesh plus what its optional JSON scene file says (views, solver defaults).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a scene's geometry tells someone writing a view for it (`hmcr info --bounds`): its
 // bounding box, which axis is probably up, its patches and emitters; and the view that a scene
 // without views gets (docs/usage.md#naming-a-scene).

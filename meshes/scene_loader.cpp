@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // load_scene: a bundled scene name, a JSON scene file or a bare mesh file -> Scene.
 //
 // JSON scene file (keys other than these are an error, to catch typos):

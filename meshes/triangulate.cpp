@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ear clipping (Meisters 1975; Eberly, "Triangulation by ear clipping", 2002) in the polygon's
 // least-squares plane. Orientation tests use a tolerance relative to the polygon's size, the
 // same one the patch checks use for a zero-area corner (meshes/validation.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Triangulation of one polygon (convex or concave, no holes except MGF-style seams) by ear
 // clipping in its best-fit plane. Used by the repairs (meshes/repairs.h) for polygons of more
 // than four corners, concave quads and non-planar quads.

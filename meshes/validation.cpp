@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Patch and material validation. The tolerances are relative to the face's own size so that
 // the checks mean the same in a 5 cm model and a 50 m hall.
 #include "meshes/validation.h"

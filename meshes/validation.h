@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Validation of loaded patches and materials (docs/design.md §1), on plain numbers so that it can
 // be tested without files. Each check returns the message of the first problem (without the
 // `file:line:` prefix, which the caller knows) or nothing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A view of a scene: a pinhole camera (rays/camera.h) and its image size, as a scene file
 // gives it (docs/design.md §11.1).
 #pragma once

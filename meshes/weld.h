@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Welding: exactly equal positions are one vertex. The builder (adjacency) and the repairs
 // (repeated corners, duplicate faces) must agree on what "the same corner" means, so both use
 // this one definition.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cs: chi-square divergence of the sampled kernel from the uniform distribution.
 // Rigau, Feixas, Sbert, "Refinement criteria based on f-divergences", EGSR 2003.
 //

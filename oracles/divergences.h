@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // f-divergences of a sampled distribution from the uniform one, shared by the refinement
 // oracles (kernel samples of a link) and the pixel sampling criteria (luminances of a pixel's
 // samples): one place for D, chi^2 and h^2.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Summary statistics of the N_s kernel samples F_k of a link, shared by the line-based oracles.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ks: kernel smoothness.
 // Gortler, Schroeder, Cohen, Hanrahan, "Wavelet radiosity", SIGGRAPH 1993.
 //

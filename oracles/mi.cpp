@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // mi: mutual-information discretisation error.
 // Feixas, Rigau, Bekaert, Sbert, "Information-theoretic oracle based on kernel smoothness for
 // hierarchical radiosity", Eurographics 2002 (short presentations).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The refinement oracle interface (docs/design.md §4). An oracle sees plain numbers about one
 // candidate link, receiver element i and source element j, never a mesh or a ray tracer.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // power: the classic power-based refinement criterion.
 // Hanrahan, Salzman, Aupperle, "A rapid hierarchical radiosity algorithm", SIGGRAPH 1991.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The registries of plug-ins by name: the refinement oracles here, the pixel criteria in
 // trace/criteria/registry.h. A name is resolved once, where it is read (a flag, a scene file;
 // find_named of common/error.h), and from there on the code holds the plug-in itself.

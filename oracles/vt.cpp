@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vt: variance of the normalised sampled kernel.
 // Rigau, Feixas, Sbert, "Refinement criteria based on f-divergences", EGSR 2003 (the variance
 // criterion it compares the f-divergences with).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Solving to an element budget (docs/design.md §6.1): epsilon searched for on log epsilon
 // until the leaf count is within a tolerance of the target, every probe a refined solve with the
 // same seed (the refining pass alone under refine-then-freeze, the accepted one then frozen).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clusters of patches above the patch roots, each receiving and emitting as an isotropic cloud of
 // surfaces (docs/design.md §2.7): binary trees built once from the patches' centres, one over
 // the fronts and one over the backs, whose nodes are elements the descent links like any other.

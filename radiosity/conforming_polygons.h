@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Conforming polygons for the leaves of a hierarchy: every leaf becomes a polygon that also
 // lists the corners of finer neighbouring leaves lying on its edges, so the output has no
 // T-junctions (docs/design.md §5), within a patch and across mesh edges shared by two patches.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The constant control variate of the shooting (docs/design.md §3.11): each iteration shoots
 // Delta B - beta from every surface, the surfaces of radiosity 0 a lit side may see included,
 // and adds rho beta to every side exactly.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A node of a patch's quadtree (docs/design.md §2). The root element is the patch itself.
 #pragma once
 

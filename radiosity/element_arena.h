@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Storage for lazily created elements: blocks of 4 children that never move once handed out.
 // One arena per thread, so creating elements during parallel shooting takes no lock.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The element hierarchy: one quadtree per patch, created lazily and safely from many threads.
 #pragma once
 

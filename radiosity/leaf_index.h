@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The leaves of a fixed mesh by parameter point, for the rays of a frozen pass (docs/design.md
 // §3.10). Finding the leaf at a hit walks the side's quadtree from its root; through the
 // elements that reads a cache line or two of a different element at every level, which made

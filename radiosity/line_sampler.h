@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The line sampler of the line-based oracles (docs/design.md §4): N_s segments between
 // area-uniform points of two elements, each with its point-to-point kernel and visibility.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The link cache of docs/design.md §4.3: the geometric factor of a line-based oracle depends only
 // on the element pair and its lines (drawn from the pair's own random stream), so it is
 // computed once per (receiver, source) pair and reused by every later ray.

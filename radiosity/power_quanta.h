@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Deposits in whole quanta of power (docs/design.md §9). Each ray's deposit is rounded to
 // a quantum and summed as an integer; integer sums are exact in any order, so the threads of one
 // process and the ranks of an MPI run may add them in any order and still get the same bits.

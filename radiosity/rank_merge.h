@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An iteration shared by MPI ranks (docs/cluster.md). Each rank shoots a slice of the
 // iteration's rays on its own copy of the hierarchy; then every rank takes the union of all
 // ranks' subdivisions and the sum of all deposits, so that every copy is again the same.

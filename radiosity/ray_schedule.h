@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How many rays each iteration shoots (docs/design.md §3): proportional to its unshot
 // power, so that the whole solve shoots the requested total.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-ray hierarchical refinement (docs/design.md §3): the descent from the root link to
 // the receiver element that takes the ray's power.
 #pragma once

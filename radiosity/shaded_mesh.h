@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The leaves of a solved hierarchy as a conforming polygon mesh with Gouraud vertex radiosity
 // (docs/design.md §5): what the VTK export and the image renderer draw.
 #pragma once

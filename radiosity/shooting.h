@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One stochastic Jacobi iteration (docs/design.md §3): sources frozen, rays chosen
 // by unshot power, each ray refined to its receiver element and deposited there.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // solve(): a patch mesh in, an element hierarchy with radiosity out (docs/design.md §2, §3).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every setting of a solve, declared once. The list below generates SolverOptions; the command
 // line's flags (app/), a scene file's "solver" keys and the run summary's "options" are all
 // read off it, so a new setting is one line here plus its use in the engine.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The settings table of solver_options.h as data: what the command line, scene files and run
 // summaries walk, so that none of them names a setting itself.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a solve leaves out by stopping: the power still unshot would have been reflected again
 // and again. With the reflected fraction r of the last iteration (per channel), the missing
 // reflected power is the geometric tail U r / (1 - r) of the unshot power U.

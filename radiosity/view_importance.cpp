@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "radiosity/view_importance.h"
 
 #include <tbb/parallel_for.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // View importance (docs/design.md §3.12): how much each side's radiosity matters to the scene's
 // views, directly (the pixels that see it) and through the light it reflects onto what they see.
 // Solved as the adjoint of radiosity on the patches; it weighs the oracles' link values so that

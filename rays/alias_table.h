@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sampling an index with probability proportional to its weight in O(1): Walker's alias
 // method, built with Vose's stable variant ("A linear algorithm for generating random numbers
 // with a given distribution", IEEE TSE 1991). Used to pick the source leaf of every ray.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pinhole camera of a scene's View, shared by the radiosity renderer and the path tracer.
 //
 // A pinhole at View::position looking at View::look_at, with View::up made orthogonal to the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Parameter-space domain of an element and its regular 4-way subdivision (docs/design.md §2).
 //
 // On a quad patch the domain is the square [u0, u0+s] x [v0, v0+s]. On a triangle patch it is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Points uniformly distributed by area on an element of a patch (density 1 / A_element), in the
 // patch's parameter space: where a ray starts, where a kernel line ends, where a light is
 // sampled. What depends on the element alone is computed once, for the many points a line

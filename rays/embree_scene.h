@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Embree behind a small RAII facade: the rest of hmcr asks for first hits and visibility and
 // never touches RTC types. Quads are traced as two triangles; hits report the patch index.
 // A scene can also be built from a plain triangle soup (the renderer's Gouraud mesh): there a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One input polygon as the engine sees it: corners, plane, material, and the map between its
 // parameter space and 3D.
 //

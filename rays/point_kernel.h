@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The point-to-point form factor kernel of docs/design.md §4, without visibility:
 // F(x, y) = max(0, cos theta_x) max(0, cos theta_y) / (pi r^2).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ray generator of rays/ray_generator.h. The vector kernel is compiled once per instruction
 // set Highway knows (foreach_target.h includes this file again for each) and the widest the
 // machine supports is chosen when the program runs. Every operation is one IEEE operation per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where the rays of a batch start (docs/design.md §3.1): a region of a patch (a parameter-space
 // domain) picked by an alias table, a uniform point of the region and a cosine-distributed
 // direction around the patch's normal. Generated in SIMD lanes (Highway, the widest vectors

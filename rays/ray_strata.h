@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The rays of an iteration dealt to its sources in proportion to their weights, by systematic
 // sampling (docs/design.md §3.1): with N rays, cumulative weights W_l and total S, source l
 // shoots the rays [floor(N W_l / S + o), floor(N W_(l+1) / S + o)) for one uniform offset o.

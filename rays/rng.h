@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Keyed random streams (docs/design.md §3): every ray and every oracle pair draws from a stream
 // determined by its keys alone, so results do not depend on thread scheduling.
 // The generator is SplitMix64 (Steele, Lea, Flood, "Fast splittable pseudorandom number

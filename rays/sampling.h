@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Samplers; each comment states the density the tests check it against.
 #pragma once
 

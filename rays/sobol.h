@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Randomised quasi-random draws for the rays leaving the sources (docs/design.md §3.2): the
 // rays of an iteration are dealt to their sources (rays/ray_strata.h), and each source's rays
 // are the points 0, 1, 2, ... of its own Sobol sequence in the four dimensions of a ray's start

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "rays/surface_points.h"
 
 #include <tbb/parallel_for.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fixed stratified points on every side of a scene's patches (docs/design.md §6.9): the
 // quadrature points of a point reference, independent of any mesh.
 //

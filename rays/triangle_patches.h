@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The patch of each triangle of a patch scene. A quad's two triangles are consecutive, so the
 // patch of triangle t is t less the quads' second triangles up to it: one bit per triangle and
 // one count per 64 triangles, 0.4 MB at 10^6 patches where a patch number per triangle took

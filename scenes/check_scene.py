@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Check a Wavefront OBJ + MTL scene against the hmcr scene conventions (docs/design.md §1).
 
 An author's aid, not the authority: hmcr's own loader decides validity (some tolerances here

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """What the scene generators share (standard library only): numbers as OBJ writes them, a
 mesh of vertices shared by position with faces in named groups, and the quads of a box.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """A radiosity reference against a traced reference, per view, in luminance.
 
 It prints the table of docs/results.md#radiosity-against-the-path-tracer ("The references").  The

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """hmcr's Cornell box against Blender Cycles: per pixel and per face.
 
 Needs Debian's python3 (/usr/bin/python3) with python3-numpy, which the `blender` package pulls

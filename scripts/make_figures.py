@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Builds the docs' study figures from a finished study and its reference.
 
     /usr/bin/python3 scripts/make_figures.py studies/cornell ref/cornell cornell 19000 camera corner

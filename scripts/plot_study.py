@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Draws a study's plots from the numbers hmcr wrote for them (docs/studies.md, "Plots").
 
     /usr/bin/python3 plot_study.py STUDY/plots/plot_data.json

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Render an hmcr solution (.vtp) to a PNG with VTK, the way ParaView shows it.
 
     xvfb-run -a /usr/bin/python3 scripts/render_vtp.py out/cornell.vtp scenes/cornell/cornell.json camera out/cornell.png [--edges]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """hmcr against RenderPark's port (rpkCpp), one thread, the Cornell box: times, or errors.
 
 What it does, in order (docs/performance.md#against-renderpark shows a run):

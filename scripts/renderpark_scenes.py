@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """RenderPark's ten top-level MGF scenes solved and rendered by hmcr (docs/renderpark-scenes.md).
 
 What it does, in order:

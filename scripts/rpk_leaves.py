@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """rpkCpp's final leaf elements, written by a few lines added to a copy of rpkCpp, read back and
 turned into a foreign solution that `hmcr error --foreign` measures (docs/design.md §11.4).
 

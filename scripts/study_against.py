@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """A meshing study's cells measured against other references: does its verdict depend on the
 reference? (docs/results.md, "Does the verdict depend on the reference?")
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Meshing studies of one scene under different solver settings, side by side, as markdown.
 
 Each study folder (`hmcr study ... -o DIR`) holds a table.json whose options name its refine

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The Python the scripts run in: one that has their modules.
 
 numpy, matplotlib and VTK come from Debian's packages (python3-numpy, python3-matplotlib,

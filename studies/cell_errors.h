@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A meshing study's cell (studies/study.h) measured as its tables and plots show it: each image
 // error averaged over the views, and NaN, left out of the means, where nothing was measured.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the two kinds of study (studies/study.h: oracles at element budgets; studies/
 // sampling_study.h: pixel samplers at spp values) share about their cells: a cell's notes within
 // the study's progress, the limits on their number and seeds, the rule for a cell file left by

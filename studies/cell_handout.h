@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A study's cells over MPI ranks (docs/cluster.md): rank 0 reads what earlier runs left, then
 // hands out the cells still to compute, one at a time, to ranks 1..K-1 as they become free.
 // Each worker writes its cells atomically, as a single process does, so a run killed on any

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image metrics of a meshing study (docs/design.md §6), on 8-bit sRGB images on the 0-255 scale,
 // both quantised with the one exposure the study fixed from its reference.
 //

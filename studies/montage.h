@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Figures of a study: equal-sized images shrunk by an integer factor (box filter on the 8-bit
 // values) and laid out left to right, top to bottom, with a 2-pixel white gap; each tile may have
 // a label (its sampler or oracle) centred in a white strip under it.

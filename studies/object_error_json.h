@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An object error as cell files, table.json and `hmcr error` write it (docs/design.md §11.7):
 // {"relative_l2", "standard_error", "samples", "unmatched", "nearest", "unlit", "largest":
 // [{"patch", "side", "share"}]}, non-finite numbers as null.

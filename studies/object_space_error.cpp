@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "studies/object_space_error.h"
 
 #include <tbb/parallel_for.h>

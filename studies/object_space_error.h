@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Object-space error of a meshing study (docs/design.md §6): the area-weighted relative L2
 // difference between a solution's and the reference's Gouraud radiosity over all surfaces,
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The numbers a study's plots show (docs/design.md §6), written to STUDY/plots/plot_data.json
 // for scripts/plot_study.py to draw. The data is a list of figures, each a row of panels:
 //   lines: series of points (x ± se, y ± se, n), log-log, with error bars both ways;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Object error against a point reference (docs/design.md §6.9): the object error of
 // studies/object_space_error.h with the reference's quadrature points (rays/surface_points.h)
 // in place of a reference mesh, and the reference's own noise taken out.

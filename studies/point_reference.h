@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Point references (docs/design.md §6.9): the radiosity of a scene at fixed stratified points on
 // every surface side (rays/surface_points.h), each estimated by the path tracer, independent of
 // any mesh; and every view path-traced, for the image metrics. Every surface is diffuse, as the

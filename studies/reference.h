@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Converged references (docs/design.md §6): a fixed uniform mesh solved with many rays, twice with
 // different seeds, so that the reference states its own convergence in the study's metrics.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "studies/reference_measure.h"
 
 #include "studies/point_reference.h"

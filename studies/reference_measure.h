@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A solution measured against a reference of any kind (docs/design.md §6.5, §6.6, §6.9): what
 // a study does to each cell and `hmcr error` to any solution. The reference is loaded once:
 // its mesh (studies/reference.h) or its points (studies/point_reference.h) for the object

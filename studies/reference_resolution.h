@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a reference can judge (docs/design.md §6.10): the finest detail it resolves on each
 // patch side, and the share of a solution's area in leaves finer than that.
 //

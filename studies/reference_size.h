@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How large a reference a study needs (docs/studies.md, "Choosing a reference"): the sizes
 // `hmcr reference --for-budget N` gives where the command line gives none.
 #pragma once

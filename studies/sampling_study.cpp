@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "studies/sampling_study.h"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sampling studies: every pixel sampling criterion at the same mean number of
 // samples per pixel and seeds, measured against a reference (studies/traced_reference.h, or a
 // radiosity reference's images), as Table 1 and Figures 4-6 of Rigau, Feixas, Sbert,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sampling study's cell files and tables (studies/sampling_study.h).
 #include <fmt/format.h>
 #include <fmt/ranges.h>

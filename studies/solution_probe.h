@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The radiosity a solution shows at a point of a given patch side, for the object error against
 // either kind of reference (studies/object_space_error.h, studies/point_error.h;
 // docs/design.md §6.6).

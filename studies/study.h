@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Meshing studies (docs/design.md §6): every oracle at one or more element budgets and seeds,
 // measured against a converged reference (studies/reference.h) in image and object space.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A meshing study's figures and ParaView files, written at its end from the cells' files
 // (docs/studies.md, "A meshing study's files"):
 //   OUT/figures/VIEW-B{budget}-images.png  the reference's image of the view, then each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The study's cell files and tables (studies/study.h): JSON per cell, the long-form table.json
 // and table.csv, and the paper's tables table.md and table.tex.
 #include <fmt/format.h>

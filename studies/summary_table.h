@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tables of a study for a reader (docs/design.md §6): one row per oracle or sampler, each
 // column a mean ± standard error over the seeds; in bold, the best mean of each error column and
 // every mean not significantly worse than it (a one-sided Welch t-test at 5%). Written as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How the study files write and read a field: CSV numbers and text, and JSON numbers that may
 // be infinite or NaN (JSON has neither: nlohmann writes them as null). A cell file is checked as
 // it is read: a count that is negative or not whole, an error or a time below zero, is an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Traced references: every view of a scene path-traced with the uniform sampler at
 // many samples per pixel, an independent solution of the same light transport against which
 // sampling studies (studies/sampling_study.h) measure adaptive images. `hmcr trace-reference`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // BatchRun of trace/pixel_run.h: stratified batches of 8 samples until the criterion holds.
 #include <algorithm>
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How a surface point reflects, for the path tracer (docs/design.md §10.1): a Lambertian part of
 // reflectance rho_d plus a specular part rho_s, an ideal mirror at roughness 0, else the glossy
 // lobe of trace/ward_lobe.h. rho_d + rho_s <= 1 per channel (meshes/validation.h).

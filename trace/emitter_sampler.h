@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Next-event estimation's light sampler: an emitting side of a patch (its front, or the back of
 // a two-sided patch, docs/design.md §1.3) chosen with probability proportional to its power
 // A_j |E_j| (|c| the channel sum, as everywhere in hmcr), then a point uniformly by area on it,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The papers' protocol of adaptive sampling (`--allocation map`; Rigau, Feixas, Sbert,
 // "Refinement criteria based on f-divergences", EGSR 2003, section 5 and Fig. 7, after their
 // "New contrast measures for pixel supersampling", CGI 2002): a first uniform pass of 8

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The runs of Scheme::passes (trace/criteria/criterion.h), Blender Cycles' adaptive sampling:
 // the image in passes rather than each pixel on its own. Pass 0 gives every pixel a batch of 8
 // stratified samples (the batches of trace/pixel_run.h, the same samples as any batch run's);

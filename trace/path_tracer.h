@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A path tracer of the radiosity engine's scenes: the same patches through the same
 // Embree facade, so that a traced image is an independent solution of the same light transport.
 //

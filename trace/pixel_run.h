@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The samples of one pixel as a function of the refinement threshold. A criterion stops
 // refining where its value falls to the threshold, so a lower threshold only ever adds samples
 // to those a higher one took: a run keeps what it traced, and extend() traces only what a new,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The runs (trace/pixel_run.h) of every pixel of one image: extended together, in parallel, and
 // read off at a threshold as the image, its sample counts and its ray count. Each pixel owns
 // its samples and streams, so the split into tasks changes nothing.

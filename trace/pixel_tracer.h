@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One camera sample of one pixel: a jittered point of a stratum of the pixel, its primary ray
 // and the path tracer's estimate along it. Every sample draws from its own keyed stream
 // Rng(seed, pixel index, sample key) (rays/rng.h), the jitter first and then the path, so a

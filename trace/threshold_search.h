@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The refinement threshold that gives an adaptive image a target mean number of samples per
 // pixel (`hmcr trace --spp N`), found as `--budget` finds epsilon (radiosity/budget_search.h):
 // bisection on log threshold, with log-log interpolation inside a bracket.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A path-traced image of a view (`hmcr trace`): the path tracer (trace/path_tracer.h) sampled
 // per pixel by a sampling criterion (trace/criteria/), uniformly or adaptively. With an adaptive
 // criterion the threshold is found for a mean number of samples per pixel

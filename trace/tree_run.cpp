@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TreeRun of trace/pixel_run.h: the subpixel quadtree of the entropy criteria (Rigau, Feixas,
 // Sbert, "Entropy-based adaptive supersampling", 2003, Figure 5).
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The glossy lobe of MGF's specular reflectance `rs rho_s alpha`: a Gaussian distribution of
 // facet slopes of RMS slope alpha (the MGF specification's "Converting between Phong specular
 // power and Gaussian roughness"), the isotropic model of its author (Ward, "Measuring and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "viz/foreign_solution.h"
 
 #include <vtkCellData.h>

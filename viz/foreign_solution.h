@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A solution written by another program (RenderPark, a script of one's own), read for
 // `hmcr error` (docs/design.md §11.4, "What a foreign solution needs"): VTK XML PolyData of
 // polygons with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tone mapping of image/tone_map.h applied to a solution's Gouraud mesh: the exposure of a
 // mesh, and the `RadiosityColor` of its points.
 #pragma once

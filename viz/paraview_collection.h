@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A ParaView collection file (.pvd): several .vtp files as the time steps of one source, so
 // that ParaView steps through them with its time controls (a study's meshes, one per cell).
 #pragma once

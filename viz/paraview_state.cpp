@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The .pvsm writer (paraview_state.h). The layout of the file is ParaView's own: proxies with
 // ids and properties, then proxy collections that name them; ids here are fixed.
 #include "viz/paraview_state.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A ParaView state file (.pvsm) that opens a solution as hmcr means it to be seen: the .vtp
 // through ParaView's XMLPolyDataReader, coloured by RadiosityColor with Map Scalars off (the
 // array is already sRGB), Gouraud interpolation, and no lighting (ambient 1, diffuse 0, the

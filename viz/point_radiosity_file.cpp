@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "viz/point_radiosity_file.h"
 
 #include <vtkCellArray.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A point reference's points on disk (docs/design.md §11.10): VTK XML PolyData of vertices, one
 // per quadrature point, which ParaView shows as a point cloud coloured by radiosity.
 //

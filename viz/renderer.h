@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // hmcr's own image renderer (docs/design.md §6): Embree primary rays on a solution's Gouraud mesh,
 // barycentric interpolation of the vertex radiosity, radiance L = B / pi (Lambertian surfaces).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ray queries against a ShadedMesh's Gouraud shading: the renderer's primary rays and the
 // object-space error's point lookups both ask "what radiosity does the mesh show here".
 //

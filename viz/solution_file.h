@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A solution as ParaView reads it (docs/design.md §5): the hierarchy's leaves as a conforming
 // Gouraud mesh, written to a .vtp with the run's metadata. The one way solve, reference and
 // study write their solutions.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The solution as VTK XML PolyData (.vtp, appended raw, LZ4), with the arrays of
 // docs/design.md §5, for ParaView.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading a solution back from its .vtp (docs/design.md §5) for rendering and comparison.
 #pragma once
 

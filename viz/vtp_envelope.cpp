@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // check_vtp_envelope (vtp_envelope.h): the XML part by vtp_header.h, then every appended array's
 // header against the bytes that are really there.
 #include "viz/vtp_envelope.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What VTK's XML reader would allocate for a .vtp, checked before it runs: VTK trusts the
 // sizes a file declares (a block count of 1.5e9 in a damaged appended section made it take
 // 6.6 GB and a minute), so every declared count and every appended array's header must fit the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // read_vtp_header (vtp_header.h): expat calls on_start for every element of the XML part, in
 // document order; the first problem found stops it.
 #include "viz/vtp_header.h"

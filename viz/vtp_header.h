@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The XML part of a .vtp (everything before its appended data), read by expat (the parser VTK
 // itself uses) before VTK reads the file: what it declares about the appended arrays, and the
 // declarations VTK 9.1 would trust or crash on, refused. docs/design.md §11.4.

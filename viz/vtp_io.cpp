@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "viz/vtp_io.h"
 
 #include <vtkCallbackCommand.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What every hmcr .vtp reader and writer shares (the solutions of viz/vtk_export.h and
 // viz/vtk_import.h, the reference points of viz/point_radiosity_file.h): VTK's XML PolyData
 // written atomically with hmcr's compression, read with VTK's messages kept off the console,

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Generate cube-room.obj and cube-room.mtl (deterministic, standard library only).
 
     /usr/bin/python3 scenes/cube-room/generate.py

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Generate mirrors.obj and mirrors.mtl (deterministic, standard library only).
 
     /usr/bin/python3 scenes/mirrors/generate.py

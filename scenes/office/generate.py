@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Generate an open-plan office floor as OBJ + MTL (deterministic, standard library only).
 
     /usr/bin/python3 scenes/office/generate.py                  # office.obj, about 10^6 faces

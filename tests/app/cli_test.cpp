@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The command line as a user meets it: bad input gets one line on stderr, exit code 2 and
 // no output file; a good run writes the .vtp and its JSON summary.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene without views, as a user meets it: a bare OBJ of a closed room with z up renders lit
 // from its default view; an image that comes out black says so; `hmcr info --bounds` prints what
 // writing a view takes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // References of both kinds, `hmcr error` and the studies' checks of their reference, as a user
 // runs them: the files each writes, the kind's flags kept apart, a warning exactly where cells
 // are finer than the reference, `hmcr error` giving a study cell's own numbers, and a study that

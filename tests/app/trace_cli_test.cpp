@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr trace` and `hmcr samplers` as a user meets them: the image, its density map and its
 // summary; bad input gets one line, exit code 2 and no file, before any tracing.
 #include <gtest/gtest.h>

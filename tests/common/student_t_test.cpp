@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tests' own Student t quantiles (tests/support/statistics.h) against published values.
 #include <gtest/gtest.h>
 

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """The docs stay true to the tree: every relative link of README.md and docs/*.md names a file
 that exists and, with #anchor, one of its headings; every docs/... citation in the sources
 resolves (docs/design.md §N to a heading numbered N, docs/X.md#anchor to a heading); and every
 registered oracle and pixel criterion has its entry in docs/oracles.md or docs/criteria.md,
-holding line 2 of its source file's opening comment (its paper, or why it has none); and the
-viewing advice keeps the build: `make view-deps` installs ParaView without its recommended
-packages (python3-paraview, which would remove libvtk9-dev), and the docs send readers there.
+holding line 2 of its source file's opening comment (its paper, or why it has none; the comment
+after the license line); and the viewing advice keeps the build: `make view-deps` installs
+ParaView without its recommended packages (python3-paraview, which would remove libvtk9-dev),
+and the docs send readers there.
 Usage: check_docs.py REPO_ROOT. Prints one line per problem; exit code 1 if there is any."""
 import pathlib
 import re
@@ -104,7 +106,10 @@ def plugin_entries(registry, folder, doc):
         src = root / folder / f"{file_name}.cpp"
         code = src.read_text()
         name = re.search(r'Named(?:Oracle|Criterion)\(\s*"([^"]+)"', code).group(1)
-        second = code.splitlines()[1]
+        lines = code.splitlines()
+        if lines and "SPDX-" in lines[0]:  # the opening comment follows the license line
+            lines = lines[1:]
+        second = lines[1]
         paper = second[2:].strip() if second.startswith("//") else ""
         entry = sections.get(name)
         if entry is None:

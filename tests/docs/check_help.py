@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """docs/usage.md and the program's help agree: every option `hmcr COMMAND --help` offers is in
 usage.md's section of that command (its `### hmcr COMMAND` section, the solver settings table
 where the section says it takes every solver setting, and the options of every command that

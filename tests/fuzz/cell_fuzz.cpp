@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: a study's cell files (cells/CELL.json) of either kind, as a resumed study
 // reads them: each reader refuses what it cannot take, and what it takes checks out (no count
 // wrapped from a negative number, no error or time below zero, a known status).

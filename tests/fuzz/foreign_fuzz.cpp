@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: another program's solution (.vtp) as `hmcr error --foreign` reads it.
 //
 // Input: the bytes of a .vtp. Whatever read_foreign_solution returns must be a mesh the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What every fuzz target shares: a private folder for the files a reader reads, and the one rule
 // of hmcr's readers: reject anything, but only with a one-line InputError. Any other exception,
 // a crash or a sanitizer report aborts, so that libFuzzer keeps the input.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: MGF (README.md in this folder says how to build and run it).
 //
 // Input: MGF text written to fuzz.mgf, with a NUL byte separating a second file, part.mgf,

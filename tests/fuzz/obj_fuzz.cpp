@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: OBJ and MTL (README.md in this folder says how to build and run it).
 //
 // Input: OBJ text, optionally followed by a NUL byte and MTL text, written to fuzz.obj and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: PFM images, as a study reads a reference's views/VIEW.pfm.
 #include <cstdint>
 

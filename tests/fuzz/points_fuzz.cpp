@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: a point reference's points.vtp as `study` and `hmcr error` read it.
 //
 // Input: the bytes of a points.vtp. Whatever read_point_radiosity returns must be what the

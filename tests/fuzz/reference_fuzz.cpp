@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: a reference folder's reference.json, as `render --reference` and `study`
 // read it (the exposure of every view).
 #include <cmath>

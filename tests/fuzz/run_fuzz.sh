@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # run_fuzz.sh TARGET CORPUS SECONDS [RUNS]: fuzzes TARGET for SECONDS from a scratch copy of the
 # seed corpus (libFuzzer adds to its corpus folder). With RUNS, at most RUNS inputs from a fixed
 # random seed: the same inputs on every machine, so a test run does not pass or fail by luck.

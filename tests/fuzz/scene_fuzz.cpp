@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: JSON scene files and their solver settings.
 //
 // Input: the text of scene.json, beside a valid two-patch OBJ (fuzz.obj, fuzz.mtl) it may name.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: a study's table.json, as `hmcr plot` reads it (either kind of study).
 #include <cstdint>
 

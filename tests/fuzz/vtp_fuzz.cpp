@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: solution files (.vtp) as `render`, `info` and `study` read them.
 //
 // Input: the bytes of a .vtp. Whatever read_vtp returns must be a mesh the renderer can use:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hostile-input suite: every case runs the hmcr binary as a careless or hostile user would
 // and checks the promise of docs/usage.md#bad-input: exit code 2, one line on stderr naming what
 // and where, no hang, and not one file of the working folder written, removed or changed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ctrl-C or a cluster's SIGTERM ends a long solve, reference or trace cleanly: exit code
 // 128 + signal, one line saying so, and no file left behind (no partial output, no temporary file).
 #include <signal.h>

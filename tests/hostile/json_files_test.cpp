@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile JSON files: a key given twice (nlohmann kept the last, so a stray copy of a setting won
 // silently) is refused with its line in scene files and reference.json, and makes a study cell
 // unreadable; a reference.json member of the wrong type is named by its path, not in nlohmann's

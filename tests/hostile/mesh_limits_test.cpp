@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile meshes at the OBJ reader's limits (docs/usage.md#bad-input): faces of hundreds and
 // thousands of corners read whole and alike in OBJ and MGF, material names with spaces, a line
 // too long, and warnings by the hundred thousand.

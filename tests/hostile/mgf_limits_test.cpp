@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile MGF files: a few lines that ask for unbounded work (deep nesting, huge arrays) or for
 // geometry beyond what hmcr can trace, each refused in one line naming its place, quickly and in
 // little memory (docs/usage.md#bad-input).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile MGF under mpirun: every rank reads the scene, and the refusal is said once, by rank 0,
 // with exit code 2 (slow: mpirun takes seconds to start).
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Options that contradict each other are refused, saying why, rather than one silently winning.
 #include <filesystem>
 

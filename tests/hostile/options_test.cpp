@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile options: values that once were accepted and ran for ever or gave a silent wrong
 // result, and lists with a value twice.
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Two runs given the same output at once (a script started twice, two jobs of one array): the
 // second is refused while the first holds the output (common/output_lock.h), so the files left
 // are always one run's set, never x.vtp of one beside x.json of the other.

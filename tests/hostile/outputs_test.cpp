@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile outputs: no command writes over one of its own inputs, and an output that cannot be
 // written is refused before the work, in hmcr's words: every file of the command's set is
 // checked first, so that a refusal leaves none of them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile scenes: every class of bad scene docs/usage.md#bad-input lists, and the cases that once
 // hung, crashed or went unnoticed.
 #include <unistd.h>

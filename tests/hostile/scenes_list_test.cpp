@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `hmcr scenes` where the data folder is missing or holds no scene, and with scene folders
 // whose names hold control characters: a clean refusal, and names printed one a line, escaped.
 #include "tests/hostile/hostile.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile solution files: a .vtp from outside is checked array by array and cell by cell, and
 // bound to the scene it was solved for.
 #include <vtkCellArray.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile specular materials and the flags of the papers' protocol: each refused in one line
 // `file:line: why` with exit code 2 and nothing written (docs/usage.md#bad-input); and the
 // radiosity commands say once that they absorb specular light.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile study folders: a cell file cut short, emptied or holding values no study makes is
 // computed again, not fatal and not tabled; a folder made with other settings is refused, not
 // mixed into one table; a study's size and seeds are bounded before anything is written;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SIGTERM ends an adaptive trace within a pixel: one pixel may take up to a million samples
 // (minutes), and a cluster's time limit gives seconds. Slow: each case traces for a second first.
 #include <signal.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile trace options: values the messages exclude but that were once accepted (an empty view
 // name, a width or max-spp of 0), and an adaptive trace whose kept samples cannot fit in memory,
 // refused before it traces (docs/usage.md#bad-input).

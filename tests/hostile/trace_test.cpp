@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile input to the path tracer's commands (`trace`, `trace-reference`, `study --samplers`):
 // every bad option is refused before any tracing with one line and exit code 2, no output goes
 // over an input, and a study of one kind refuses the other kind's flags.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // View importance on views of millions of pixels: it traces them in batches, so its memory does
 // not grow with the views' pixels, and it hears SIGTERM between batches
 // (docs/usage.md#bad-input).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The promise of docs/usage.md#bad-input that no command writes outside the file or folder it
 // was given: every command is run once as a user would, with its outputs in folders of their
 // own, and once on a scene whose view names point out of those folders; the working folder is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The density map's documented colour ramp (image/density_map.h), at its stops and between.
 #include "image/density_map.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The labels' bitmap font (image/label.h): widths, a glyph's pixels at scale 1 and 2, upper case
 // as lower case, an unknown character as '?', and text beyond the image's edge left out.
 #include "image/label.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Information measures by side (docs/design.md §7.7): a two-sided patch is two states, its front
 // and its back, each with its own row of form factors, for a scene's patches and for a
 // solution's leaves.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A solution's leaves as a discretisation: its cells reduced to their triangles and quads, and
 // the information measures of that discretisation (docs/design.md §7).
 #include "information/leaf_patches.h"

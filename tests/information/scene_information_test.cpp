@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scene information measures (docs/design.md §7) against exact values and known properties, with
 // local lines (global lines: global_lines_test.cpp).
 //

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Install.* (CMakeLists.txt): `cmake --install` into a temporary prefix, then the installed hmcr
 # must find its bundled scenes and plotting script in PREFIX/share/hmcr, never in the source
 # tree it was built from:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The mesh's connectivity as plain arrays against the OpenMesh mesh it comes from.
 #include "meshes/connectivity.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Counting MGF polygons without making them: each entity's count is what the reader makes, arrays
 // and includes multiply, and nesting, cycles and overflow are handled.
 #include "meshes/mgf_polygon_count.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The MGF reader: one test per entity (what it makes, and its errors with file:line), the
 // transformations and arrays, includes, and the tessellation's stated area bound.
 #include "meshes/mgf_reader.h"

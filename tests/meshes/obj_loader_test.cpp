@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // load_obj: a good file gives the right patches, materials and adjacency; every validation
 // error of docs/design.md §1 throws a InputError naming the right `file:line`.
 #include <fmt/format.h>

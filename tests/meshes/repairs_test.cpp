@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The repairs (docs/usage.md#repairs): each kind on an OBJ that needs it (what was done, the
 // report, its summary line), the same file refused with today's message under --strict, and what
 // stays an error either way.

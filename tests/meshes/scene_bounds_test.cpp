@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What `hmcr info --bounds` prints and the view a scene without views gets
 // (meshes/scene_bounds.h): the up axis from the emitters, a view inside a closed room whichever
 // axis is up, and from outside where there is no room.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loader test helpers: scene files in a fresh temporary directory, and error-message checks.
 #pragma once
 

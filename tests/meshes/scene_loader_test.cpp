@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // load_scene: JSON scene files, bare OBJ files, bundled names, and their errors.
 #include <gtest/gtest.h>
 #include <stdlib.h>

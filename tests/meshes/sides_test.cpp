@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where a patch's back comes from (docs/design.md §1.3, §1.6, §1.7): a material's sides (MGF's
 // `sides`, the load's setting for OBJ, a scene file's per material), and coincident faces. The
 // MGF files reproduce the statement patterns of RenderPark's scenes: materials that do not say

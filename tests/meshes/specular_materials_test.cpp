@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Specular reflectance as the readers take it (docs/design.md §1.2, §11.2, §11.3): MTL `Ks`
 // with `illum 3` a mirror, MGF `rs` with its roughness; Kd + Ks checked like Kd; unsupported
 // illumination models and bad roughness refused at their line.

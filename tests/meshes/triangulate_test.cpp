@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ear clipping in the best-fit plane: the triangles cover exactly the polygon (no more, no less),
 // turn the polygon's way, and a self-intersecting polygon is refused.
 #include "meshes/triangulate.h"

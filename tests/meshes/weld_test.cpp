@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Welding: exactly equal positions get one id, numbered in order of first appearance, whatever
 // the positions' order; -0 and +0 are equal, and nearly equal positions are not.
 #include "meshes/weld.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MPI runs give what one process gives (docs/cluster.md): `mpirun -n 1, 2, 3` of a refined
 // solve, a refined-then-frozen solve (also with the control variate), a budget solve, a
 // reference and a study against the same command without mpirun, file

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The shared f-divergences (oracles/divergences.h) against values computed by hand, and the
 // three oracles that are built on them.
 #include "oracles/divergences.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What every registered oracle promises, checked for each one automatically (a new oracle in
 // the registry is tested without touching this file).
 //

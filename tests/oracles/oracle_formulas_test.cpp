@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The seven oracles against values computed by hand (docs/design.md §4.1): power from centre
 // geometry, the six line-based ones for small kernel vectors with N_s = 4, A_i = 2, A_j = 3,
 // A_T = 10; and the identities of section 4.2.

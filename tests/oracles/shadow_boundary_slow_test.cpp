@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where an oracle puts its elements on a sharp shadow (scene `shadow`): a 0.2 m square emitter
 // 1.5 m above a grey 2 x 2 m floor, a black 0.4 m square occluder at 0.6 m between them.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Budget search (docs/design.md §6): epsilon by bisection on log epsilon until the leaf count is
 // within the tolerance, for every oracle; clean failures when the budget cannot be reached;
 // probes known from another budget's search taken without changing the result.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clusters on scenes of 10^4 and 10^5 patches (docs/design.md §2.7): a budget of 5,000 leaves
 // on 101,400 patches reached with cluster leaves, the power it meshes kept exactly; a furnace of
 // 10,086 patches on cluster leaves exact on every patch. Slow: many patches, many solves.

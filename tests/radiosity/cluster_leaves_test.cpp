@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clusters as leaves of the mesh (docs/design.md §2.7): budgets below the patch count, the
 // frozen pass depositing on cluster leaves, what the mesh counts and what the output says of
 // each face's cluster, with results that stay exact: the furnace per patch, a shadow's umbra

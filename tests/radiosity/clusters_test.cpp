@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clusters (docs/design.md §2.7): the tree over the patches, the descent through it (grouped
 // and one ray at a time alike), and exact results with clustering on: the furnace of many
 // patches, the plates' form factor, and the same bits for one and two threads.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clusters over two-sided patches (docs/design.md §2.7): a cluster's deposit never reaches a side
 // that faces away from where the light is, so the two-sided furnace stays exact.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The constant control variate (docs/design.md §3.11): exact where the plain estimator is
 // exact, the same expected values, less spread where the unshot radiosity is nearly constant,
 // and the same bits for any thread count.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Monte Carlo form factors against the exact values of docs/design.md §8.
 //
 // Line pairs (x uniform on i, y uniform on j, the docs/design.md §4 kernel with Embree

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Solving on a frozen mesh (a study's mesh error): the same leaves, no oracle, and an error that
 // falls as 1/sqrt(rays) to the error of the mesh itself.
 #include <gtest/gtest.h>

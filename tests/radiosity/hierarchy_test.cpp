@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The element quadtree (docs/design.md §2): areas, point location, identities, limits, push-pull.
 #include "radiosity/hierarchy.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A fixed mesh's leaves by parameter point (radiosity/leaf_index.h): the same leaf as the
 // walk down the elements, on quads and triangles, on both sides, at and beside every boundary.
 #include "radiosity/leaf_index.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The link cache (docs/design.md §4.3) and the mi/kl identity at the level of whole solves.
 #include "radiosity/link_cache.h"
 

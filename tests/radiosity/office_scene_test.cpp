@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The generated office (scenes/office/generate.py) on a small instance: the face count its
 // plan gives, no repairs, and closed: no ray leaves it but by round-off.
 #include <gtest/gtest.h>

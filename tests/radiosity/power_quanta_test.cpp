@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "radiosity/power_quanta.h"
 
 #include <gtest/gtest.h>

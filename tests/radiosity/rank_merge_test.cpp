@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pieces of an iteration shared by ranks that need no MPI to test: how rays are sliced, and
 // the quanta deposits are counted in (the whole of it, with mpirun, is tests/mpi/).
 #include "radiosity/rank_merge.h"

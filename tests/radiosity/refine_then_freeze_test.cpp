@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Refine, then freeze (docs/design.md §3.10): the refining pass's mesh, the frozen pass's values,
 // exact on the plates, and the same bits for any thread count and under a budget search.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The grouped descent (refine_links, what shooting uses) against the one-ray descent from the
 // patch roots that docs/design.md §3 states (refine_link): for every oracle, on quads and on
 // triangles, every ray must end on the same element, the two hierarchies must be the same and

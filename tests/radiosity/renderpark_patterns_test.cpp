@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // RenderPark's MGF scenes (rpkCpp's etc/, which hmcr's repository does not hold) load and solve:
 // tests/data/mgf-patterns/ holds small scenes of hmcr's own that write what made four of them
 // fail, each as its scene writes it (docs/renderpark-scenes.md): a hospital's touching wall

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The output of a real solve: a refined furnace whose faces are 2 x 2 coplanar patches, so
 // element boundaries meet inside patches, across coplanar patches and across 90 degree creases.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The settings table: a scene file's "solver" object is checked key by key and value by value,
 // and the summary names every setting.
 #include "radiosity/solver_settings.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The solver against exact results (docs/design.md §8), for every registered oracle.
 #include "radiosity/solver.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Inside a sphere F(x, y) = 1 / A_T for all x, y (docs/design.md §8), so one emitter of power Phi
 // and a uniform rho give every other patch B = rho Phi / (A_T (1 - rho)); after K shooting
 // iterations the geometric series stops at rho^K: B_K = rho Phi (1 - rho^K) / (A_T (1 - rho)).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A thin wall written as two faces of N corners facing away from each other solves as the same
 // wall written as quads (docs/design.md §1.6): one surface with two sides, no light lost on
 // backs, the same power on each side and the same escaped power, within the noise of the seeds.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bias of stopping (radiosity/truncation.h) on the furnace, where it is known exactly.
 #include "radiosity/truncation.h"
 

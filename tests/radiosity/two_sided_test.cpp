@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Two-sided patches against exact results (docs/design.md §1.3, §8): each side has its own
 // material, radiosity and elements, and a one-sided patch keeps a black, absorbing back.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // View importance (docs/design.md §3.12): the views' pixel shares, the adjoint solve's exact
 // total in a closed box, and elements where the views look.
 #include "radiosity/view_importance.h"

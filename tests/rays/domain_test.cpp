@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A walk down the subdivision without dividing (rays/domain.h) picks, level by level down to
 // the deepest split, the child that child_containing's division picks, for any float point:
 // dyadic boundaries, their neighbours, the edges and points beyond them; and a quad's cell at a

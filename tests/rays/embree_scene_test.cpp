@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Embree scene built from the patches' mesh vertices (shared between patches) against the
 // one built from the patches alone (every patch's corners its own): the same triangles in the
 // same order, so every query must give the same bits.

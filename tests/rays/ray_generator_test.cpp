@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The vector ray generator: the same bits as its one-lane reference on every instruction set
 // the machine runs, and the densities it promises (docs/design.md §3.1): regions by weight,
 // points uniform by area, directions cosine-distributed.

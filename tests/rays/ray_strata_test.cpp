@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The strata that deal an iteration's rays to its sources (rays/ray_strata.h): every ray has one
 // source, each source's count is within one of its share, and over the offset the count's mean
 // is the share exactly.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Samplers against their densities: each is a hypothesis test with binomial or sample
 // standard errors.
 #include "rays/sampling.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scrambled Sobol draws (rays/sobol.h): a function of the ray's index alone, each source's
 // rays a (0, m, 2)-net in the point's two dimensions and stratified in each of the four (the
 // properties Owen's scramble keeps), uniform over seeds, and independent of the batch that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The point reference's quadrature points: stratified, jittered, on their patches, weighing
 // each side's area, the same for any thread count.
 #include "rays/surface_points.h"

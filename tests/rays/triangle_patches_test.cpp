@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "rays/triangle_patches.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """scripts/plot_study.py draws figures a paper can take as they are: for the figures of a
 sampling study of every sampler at two spp values (error_by_sampler, error_vs_spp) and of a
 meshing study of every oracle (error_vs_elements, error_by_patch), everything drawn lies inside

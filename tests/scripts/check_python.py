@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """The scripts find a Python that has their modules (scripts/system_python.py): run by a python3
 without Debian's numpy and matplotlib (a virtual environment of /usr/bin/python3, as a user's
 pyenv or venv comes first on the PATH), each runs again in /usr/bin/python3 and works; run

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """scripts/render_vtp.py draws a two-sided patch as its .pvsm has ParaView draw it: from either
 side, the side that faces the viewer. The scene: a closed room of one-sided walls with a light in
 its ceiling and a two-sided shelf in the middle, lit from above by the light and from below by

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """scripts/rpk_leaves.py on a small synthetic leaf file, as rpkCpp's inserted writer writes one:
 the leaves' patches, areas, units (B = pi x radiance, a sub-element's Ed an exitance) and power
 balance, rpkCpp's Gouraud values at a T-vertex, the .vtp's arrays and one-line errors.

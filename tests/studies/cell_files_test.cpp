@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A study's cell files are checked as they are read (studies/table_fields.h): a value no study
 // writes is an InputError, and the study computes the cell again instead of tabling it.
 #include "studies/cell_files.h"

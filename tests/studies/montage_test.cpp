@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A study's figures (studies/montage.h): tiles shrunk and laid out 4 a row, each label centred in
 // a strip under its tile, a long label widening every column, and bad input refused.
 #include "studies/montage.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The numbers a study's plots show (studies/plot_data.h): the tables' means and standard errors
 // over the same cells, the mesh panel only where the mesh error was measured, RMSEp against a
 // traced reference, error against spp only where the cells hold several target spp, and a

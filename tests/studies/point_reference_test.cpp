@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Point references (docs/design.md §6.9): each point's estimate within its own standard error of
 // the exact radiosity (the furnace, the plates), the object error against points unbiased where
 // a mesh reference reports its own floor, the same bits for any thread count.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A converged reference must be much closer to the truth than the solutions a study compares:
 // its two seeds must differ by less than a 2,000-element power solution differs from it.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tiny sampling study (studies/sampling_study.h) against a tiny traced reference
 // (studies/traced_reference.h): every documented file, resuming after a deleted cell, and a
 // search that cannot succeed recorded as a failed cell.

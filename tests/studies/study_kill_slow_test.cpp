@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An interrupted study loses at most the cell in flight: `hmcr study` is killed (SIGKILL) or
 // asked to stop (SIGTERM, SIGINT) after its first cell is written, then run again; the rerun
 // skips every cell the first run finished and completes the rest. Asked to stop, it ends with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tiny meshing study on the Cornell box (studies/study.h): every documented file with its
 // schema, and resuming: a rerun after one cell's file is deleted recomputes exactly that cell
 // and reproduces the tables, the recomputed cell's timing aside.

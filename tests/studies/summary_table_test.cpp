@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The readers' tables of a study (studies/summary_table.h): table.md and table.tex from one
 // model; numbers as LaTeX math, a power of ten shared by a mean and its standard error; the bold
 // of the best mean and of every mean a one-sided Welch t-test cannot call worse, on cases whose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact form factors of docs/design.md §8 (standard configuration-factor catalogue formulas).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Running the hmcr binary as a user does, and checking what it left behind.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The furnace's exact test (docs/design.md §8.2): every patch of a closed box that emits E and
 // reflects rho everywhere has B = E (1 - rho^(K+1)) / (1 - rho) after K iterations, whatever
 // the mesh.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hmcr binary as a child process of the test, measured: how long it ran, how long it took to
 // end after a signal, and its peak resident memory. run_hmcr (cli_run.h) goes through a shell,
 // whose own memory and time would be measured with it; this one is hmcr alone.

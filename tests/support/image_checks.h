@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact comparison of linear images for the viz tests (Eigen's == on Rgb is per channel).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the scene-information tests: measures with their plug-in bias bound, and the
 // scenes with exact channels.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The registered plug-ins by name, for tests that name them (parameters, options).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Solutions that must be the same bit for bit (docs/design.md §9): any thread count, a setting
 // that may not change them. One check, the leaves' ids and radiosity in order.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shaded meshes built in code for the object-error tests: unit-square grids carrying a field.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Small hand-built patch meshes and checks shared by the viz tests.
 #pragma once
 

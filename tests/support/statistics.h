@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hypothesis tests for Monte Carlo results. A check fails when the estimate is further from
 // the exact value than a few standard errors of the estimator; the standard error comes from
 // the estimator's own variance, never from a tuned tolerance.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A fresh directory per test (per TempDir, if a test makes several), removed afterwards, so a
 // test states its whole input next to its expectations.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Small scenes built in code for the solver tests: boxes, plates, tessellated spheres.
 #pragma once
 

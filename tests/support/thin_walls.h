@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A thin wall of N corners between two lamps, written in MGF as two faces facing away from each
 // other (paint up, tiles down), whole or as a fan of quads: one surface with two sides either
 // way (docs/design.md §1.6).

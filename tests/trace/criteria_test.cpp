@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pixel sampling criteria against values computed by hand: equal samples never refine, an
 // outlier does, by the amount each formula gives; and the contract every registered criterion
 // keeps (run over the registry, so a new criterion is tested by adding it).

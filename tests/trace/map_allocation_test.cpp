@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The papers' two passes (trace/map_allocation.h): the allocation in proportion to the map, its
 // cap and its total; the image reusing the first pass is the uniform image of each pixel's
 // count, and the fresh one is traced from the fresh streams at the same counts.

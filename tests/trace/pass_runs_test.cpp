@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The passes of Blender Cycles' scheme (trace/pass_runs.h), checked against its rule from the
 // outside: each pixel's samples are traced again batch by batch and judged by the criterion, and
 // a pixel went on after a pass exactly when it or one of its 8 neighbours still running was

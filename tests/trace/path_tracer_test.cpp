@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The path tracer against exact radiance: a closed furnace, a directly lit plate,
 // and its estimators against each other. Each is a hypothesis test on the mean over an image's
 // pixels, whose standard error comes from the pixels' own sample variance (pixels draw from

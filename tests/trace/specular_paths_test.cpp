@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The path tracer with specular surfaces against exact radiance (docs/design.md §10.1-§10.2): a
 // closed furnace of mirrors, diffuse and mixed walls of one albedo; an emitter seen in a mirror;
 // next-event estimation with MIS against pure path tracing on the bundled `mirrors`; and the

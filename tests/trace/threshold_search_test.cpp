@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The spp search on mean-sample functions with known answers: steps of many pixels (as images
 // give), a target it cannot reach, and a jump across the tolerance.
 #include "trace/threshold_search.h"

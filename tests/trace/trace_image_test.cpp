@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Whole traced images: every sampler reaches its spp target within 2%, an image does not
 // depend on the thread count, and the image the search assembles from its probes' samples is
 // the one a fresh render at the accepted threshold gives.

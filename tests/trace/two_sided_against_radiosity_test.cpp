@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The path tracer against the radiosity solve on a scene with a two-sided partition lit from
 // both sides (docs/design.md §1.3, §10.1): both solve the same light transport, so each side's
 // mean radiance agrees within their noise and the solve's mesh error.

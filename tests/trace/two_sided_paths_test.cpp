@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The path tracer's sides (docs/design.md §1.3, §10.1) against exact radiance: a two-sided plate
 // lit from both sides shows each side's light, a back that emits is found by every estimator,
 // a two-sided mirror mirrors on its back, and a one-sided patch's back stays black. Each mean is

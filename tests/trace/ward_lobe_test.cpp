@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The glossy lobe's sampling against its stated density (trace/ward_lobe.h): a chi-square test
 // of 200,000 directions binned in (cos theta, phi) about the normal against the density
 // integrated over each bin, the directions lost below the surface a bin of their own; and the

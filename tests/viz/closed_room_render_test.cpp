@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A render of a closed, lit room has no black pixel: every ray from inside meets a lit surface,
 // also where it passes exactly through the edge two cells share or along a T-vertex's edge
 // (viz/shaded_tracer.h). The views have an odd number of pixels, so that the middle row and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ParaView state written beside a solution, read back as XML (VTK's parser): it names the
 // .vtp, colours by RadiosityColor without mapping or lighting, and has the scene's first view
 // as its camera. And the study's collection of meshes.

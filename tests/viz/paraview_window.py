@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """ParaView's window shows a solve's .pvsm as `hmcr render` draws the view: the Cornell box
 solved, its state opened by ParaView's GUI on an Xvfb screen (its framebuffer read from the file
 Xvfb keeps of it), and the render view found on that screen (by its background, made magenta)

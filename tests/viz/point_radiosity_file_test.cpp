@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A point reference's points.vtp reads back as written, and a damaged one is refused naming the
 // file; another program's solution is read from its polygons, Radiosity and PatchId alone.
 #include "viz/point_radiosity_file.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A solution read back from its .vtp is the mesh that was written (to float precision).
 #include "viz/vtk_import.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // binary-entropy: the entropy contrast of a quadtree node from its extreme samples only.
 // Rigau, Feixas, Sbert, "Entropy-based adaptive supersampling", 2003, section 2.3 (the binary
 // pixel entropy "computed by only considering the maximum and minimum values") and eq. 19.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cc: classic contrast of a pixel's luminances, weighted by their mean.
 // Mitchell, "Generating antialiased images at low sampling densities", SIGGRAPH 1987 (eq. 6 of
 // Rigau, Feixas, Sbert, EGSR 2003), weighted by the mean as in Glassner 1995, p. 476, and as

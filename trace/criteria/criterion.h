@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pixel sampling criteria: whether a pixel, or a region of one, has enough samples.
 // Like the refinement oracles (oracles/oracle.h) they see plain numbers, the samples' radiance
 // and geometry, never a scene or a ray; each is one file of trace/criteria/ plus one line of

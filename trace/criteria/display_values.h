@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A criterion that sees display values instead of physical radiance: each sample's radiance
 // times an exposure, clamped to [0, 1] per channel, before the wrapped criterion measures it.
 //

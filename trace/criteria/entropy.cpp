@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // entropy: the entropy contrast of a quadtree node, channel entropies normalised by log n.
 // Rigau, Feixas, Sbert, "Entropy-based adaptive supersampling", 2003, eqs. 7, 10, 18, 19.
 //

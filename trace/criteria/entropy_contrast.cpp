@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "trace/criteria/entropy_contrast.h"
 
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The entropy contrast of a quadtree node's samples, shared by `entropy` and `binary-entropy`.
 // Rigau, Feixas, Sbert, "Entropy-based adaptive supersampling", 2003, eqs. 7-11 and 13-19.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // half-difference: how far the mean of every second sample is from the mean of all of them.
 // Dammertz, Hanika, Keller, Lensch, WSCG 2010, section 2.1: Blender Cycles' noise threshold.
 // ("A hierarchical automatic stopping condition for Monte Carlo global illumination".)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The luminances of a pixel's samples, the distribution the f-divergence, contrast and
 // variance criteria look at (Rigau 2003, eq. 24: p_i = L_i / sum L_i).
 #pragma once

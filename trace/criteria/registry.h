@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pixel sampling criteria by name (`hmcr samplers`, `--sampler NAME`).
 #pragma once
 

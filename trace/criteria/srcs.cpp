@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // srcs: square root of the chi-square divergence of a pixel's luminances from uniform.
 // Rigau, Feixas, Sbert, "Refinement criteria based on f-divergences", EGSR 2003, section 4.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // uniform: every pixel gets exactly the target number of samples, in stratified batches of 8.
 // No paper: no adaptivity, the baseline the adaptive criteria have to beat.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // var: the confidence-interval half-width of a pixel's mean luminance.
 // Purgathofer, "A statistical method for adaptive stochastic sampling", Eurographics 1986
 // (eqs. 7-8 of Rigau, Feixas, Sbert, EGSR 2003): sampling stops when the true luminance L is
