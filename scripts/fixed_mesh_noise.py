@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Noise per CPU second of hmcr's sequences, one way and both ways, on a fixed mesh
 (docs/performance.md, "The Sobol sequence" and "Lines used both ways").
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mean and standard error over a study's seeds (sample standard deviation / sqrt(n)); how a
 // table prints them is studies/summary_table.h's.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lines used both ways (docs/design.md §3.13): exact where the one-way estimator is exact, the
 // same expectation where it is a mean, the one-way bits where the far end has nothing to shoot,
 // the power balance ray by ray, and the same bits for any thread count.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A study's table.tex as a paper takes it: \input into \documentclass[10pt]{article}, pdflatex
 // compiles it with no overfull box, and no table's font comes out below 8 pt, for the columns
 // table.tex holds by default and for a set chosen with --columns; every column at once shrinks
