@@ -97,9 +97,12 @@ struct ShootingBuffers::Impl {
         Quanta quanta{};     // rho * Phi, for an element
         Quanta incident{};   // Phi, for a cluster (docs/design.md §2.7)
         bool lands = false;  // on a front face: the descent finds its element
-        // A line used both ways (docs/design.md §3.13): what it carries back to its source.
-        Element* back_receiver = nullptr;  // none: one way
-        Quanta back_quanta{}, back_incident{};
+    };
+    // What a line used both ways carries back to its source (docs/design.md §3.13), kept apart
+    // so that one-way rays, the default, neither write nor carry it.
+    struct BackDeposit {
+        Element* receiver = nullptr;  // none: nothing comes back
+        Quanta quanta{}, incident{};
     };
     // The batch's descents are made together, after its rays are traced, so that rays between
     // the same patches decide their shared links once (refine_links).
@@ -111,6 +114,7 @@ struct ShootingBuffers::Impl {
         GeneratedRays rays;
         std::vector<BatchHit> hits;
         std::vector<Deposit> deposits;
+        std::vector<BackDeposit> backs;  // lines used both ways only
         std::vector<LinkQuery> queries;
         std::vector<Element*> receivers;
     };
@@ -255,6 +259,7 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
         b.rays.resize(batch_rays);
         resize_populated(b.hits, batch_rays);
         resize_populated(b.deposits, batch_rays);
+        resize_populated(b.backs, both ? batch_rays : 0);
         resize_populated(b.queries, fixed ? 0 : batch_rays);
         resize_populated(b.receivers, batch_rays);
         if (!overlap) break;
@@ -307,8 +312,9 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             } else {
                 b.queries[k] = query;
             }
-            deposit.back_receiver = nullptr;
             if (both) {
+                ShootingBuffers::Impl::BackDeposit& back_deposit = b.backs[k];
+                back_deposit.receiver = nullptr;
                 // The leaf at the hit is a source of this iteration (its receiver may be the
                 // cluster above it); what it shoots back lands where a ray to x would.
                 const Element& landed =
@@ -323,9 +329,9 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
                     const Quanta back_quanta = out.quantum.count(split.back, dither);
                     add(chunk.shot, back_quanta);
                     const Rgb& rho_x = ps.material(source.patch, source.side).reflectance;
-                    deposit.back_quanta = out.quantum.count(rho_x * split.back, dither);
-                    deposit.back_incident = back_quanta;
-                    deposit.back_receiver = &to;
+                    back_deposit.quanta = out.quantum.count(rho_x * split.back, dither);
+                    back_deposit.incident = back_quanta;
+                    back_deposit.receiver = &to;
                 }
             }
             const Quanta quanta = out.quantum.count(power, dither);
@@ -364,8 +370,10 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
             const ShootingBuffers::Impl::Deposit& d = b.deposits[k];
             Element& receiver = *b.receivers[fixed ? k : q++];
             add(receiver.received, is_cluster(receiver) ? d.incident : d.quanta);
-            if (Element* to = d.back_receiver) {
-                add(to->received, is_cluster(*to) ? d.back_incident : d.back_quanta);
+            if (!both) continue;
+            const ShootingBuffers::Impl::BackDeposit& back = b.backs[k];
+            if (Element* to = back.receiver) {
+                add(to->received, is_cluster(*to) ? back.incident : back.quanta);
             }
         }
         for (const auto& c : b.chunks) {
