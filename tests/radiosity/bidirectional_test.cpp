@@ -10,6 +10,7 @@
 #include "meshes/scene.h"
 #include "radiosity/solver.h"
 #include "tests/support/analytic.h"
+#include "tests/support/energy_balance.h"
 #include "tests/support/furnace.h"
 #include "tests/support/same_leaves.h"
 #include "tests/support/statistics.h"
@@ -131,20 +132,7 @@ TEST(BothWays, ShotPowerIsAbsorbedReflectedEscapedOrLost) {
     const Scene scene = load_scene("cornell");
     SolverOptions o = both_ways(300'000, 5, 0);
     o.uniform_max_area = build_patch_set(scene.mesh).total_area / 2000;
-    const Solution sol = solve(scene.mesh, o);
-    const Hierarchy& h = *sol.hierarchy;
-    Rgb absorbed = Rgb::Zero();
-    h.for_each_leaf([&](const Element& leaf) {
-        const PatchMaterial& m = h.patch_set().material(leaf.id.patch, leaf.id.side);
-        const Rgb irradiance = (leaf.radiosity - m.emission) / m.reflectance;
-        absorbed += leaf.area * (1 - m.reflectance) * irradiance;
-    });
-    Rgb reflected = Rgb::Zero();
-    for (const IterationRecord& it : sol.stats.value_iterations()) reflected += it.unshot_after;
-    const SolveStats& st = sol.stats;
-    const Rgb out = absorbed + reflected + st.escaped_power + st.back_face_power;
-    EXPECT_TRUE(out.isApprox(st.shot_power, 1e-9))
-        << out.transpose() << " vs " << st.shot_power.transpose();
+    expect_energy_balance(solve(scene.mesh, o), false);
 }
 
 // Every back deposit in ray order: the same leaves and values with 1 and 2 threads, for both

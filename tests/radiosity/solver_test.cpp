@@ -13,6 +13,7 @@
 #include "oracles/registry.h"
 #include "radiosity/solver_settings.h"
 #include "tests/support/analytic.h"
+#include "tests/support/energy_balance.h"
 #include "tests/support/furnace.h"
 #include "tests/support/plugins.h"
 #include "tests/support/same_leaves.h"
@@ -178,33 +179,6 @@ TEST(SobolSequence, SameHierarchyAndValuesForOneAndTwoThreads) {
     o.sequence = RaySequence::sobol;
     const Scene scene = load_scene("cornell");
     EXPECT_GT(solve_on_one_and_two_threads(scene.mesh, o).stats.leaves, 100u);
-}
-
-// Energy: every ray's power is deposited, escapes or hits a back face, and push-pull moves
-// radiosity without creating power. Per channel, exactly (up to rounding):
-//   shot = absorbed + reflected (the unshot power of the later iterations) + escaped + back face
-// and, summed over channels (the sampler shoots exactly the unshot channel sum),
-//   emitted = absorbed + escaped + back face + unshot remaining.
-// The two balances above, for any solution of the Cornell box; refined then frozen, for the
-// frozen pass, whose values the solution holds.
-void expect_energy_balance(const Solution& sol) {
-    const Hierarchy& h = *sol.hierarchy;
-    Rgb absorbed = Rgb::Zero();
-    for (std::size_t p = 0; p < h.patch_count(); ++p) {
-        const Patch& patch = h.patch_set().patches[p];
-        const Rgb& rho = h.patch_set().reflectance(patch);
-        const Rgb irradiance = (h.root(p).radiosity - h.patch_set().emission(patch)) / rho;
-        absorbed += patch.area * (1 - rho) * irradiance;
-    }
-    Rgb reflected = Rgb::Zero();
-    for (const IterationRecord& it : sol.stats.value_iterations()) reflected += it.unshot_after;
-    const SolveStats& st = sol.stats;
-    const Rgb out = absorbed + reflected + st.escaped_power + st.back_face_power;
-    EXPECT_TRUE(out.isApprox(st.shot_power, 1e-9))
-        << out.transpose() << " vs " << st.shot_power.transpose();
-    const double balance =
-        (absorbed + st.escaped_power + st.back_face_power + st.unshot_power).sum();
-    EXPECT_NEAR(balance, st.emitted_power.sum(), 1e-9 * st.emitted_power.sum());
 }
 
 TEST_P(EveryOracle, CornellBoxEnergyBalance) {
