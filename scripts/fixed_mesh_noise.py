@@ -69,22 +69,22 @@ def main():
     converged = radiosity(converged_path)
     lit = converged > 0
     rows = []
-    for sequence in args.variants.split(","):
+    for variant in args.variants.split(","):
         squares, seconds = [], []
         for seed in range(1, args.seeds + 1):
-            path = os.path.join(work, f"{sequence}-{seed}.vtp")
-            seconds.append(solve(args, path, seed, sequence, args.rays))
+            path = os.path.join(work, f"{variant}-{seed}.vtp")
+            seconds.append(solve(args, path, seed, variant, args.rays))
             relative = (radiosity(path) - converged)[lit] / converged[lit]
             squares.append(float(numpy.mean(relative**2)))
         rms = math.sqrt(statistics.fmean(squares))
-        rows.append((sequence, rms, statistics.median(seconds)))
+        rows.append((variant, rms, statistics.median(seconds)))
     print(f"{args.scene}, {int(lit.sum())} lit patch channels, {args.rays} rays, {args.seeds} seeds, "
           f"converged at {args.converged_rays}")
     print("| variant | per-patch RMS deviation | CPU s | efficiency |")
     print("|:--|--:|--:|--:|")
     base = 1 / (rows[0][1] ** 2 * rows[0][2])
-    for sequence, rms, cpu in rows:
-        print(f"| `{sequence}` | {100 * rms:.3f}% | {cpu:.2f} | {1 / (rms**2 * cpu) / base:.1f}× |")
+    for variant, rms, cpu in rows:
+        print(f"| `{variant}` | {100 * rms:.3f}% | {cpu:.2f} | {1 / (rms**2 * cpu) / base:.1f}× |")
 
 
 if __name__ == "__main__":
