@@ -53,11 +53,10 @@ public:
     // there: at 10^6 patches 13 MB of vertices instead of 50. The patches must have their mesh
     // vertices (throws std::invalid_argument otherwise).
     explicit EmbreeScene(const PatchSet& set);
-    // A triangle soup: indices into `vertices`. Degenerate triangles are allowed. Built robust
-    // (Embree's RTC_SCENE_FLAG_ROBUST: watertight edge tests and conservative traversal): an
-    // image's rays come on a regular grid, and with Embree's fast tests a ray through the edge
-    // two triangles share, or through the float sliver between an edge and a point on it (a
-    // conforming polygon's T-vertex), can meet neither: a black pixel in a closed room.
+    // A triangle soup: indices into `vertices`. Degenerate triangles are allowed (and never hit).
+    // Built robust (Embree's RTC_SCENE_FLAG_ROBUST: watertight edge tests and conservative
+    // traversal): an image's rays come on a regular grid, and with Embree's fast tests a ray
+    // through the edge two triangles share can meet neither: a black pixel in a closed room.
     // Throws std::invalid_argument on an index out of range.
     EmbreeScene(const std::vector<Vec3>& vertices,
                 const std::vector<std::array<unsigned, 3>>& triangles);

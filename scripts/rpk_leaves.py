@@ -467,7 +467,8 @@ def write_vtp(solution, path):
 
 def solution_power(solution):
     """Integral of B over the solution, W per channel: each polygon's fan of triangles from its
-    first point, a triangle's mean the mean of its corners (as hmcr reads a polygon)."""
+    first point, a triangle's mean the mean of its corners (rpkCpp's pieces have no point on an
+    edge, so this is how hmcr reads them)."""
     out = [0.0, 0.0, 0.0]
     for poly in solution.polygons:
         for k in range(1, len(poly) - 1):

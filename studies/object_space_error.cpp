@@ -14,6 +14,7 @@
 
 #include "rays/embree_scene.h"
 #include "studies/solution_probe.h"
+#include "viz/cell_triangles.h"
 #include "viz/shaded_tracer.h"
 
 namespace hmcr {
@@ -71,14 +72,14 @@ std::vector<Vec2> quadrature_points(int k) {
     return out;
 }
 
-Partial integrate_triangle(const ShadedMesh& ref, const FanTriangle& tri, const Vec3& normal,
+Partial integrate_triangle(const ShadedMesh& ref, const CellTriangle& tri, const Vec3& normal,
                            const SolutionProbe& probe, const std::vector<Vec2>& points,
                            const ObjectErrorOptions& options) {
     const Vec3& p0 = ref.points[tri.points[0]];
     const Vec3 e1 = ref.points[tri.points[1]] - p0, e2 = ref.points[tri.points[2]] - p0;
     const double area = 0.5 * e1.cross(e2).norm();
     Partial sum;
-    if (!(area > 0)) return sum;  // the fan's zero-area triangles cover nothing
+    if (!(area > 0)) return sum;  // a polygon that is not convex may leave one
     const Rgb& b0 = ref.point_radiosity[tri.points[0]];
     const Rgb& b1 = ref.point_radiosity[tri.points[1]];
     const Rgb& b2 = ref.point_radiosity[tri.points[2]];
@@ -162,7 +163,7 @@ ObjectError object_space_error(const ShadedTracer& tracer, const ShadedMesh& sol
                                         "emission has no entry for patch " + std::to_string(p));
         }
     }
-    const std::vector<FanTriangle> triangles = fan_triangulate(reference);
+    const std::vector<CellTriangle> triangles = triangulate_cells(reference);
     std::vector<Vec3> normals(reference.cell_count());
     for (std::size_t c = 0; c < normals.size(); ++c) normals[c] = cell_normal(reference, c);
     const SolutionProbe probe(tracer, solution);
@@ -175,7 +176,7 @@ ObjectError object_space_error(const ShadedTracer& tracer, const ShadedMesh& sol
         set_tracing_float_mode();
         const std::size_t end = std::min(triangles.size(), (b + 1) * kBlock);
         for (std::size_t t = b * kBlock; t < end; ++t) {
-            const FanTriangle& tri = triangles[t];
+            const CellTriangle& tri = triangles[t];
             const Partial p =
                 integrate_triangle(reference, tri, normals[tri.cell], probe, points, options);
             triangle_error[t] = p.squared_error;

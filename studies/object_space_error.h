@@ -5,11 +5,12 @@
 //   e = sqrt( int |B_sol(x) - B_ref(x)|^2 dA  /  int |B_ref(x)|^2 dA ),
 //
 // |.| the Euclidean norm over RGB, B the Gouraud field each ShadedMesh shows (the barycentric
-// interpolation of its point radiosity over the fan triangles of its polygons, as rendered).
+// interpolation of its point radiosity over its cells' triangles, viz/cell_triangles.h, as
+// rendered).
 // Both meshes come from the same scene: the same patches, different subdivisions.
 //
-// Estimator: a fixed, deterministic quadrature over the reference's surface. Every fan triangle
-// of every reference cell is cut into k x k congruent sub-triangles (k = subdivisions; each
+// Estimator: a fixed, deterministic quadrature over the reference's surface. Every triangle of
+// every reference cell is cut into k x k congruent sub-triangles (k = subdivisions; each
 // edge into k parts), and each sub-triangle is integrated with the symmetric 3-point rule
 // (points at barycentric (2/3, 1/6, 1/6) and its permutations, weight area / 3), which is exact
 // for quadratics. The estimate is therefore exact when B_sol - B_ref is linear on every
@@ -41,7 +42,7 @@
 namespace hmcr {
 
 struct ObjectErrorOptions {
-    int subdivisions = 2;  // k: each reference fan triangle gives k^2 sub-triangles, 3 points each
+    int subdivisions = 2;  // k: each reference triangle gives k^2 sub-triangles, 3 points each
     // Emitted radiosity E of every patch (by patch id), or empty. When given, the denominator
     // integrates |B_ref - E|^2: the error is then relative to the reflected radiosity, what the
     // solver computes (E is exact in both solutions, so the numerator does not change). Without

@@ -5,8 +5,8 @@
 //   point data  Radiosity  3 components (Float32 or Float64): the radiosity B at each point, W/m^2
 //   cell data   PatchId    Int32 or Int64: the scene patch (face, in file order) of each polygon
 //               Side       (optional) UInt8 or Int32: 0 the front, 1 the back of a two-sided patch
-// Within a polygon the field is the barycentric interpolation of its points' values over the fan
-// from its first point, as an hmcr solution's (viz/shaded_tracer.h). Nothing else is needed:
+// Within a polygon the field is the barycentric interpolation of its points' values over its
+// triangles, as an hmcr solution's (viz/cell_triangles.h). Nothing else is needed:
 // each polygon's area and mean are computed, and no metadata is read.
 #pragma once
 

@@ -2,59 +2,22 @@
 #include "viz/shaded_tracer.h"
 
 #include <algorithm>
-#include <stdexcept>
-#include <string>
+#include <array>
 
 namespace hmcr {
 namespace {
 
-void check_cell(const ShadedMesh& mesh, std::size_t c) {
-    const auto first = mesh.offsets[c], last = mesh.offsets[c + 1];
-    if (first < 0 || last < first + 3 || last > std::int64_t(mesh.connectivity.size())) {
-        throw std::invalid_argument("cell " + std::to_string(c) + " is not a polygon");
-    }
-    for (auto s = first; s < last; ++s) {
-        const auto p = mesh.connectivity[s];
-        if (p < 0 || p >= std::int64_t(mesh.points.size())) {
-            throw std::invalid_argument("cell " + std::to_string(c) + " names point " +
-                                        std::to_string(p) + " of " +
-                                        std::to_string(mesh.points.size()));
-        }
-    }
-}
-
-std::vector<std::array<unsigned, 3>> point_triples(const std::vector<FanTriangle>& triangles) {
+std::vector<std::array<unsigned, 3>> point_triples(const std::vector<CellTriangle>& triangles) {
     std::vector<std::array<unsigned, 3>> out;
     out.reserve(triangles.size());
-    for (const FanTriangle& t : triangles) out.push_back({t.points[0], t.points[1], t.points[2]});
+    for (const CellTriangle& t : triangles) out.push_back({t.points[0], t.points[1], t.points[2]});
     return out;
 }
 
 }  // namespace
 
-std::vector<FanTriangle> fan_triangulate(const ShadedMesh& mesh) {
-    if (mesh.offsets.empty() || mesh.offsets.front() != 0) {
-        throw std::invalid_argument("ShadedMesh offsets must start at 0");
-    }
-    if (mesh.point_radiosity.size() != mesh.points.size()) {
-        throw std::invalid_argument("ShadedMesh needs one radiosity per point");
-    }
-    std::vector<FanTriangle> out;
-    for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
-        check_cell(mesh, c);
-        const auto first = mesh.offsets[c];
-        const auto apex = std::uint32_t(mesh.connectivity[first]);
-        for (auto s = first + 1; s + 1 < mesh.offsets[c + 1]; ++s) {
-            out.push_back({{apex, std::uint32_t(mesh.connectivity[s]),
-                            std::uint32_t(mesh.connectivity[s + 1])},
-                           std::uint32_t(c)});
-        }
-    }
-    return out;
-}
-
 ShadedTracer::ShadedTracer(const ShadedMesh& mesh)
-    : m_triangles(fan_triangulate(mesh)), m_point_radiosity(mesh.point_radiosity) {
+    : m_triangles(triangulate_cells(mesh)), m_point_radiosity(mesh.point_radiosity) {
     for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
         if (cell_side(mesh, c) != kBack) continue;
         const auto patch = std::size_t(mesh.patch_id[c]);
@@ -65,7 +28,7 @@ ShadedTracer::ShadedTracer(const ShadedMesh& mesh)
         m_patch_of_cell = mesh.patch_id;
         const auto back = std::stable_partition(
             m_triangles.begin(), m_triangles.end(),
-            [&](const FanTriangle& t) { return cell_side(mesh, t.cell) == kFront; });
+            [&](const CellTriangle& t) { return cell_side(mesh, t.cell) == kFront; });
         m_back_triangles.assign(back, m_triangles.end());
         m_triangles.erase(back, m_triangles.end());
         m_back_scene = std::make_unique<EmbreeScene>(mesh.points, point_triples(m_back_triangles));
@@ -73,9 +36,9 @@ ShadedTracer::ShadedTracer(const ShadedMesh& mesh)
     m_scene = std::make_unique<EmbreeScene>(mesh.points, point_triples(m_triangles));
 }
 
-std::optional<ShadedHit> ShadedTracer::shade(const std::vector<FanTriangle>& triangles,
+std::optional<ShadedHit> ShadedTracer::shade(const std::vector<CellTriangle>& triangles,
                                              const TriangleHit& hit, const Vec3& direction) const {
-    const FanTriangle& t = triangles[hit.triangle];
+    const CellTriangle& t = triangles[hit.triangle];
     // Embree's (u, v) weigh the triangle's second and third vertex.
     const Rgb b = (1 - hit.u - hit.v) * m_point_radiosity[t.points[0]] +
                   hit.u * m_point_radiosity[t.points[1]] + hit.v * m_point_radiosity[t.points[2]];

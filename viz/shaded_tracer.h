@@ -2,16 +2,13 @@
 // Ray queries against a ShadedMesh's Gouraud shading: the renderer's primary rays and the
 // object-space error's point lookups both ask "what radiosity does the mesh show here".
 //
-// Each polygon is fan-triangulated from its first point (leaf polygons are convex, so the fan
-// covers it exactly). Points lying on the fan vertex's own edges give zero-area triangles,
-// which in single precision are slivers between the fan's edge over such a point and the
-// neighbour's two edges through it: kept, they close the mesh for Embree's watertight tests
-// (the soup is built robust, rays/embree_scene.h), so no ray passes between cells. Within a
-// triangle the radiosity is the barycentric interpolation of the point radiosity of its three
-// points: Gouraud shading as a rasteriser would draw it.
+// The polygons are cut into triangles that meet their neighbours edge to edge
+// (viz/cell_triangles.h), so that Embree's watertight tests (the soup is built robust,
+// rays/embree_scene.h) let no ray pass between cells. Within a triangle the radiosity is the
+// barycentric interpolation of the point radiosity of its three points: Gouraud shading as a
+// rasteriser would draw it.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -21,18 +18,9 @@
 #include "common/types.h"
 #include "radiosity/shaded_mesh.h"
 #include "rays/embree_scene.h"
+#include "viz/cell_triangles.h"
 
 namespace hmcr {
-
-// One triangle of a polygon's fan: indices into ShadedMesh::points and the polygon it came from.
-struct FanTriangle {
-    std::array<std::uint32_t, 3> points;
-    std::uint32_t cell = 0;
-};
-
-// The fan triangles of every cell, in cell order (n - 2 per polygon of n points).
-// Throws std::invalid_argument when offsets or connectivity are malformed.
-std::vector<FanTriangle> fan_triangulate(const ShadedMesh& mesh);
 
 struct ShadedHit {
     std::uint32_t cell = 0;       // the ShadedMesh cell hit
@@ -63,12 +51,12 @@ public:
     double offset() const { return m_scene->offset(); }  // Embree's self-hit offset, metres
 
 private:
-    std::optional<ShadedHit> shade(const std::vector<FanTriangle>& triangles,
+    std::optional<ShadedHit> shade(const std::vector<CellTriangle>& triangles,
                                    const TriangleHit& hit, const Vec3& direction) const;
 
     // The fronts' cells in one scene, the backs' (if any) in another: a back cell lies on its
     // front's, and a ray that meets a two-sided front from behind asks the backs' scene.
-    std::vector<FanTriangle> m_triangles, m_back_triangles;
+    std::vector<CellTriangle> m_triangles, m_back_triangles;
     std::vector<Rgb> m_point_radiosity;
     std::vector<std::uint8_t> m_two_sided;  // by patch id
     std::vector<int> m_patch_of_cell;

@@ -53,18 +53,6 @@ ShadedMesh square_with_t_vertex() {
     return m;
 }
 
-TEST(ShadedTracer, FanTriangulatesPolygons) {
-    const auto t = fan_triangulate(square_with_t_vertex());
-    ASSERT_EQ(t.size(), 3u);  // 1 + (4 - 2)
-    EXPECT_EQ(t[0].cell, 0u);
-    EXPECT_EQ(t[1].points, (std::array<std::uint32_t, 3>{1, 4, 2}));
-    EXPECT_EQ(t[2].points, (std::array<std::uint32_t, 3>{1, 2, 3}));
-    EXPECT_EQ(t[2].cell, 1u);
-    ShadedMesh bad = square_with_t_vertex();
-    bad.connectivity.back() = 9;
-    EXPECT_THROW(fan_triangulate(bad), std::invalid_argument);
-}
-
 TEST(ShadedTracer, InterpolatesPointRadiosityFromEitherSide) {
     const ShadedTracer tracer(square_with_t_vertex());
     // The point radiosity is linear in position, so every triangle reproduces it exactly.
