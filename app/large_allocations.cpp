@@ -1,15 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// Large blocks in transparent huge pages. On the machine hmcr is measured on (a virtual
-// machine), the kernel takes a fault, zeroes and maps every 4 KiB page on its first touch; at a
-// million patches that was half of loading and setup (perf: clear_page and the fault path 39%
-// of the samples). This replaces the global operator new of the hmcr executable only: every
-// block of 4 MiB or more that C++ allocates (OpenMesh's arrays, the OBJ text, the element roots,
-// the shaded mesh's arrays that the .vtp writer reads in place, the geometry buffers Embree
-// shares) is advised into 2 MiB pages before it is touched, so it takes 512 times fewer faults.
-// What VTK and Embree allocate themselves (VTK's own arrays with malloc, Embree's BVH) is not.
-// The block comes from malloc as before and goes back through free (the default operator
-// delete); the advice changes speed, never contents. Off under the sanitizers, which own
-// operator new.
+// Large blocks in transparent huge pages. The kernel takes a fault, zeroes and maps every 4 KiB
+// page on its first touch, and at a million patches those faults are a large part of loading
+// and setup (docs/performance.md, "Memory of the 10^6-patch office"). This replaces the global
+// operator new of the hmcr executable only: every block of 4 MiB or more that C++ allocates
+// (OpenMesh's arrays, the OBJ text, the element roots, the shaded mesh's arrays that the .vtp
+// writer reads in place, the geometry buffers Embree shares) is advised into 2 MiB pages before it
+// is touched, so it takes 512 times fewer faults. What VTK and Embree allocate themselves (VTK's
+// own arrays with malloc, Embree's BVH) is not. The block comes from malloc as before and goes back
+// through free (the default operator delete); the advice changes speed, never contents. Off under
+// the sanitizers, which own operator new.
 #if !defined(__SANITIZE_ADDRESS__) && !defined(HMCR_NO_HUGE_PAGES)
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer)

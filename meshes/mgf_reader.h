@@ -7,10 +7,10 @@
 // (seams included), and the surfaces sph, cyl, cone, ring, torus and prism tessellated as
 // meshes/mgf_shapes.h says. Colours become RGB as meshes/mgf_color.h says; `ed` (lm/m^2)
 // becomes the emitted radiosity E with that luminance, so an MGF scene's radiosity is in
-// lm/m^2 where an OBJ scene's is in W/m^2. hmcr is diffuse only: rs, ts, td, ir and ies are
-// ignored with one warning naming them. A material's `sides` (2 unless it says 1, as the
-// specification has it) is kept with it for the loader (meshes/material_sides.h): a two-sided
-// material's faces get a back of the same material.
+// lm/m^2 where an OBJ scene's is in W/m^2. `rs` is the specular part only the path tracer
+// reflects (docs/design.md §1.2); ts, td, ir and ies are ignored with one warning naming them. A
+// material's `sides` (2 unless it says 1, as the specification has it) is kept with it for the
+// loader (meshes/material_sides.h): a two-sided material's faces get a back of the same material.
 #pragma once
 
 #include <cstdint>

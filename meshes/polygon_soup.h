@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// What every mesh reader (OBJ, and MGF later) produces and the patch-mesh builder turns into a
+// What every mesh reader (OBJ, MGF) produces and the patch-mesh builder turns into a
 // validated PatchMesh: positions, polygons with their material and the place they were read
 // from, and materials with the places of their reflectance and emission. Errors found later
 // (a degenerate face, a reflectance of 1.2) are reported at those places.

@@ -99,8 +99,8 @@ struct Scene {
 // unless options.strict, validates it (docs/design.md §1) and returns the patch mesh. Throws
 // InputError on any problem.
 MeshFile load_mesh(const std::filesystem::path& path, const LoadOptions& options = {});
-// The same built into `mesh` (empty): OpenMesh's meshes have no move, and a copy of a
-// 10^6-face mesh took 77 MB and a tenth of a second.
+// The same built into `mesh` (empty): OpenMesh's meshes have no move, and a copy of a large
+// mesh costs its whole size again.
 MeshReport load_mesh(const std::filesystem::path& path, const LoadOptions& options,
                      PatchMesh& mesh);
 // An OBJ file whatever its extension, and its mesh alone.

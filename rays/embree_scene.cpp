@@ -19,8 +19,8 @@ struct EmbreeScene::Impl {
     std::string error;  // first error reported by Embree's callback
     // The geometry, shared with Embree. Ours rather than Embree's own buffers so that they come
     // from operator new, which the hmcr executable backs with huge pages: Embree's allocations
-    // took a third of a million-patch solve's page faults (at about 14 us each on the machine
-    // hmcr is measured on). The vertices end in 4 floats of padding, which Embree's 16-byte
+    // are a large share of a million-patch solve's page faults (docs/performance.md, "Memory of
+    // the 10^6-patch office"). The vertices end in 4 floats of padding, which Embree's 16-byte
     // loads may read.
     std::vector<float> vertices;
     std::vector<unsigned> indices;
@@ -88,9 +88,9 @@ void set_tracing_float_mode() {
     _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
 }
 
-// Both scenes are counted first and written straight into the buffers Embree reads: on the
-// 10^6-patch office, vectors grown corner by corner and then copied held up to 150 MB more while
-// the BVH was built, the peak of the whole solve.
+// Both scenes are counted first and written straight into the buffers Embree reads: vectors
+// grown corner by corner and then copied would hold a second copy of the geometry while the
+// BVH is built, the peak of a large solve.
 EmbreeScene::EmbreeScene(const std::vector<Patch>& patches) : m_impl(std::make_unique<Impl>()) {
     std::size_t corners = 0;
     for (const Patch& p : patches) corners += p.corner_count;

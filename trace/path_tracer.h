@@ -67,7 +67,7 @@ public:
     // Throws std::invalid_argument on bad options or a scene where nothing emits.
     PathTracer(const PatchSet& patches, const PathOptions& options);
 
-    // The caller's thread should have set_tracing_float_mode() (radiosity/embree_scene.h).
+    // The caller's thread should have set_tracing_float_mode() (rays/embree_scene.h).
     CameraSample trace(const Vec3& origin, const Vec3& direction, Rng& rng) const;
 
     // One path's estimate of the radiance a diffuse surface point reflects, times pi: the

@@ -73,8 +73,8 @@ private:
     // The corners left if the tip went: its neighbours' turns are all that change.
     int corners_without(std::size_t tip) const {
         const std::size_t p = before(tip), n = after(tip), pp = before(p), nn = after(n);
-        return m_corners - m_corner[tip] - m_corner[p] - m_corner[n] +
-               turns(at(pp), at(p), at(n)) + turns(at(p), at(n), at(nn));
+        return m_corners - m_corner[tip] - m_corner[p] - m_corner[n] + turns(at(pp), at(p), at(n)) +
+               turns(at(p), at(n), at(nn));
     }
 
     std::size_t next_tip() const {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // What VTK's XML reader would allocate for a .vtp, checked before it runs: VTK trusts the
-// sizes a file declares (a block count of 1.5e9 in a damaged appended section made it take
-// 6.6 GB and a minute), so every declared count and every appended array's header must fit the
+// sizes a file declares (a damaged block count in an appended section makes it allocate
+// gigabytes), so every declared count and every appended array's header must fit the
 // bytes that are really there.
 #pragma once
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Global lines (studies/channel_samples.h): the form factors and measures of the empty cube
+// Global lines (information/channel_samples.h): the form factors and measures of the empty cube
 // against their exact values, agreement with local lines on the Cornell box, and the same
 // reproducibility and invariance as local lines.
 //
