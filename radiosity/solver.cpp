@@ -114,6 +114,19 @@ std::span<const IterationRecord> SolveStats::value_iterations() const {
     return first == iterations.end() ? all : all.subspan(std::size_t(first - iterations.begin()));
 }
 
+void SolveStats::join_refining_pass(const SolveStats& refining) {
+#define HMCR_JOIN_both(name) name += refining.name;
+#define HMCR_JOIN_refining(name) name = refining.name;
+#define HMCR_JOIN_frozen(name)
+#define HMCR_JOIN(type, name, zero, join) HMCR_JOIN_##join(name)
+    HMCR_SOLVE_STATS(HMCR_JOIN)
+#undef HMCR_JOIN
+#undef HMCR_JOIN_frozen
+#undef HMCR_JOIN_refining
+#undef HMCR_JOIN_both
+    iterations.insert(iterations.begin(), refining.iterations.begin(), refining.iterations.end());
+}
+
 namespace {
 
 // The mesh a solve starts from: a refining solve's roots (or the uniform mesh of
@@ -398,28 +411,8 @@ Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
         o, [&] { return frozen_in_place(refined); }, shooting, progress, ranks,
         std::uint32_t(refined.stats.iterations.size()));
     sol.options = options;
-    SolveStats& st = sol.stats;
-    const SolveStats& r = refined.stats;
-    st.rays += r.rays;
-    st.refining_rays = r.rays;
-    st.importance_rays = r.importance_rays;
-    st.importance_seconds = r.importance_seconds;
-    st.oracle_calls = r.oracle_calls;
-    st.oracle_evaluations = r.oracle_evaluations;
-    st.cache_hits = r.cache_hits;
-    st.lines_cast = r.lines_cast;
-    st.oracle_seconds = r.oracle_seconds;
-    st.cache_bytes = r.cache_bytes;
-    st.cache_capacity = r.cache_capacity;
-    st.cache_evictions = r.cache_evictions;
-    st.epsilon = r.epsilon;
-    st.setup_seconds += r.setup_seconds;
-    st.shooting_seconds += r.shooting_seconds;
-    st.push_pull_seconds += r.push_pull_seconds;
-    st.total_seconds += r.total_seconds;
-    st.refining_seconds = r.total_seconds;
-    for (IterationRecord& it : st.iterations) it.frozen = true;
-    st.iterations.insert(st.iterations.begin(), r.iterations.begin(), r.iterations.end());
+    for (IterationRecord& it : sol.stats.iterations) it.frozen = true;
+    sol.stats.join_refining_pass(refined.stats);
     return sol;
 }
 

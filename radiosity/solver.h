@@ -37,37 +37,65 @@ struct IterationRecord {
     Rgb control_constant = Rgb::Zero();  // beta of the control variate (0: none), §3.11
 };
 
+// A solve's statistics, each with how refine-then-freeze joins its two passes' (§3.10): `both`
+// adds the passes' values, `refining` takes the refining pass's (what built the mesh: the
+// frozen pass refines nothing), `frozen` keeps the frozen pass's (the solution's own, or the
+// same in both passes). Declared once, here, so that the join cannot leave a field out.
+// clang-format off
+#define HMCR_SOLVE_STATS(X)                                                                       \
+    X(std::uint64_t, rays,               0,           both)     /* shot, both passes */           \
+    X(std::uint64_t, refining_rays,      0,           refining) /* of them, those that refined */ \
+    X(std::uint64_t, importance_rays,    0,           refining) /* view importance's, besides */  \
+    X(std::uint64_t, oracle_calls,       0,           refining) /* link decisions */              \
+    X(std::uint64_t, oracle_evaluations, 0,           refining) /* geometric factors computed */  \
+    X(std::uint64_t, cache_hits,         0,           refining)                                   \
+    X(std::uint64_t, lines_cast,         0,           refining)                                   \
+    X(double,        oracle_seconds,     0,           refining) /* line factors, all threads */   \
+    X(std::size_t,   cache_bytes,        0,           refining)                                   \
+    X(std::size_t,   cache_capacity,     0,           refining)                                   \
+    X(std::size_t,   cache_evictions,    0,           refining)                                   \
+    X(double,        epsilon,            0,           refining) /* used (the oracle's default */  \
+                                                                /* if not given) */               \
+    X(int,           threads,            0,           frozen)   /* worker threads, each rank */   \
+    X(int,           ranks,              1,           frozen)   /* MPI processes */               \
+    X(std::size_t,   patches,            0,           frozen)   /* in the scene */                \
+    X(std::size_t,   two_sided_patches,  0,           frozen)   /* with a back (§1.3) */          \
+    X(Rgb,           emitted_power,      Rgb::Zero(), frozen)                                     \
+    X(double,        total_area,         0,           frozen)   /* of the patches, m^2 */         \
+    X(double,        max_emitted_power,  0,           frozen)   /* of a patch, brightest */       \
+                                                                /* channel, W */                  \
+    /* The power balance of the pass whose values the solution holds: the rays' power, what */   \
+    /* left the scene, what back faces absorbed, what is left unshot. */                         \
+    X(Rgb,           shot_power,         Rgb::Zero(), frozen)                                     \
+    X(Rgb,           escaped_power,      Rgb::Zero(), frozen)                                     \
+    X(Rgb,           back_face_power,    Rgb::Zero(), frozen)                                     \
+    X(Rgb,           unshot_power,       Rgb::Zero(), frozen)                                     \
+    /* leaves: the mesh's (what a budget counts), cluster_leaves of them clusters (§2.7); */     \
+    /* faces: the hierarchy's leaves, one output cell each. */                                   \
+    X(std::size_t,   elements,           0,           frozen)                                     \
+    X(std::size_t,   leaves,             0,           frozen)                                     \
+    X(std::size_t,   cluster_leaves,     0,           frozen)                                     \
+    X(std::size_t,   faces,              0,           frozen)                                     \
+    X(std::size_t,   hierarchy_bytes,    0,           frozen)                                     \
+    X(double,        setup_seconds,      0,           both)                                       \
+    X(double,        shooting_seconds,   0,           both)                                       \
+    X(double,        push_pull_seconds,  0,           both)                                       \
+    X(double,        total_seconds,      0,           both)                                       \
+    X(double,        refining_seconds,   0,           refining) /* the refining pass's part */    \
+    X(double,        importance_seconds, 0,           refining) /* view importance's part of */   \
+                                                                /* refining_seconds */
+// clang-format on
+
 struct SolveStats {
+    // Both passes' iterations, the refining pass's first.
     std::vector<IterationRecord> iterations;
-    std::uint64_t rays = 0;
-    std::uint64_t refining_rays = 0;       // of them, those that refined the mesh
-    std::uint64_t importance_rays = 0;     // the view importance solve's, besides `rays`
-    std::uint64_t oracle_calls = 0;        // link decisions
-    std::uint64_t oracle_evaluations = 0;  // geometric factors computed
-    std::uint64_t cache_hits = 0;
-    std::uint64_t lines_cast = 0;
-    double oracle_seconds = 0;  // computing line-based factors, summed over threads
-    std::size_t cache_bytes = 0, cache_capacity = 0, cache_evictions = 0;
-    double epsilon = 0;                 // the value used (the oracle's default if not given)
-    int threads = 0;                    // worker threads used (by each rank)
-    int ranks = 1;                      // MPI processes that shared the rays
-    std::size_t patches = 0;            // in the scene
-    std::size_t two_sided_patches = 0;  // of them, those with a back side (docs/design.md §1.3)
-    Rgb emitted_power = Rgb::Zero();
-    double total_area = 0;         // of the patches, m^2
-    double max_emitted_power = 0;  // of one patch, in its brightest channel, W
-    // The power balance of the pass whose values the solution holds (the frozen one when the
-    // mesh was refined first, docs/design.md §3.10).
-    Rgb shot_power = Rgb::Zero();       // sum over iterations of the rays' power
-    Rgb escaped_power = Rgb::Zero();    // shot power that left the scene
-    Rgb back_face_power = Rgb::Zero();  // shot power absorbed by back faces
-    Rgb unshot_power = Rgb::Zero();     // left when the solve stopped
-    // leaves: the mesh's (what a budget counts), cluster_leaves of them clusters (§2.7);
-    // faces: the hierarchy's leaves, one output cell each.
-    std::size_t elements = 0, leaves = 0, cluster_leaves = 0, faces = 0, hierarchy_bytes = 0;
-    double setup_seconds = 0, shooting_seconds = 0, push_pull_seconds = 0, total_seconds = 0;
-    double refining_seconds = 0;    // the refining pass's part of total_seconds
-    double importance_seconds = 0;  // the view importance's part of refining_seconds
+#define HMCR_STATS_FIELD(type, name, zero, join) type name = zero;
+    HMCR_SOLVE_STATS(HMCR_STATS_FIELD)
+#undef HMCR_STATS_FIELD
+
+    // A frozen pass's statistics joined with its refining pass's, by the table's rules; the
+    // refining pass's iterations go first.
+    void join_refining_pass(const SolveStats& refining);
 
     // Fraction of the shot power that hit back faces (a sign of flipped normals if > 1%).
     double back_face_fraction() const;

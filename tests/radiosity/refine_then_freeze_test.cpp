@@ -83,6 +83,46 @@ TEST(RefineThenFreeze, TheMeshIsTheRefiningSharesAndTheRaysAreBothPasses) {
     EXPECT_NE(leaf_values(*both.hierarchy), leaf_values(*refined.hierarchy));
 }
 
+// A solve's statistics join its two passes' as radiosity/solver.h's table says: what built the
+// mesh is the refining pass's, times and rays add, the rest is the frozen pass's own.
+TEST(RefineThenFreeze, TheStatisticsJoinBothPasses) {
+    const Scene scene = load_scene("cornell");
+    SolverOptions o = options("kl", 300'000, 0.25);
+    o.importance = Importance::views;
+    o.views = scene.views;
+    Solution refined = refine_pass(build_patch_set(scene.mesh), o);
+    const SolveStats r = refined.stats;
+    const Solution both = freeze_pass(std::move(refined));
+    const SolveStats& s = both.stats;
+    ASSERT_GT(r.oracle_calls, 0u);
+    ASSERT_GT(r.importance_rays, 0u);
+    EXPECT_EQ(s.refining_rays, r.rays);
+    EXPECT_EQ(s.rays, o.rays);
+    EXPECT_EQ(s.oracle_calls, r.oracle_calls);
+    EXPECT_EQ(s.oracle_evaluations, r.oracle_evaluations);
+    EXPECT_EQ(s.cache_hits, r.cache_hits);
+    EXPECT_EQ(s.lines_cast, r.lines_cast);
+    EXPECT_EQ(s.oracle_seconds, r.oracle_seconds);
+    EXPECT_EQ(s.cache_capacity, r.cache_capacity);
+    EXPECT_EQ(s.importance_rays, r.importance_rays);
+    EXPECT_EQ(s.importance_seconds, r.importance_seconds);
+    EXPECT_EQ(s.epsilon, r.epsilon);
+    EXPECT_EQ(s.refining_seconds, r.total_seconds);
+    EXPECT_GT(s.total_seconds, r.total_seconds);
+    EXPECT_GE(s.shooting_seconds, r.shooting_seconds);
+    EXPECT_EQ(s.leaves, r.leaves);  // the same mesh
+    EXPECT_EQ(s.patches, r.patches);
+    ASSERT_GT(s.iterations.size(), r.iterations.size());
+    for (std::size_t k = 0; k < s.iterations.size(); ++k) {
+        EXPECT_EQ(s.iterations[k].frozen, k >= r.iterations.size()) << k;
+        if (k < r.iterations.size()) {
+            EXPECT_EQ(s.iterations[k].rays, r.iterations[k].rays) << k;
+        }
+    }
+    // The power balance is the frozen pass's: its iterations' rays shot all of it.
+    EXPECT_NE(channel_sum(s.shot_power), channel_sum(r.shot_power));
+}
+
 TEST(RefineThenFreeze, OneAndTwoThreadsGiveTheSameBits) {
     const Scene scene = load_scene("cornell");
     solve_on_one_and_two_threads(scene.mesh, options("power", 300'000, 0.5));
