@@ -69,8 +69,7 @@ std::size_t Search::probe(double x) {
     }
     m_progress.stage(fmt::format("budget probe {}", k));
     Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks, m_shooting);
-    m_options.view_importance = sol.options.view_importance;  // the same for every probe
-    m_shooting = sol.shooting;                                // and the same scene and buffers
+    m_shooting = sol.shooting;  // the same scene, buffers and view importance for every probe
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
     if (m_known) (*m_known)[o.epsilon] = p.leaves;
     record(x, p);

@@ -190,7 +190,8 @@ StartMesh frozen_like(PatchSet patches, const SolverOptions& o, const Solution& 
 // make_mesh() builds the mesh once the options are validated and the threads limited, and the
 // scene before its roots when shooting.scene is none; the solve shoots in shooting.scene
 // (building it, as part of its setup, if make_mesh did not) through shooting.buffers (made
-// here if none).
+// here if none), with shooting.importance where a refining solve weighs by it (solved here if
+// none).
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
 // refining pass's, so that its rays are not theirs again.
 Solution solve_with(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
@@ -225,7 +226,7 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
     // Importance weighs the oracle's decisions, so a fixed mesh has no use for it (§3.12).
-    std::shared_ptr<const ViewImportance>& importance = sol.options.view_importance;
+    std::shared_ptr<const ViewImportance>& importance = shooting.importance;
     if (fixed_mesh || options.importance == Importance::none) {
         importance.reset();
     } else if (!importance) {
@@ -394,9 +395,7 @@ Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& p
     Solution sol = solve_with(
         o, [&] { return roots_of(std::move(patches), o, shooting.scene); }, shooting, progress,
         ranks);
-    auto importance = std::move(sol.options.view_importance);
     sol.options = options;
-    sol.options.view_importance = std::move(importance);
     sol.shooting = std::move(shooting);
     return sol;
 }

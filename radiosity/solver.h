@@ -18,13 +18,16 @@ namespace hmcr {
 
 class EmbreeScene;      // rays/embree_scene.h
 class ShootingBuffers;  // radiosity/shooting.h
+struct ViewImportance;  // radiosity/view_importance.h
 
 // What a refining pass (refine_pass) leaves for its frozen pass and for a budget search's next
-// probe, which shoot in the same patches: the Embree scene, and the buffers the rays' batches
-// pass through, whose pages are then faulted in once a solve instead of once a pass.
+// probe, which shoot in the same patches: the Embree scene, the buffers the rays' batches pass
+// through, whose pages are then faulted in once a solve instead of once a pass, and the view
+// importance once solved (it depends on the scene, the views, the seed and the rays alone).
 struct ShootingSetup {
     std::shared_ptr<const EmbreeScene> scene;
     std::shared_ptr<ShootingBuffers> buffers;
+    std::shared_ptr<const ViewImportance> importance;
 };
 
 struct IterationRecord {

@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,8 +27,6 @@
 namespace hmcr {
 
 enum class SettingScope { scene_file, command_line, internal };
-
-struct ViewImportance;  // radiosity/view_importance.h
 
 // The refinement oracle of a solve, resolved from its name where the name is read.
 using OracleRef = const Oracle*;
@@ -186,10 +183,8 @@ struct SolverOptions {
 #define HMCR_FIELD(type, name, default_value, ...) type name = default_value;
     HMCR_SOLVER_SETTINGS(HMCR_FIELD)
 #undef HMCR_FIELD
-    // Not settings: the scene's views, which importance = views solves for, and that solve
-    // once made (a budget search's probes share it: it depends on the seed and rays alone).
+    // Not a setting: the scene's views, which importance = views solves for.
     std::vector<View> views;
-    std::shared_ptr<const ViewImportance> view_importance;
 };
 
 }  // namespace hmcr
