@@ -120,8 +120,7 @@ BudgetResult Search::run() {
                         "clustering (try --clustering isotropic)",
                         patches));
     }
-    const double start =
-        std::isnan(m_options.epsilon) ? m_options.oracle->default_epsilon() : m_options.epsilon;
+    const double start = resolved_epsilon(m_options);
     double x = std::log(start);
     for (int k = 0; k < m_budget.max_probes; ++k) {
         if (within(probe(x))) {

@@ -206,7 +206,7 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     sol.options = options;
     SolveStats& st = sol.stats;
     const Oracle& oracle = *options.oracle;
-    st.epsilon = std::isnan(options.epsilon) ? oracle.default_epsilon() : options.epsilon;
+    st.epsilon = resolved_epsilon(options);
     st.threads = threads;
     st.ranks = ranks.size();
 

@@ -187,4 +187,9 @@ struct SolverOptions {
     std::vector<View> views;
 };
 
+// The threshold a solve uses: options.epsilon, or the oracle's default where it is not given.
+inline double resolved_epsilon(const SolverOptions& options) {
+    return std::isnan(options.epsilon) ? options.oracle->default_epsilon() : options.epsilon;
+}
+
 }  // namespace hmcr
