@@ -187,6 +187,90 @@ StartMesh frozen_like(PatchSet patches, const SolverOptions& o, const Solution& 
     return mesh;
 }
 
+// The scene's figures every solve reports.
+void record_scene(SolveStats& st, const PatchSet& patches) {
+    st.emitted_power = patches.emitted_power;
+    st.total_area = patches.total_area;
+    st.max_emitted_power = patches.max_emitted_power;
+    st.patches = patches.patches.size();
+    for (std::size_t i = 0; i < st.patches; ++i) st.two_sided_patches += patches.two_sided(i);
+}
+
+// The receiver weights of view importance (§3.12), empty where the solve has none: shooting's
+// importance, solved first where it has none. Importance weighs the oracle's decisions, so a
+// fixed mesh has no use for it.
+std::span<const Rgb> importance_weights(const SolverOptions& options, bool fixed_mesh,
+                                        const Hierarchy& h, ShootingSetup& shooting, SolveStats& st,
+                                        Progress& progress, const Ranks& ranks) {
+    std::shared_ptr<const ViewImportance>& importance = shooting.importance;
+    if (fixed_mesh || options.importance == Importance::none) {
+        importance.reset();
+        return {};
+    }
+    if (!importance) {
+        importance = std::make_shared<const ViewImportance>(
+            solve_view_importance(h.patch_set(), *shooting.scene, options.views, options, ranks));
+        progress.note(fmt::format("view importance of {} view(s): {} rays, {:.2f} s",
+                                  options.views.size(), importance->rays, importance->seconds));
+    }
+    st.importance_rays = importance->rays;
+    st.importance_seconds = importance->seconds;
+    return importance->receiver_weights;
+}
+
+// What a pass reports of its mesh, its link cache and its time once its rays are shot.
+void record_end(SolveStats& st, const Hierarchy& h, const ClusterTree* clusters,
+                const LinkCache* cache, bool fixed_mesh, Clock::time_point start) {
+    st.elements = h.element_count();
+    st.faces = h.leaf_count();
+    if (clusters) st.cluster_leaves = clusters->cluster_leaves();
+    st.hierarchy_bytes = h.bytes();
+    if (cache) {
+        st.cache_bytes = cache->bytes();
+        st.cache_capacity = cache->capacity();
+        st.cache_evictions = cache->evictions();
+    }
+    st.total_seconds = seconds_since(start);
+    if (!fixed_mesh) {
+        st.refining_rays = st.rays;
+        st.refining_seconds = st.total_seconds;
+    }
+}
+
+// The control variate's zero surfaces (§3.11): it needs every side that may receive light to
+// exist from the start (it adds rho beta to each), and every deposit on the leaf at its hit
+// point, which a fixed mesh's context gives.
+ZeroSurfaces control_variate_surfaces(const RefinementContext& ctx, Hierarchy& h) {
+    ZeroSurfaces zero(h.patch_set());
+    zero.seen = zero_surfaces_seen(ctx, zero, kPilotRays);
+    for (std::size_t p = 0; p < h.patch_count(); ++p) {
+        if (h.patch_set().two_sided(p)) h.root(p, kBack);
+    }
+    return zero;
+}
+
+// An iteration's constant beta of the control variate (0: none) and, where it is not 0, its
+// `rays` split between the shifted leaves (`shifted`, rebuilt) and the zero surfaces
+// (`zero_sources`, rebuilt, the last `zero_rays`).
+struct Shift {
+    Rgb beta = Rgb::Zero();
+    bool on = false;
+    std::uint64_t zero_rays = 0;
+};
+Shift shift_for(const Hierarchy& h, const std::optional<ZeroSurfaces>& zero, std::uint64_t rays,
+                IterationSources& shifted, IterationSources& zero_sources) {
+    Shift s;
+    // A shifted iteration needs a ray for each of its two parts.
+    if (!zero || rays < 2) return s;
+    s.beta = control_constant(h, *zero);
+    s.on = (s.beta != 0).any();
+    if (!s.on) return s;
+    shifted.rebuild(h, s.beta);
+    zero_sources.rebuild(*zero, -s.beta);
+    s.zero_rays = zero_surface_rays(rays, shifted.total, zero_sources.total, zero->seen);
+    return s;
+}
+
 // make_mesh() builds the mesh once the options are validated and the threads limited, and the
 // scene before its roots when shooting.scene is none; the solve shoots in shooting.scene
 // (building it, as part of its setup, if make_mesh did not) through shooting.buffers (made
@@ -215,32 +299,14 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     Hierarchy& h = *sol.hierarchy;
     const PatchSet& patches = h.patch_set();
     if (patches.max_emitted_power <= 0) throw InputError("the scene emits no light");
-    st.emitted_power = patches.emitted_power;
-    st.total_area = patches.total_area;
-    st.max_emitted_power = patches.max_emitted_power;
-    st.patches = patches.patches.size();
-    for (std::size_t i = 0; i < st.patches; ++i) st.two_sided_patches += patches.two_sided(i);
+    record_scene(st, patches);
     if (!shooting.scene) shooting.scene = std::make_shared<const EmbreeScene>(patches);
     const EmbreeScene& scene = *shooting.scene;
     const bool fixed_mesh = mesh.frozen;
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
-    // Importance weighs the oracle's decisions, so a fixed mesh has no use for it (§3.12).
-    std::shared_ptr<const ViewImportance>& importance = shooting.importance;
-    if (fixed_mesh || options.importance == Importance::none) {
-        importance.reset();
-    } else if (!importance) {
-        importance = std::make_shared<const ViewImportance>(
-            solve_view_importance(h.patch_set(), scene, options.views, options, ranks));
-        progress.note(fmt::format("view importance of {} view(s): {} rays, {:.2f} s",
-                                  options.views.size(), importance->rays, importance->seconds));
-    }
-    if (importance) {
-        st.importance_rays = importance->rays;
-        st.importance_seconds = importance->seconds;
-    }
     const std::span<const Rgb> receiver_weights =
-        importance ? std::span<const Rgb>(importance->receiver_weights) : std::span<const Rgb>();
+        importance_weights(options, fixed_mesh, h, shooting, st, progress, ranks);
     // A fixed mesh has clusters only where its shape has cluster leaves (§2.7).
     std::unique_ptr<ClusterTree>& clusters = sol.clusters;
     if (mesh.clusters) {
@@ -269,16 +335,10 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
         .receiver_weights = receiver_weights};
     st.setup_seconds = seconds_since(start);
 
-    // The control variate needs every side that may receive light to exist from the start
-    // (it adds rho beta to each), and every deposit on the leaf at its hit point (§3.11).
-    std::optional<ZeroSurfaces> zero;
-    if (fixed_mesh && options.control_variate == ControlVariate::constant) {
-        zero.emplace(h.patch_set());
-        zero->seen = zero_surfaces_seen(ctx, *zero, kPilotRays);
-        for (std::size_t p = 0; p < h.patch_count(); ++p) {
-            if (h.patch_set().two_sided(p)) h.root(p, kBack);
-        }
-    }
+    const std::optional<ZeroSurfaces> zero =
+        fixed_mesh && options.control_variate == ControlVariate::constant
+            ? std::optional<ZeroSurfaces>(control_variate_surfaces(ctx, h))
+            : std::nullopt;
     const double emitted = channel_sum(st.emitted_power);
     RaySchedule schedule(options.rays, options.stop * emitted);
     Rgb unshot = h.unshot_power();
@@ -301,16 +361,10 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
         // Out of rays before the stop criterion: what is unshot stays unshot (an iteration of
         // no rays would push zero received radiosity over it and lose that power).
         if (rec.rays == 0) break;
-        // A shifted iteration needs a ray for each of its two parts.
-        const Rgb beta = zero && rec.rays >= 2 ? control_constant(h, *zero) : Rgb::Zero();
-        const bool shift = (beta != 0).any();
-        rec.control_constant = beta;
-        if (shift) {
-            shifted.rebuild(h, beta);
-            zero_sources.rebuild(*zero, -beta);
-        }
-        const std::uint64_t zero_rays =
-            shift ? zero_surface_rays(rec.rays, shifted.total, zero_sources.total, zero->seen) : 0;
+        const Shift split = shift_for(h, zero, rec.rays, shifted, zero_sources);
+        const Rgb beta = rec.control_constant = split.beta;
+        const bool shift = split.on;
+        const std::uint64_t zero_rays = split.zero_rays;
         const std::uint64_t done_before = st.rays;
         IterationOutcome out;
         together(ranks, [&] {
@@ -340,21 +394,8 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     }
     st.unshot_power = unshot;
     progress.advance(1.0);
-    st.elements = h.element_count();
     st.leaves = leaves();
-    st.faces = h.leaf_count();
-    if (clusters) st.cluster_leaves = clusters->cluster_leaves();
-    st.hierarchy_bytes = h.bytes();
-    if (cache) {
-        st.cache_bytes = cache->bytes();
-        st.cache_capacity = cache->capacity();
-        st.cache_evictions = cache->evictions();
-    }
-    st.total_seconds = seconds_since(start);
-    if (!fixed_mesh) {
-        st.refining_rays = st.rays;
-        st.refining_seconds = st.total_seconds;
-    }
+    record_end(st, h, clusters.get(), cache.get(), fixed_mesh, start);
     return sol;
 }
 
