@@ -58,6 +58,21 @@ bool appears(const std::filesystem::path& file) {
     return std::filesystem::exists(file);
 }
 
+// Waits up to 30 s for `file` to appear and the folder `dir` to settle: a run started in the
+// background takes its lock, then makes its output's subfolders and tries a file in each, and a
+// refusal's check that nothing changed must not see those.
+bool appears_and_settles(const std::filesystem::path& file, const std::filesystem::path& dir) {
+    if (!appears(file)) return false;
+    auto last = snapshot(dir);
+    for (int i = 0; i < 300; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        auto now = snapshot(dir);
+        if (now == last) return true;
+        last = std::move(now);
+    }
+    return false;
+}
+
 // Outputs that nest: a folder being written by one run, a file in it by another. Whichever
 // starts second is refused at once, and the first run's files stay its own.
 TEST_F(Hostile, ARunIntoAFolderAnotherRunWritesIsRefused) {
@@ -68,7 +83,7 @@ TEST_F(Hostile, ARunIntoAFolderAnotherRunWritesIsRefused) {
     std::filesystem::create_directories(bg);
     {
         HmcrChild solve("solve ../plates.json --rays 1e12 -q -o ../ref/reference.vtp", bg, 60);
-        ASSERT_TRUE(appears(dir() / "ref" / ".reference.pvsm.lock"));  // its last lock
+        ASSERT_TRUE(appears_and_settles(dir() / "ref" / ".reference.pvsm.lock", dir()));
         refused("reference plates.json -q -o ref",
                 "cannot write ref: another hmcr run is writing in it");
         refused("study plates.json --reference elsewhere -q --budgets 5 -o ref",
@@ -78,7 +93,7 @@ TEST_F(Hostile, ARunIntoAFolderAnotherRunWritesIsRefused) {
     }
     {
         HmcrChild reference("trace-reference ../plates.json --spp 1e6 -q -o ../ref", bg, 60);
-        ASSERT_TRUE(appears(dir() / "ref" / ".hmcr.lock"));
+        ASSERT_TRUE(appears_and_settles(dir() / "ref" / ".hmcr.lock", dir()));
         refused("solve plates.json --rays 1000 -q -o ref/reference.vtp",
                 "cannot write ref/reference.vtp: another hmcr run is writing the folder");
         refused("solve plates.json --rays 1000 -q -o ref/deeper/x.vtp",
