@@ -2,8 +2,8 @@
 #include "radiosity/solver.h"
 
 #include <fmt/format.h>
-#include <tbb/global_control.h>
 #include <tbb/info.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
@@ -277,14 +277,12 @@ Shift shift_for(const Hierarchy& h, const std::optional<ZeroSurfaces>& zero, std
 // here if none), with shooting.importance where a refining solve weighs by it (solved here if
 // none).
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
-// refining pass's, so that its rays are not theirs again.
-Solution solve_with(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
-                    ShootingSetup& shooting, Progress& progress, const Ranks& ranks,
-                    std::uint32_t first_iteration = 0) {
-    validate(options);
+// refining pass's, so that its rays are not theirs again. Runs in the calling thread's task
+// arena, which solve_with() sizes to the solve's threads.
+Solution solve_in_arena(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
+                        ShootingSetup& shooting, Progress& progress, const Ranks& ranks,
+                        std::uint32_t first_iteration, int threads) {
     const auto start = Clock::now();
-    const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
-    tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
 
     Solution sol;
     sol.options = options;
@@ -396,6 +394,22 @@ Solution solve_with(const SolverOptions& options, const std::function<StartMesh(
     progress.advance(1.0);
     st.leaves = leaves();
     record_end(st, h, clusters.get(), cache.get(), fixed_mesh, start);
+    return sol;
+}
+
+// A solve in a task arena of its own threads: the caller's other work, and TBB's process-wide
+// settings, are left as they were.
+Solution solve_with(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
+                    ShootingSetup& shooting, Progress& progress, const Ranks& ranks,
+                    std::uint32_t first_iteration = 0) {
+    validate(options);
+    const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+    tbb::task_arena arena(threads);
+    Solution sol;
+    arena.execute([&] {
+        sol =
+            solve_in_arena(options, make_mesh, shooting, progress, ranks, first_iteration, threads);
+    });
     return sol;
 }
 
