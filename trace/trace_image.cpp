@@ -2,7 +2,7 @@
 #include "trace/trace_image.h"
 
 #include <fmt/format.h>
-#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
@@ -200,8 +200,10 @@ SampleCounts TraceResult::counts() const {
     return {*lo, *hi, sum / double(samples.size())};
 }
 
-TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceOptions& o,
-                        Progress& progress) {
+namespace {
+
+TraceResult trace_in_arena(const PathTracer& tracer, const View& view, const TraceOptions& o,
+                           Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     const Criterion& chosen = *o.sampler;
     validate(o, chosen);
@@ -213,11 +215,6 @@ TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceO
         on_display = on_display_values(chosen, o.criterion_exposure);
     }
     const Criterion& criterion = on_display ? *on_display : chosen;
-    std::unique_ptr<tbb::global_control> parallelism;
-    if (o.threads > 0) {
-        parallelism = std::make_unique<tbb::global_control>(
-            tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
-    }
     const Camera camera = make_camera(view);
     const PixelTracer pixels(tracer, camera, o.seed);
     TraceResult r;
@@ -247,6 +244,17 @@ TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceO
         r.rays_traced += r.rays;
     }
     r.seconds = seconds_since(start);
+    return r;
+}
+
+}  // namespace
+
+// In a task arena of o.threads (0: TBB's default), leaving the process's other work as it was.
+TraceResult trace_image(const PathTracer& tracer, const View& view, const TraceOptions& o,
+                        Progress& progress) {
+    tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
+    TraceResult r;
+    arena.execute([&] { r = trace_in_arena(tracer, view, o, progress); });
     return r;
 }
 
