@@ -14,6 +14,7 @@
 #include <numbers>
 
 #include "meshes/mgf_color.h"
+#include "meshes/mgf_color_fit.h"
 #include "meshes/mgf_contexts.h"
 #include "meshes/mgf_file.h"
 #include "meshes/mgf_polygon_count.h"
@@ -35,10 +36,6 @@ struct Tally {
         if (count++ == 0) first = where;
     }
 };
-
-// The largest channel of a coloured reflectance moved toward grey to fit RGB: Spectralon's,
-// the highest of real diffusers (a channel of 1 would absorb nothing).
-constexpr double kMaxColouredReflectance = 0.99;
 
 // Throws InputError at `where` unless the statement has min to max arguments.
 void need_arguments(const std::vector<std::string>& w, std::size_t min, std::size_t max,
@@ -281,22 +278,9 @@ private:
     // (outside the RGB gamut, or too bright to be a reflectance) is moved toward the grey of the
     // same luminance until it fits, keeping its luminance.
     Eigen::Vector3d rgb(double luminance, double upper) {
-        const Chromaticity& c = m_colors.current();
-        const Eigen::Vector3d grey = Eigen::Vector3d::Constant(luminance);
-        if (c.x == 1.0 / 3 && c.y == 1.0 / 3) return grey;
-        const Eigen::Vector3d out = chromaticity_rgb(c, luminance);
-        if (c.y == 0 || !out.allFinite()) {  // no luminance to scale, or x / y overflows
-            m_fitted.add("colours", m_where);
-            return grey;
-        }
-        double t = 1;  // how much of the colour is kept
-        for (int k = 0; k < 3; ++k) {
-            if (out[k] < 0) t = std::min(t, luminance / (luminance - out[k]));
-            if (out[k] > upper) t = std::min(t, (upper - luminance) / (out[k] - luminance));
-        }
-        if (t == 1) return out;
-        m_fitted.add("colours", m_where);
-        return (grey + t * (out - grey)).cwiseMax(0.0).cwiseMin(upper);
+        const FittedColour f = fit_colour(m_colors.current(), luminance, upper);
+        if (f.moved) m_fitted.add("colours", m_where);
+        return f.rgb;
     }
 
     void material(const std::vector<std::string>& w) {
@@ -510,24 +494,14 @@ std::int32_t MgfReader::soup_material() {
     return m.soup;
 }
 
-// MGF states rd and rs as luminances, and lets them sum to 1. Two colours that fit alone can
-// still sum above 1 in a channel (a saturated red rd under a white rs); when their luminances
-// allow it, both move toward their greys together, keeping their luminances, until every
-// channel fits as rd's does alone (docs/design.md §1.7). A sum of luminances above 1 is left
-// for the repair that reduces rs (meshes/repairs.cpp).
+// MGF states rd and rs as luminances, and lets them sum to 1: two colours that fit alone can
+// still sum above 1 in a channel (a saturated red rd under a white rs), and move together
+// (meshes/mgf_color_fit.h).
 void MgfReader::fit_reflectances(const MgfMaterial& m, Material& out) {
-    const double luminance = m.rd + m.rs;
-    const double upper = std::min(std::max(luminance, kMaxColouredReflectance), 1.0);
-    const Eigen::Vector3d total = m.kd + m.ks;
-    if (luminance > 1 || total.maxCoeff() <= upper) return;
-    double t = 1;  // how much of the colours is kept
-    for (int k = 0; k < 3; ++k) {
-        if (total[k] > upper) t = std::min(t, (upper - luminance) / (total[k] - luminance));
-    }
-    const Eigen::Vector3d grey_d = Eigen::Vector3d::Constant(m.rd);
-    const Eigen::Vector3d grey_s = Eigen::Vector3d::Constant(m.rs);
-    out.kd = t == 0 ? grey_d : (grey_d + t * (m.kd - grey_d)).cwiseMax(0.0);
-    out.ks = t == 0 ? grey_s : (grey_s + t * (m.ks - grey_s)).cwiseMax(0.0);
+    const auto fitted = fit_sum(m.kd, m.rd, m.ks, m.rs);
+    if (!fitted) return;
+    out.kd = fitted->first;
+    out.ks = fitted->second;
     m_fitted.add("colours", m_soup.where(m.ks_at));
 }
 

@@ -119,5 +119,4 @@ double link_value(const RefinementContext& ctx, const PatchPair& pp, const Eleme
     return w * geometric_factor(ctx, pp, receiver, source, counters);
 }
 
-
 }  // namespace hmcr

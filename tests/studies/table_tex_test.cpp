@@ -85,8 +85,8 @@ std::vector<std::string> tex_headers(const std::string& tex) {
 }
 
 // A cell of every oracle with errors of the sizes studies see: two views, a frozen re-solve.
-CellResult meshing_cell(const std::string& oracle, std::size_t budget, std::uint64_t seed,
-                        double error) {
+CellResult tex_meshing_cell(const std::string& oracle, std::size_t budget, std::uint64_t seed,
+                            double error) {
     CellResult c;
     c.scene = "cornell";
     c.oracle = oracle;
@@ -112,7 +112,8 @@ std::vector<CellResult> meshing_cells(const StudyOptions& o) {
     for (std::size_t b : o.budgets)
         for (std::size_t k = 0; k < std::size(oracles); ++k)
             for (std::uint64_t s = 1; s <= std::uint64_t(o.seeds); ++s)
-                cells.push_back(meshing_cell(oracles[k], b, s, 0.7 * double(k) + 0.13 * double(s)));
+                cells.push_back(
+                    tex_meshing_cell(oracles[k], b, s, 0.7 * double(k) + 0.13 * double(s)));
     return cells;
 }
 
