@@ -5,8 +5,8 @@
 // Read: o, xf (-t -rx -ry -rz -s -mx -my -mz -i -a), i (relative to the including file, with a
 // transformation), c with cxy, cspec, cct and cmix, m with rd, ed and sides, v with p and n, f
 // (seams included), and the surfaces sph, cyl, cone, ring, torus and prism tessellated as
-// meshes/mgf_shapes.h says. Colours become RGB as meshes/mgf_color.h says; `ed` (lm/m^2)
-// becomes the emitted radiosity E with that luminance, so an MGF scene's radiosity is in
+// meshes/mgf_shapes.h says. Colours become RGB as meshes/mgf_color.h and mgf_color_fit.h say; `ed`
+// (lm/m^2) becomes the emitted radiosity E with that luminance, so an MGF scene's radiosity is in
 // lm/m^2 where an OBJ scene's is in W/m^2. `rs` is the specular part only the path tracer
 // reflects (docs/design.md §1.2); ts, td, ir and ies are ignored with one warning naming them. A
 // material's `sides` (2 unless it says 1, as the specification has it) is kept with it for the
