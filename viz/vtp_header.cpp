@@ -65,6 +65,11 @@ bool is_data_section(std::string_view element) {
     return element == "FieldData" || element == "PointData" || element == "CellData";
 }
 
+// The elements whose offsets and connectivity make a vtkCellArray.
+bool is_cell_section(std::string_view element) {
+    return element == "Verts" || element == "Lines" || element == "Strips" || element == "Polys";
+}
+
 bool is_space(char c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
 }
@@ -94,6 +99,7 @@ public:
         XML_SetUserData(m_parser.get(), this);
         XML_SetElementHandler(m_parser.get(), &HeaderReader::on_start, &HeaderReader::on_end);
         XML_SetStartDoctypeDeclHandler(m_parser.get(), &HeaderReader::on_doctype);
+        XML_SetCharacterDataHandler(m_parser.get(), &HeaderReader::on_text);
     }
 
     // Reads the XML; `complete`: it is the whole file (no appended data follows). Returns why
@@ -129,7 +135,13 @@ private:
     static void XMLCALL on_end(void* self, const XML_Char* name) {
         HeaderReader& reader = *static_cast<HeaderReader*>(self);
         reader.m_in_points = false;
+        reader.m_collecting = false;
         if (is_data_section(name)) reader.m_section.clear();
+        if (is_cell_section(name)) reader.m_cell_section.clear();
+    }
+    static void XMLCALL on_text(void* self, const XML_Char* text, int length) {
+        HeaderReader& reader = *static_cast<HeaderReader*>(self);
+        if (reader.m_collecting) reader.header.cell_arrays.back().text.append(text, length);
     }
     static void XMLCALL on_doctype(void* self, const XML_Char*, const XML_Char*, const XML_Char*,
                                    int) {
@@ -162,6 +174,10 @@ private:
             m_section = element;
             m_section_names.clear();
         }
+        if (is_cell_section(element)) {
+            m_cell_section = element;
+            ++m_cell_groups;
+        }
         m_in_points = element == "Points";
     }
 
@@ -182,6 +198,43 @@ private:
         if (!m_section.empty() && name && !m_section_names.insert(name).second) {
             return refuse(fmt::format("two arrays named {} in its {}", quote(name), m_section));
         }
+        // VTK allocates components times tuples, each checked on its own above; an array's
+        // tuples are its NumberOfTuples or a count of its piece, at most the largest so far.
+        const double values =
+            (components ? double(std::stoull(std::string(plain_digits(components)))) : 1.0) *
+            double(std::max<std::uint64_t>(m_largest_count, 1));
+        if (values > m_limit) {
+            return refuse(
+                fmt::format("an array of {} components and {} tuples in a file of {} "
+                            "bytes",
+                            quote(components), m_largest_count, m_file_bytes));
+        }
+        if (!m_cell_section.empty() && name &&
+            (std::string_view(name) == "offsets" || std::string_view(name) == "connectivity")) {
+            return cell_array(name, type, attributes);
+        }
+        return true;
+    }
+
+    // A cell section's offsets or connectivity, kept for the envelope's check of its values.
+    bool cell_array(std::string_view name, const char* type, const XML_Char** attributes) {
+        VtpCellArray a;
+        a.section = m_cell_section;
+        a.group = m_cell_groups;
+        a.offsets = name == "offsets";
+        a.type = type;
+        const char* format = attribute_value(attributes, "format");
+        a.format = format ? format : "";
+        if (a.format == "appended") {
+            const char* offset = attribute_value(attributes, "offset");
+            if (!offset) return refuse(fmt::format("its {} {} have no offset", a.section, name));
+            a.offset = std::stoull(std::string(plain_digits(offset)));  // checked as read
+        } else if (a.format != "binary" && a.format != "ascii") {
+            return refuse(fmt::format("its {} {} are of format {}, not one VTK reads", a.section,
+                                      name, quote(a.format)));
+        }
+        m_collecting = a.format != "appended";
+        header.cell_arrays.push_back(std::move(a));
         return true;
     }
 
@@ -201,14 +254,19 @@ private:
                 return refuse(fmt::format("{} is {} in a file of {} bytes", shown_name(name),
                                           quote(value), m_file_bytes));
             }
+            if (name != "NumberOfComponents") m_largest_count = std::max(m_largest_count, *count);
         } else if (name == "offset") {
             // Every offset, however written: VTK reads offset="19i" as 19, into another array's
             // bytes (a 2.7 GB, 26 s header, found by the fuzzer), so only plain numbers pass.
             const auto offset = plain_number(name, value, 19);
             if (!offset) return false;
             header.offsets.push_back(*offset);
+        } else if (name == "byte_order" && value != "LittleEndian") {
+            // The checks read headers as hmcr writes them, little-endian.
+            return refuse(fmt::format("byte_order is {}, not LittleEndian", quote(value)));
         } else if (name == "compressor") {
             header.compressed = true;
+            header.compressor = value;
         } else if (name == "header_type" && !m_header_type_seen) {
             m_header_type_seen = true;
             header.header_width = value == "UInt64" ? 8 : 4;
@@ -246,6 +304,10 @@ private:
     std::string m_section;                  // the data section being read, if any
     std::set<std::string> m_section_names;  // the names of its arrays so far
     bool m_header_type_seen = false;        // the first header_type counts
+    std::uint64_t m_largest_count = 0;      // the largest count of tuples, points or cells so far
+    std::string m_cell_section;             // the cell section being read, if any
+    std::size_t m_cell_groups = 0;          // cell sections started so far
+    bool m_collecting = false;              // the text read is the last cell array's
     std::string m_error;
 };
 

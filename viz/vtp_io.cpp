@@ -113,8 +113,8 @@ vtkSmartPointer<vtkPolyData> read_polydata(const std::filesystem::path& path,
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) check.fail("no such file");
     if (!std::filesystem::is_regular_file(path, ec)) check.fail("is not a regular file");
+    silence_vtk_console();  // the envelope's decompression reports through VTK too
     check_vtp_envelope(path);
-    silence_vtk_console();
     auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     bool failed = false;
     auto on_error = vtkSmartPointer<vtkCallbackCommand>::New();
