@@ -271,6 +271,98 @@ Shift shift_for(const Hierarchy& h, const std::optional<ZeroSurfaces>& zero, std
     return s;
 }
 
+// The leaves once the clusters, if any, have settled.
+std::size_t settled_leaves(const Hierarchy& h, ClusterTree* clusters) {
+    return clusters ? clusters->settle() : h.leaf_count();
+}
+
+// A solve's iterations: each shoots the unshot power from the sources it rebuilds, then pushes
+// and pulls, until the unshot power falls below the stop or the rays run out.
+struct Shooter {
+    const SolverOptions& options;
+    const RefinementContext& ctx;
+    ClusterTree* clusters;
+    bool fixed_mesh;
+    const std::optional<ZeroSurfaces>& zero;
+    ShootingBuffers& buffers;
+    Progress& progress;
+    const Ranks& ranks;
+    SolveStats& st;
+    // An iteration's sources, and with the control variate their shifted and zero parts.
+    struct Sources {
+        IterationSources all, shifted, zero;
+    };
+
+    // The iterations' rays are keyed from `first_iteration` on; returns the unshot power left.
+    Rgb run(std::uint32_t first_iteration) {
+        Hierarchy& h = ctx.hierarchy;
+        const double emitted = channel_sum(st.emitted_power);
+        RaySchedule schedule(options.rays, options.stop * emitted);
+        Rgb unshot = h.unshot_power();
+        Sources sources;
+        // The cap only guards against a scene that never converges; stop ends real solves.
+        for (std::uint32_t k = 0; channel_sum(unshot) >= options.stop * emitted && k < 10'000;
+             ++k) {
+            if (!iteration(first_iteration + k, schedule, unshot, sources)) break;
+        }
+        return unshot;
+    }
+
+    // Iteration `it`; false, having changed nothing, when the schedule has no rays for it.
+    bool iteration(std::uint32_t it, RaySchedule& schedule, Rgb& unshot, Sources& sources) {
+        Hierarchy& h = ctx.hierarchy;
+        const auto t0 = Clock::now();
+        IterationRecord rec;
+        rec.unshot_before = unshot;
+        sources.all.rebuild(h);
+        // A fixed mesh's clusters take deposits only: no decision samples the top.
+        if (clusters && !fixed_mesh) clusters->begin_iteration(options.link_weight);
+        // The schedule and its pilot rays follow the true unshot power, with or without the
+        // control variate; the rays shoot it minus beta where beta is not 0.
+        const double ratio = reflected_fraction(ctx, sources.all, it, kPilotRays);
+        rec.rays = schedule.next(channel_sum(unshot), ratio);
+        // Out of rays before the stop criterion: what is unshot stays unshot (an iteration of
+        // no rays would push zero received radiosity over it and lose that power).
+        if (rec.rays == 0) return false;
+        const Shift split = shift_for(h, zero, rec.rays, sources.shifted, sources.zero);
+        const Rgb beta = rec.control_constant = split.beta;
+        IterationOutcome out = shoot(it, rec.rays, split, sources);
+        merge_iteration(h, out, ranks, !fixed_mesh, clusters);
+        st.shooting_seconds += seconds_since(t0);
+        const auto t1 = Clock::now();
+        push_pull(h, clusters, out.quantum);
+        if (split.on) add_constant(h, beta);
+        st.push_pull_seconds += seconds_since(t1);
+        unshot = rec.unshot_after = h.unshot_power();
+        if (!unshot.isFinite().all()) throw std::runtime_error("the unshot power is not finite");
+        rec.leaves_after = settled_leaves(h, clusters);
+        rec.seconds = seconds_since(t0);
+        schedule.record(rec.rays);
+        add_iteration(st, out, split.on);
+        st.iterations.push_back(rec);
+        return true;
+    }
+
+    // Iteration `it`'s rays, on every rank, with progress and interruption per batch.
+    IterationOutcome shoot(std::uint32_t it, std::uint64_t rays, const Shift& split,
+                           const Sources& sources) {
+        const std::uint64_t done_before = st.rays;
+        IterationOutcome out;
+        together(ranks, [&] {
+            out = shoot_on_rank(
+                ctx, split.on ? sources.shifted : sources.all, split.on ? &sources.zero : nullptr,
+                it, rays, split.zero_rays, ranks,
+                [&](std::uint64_t n) {
+                    const double done = double(done_before) + double(n) * ranks.size();
+                    progress.advance(std::min(1.0, done / double(options.rays)));
+                    throw_if_interrupted();
+                },
+                buffers);
+        });
+        return out;
+    }
+};
+
 // make_mesh() builds the mesh once the options are validated and the threads limited, and the
 // scene before its roots when shooting.scene is none; the solve shoots in shooting.scene
 // (building it, as part of its setup, if make_mesh did not) through shooting.buffers (made
@@ -312,8 +404,7 @@ Solution solve_in_arena(const SolverOptions& options, const std::function<StartM
     } else if (!fixed_mesh && options.clustering == Clustering::isotropic) {
         clusters = std::make_unique<ClusterTree>(h, receiver_weights);
     }
-    const auto leaves = [&] { return clusters ? clusters->settle() : h.leaf_count(); };
-    leaves();
+    settled_leaves(h, clusters.get());
     // A fixed mesh's leaves by parameter point, where its rays deposit.
     const std::unique_ptr<const LeafIndex> leaf_index =
         fixed_mesh ? std::make_unique<const LeafIndex>(h) : nullptr;
@@ -337,62 +428,13 @@ Solution solve_in_arena(const SolverOptions& options, const std::function<StartM
         fixed_mesh && options.control_variate == ControlVariate::constant
             ? std::optional<ZeroSurfaces>(control_variate_surfaces(ctx, h))
             : std::nullopt;
-    const double emitted = channel_sum(st.emitted_power);
-    RaySchedule schedule(options.rays, options.stop * emitted);
-    Rgb unshot = h.unshot_power();
-    // The cap only guards against a scene that never converges; stop ends real solves.
     if (!shooting.buffers) shooting.buffers = std::make_shared<ShootingBuffers>();
-    ShootingBuffers& buffers = *shooting.buffers;
-    IterationSources sources, shifted, zero_sources;
-    for (std::uint32_t k = 0; channel_sum(unshot) >= options.stop * emitted && k < 10'000; ++k) {
-        const std::uint32_t it = first_iteration + k;
-        const auto t0 = Clock::now();
-        IterationRecord rec;
-        rec.unshot_before = unshot;
-        sources.rebuild(h);
-        // A fixed mesh's clusters take deposits only: no decision samples the top.
-        if (clusters && !fixed_mesh) clusters->begin_iteration(options.link_weight);
-        // The schedule and its pilot rays follow the true unshot power, with or without the
-        // control variate; the rays shoot it minus beta where beta is not 0.
-        const double ratio = reflected_fraction(ctx, sources, it, kPilotRays);
-        rec.rays = schedule.next(channel_sum(unshot), ratio);
-        // Out of rays before the stop criterion: what is unshot stays unshot (an iteration of
-        // no rays would push zero received radiosity over it and lose that power).
-        if (rec.rays == 0) break;
-        const Shift split = shift_for(h, zero, rec.rays, shifted, zero_sources);
-        const Rgb beta = rec.control_constant = split.beta;
-        const bool shift = split.on;
-        const std::uint64_t zero_rays = split.zero_rays;
-        const std::uint64_t done_before = st.rays;
-        IterationOutcome out;
-        together(ranks, [&] {
-            out = shoot_on_rank(
-                ctx, shift ? shifted : sources, shift ? &zero_sources : nullptr, it, rec.rays,
-                zero_rays, ranks,
-                [&](std::uint64_t n) {
-                    const double done = double(done_before) + double(n) * ranks.size();
-                    progress.advance(std::min(1.0, done / double(options.rays)));
-                    throw_if_interrupted();
-                },
-                buffers);
-        });
-        merge_iteration(h, out, ranks, !fixed_mesh, clusters.get());
-        st.shooting_seconds += seconds_since(t0);
-        const auto t1 = Clock::now();
-        push_pull(h, clusters.get(), out.quantum);
-        if (shift) add_constant(h, beta);
-        st.push_pull_seconds += seconds_since(t1);
-        unshot = rec.unshot_after = h.unshot_power();
-        if (!unshot.isFinite().all()) throw std::runtime_error("the unshot power is not finite");
-        rec.leaves_after = leaves();
-        rec.seconds = seconds_since(t0);
-        schedule.record(rec.rays);
-        add_iteration(st, out, shift);
-        st.iterations.push_back(rec);
-    }
+    Shooter shooter{options,           ctx,      clusters.get(), fixed_mesh, zero,
+                    *shooting.buffers, progress, ranks,          st};
+    const Rgb unshot = shooter.run(first_iteration);
     st.unshot_power = unshot;
     progress.advance(1.0);
-    st.leaves = leaves();
+    st.leaves = settled_leaves(h, clusters.get());
     record_end(st, h, clusters.get(), cache.get(), fixed_mesh, start);
     return sol;
 }
