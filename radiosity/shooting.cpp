@@ -229,6 +229,238 @@ double zero_surfaces_seen(const RefinementContext& ctx, const ZeroSurfaces& zero
     return double(seen) / double(rays);
 }
 
+namespace {
+
+using Batch = ShootingBuffers::Impl::Batch;
+using Chunk = ShootingBuffers::Impl::Chunk;
+
+// One iteration's rays in a slice, in batches: each batch generated and traced in chunks on
+// every thread (trace, shoot_ray), then descended and deposited in ray order (finish).
+class IterationShot {
+public:
+    IterationShot(const RefinementContext& ctx, const IterationSources& sources,
+                  std::uint32_t iteration, std::uint64_t rays, RaySlice slice,
+                  const std::function<void(std::uint64_t)>& on_batch, ShootingBuffers& buffers,
+                  const RayPart& part, IterationOutcome& out)
+        : m_ctx(ctx),
+          m_sources(sources),
+          m_iteration(iteration),
+          m_slice(slice),
+          m_on_batch(on_batch),
+          m_buffers(buffers.impl()),
+          m_part(part),
+          m_out(out),
+          m_ps(ctx.hierarchy.patch_set()),
+          m_power_scale(sources.total / double(rays)),  // S / N_iter
+          m_fixed(ctx.fixed_leaves != nullptr),
+          // Lines both ways between the leaves (the zero surfaces' rays go one way: §3.13).
+          m_both(m_fixed && ctx.bidirectional == Bidirectional::yes && sources.leaves) {
+        // One thread cannot overlap anything: it reuses one batch's buffers, which stay in
+        // cache.
+        const auto threads = std::min<std::size_t>(
+            tbb::this_task_arena::max_concurrency(),
+            tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+        m_overlap = threads > 1;
+        if (ctx.sequence == RaySequence::sobol) {  // a Sobol ray's source is dealt, not picked
+            RayStrata& s = m_buffers.strata;
+            s.assign(sources.weights(), rays,
+                     Rng(ctx.seed, iteration, kStrataStream + part.first_key).uniform(),
+                     part.first_key);
+            m_strata = &s;
+        }
+    }
+
+    void run() {
+        size_buffers(std::min(m_slice.end - m_slice.begin, kBatchRays));
+        // Tracing reads only the patches, the sources and the Embree scene (and a fixed mesh's
+        // leaf lookup, which reads no element's power), never what a descent or a deposit
+        // writes, so the next batch is traced while this one descends and deposits: the
+        // batch's sequential steps (compaction, sort, deposits) then overlap the next batch's
+        // rays on other threads. The batches still descend and deposit in order, so the bits
+        // are the same.
+        std::array<Batch, 2>& batches = m_buffers.batches;
+        trace(batches[0], m_slice.begin);
+        for (std::size_t current = 0;;) {
+            Batch& b = batches[current];
+            const std::uint64_t next = b.first + b.n;
+            if (next >= m_slice.end) {
+                finish(b);
+                break;
+            }
+            if (!m_overlap) {
+                finish(b);
+                trace(b, next);
+                continue;
+            }
+            Batch& following = batches[current ^ 1];
+            tbb::task_group tracing;
+            tracing.run([this, &following, next] { trace(following, next); });
+            try {
+                finish(b);
+            } catch (...) {  // an interrupt from on_batch: the tracing task must end first
+                tracing.cancel();
+                tracing.wait();
+                throw;
+            }
+            tracing.wait();
+            current ^= 1;
+        }
+    }
+
+private:
+    void size_buffers(std::uint64_t batch_rays) {
+        for (Batch& b : m_buffers.batches) {
+            b.rays.resize(batch_rays);
+            resize_populated(b.hits, batch_rays);
+            resize_populated(b.deposits, batch_rays);
+            resize_populated(b.backs, m_both ? batch_rays : 0);
+            resize_populated(b.queries, m_fixed ? 0 : batch_rays);  // no descents: no queries
+            resize_populated(b.receivers, batch_rays);
+            if (!m_overlap) break;
+        }
+        if (!m_fixed) m_buffers.descent.reserve(batch_rays);
+    }
+
+    // The batch of rays from `first`, generated and traced in chunks on every thread.
+    void trace(Batch& b, std::uint64_t first) {
+        b.first = first;
+        b.n = std::min(kBatchRays, m_slice.end - first);
+        b.chunks.assign((b.n + kGrain - 1) / kGrain, {});
+        tbb::parallel_for(std::uint64_t(0), b.chunks.size(), [&](std::uint64_t c) {
+            set_tracing_float_mode();
+            trace_chunk(b, c * kGrain, std::min(b.n, (c + 1) * kGrain), b.chunks[c]);
+        });
+    }
+
+    // One chunk of rays through the stages: generated, traced, then each ray's power and fate
+    // (steps 3 and 4).
+    void trace_chunk(Batch& b, std::uint64_t begin, std::uint64_t end, Chunk& chunk) const {
+        generate_rays(*m_sources.patches, m_sources.regions, *m_sources.alias, m_ctx.seed,
+                      m_iteration, m_part.first_key + b.first + begin, end - begin, b.rays, begin,
+                      m_ctx.sequence, m_strata);
+        m_ctx.scene.first_hits(b.rays, begin, end, b.hits);
+        for (std::uint64_t k = begin; k < end; ++k) shoot_ray(b, k, chunk);
+    }
+
+    // Ray k's power, and for a ray that lands, its deposit and the query of its descent (on a
+    // fixed mesh, its receiver) and what it carries back.
+    void shoot_ray(Batch& b, std::uint64_t k, Chunk& chunk) const {
+        const std::uint32_t leaf = b.rays.region[k];
+        Rgb power = m_power_scale * m_sources.share[leaf];
+        const double dither = b.rays.dither[k];
+        // Written field by field, once: a deposit built whole and copied in was read back
+        // from the stack before its halves were stored there, a stall on every ray.
+        ShootingBuffers::Impl::Deposit& deposit = b.deposits[k];
+        const BatchHit& hit = b.hits[k];
+        const std::optional<std::uint8_t> side = hit_side(m_ps, hit, b.rays, k);
+        const PowerQuantum& quantum = m_out.quantum;
+        if (!side) {
+            const Quanta quanta = quantum.count(power, dither);
+            add(chunk.shot, quanta);
+            deposit.lands = false;  // all that is read of it
+            add(hit.patch == BatchHit::kNoHit ? chunk.escaped : chunk.back_face, quanta);
+            return;
+        }
+        const Patch& rcv = m_ps.patches[hit.patch];
+        const Vec3 y = hit_point(b.rays, k, hit.distance);
+        const RayRegion& source = m_sources.regions[leaf];
+        const LinkQuery query{SideRef(hit.patch, *side),
+                              SideRef(source.patch, std::uint8_t(source.side)),
+                              rcv.param_of_hit(hit.second_triangle != 0, hit.b1, hit.b2, y),
+                              Vec2f(b.rays.u[k], b.rays.v[k])};
+        if (m_fixed) {
+            b.receivers[k] = &fixed_receiver(m_ctx, query);
+        } else {
+            b.queries[k] = query;
+        }
+        if (m_both) power = shoot_back(b, k, chunk, query, source, leaf, power, dither);
+        const Quanta quanta = quantum.count(power, dither);
+        add(chunk.shot, quanta);
+        // docs/design.md §3: received += rho * Phi (over A when pushed).
+        const Rgb& rho = m_ps.material(hit.patch, *side).reflectance;
+        deposit.quanta = quantum.count(rho * power, dither);
+        deposit.incident = quanta;
+        deposit.lands = true;
+    }
+
+    // A line used both ways: what ray k carries back from the leaf it landed on to its source
+    // leaf, kept in its back deposit; returns the power it carries forward.
+    Rgb shoot_back(Batch& b, std::uint64_t k, Chunk& chunk, const LinkQuery& query,
+                   const RayRegion& source, std::uint32_t leaf, const Rgb& power,
+                   double dither) const {
+        ShootingBuffers::Impl::BackDeposit& back_deposit = b.backs[k];
+        back_deposit.receiver = nullptr;
+        // The leaf at the hit is a source of this iteration (its receiver may be the cluster
+        // above it); what it shoots back lands where a ray to x would.
+        const Element& landed = m_ctx.clusters ? m_ctx.fixed_leaves->locate(
+                                                     query.receiver.patch(), query.receiver.side(),
+                                                     query.y_uv.cast<double>())
+                                               : *b.receivers[k];
+        const BothWays split = both_ways(m_sources, leaf, power, m_power_scale, landed);
+        if ((split.back != 0).any()) {
+            const LinkQuery back{query.source, query.receiver, query.x_uv, query.y_uv};
+            Element& to = fixed_receiver(m_ctx, back);
+            const Quanta back_quanta = m_out.quantum.count(split.back, dither);
+            add(chunk.shot, back_quanta);
+            const Rgb& rho_x = m_ps.material(source.patch, source.side).reflectance;
+            back_deposit.quanta = m_out.quantum.count(rho_x * split.back, dither);
+            back_deposit.incident = back_quanta;
+            back_deposit.receiver = &to;
+        }
+        return split.forward;
+    }
+
+    // The batch's descents, then its deposits in ray order, whichever thread traced the ray:
+    // the same bits for any thread count.
+    void finish(Batch& b) {
+        std::size_t landed = 0;
+        if (!m_fixed) {
+            for (std::uint64_t k = 0; k < b.n; ++k) {
+                if (b.deposits[k].lands) b.queries[landed++] = b.queries[k];
+            }
+            RefinementCounters counters;
+            refine_links(m_ctx, {b.queries.data(), landed}, {b.receivers.data(), landed}, counters,
+                         m_buffers.descent);
+            m_out.counters += counters;
+        }
+        for (std::uint64_t k = 0, q = 0; k < b.n; ++k) {
+            if (!b.deposits[k].lands) continue;
+            const ShootingBuffers::Impl::Deposit& d = b.deposits[k];
+            Element& receiver = *b.receivers[m_fixed ? k : q++];
+            add(receiver.received, is_cluster(receiver) ? d.incident : d.quanta);
+            if (!m_both) continue;
+            const ShootingBuffers::Impl::BackDeposit& back = b.backs[k];
+            if (Element* to = back.receiver) {
+                add(to->received, is_cluster(*to) ? back.incident : back.quanta);
+            }
+        }
+        for (const auto& c : b.chunks) {
+            add(m_out.shot_power, c.shot);
+            add(m_out.escaped_power, c.escaped);
+            add(m_out.back_face_power, c.back_face);
+        }
+        m_out.rays += b.n;
+        if (m_on_batch) m_on_batch(m_out.rays);
+    }
+
+    const RefinementContext& m_ctx;
+    const IterationSources& m_sources;
+    std::uint32_t m_iteration;
+    RaySlice m_slice;
+    const std::function<void(std::uint64_t)>& m_on_batch;
+    ShootingBuffers::Impl& m_buffers;
+    const RayPart& m_part;
+    IterationOutcome& m_out;
+    const PatchSet& m_ps;
+    double m_power_scale;
+    bool m_fixed;  // a fixed mesh: deposits on its leaves, no descents
+    bool m_both;
+    bool m_overlap = false;  // the next batch is traced while this one finishes
+    const RayStrata* m_strata = nullptr;
+};
+
+}  // namespace
+
 IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSources& sources,
                                  std::uint32_t iteration, std::uint64_t rays, RaySlice slice,
                                  const std::function<void(std::uint64_t)>& on_batch,
@@ -237,184 +469,14 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
     if (part.quantum) out.quantum = *part.quantum;
     if (rays == 0 || sources.total <= 0) return out;
     slice.end = std::min(slice.end, rays);
-    const double power_scale = sources.total / double(rays);  // S / N_iter
     if (!part.quantum) {
+        const double power_scale = sources.total / double(rays);  // S / N_iter
         out.quantum = PowerQuantum::for_iteration(power_scale * sources.max_share, rays);
     }
     if (slice.begin >= slice.end) return out;
-    const std::uint64_t batch_rays = std::min(slice.end - slice.begin, kBatchRays);
-    // One thread cannot overlap anything: it reuses one batch's buffers, which stay in cache.
-    const auto threads = std::min<std::size_t>(
-        tbb::this_task_arena::max_concurrency(),
-        tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-    const bool overlap = threads > 1;
     std::optional<ShootingBuffers> own;
     if (!buffers) buffers = &own.emplace();
-    using Batch = ShootingBuffers::Impl::Batch;
-    std::array<Batch, 2>& batches = buffers->impl().batches;
-    const bool fixed = ctx.fixed_leaves != nullptr;  // no descents: no queries
-    // Lines both ways between the leaves (the zero surfaces' rays go one way: §3.13).
-    const bool both = fixed && ctx.bidirectional == Bidirectional::yes && sources.leaves;
-    for (Batch& b : batches) {
-        b.rays.resize(batch_rays);
-        resize_populated(b.hits, batch_rays);
-        resize_populated(b.deposits, batch_rays);
-        resize_populated(b.backs, both ? batch_rays : 0);
-        resize_populated(b.queries, fixed ? 0 : batch_rays);
-        resize_populated(b.receivers, batch_rays);
-        if (!overlap) break;
-    }
-    if (!fixed) buffers->impl().descent.reserve(batch_rays);
-    const RayStrata* strata = nullptr;
-    if (ctx.sequence == RaySequence::sobol) {  // a Sobol ray's source is dealt, not picked
-        RayStrata& s = buffers->impl().strata;
-        s.assign(sources.weights(), rays,
-                 Rng(ctx.seed, iteration, kStrataStream + part.first_key).uniform(),
-                 part.first_key);
-        strata = &s;
-    }
-    const Hierarchy& h = ctx.hierarchy;
-    const PatchSet& ps = h.patch_set();
-    // One chunk of rays through the stages: generated, traced, then each ray's power and fate
-    // (steps 3 and 4) and, for a ray that lands, its deposit and the query of its descent (on a
-    // fixed mesh, its receiver).
-    auto trace_chunk = [&](Batch& b, std::uint64_t begin, std::uint64_t end,
-                           ShootingBuffers::Impl::Chunk& chunk) {
-        generate_rays(*sources.patches, sources.regions, *sources.alias, ctx.seed, iteration,
-                      part.first_key + b.first + begin, end - begin, b.rays, begin, ctx.sequence,
-                      strata);
-        ctx.scene.first_hits(b.rays, begin, end, b.hits);
-        for (std::uint64_t k = begin; k < end; ++k) {
-            const std::uint32_t leaf = b.rays.region[k];
-            Rgb power = power_scale * sources.share[leaf];
-            const double dither = b.rays.dither[k];
-            // Written field by field, once: a deposit built whole and copied in was read back
-            // from the stack before its halves were stored there, a stall on every ray.
-            ShootingBuffers::Impl::Deposit& deposit = b.deposits[k];
-            const BatchHit& hit = b.hits[k];
-            const std::optional<std::uint8_t> side = hit_side(ps, hit, b.rays, k);
-            if (!side) {
-                const Quanta quanta = out.quantum.count(power, dither);
-                add(chunk.shot, quanta);
-                deposit.lands = false;  // all that is read of it
-                add(hit.patch == BatchHit::kNoHit ? chunk.escaped : chunk.back_face, quanta);
-                continue;
-            }
-            const Patch& rcv = ps.patches[hit.patch];
-            const Vec3 y = hit_point(b.rays, k, hit.distance);
-            const RayRegion& source = sources.regions[leaf];
-            const LinkQuery query{SideRef(hit.patch, *side),
-                                  SideRef(source.patch, std::uint8_t(source.side)),
-                                  rcv.param_of_hit(hit.second_triangle != 0, hit.b1, hit.b2, y),
-                                  Vec2f(b.rays.u[k], b.rays.v[k])};
-            if (fixed) {
-                b.receivers[k] = &fixed_receiver(ctx, query);
-            } else {
-                b.queries[k] = query;
-            }
-            if (both) {
-                ShootingBuffers::Impl::BackDeposit& back_deposit = b.backs[k];
-                back_deposit.receiver = nullptr;
-                // The leaf at the hit is a source of this iteration (its receiver may be the
-                // cluster above it); what it shoots back lands where a ray to x would.
-                const Element& landed =
-                    ctx.clusters
-                        ? ctx.fixed_leaves->locate(hit.patch, *side, query.y_uv.cast<double>())
-                        : *b.receivers[k];
-                const BothWays split = both_ways(sources, leaf, power, power_scale, landed);
-                power = split.forward;
-                if ((split.back != 0).any()) {
-                    const LinkQuery back{query.source, query.receiver, query.x_uv, query.y_uv};
-                    Element& to = fixed_receiver(ctx, back);
-                    const Quanta back_quanta = out.quantum.count(split.back, dither);
-                    add(chunk.shot, back_quanta);
-                    const Rgb& rho_x = ps.material(source.patch, source.side).reflectance;
-                    back_deposit.quanta = out.quantum.count(rho_x * split.back, dither);
-                    back_deposit.incident = back_quanta;
-                    back_deposit.receiver = &to;
-                }
-            }
-            const Quanta quanta = out.quantum.count(power, dither);
-            add(chunk.shot, quanta);
-            // docs/design.md §3: received += rho * Phi (over A when pushed).
-            const Rgb& rho = ps.material(hit.patch, *side).reflectance;
-            deposit.quanta = out.quantum.count(rho * power, dither);
-            deposit.incident = quanta;
-            deposit.lands = true;
-        }
-    };
-    auto trace = [&](Batch& b, std::uint64_t first) {
-        b.first = first;
-        b.n = std::min(kBatchRays, slice.end - first);
-        b.chunks.assign((b.n + kGrain - 1) / kGrain, {});
-        tbb::parallel_for(std::uint64_t(0), b.chunks.size(), [&](std::uint64_t c) {
-            set_tracing_float_mode();
-            trace_chunk(b, c * kGrain, std::min(b.n, (c + 1) * kGrain), b.chunks[c]);
-        });
-    };
-    DescentScratch& scratch = buffers->impl().descent;
-    auto finish = [&](Batch& b) {
-        std::size_t landed = 0;
-        if (!fixed) {
-            for (std::uint64_t k = 0; k < b.n; ++k) {
-                if (b.deposits[k].lands) b.queries[landed++] = b.queries[k];
-            }
-            RefinementCounters counters;
-            refine_links(ctx, {b.queries.data(), landed}, {b.receivers.data(), landed}, counters,
-                         scratch);
-            out.counters += counters;
-        }
-        // In ray order, whichever thread traced the ray: the same bits for any thread count.
-        for (std::uint64_t k = 0, q = 0; k < b.n; ++k) {
-            if (!b.deposits[k].lands) continue;
-            const ShootingBuffers::Impl::Deposit& d = b.deposits[k];
-            Element& receiver = *b.receivers[fixed ? k : q++];
-            add(receiver.received, is_cluster(receiver) ? d.incident : d.quanta);
-            if (!both) continue;
-            const ShootingBuffers::Impl::BackDeposit& back = b.backs[k];
-            if (Element* to = back.receiver) {
-                add(to->received, is_cluster(*to) ? back.incident : back.quanta);
-            }
-        }
-        for (const auto& c : b.chunks) {
-            add(out.shot_power, c.shot);
-            add(out.escaped_power, c.escaped);
-            add(out.back_face_power, c.back_face);
-        }
-        out.rays += b.n;
-        if (on_batch) on_batch(out.rays);
-    };
-    // Tracing reads only the patches, the sources and the Embree scene (and a fixed mesh's leaf
-    // lookup, which reads no element's power), never what a descent or a deposit writes, so
-    // the next batch is traced while this one descends and deposits: the batch's sequential
-    // steps (compaction, sort, deposits) then overlap the next batch's rays on other threads.
-    // The batches still descend and deposit in order, so the bits are the same.
-    trace(batches[0], slice.begin);
-    for (std::size_t current = 0;;) {
-        Batch& b = batches[current];
-        const std::uint64_t next = b.first + b.n;
-        if (next >= slice.end) {
-            finish(b);
-            break;
-        }
-        if (!overlap) {
-            finish(b);
-            trace(b, next);
-            continue;
-        }
-        Batch& following = batches[current ^ 1];
-        tbb::task_group tracing;
-        tracing.run([&trace, &following, next] { trace(following, next); });
-        try {
-            finish(b);
-        } catch (...) {  // an interrupt from on_batch: the tracing task must end first
-            tracing.cancel();
-            tracing.wait();
-            throw;
-        }
-        tracing.wait();
-        current ^= 1;
-    }
+    IterationShot(ctx, sources, iteration, rays, slice, on_batch, *buffers, part, out).run();
     return out;
 }
 
