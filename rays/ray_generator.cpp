@@ -127,6 +127,197 @@ HWY_INLINE void cross3(const V a[3], const V b[3], V out[3]) {
     out[2] = hn::Sub(hn::Mul(a[0], b[1]), hn::Mul(a[1], b[0]));
 }
 
+using M = hn::Mask<D>;
+
+// A vector of rays' uniforms from ray `ray` on: `draws` (rays/sobol.h's layout, `stride`
+// apart), or else the rays' keyed streams.
+HWY_INLINE void ray_uniforms(D d, const double* draws, std::size_t stride, std::uint64_t seed,
+                             std::uint64_t key, std::uint64_t ray, std::size_t k, V xi[kRayDraws]) {
+    const DU du;
+    if (draws != nullptr) {
+        for (std::size_t j = 0; j < kRayDraws; ++j) xi[j] = hn::LoadU(d, draws + j * stride + k);
+    } else {
+        Streams rng(du, seed, key, hn::Iota(du, ray));
+        for (std::size_t j = 0; j < kRayDraws; ++j) xi[j] = rng.uniform(du);
+    }
+}
+
+// The rays' regions: the ones the strata dealt (`given`, from ray k), or Walker's alias
+// table's picks (rays/alias_table.h), bins of {keep, alias}.
+HWY_INLINE VI ray_regions(D d, const std::uint32_t* given, std::size_t k,
+                          const AliasTable::Bin* bins, std::size_t region_count, V xi_region) {
+    const DU du;
+    const DI di;
+    if (given != nullptr) {
+        return hn::BitCast(
+            di, hn::PromoteTo(du, hn::LoadU(hn::Rebind<std::uint32_t, DU>(), given + k)));
+    }
+    const double* const bin_doubles = reinterpret_cast<const double*>(bins);
+    const V scaled = hn::Mul(xi_region, hn::Set(d, double(region_count)));
+    const VI bin = hn::Min(hn::ConvertTo(di, scaled), hn::Set(di, std::int64_t(region_count) - 1));
+    const V keep = hn::GatherIndex(d, bin_doubles, hn::ShiftLeft<1>(bin));
+    const VI alias =
+        hn::BitCast(di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(bins),
+                                        hn::Add(hn::ShiftLeft<1>(bin), hn::Set(di, 1))));
+    return hn::IfThenElse(hn::RebindMask(di, hn::Lt(hn::Sub(scaled, hn::ConvertTo(d, bin)), keep)),
+                          bin, alias);
+}
+
+// The rays' regions' domains and their patches' corners and normals.
+struct RegionGeometry {
+    V u0, v0, s;
+    V c[4][3], normal[3];
+    V out_normal[3];  // the normal of the side the rays leave
+    M is_triangle, is_bilinear;
+};
+
+HWY_INLINE RegionGeometry region_geometry(D d, VI region, const RayRegion* regions,
+                                          const Patch* patches, const rg::PatchLayout& layout) {
+    const DU du;
+    const DI di;
+    const double* const patch_doubles = reinterpret_cast<const double*>(patches);
+    const double* const region_doubles = reinterpret_cast<const double*>(regions);
+    RegionGeometry r;
+    const VI at = hn::ShiftLeft<2>(region);
+    r.u0 = hn::GatherIndex(d, region_doubles, at);
+    r.v0 = hn::GatherIndex(d, region_doubles, hn::Add(at, hn::Set(di, 1)));
+    r.s = hn::GatherIndex(d, region_doubles, hn::Add(at, hn::Set(di, 2)));
+    const VI patch_map =
+        hn::BitCast(di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(regions),
+                                        hn::Add(at, hn::Set(di, 3))));
+    const VI patch = hn::And(patch_map, hn::Set(di, 0xffffffff));
+    const VI map = hn::And(hn::ShiftRight<32>(patch_map), hn::Set(di, 0xffff));
+    const auto back = hn::RebindMask(d, hn::Eq(hn::ShiftRight<48>(patch_map), hn::Set(di, 1)));
+    const VI base =
+        hn::BitCast(di, hn::Mul(hn::BitCast(du, patch), hn::Set(du, std::uint64_t(layout.stride))));
+    for (int q = 0; q < 4; ++q) {
+        for (int a = 0; a < 3; ++a) {
+            r.c[q][a] = hn::GatherIndex(d, patch_doubles,
+                                        hn::Add(base, hn::Set(di, layout.corner + 3 * q + a)));
+        }
+    }
+    for (int a = 0; a < 3; ++a) {
+        r.normal[a] =
+            hn::GatherIndex(d, patch_doubles, hn::Add(base, hn::Set(di, layout.normal + a)));
+    }
+    // The corners' map is the same on either side; the direction leaves the region's side.
+    for (int a = 0; a < 3; ++a)
+        r.out_normal[a] = hn::IfThenElse(back, hn::Neg(r.normal[a]), r.normal[a]);
+    r.is_triangle = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 0)));
+    r.is_bilinear = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 2)));
+    return r;
+}
+
+// The point, uniform by area on the region (rays/element_sampler.h): its parameters u, v and
+// its position.
+HWY_INLINE void sample_point(D d, const RegionGeometry& r, V xi_u, V xi_v, V& u, V& v,
+                             V origin[3]) {
+    const V one = hn::Set(d, 1.0);
+    // P(u, v) = c0 + u e1 + v ev + u v g: ev = c2 - c0, g = 0 on a triangle; ev = c3 - c0,
+    // g = (c0 - c1) + (c2 - c3) on a quad.
+    V e1[3], ev[3], g[3];
+    for (int a = 0; a < 3; ++a) {
+        e1[a] = hn::Sub(r.c[1][a], r.c[0][a]);
+        ev[a] = hn::IfThenElse(r.is_triangle, hn::Sub(r.c[2][a], r.c[0][a]),
+                               hn::Sub(r.c[3][a], r.c[0][a]));
+        g[a] = hn::IfThenElseZero(hn::Not(r.is_triangle), hn::Add(hn::Sub(r.c[0][a], r.c[1][a]),
+                                                                  hn::Sub(r.c[2][a], r.c[3][a])));
+    }
+    const V root = hn::Sqrt(xi_u);
+    const V tri_a = hn::Mul(root, hn::Sub(one, xi_v)), tri_b = hn::Mul(root, xi_v);
+    V a = hn::IfThenElse(r.is_triangle, tri_a, xi_u);
+    V b = hn::IfThenElse(r.is_triangle, tri_b, xi_v);
+    if (!hn::AllFalse(d, r.is_bilinear)) {
+        // The Jacobian n . (dP/du x dP/dv) = k0 + k1 u + k2 v, at the domain's corners.
+        V x[3];
+        cross3(e1, ev, x);
+        const V k0 = dot3(r.normal, x);
+        cross3(e1, g, x);
+        const V k1 = dot3(r.normal, x);
+        cross3(g, ev, x);
+        const V k2 = dot3(r.normal, x);
+        const V u0 = r.u0, v0 = r.v0;
+        const V u1 = hn::Add(u0, r.s), v1 = hn::Add(v0, r.s);
+        const V j00 = hn::Add(hn::Add(k0, hn::Mul(k1, u0)), hn::Mul(k2, v0));
+        const V j10 = hn::Add(hn::Add(k0, hn::Mul(k1, u1)), hn::Mul(k2, v0));
+        const V j11 = hn::Add(hn::Add(k0, hn::Mul(k1, u1)), hn::Mul(k2, v1));
+        const V j01 = hn::Add(hn::Add(k0, hn::Mul(k1, u0)), hn::Mul(k2, v1));
+        const V bs = linear(d, hn::Add(j00, j01), hn::Add(j10, j11), xi_u);
+        const V ns = hn::Sub(one, bs);
+        const V bt = linear(d, hn::Add(hn::Mul(ns, j00), hn::Mul(bs, j10)),
+                            hn::Add(hn::Mul(ns, j01), hn::Mul(bs, j11)), xi_v);
+        a = hn::IfThenElse(r.is_bilinear, bs, a);
+        b = hn::IfThenElse(r.is_bilinear, bt, b);
+    }
+    u = hn::Add(r.u0, hn::Mul(r.s, a));
+    v = hn::Add(r.v0, hn::Mul(r.s, b));
+    const V uv = hn::Mul(u, v);
+    for (int k3 = 0; k3 < 3; ++k3) {
+        origin[k3] = hn::Add(hn::Add(hn::Add(r.c[0][k3], hn::Mul(u, e1[k3])), hn::Mul(v, ev[k3])),
+                             hn::Mul(uv, g[k3]));
+    }
+}
+
+// The direction: r cos(phi) t + r sin(phi) b + sqrt(1 - r^2) n, in the tangent frame of
+// Duff et al. 2017 (rays/sampling.h) about the outward normal n.
+HWY_INLINE void sample_direction(D d, const V n[3], V xi_r, V xi_phi, V dir[3]) {
+    const V one = hn::Set(d, 1.0), zero = hn::Zero(d);
+    const V sign = hn::CopySign(one, n[2]);
+    const V fa = hn::Div(hn::Set(d, -1.0), hn::Add(sign, n[2]));
+    const V fc = hn::Mul(hn::Mul(n[0], n[1]), fa);
+    const V t[3] = {hn::Add(one, hn::Mul(hn::Mul(hn::Mul(sign, n[0]), n[0]), fa)),
+                    hn::Mul(sign, fc), hn::Neg(hn::Mul(sign, n[0]))};
+    const V bt3[3] = {fc, hn::Add(sign, hn::Mul(hn::Mul(n[1], n[1]), fa)), hn::Neg(n[1])};
+    const V r = hn::Sqrt(xi_r);
+    V cos_phi, sin_phi;
+    cos_sin_turn(d, xi_phi, cos_phi, sin_phi);
+    const V rc = hn::Mul(r, cos_phi), rs = hn::Mul(r, sin_phi);
+    const V z = hn::Sqrt(hn::Max(zero, hn::Sub(one, xi_r)));
+    for (int k3 = 0; k3 < 3; ++k3) {
+        dir[k3] = hn::Add(hn::Add(hn::Mul(rc, t[k3]), hn::Mul(rs, bt3[k3])), hn::Mul(z, n[k3]));
+    }
+}
+
+// A vector of rays stored at o, the doubles rounded to floats: `count` of them, all when
+// count is a whole vector, else lane by lane.
+HWY_INLINE void store_rays(D d, const V origin[3], const V dir[3], V u, V v, V dither, VI region,
+                           std::size_t count, std::size_t o, GeneratedRays* out) {
+    const DU du;
+    if (count >= hn::Lanes(d)) {
+        const hn::Rebind<float, D> df;
+        const hn::Rebind<std::uint32_t, DU> du32;
+        for (int k3 = 0; k3 < 3; ++k3) {
+            hn::StoreU(hn::DemoteTo(df, origin[k3]), df, out->origin[k3].data() + o);
+            hn::StoreU(hn::DemoteTo(df, dir[k3]), df, out->direction[k3].data() + o);
+        }
+        hn::StoreU(hn::DemoteTo(df, u), df, out->u.data() + o);
+        hn::StoreU(hn::DemoteTo(df, v), df, out->v.data() + o);
+        hn::StoreU(dither, d, out->dither.data() + o);
+        hn::StoreU(hn::TruncateTo(du32, hn::BitCast(du, region)), du32, out->region.data() + o);
+        return;
+    }
+    HWY_ALIGN double lane_doubles[9][HWY_LANES(double)];
+    HWY_ALIGN std::uint64_t lane_region[HWY_LANES(double)];
+    for (int k3 = 0; k3 < 3; ++k3) {
+        hn::Store(origin[k3], d, lane_doubles[k3]);
+        hn::Store(dir[k3], d, lane_doubles[3 + k3]);
+    }
+    hn::Store(u, d, lane_doubles[6]);
+    hn::Store(v, d, lane_doubles[7]);
+    hn::Store(dither, d, lane_doubles[8]);
+    hn::Store(hn::BitCast(du, region), du, lane_region);
+    for (std::size_t l = 0; l < count; ++l) {
+        for (int k3 = 0; k3 < 3; ++k3) {
+            out->origin[k3][o + l] = float(lane_doubles[k3][l]);
+            out->direction[k3][o + l] = float(lane_doubles[3 + k3][l]);
+        }
+        out->u[o + l] = float(lane_doubles[6][l]);
+        out->v[o + l] = float(lane_doubles[7][l]);
+        out->dither[o + l] = lane_doubles[8][l];
+        out->region[o + l] = std::uint32_t(lane_region[l]);
+    }
+}
+
 // `draws`, when given, holds every ray's uniforms (rays/sobol.h's layout, `stride` apart and
 // readable a whole vector past n); otherwise they come from the rays' keyed streams. `given`,
 // when given, holds every ray's region (as readable), which the alias table otherwise picks.
@@ -135,177 +326,19 @@ void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t re
                   std::uint64_t first, std::size_t n, const double* draws, std::size_t stride,
                   const std::uint32_t* given, GeneratedRays* out, std::size_t offset) {
     const D d;
-    const DU du;
-    const DI di;
     const std::size_t lanes = hn::Lanes(d);
     const rg::PatchLayout layout = rg::patch_layout();
-    const double* const patch_doubles = reinterpret_cast<const double*>(patches);
-    const double* const region_doubles = reinterpret_cast<const double*>(regions);
-    const double* const bin_doubles = reinterpret_cast<const double*>(bins);
-    const V one = hn::Set(d, 1.0), zero = hn::Zero(d);
-    HWY_ALIGN double lane_doubles[9][HWY_LANES(double)];
-    HWY_ALIGN std::uint64_t lane_region[HWY_LANES(double)];
     for (std::size_t k = 0; k < n; k += lanes) {
         V xi[kRayDraws];
-        if (draws != nullptr) {
-            for (std::size_t j = 0; j < kRayDraws; ++j)
-                xi[j] = hn::LoadU(d, draws + j * stride + k);
-        } else {
-            Streams rng(du, seed, key, hn::Iota(du, first + k));
-            for (V& x : xi) x = rng.uniform(du);
-        }
+        ray_uniforms(d, draws, stride, seed, key, first + k, k, xi);
         const V xi_region = xi[0], xi_u = xi[1], xi_v = xi[2], xi_r = xi[3], xi_phi = xi[4];
         const V dither = xi[5];
-
-        // The region: the one the strata dealt (given), or Walker's alias table's pick
-        // (rays/alias_table.h), bins of {keep, alias}.
-        VI region;
-        if (given != nullptr) {
-            region = hn::BitCast(
-                di, hn::PromoteTo(du, hn::LoadU(hn::Rebind<std::uint32_t, DU>(), given + k)));
-        } else {
-            const V scaled = hn::Mul(xi_region, hn::Set(d, double(region_count)));
-            const VI bin =
-                hn::Min(hn::ConvertTo(di, scaled), hn::Set(di, std::int64_t(region_count) - 1));
-            const V keep = hn::GatherIndex(d, bin_doubles, hn::ShiftLeft<1>(bin));
-            const VI alias =
-                hn::BitCast(di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(bins),
-                                                hn::Add(hn::ShiftLeft<1>(bin), hn::Set(di, 1))));
-            region = hn::IfThenElse(
-                hn::RebindMask(di, hn::Lt(hn::Sub(scaled, hn::ConvertTo(d, bin)), keep)), bin,
-                alias);
-        }
-
-        // The region's domain and patch.
-        const VI at = hn::ShiftLeft<2>(region);
-        const V u0 = hn::GatherIndex(d, region_doubles, at);
-        const V v0 = hn::GatherIndex(d, region_doubles, hn::Add(at, hn::Set(di, 1)));
-        const V s = hn::GatherIndex(d, region_doubles, hn::Add(at, hn::Set(di, 2)));
-        const VI patch_map =
-            hn::BitCast(di, hn::GatherIndex(du, reinterpret_cast<const std::uint64_t*>(regions),
-                                            hn::Add(at, hn::Set(di, 3))));
-        const VI patch = hn::And(patch_map, hn::Set(di, 0xffffffff));
-        const VI map = hn::And(hn::ShiftRight<32>(patch_map), hn::Set(di, 0xffff));
-        const auto back = hn::RebindMask(d, hn::Eq(hn::ShiftRight<48>(patch_map), hn::Set(di, 1)));
-        const VI base = hn::BitCast(
-            di, hn::Mul(hn::BitCast(du, patch), hn::Set(du, std::uint64_t(layout.stride))));
-        V c[4][3], normal[3];
-        for (int q = 0; q < 4; ++q) {
-            for (int a = 0; a < 3; ++a) {
-                c[q][a] = hn::GatherIndex(d, patch_doubles,
-                                          hn::Add(base, hn::Set(di, layout.corner + 3 * q + a)));
-            }
-        }
-        for (int a = 0; a < 3; ++a) {
-            normal[a] =
-                hn::GatherIndex(d, patch_doubles, hn::Add(base, hn::Set(di, layout.normal + a)));
-        }
-        // The corners' map is the same on either side; the direction leaves the region's side.
-        V out_normal[3];
-        for (int a = 0; a < 3; ++a)
-            out_normal[a] = hn::IfThenElse(back, hn::Neg(normal[a]), normal[a]);
-        const auto is_triangle = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 0)));
-        const auto is_bilinear = hn::RebindMask(d, hn::Eq(map, hn::Set(di, 2)));
-        // P(u, v) = c0 + u e1 + v ev + u v g: ev = c2 - c0, g = 0 on a triangle; ev = c3 - c0,
-        // g = (c0 - c1) + (c2 - c3) on a quad.
-        V e1[3], ev[3], g[3];
-        for (int a = 0; a < 3; ++a) {
-            e1[a] = hn::Sub(c[1][a], c[0][a]);
-            ev[a] =
-                hn::IfThenElse(is_triangle, hn::Sub(c[2][a], c[0][a]), hn::Sub(c[3][a], c[0][a]));
-            g[a] = hn::IfThenElseZero(hn::Not(is_triangle), hn::Add(hn::Sub(c[0][a], c[1][a]),
-                                                                    hn::Sub(c[2][a], c[3][a])));
-        }
-
-        // The point, uniform by area on the region (rays/element_sampler.h).
-        const V root = hn::Sqrt(xi_u);
-        const V tri_a = hn::Mul(root, hn::Sub(one, xi_v)), tri_b = hn::Mul(root, xi_v);
-        V a = hn::IfThenElse(is_triangle, tri_a, xi_u);
-        V b = hn::IfThenElse(is_triangle, tri_b, xi_v);
-        if (!hn::AllFalse(d, is_bilinear)) {
-            // The Jacobian n . (dP/du x dP/dv) = k0 + k1 u + k2 v, at the domain's corners.
-            V x[3];
-            cross3(e1, ev, x);
-            const V k0 = dot3(normal, x);
-            cross3(e1, g, x);
-            const V k1 = dot3(normal, x);
-            cross3(g, ev, x);
-            const V k2 = dot3(normal, x);
-            const V u1 = hn::Add(u0, s), v1 = hn::Add(v0, s);
-            const V j00 = hn::Add(hn::Add(k0, hn::Mul(k1, u0)), hn::Mul(k2, v0));
-            const V j10 = hn::Add(hn::Add(k0, hn::Mul(k1, u1)), hn::Mul(k2, v0));
-            const V j11 = hn::Add(hn::Add(k0, hn::Mul(k1, u1)), hn::Mul(k2, v1));
-            const V j01 = hn::Add(hn::Add(k0, hn::Mul(k1, u0)), hn::Mul(k2, v1));
-            const V bs = linear(d, hn::Add(j00, j01), hn::Add(j10, j11), xi_u);
-            const V ns = hn::Sub(one, bs);
-            const V bt = linear(d, hn::Add(hn::Mul(ns, j00), hn::Mul(bs, j10)),
-                                hn::Add(hn::Mul(ns, j01), hn::Mul(bs, j11)), xi_v);
-            a = hn::IfThenElse(is_bilinear, bs, a);
-            b = hn::IfThenElse(is_bilinear, bt, b);
-        }
-        const V u = hn::Add(u0, hn::Mul(s, a)), v = hn::Add(v0, hn::Mul(s, b));
-        const V uv = hn::Mul(u, v);
-        V origin[3];
-        for (int k3 = 0; k3 < 3; ++k3) {
-            origin[k3] = hn::Add(hn::Add(hn::Add(c[0][k3], hn::Mul(u, e1[k3])), hn::Mul(v, ev[k3])),
-                                 hn::Mul(uv, g[k3]));
-        }
-
-        // The direction: r cos(phi) t + r sin(phi) b + sqrt(1 - r^2) n, in the tangent frame of
-        // Duff et al. 2017 (rays/sampling.h).
-        const V sign = hn::CopySign(one, out_normal[2]);
-        const V fa = hn::Div(hn::Set(d, -1.0), hn::Add(sign, out_normal[2]));
-        const V fc = hn::Mul(hn::Mul(out_normal[0], out_normal[1]), fa);
-        const V t[3] = {
-            hn::Add(one, hn::Mul(hn::Mul(hn::Mul(sign, out_normal[0]), out_normal[0]), fa)),
-            hn::Mul(sign, fc), hn::Neg(hn::Mul(sign, out_normal[0]))};
-        const V bt3[3] = {fc, hn::Add(sign, hn::Mul(hn::Mul(out_normal[1], out_normal[1]), fa)),
-                          hn::Neg(out_normal[1])};
-        const V r = hn::Sqrt(xi_r);
-        V cos_phi, sin_phi;
-        cos_sin_turn(d, xi_phi, cos_phi, sin_phi);
-        const V rc = hn::Mul(r, cos_phi), rs = hn::Mul(r, sin_phi);
-        const V z = hn::Sqrt(hn::Max(zero, hn::Sub(one, xi_r)));
-        V dir[3];
-        for (int k3 = 0; k3 < 3; ++k3) {
-            dir[k3] = hn::Add(hn::Add(hn::Mul(rc, t[k3]), hn::Mul(rs, bt3[k3])),
-                              hn::Mul(z, out_normal[k3]));
-        }
-
-        const std::size_t o = offset + k;
-        if (n - k >= lanes) {  // a whole vector: stored as it is, the doubles rounded to floats
-            const hn::Rebind<float, D> df;
-            const hn::Rebind<std::uint32_t, DU> du32;
-            for (int k3 = 0; k3 < 3; ++k3) {
-                hn::StoreU(hn::DemoteTo(df, origin[k3]), df, out->origin[k3].data() + o);
-                hn::StoreU(hn::DemoteTo(df, dir[k3]), df, out->direction[k3].data() + o);
-            }
-            hn::StoreU(hn::DemoteTo(df, u), df, out->u.data() + o);
-            hn::StoreU(hn::DemoteTo(df, v), df, out->v.data() + o);
-            hn::StoreU(dither, d, out->dither.data() + o);
-            hn::StoreU(hn::TruncateTo(du32, hn::BitCast(du, region)), du32, out->region.data() + o);
-            continue;
-        }
-        // The last rays, fewer than a vector: lane by lane.
-        const std::size_t count = n - k;
-        for (int k3 = 0; k3 < 3; ++k3) {
-            hn::Store(origin[k3], d, lane_doubles[k3]);
-            hn::Store(dir[k3], d, lane_doubles[3 + k3]);
-        }
-        hn::Store(u, d, lane_doubles[6]);
-        hn::Store(v, d, lane_doubles[7]);
-        hn::Store(dither, d, lane_doubles[8]);
-        hn::Store(hn::BitCast(du, region), du, lane_region);
-        for (std::size_t l = 0; l < count; ++l) {
-            for (int k3 = 0; k3 < 3; ++k3) {
-                out->origin[k3][o + l] = float(lane_doubles[k3][l]);
-                out->direction[k3][o + l] = float(lane_doubles[3 + k3][l]);
-            }
-            out->u[o + l] = float(lane_doubles[6][l]);
-            out->v[o + l] = float(lane_doubles[7][l]);
-            out->dither[o + l] = lane_doubles[8][l];
-            out->region[o + l] = std::uint32_t(lane_region[l]);
-        }
+        const VI region = ray_regions(d, given, k, bins, region_count, xi_region);
+        const RegionGeometry geometry = region_geometry(d, region, regions, patches, layout);
+        V u, v, origin[3], dir[3];
+        sample_point(d, geometry, xi_u, xi_v, u, v, origin);
+        sample_direction(d, geometry.out_normal, xi_r, xi_phi, dir);
+        store_rays(d, origin, dir, u, v, dither, region, n - k, offset + k, out);
     }
 }
 
