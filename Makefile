@@ -10,14 +10,18 @@ SANITIZE ?= OFF
 DEPS := g++ cmake make libpng-dev libembree-dev libopenmesh-dev libvtk9-dev libeigen3-dev \
         libhwy-dev libtbb-dev libexpat1-dev libcli11-dev nlohmann-json3-dev libfmt-dev \
         libopenmpi-dev openmpi-bin libgtest-dev libboost-dev zlib1g-dev clang libclang-rt-14-dev \
-        clang-format python3 python3-matplotlib xvfb xauth texlive-latex-recommended
+        clang-format clang-tidy dpkg-dev python3 python3-matplotlib xvfb xauth \
+        texlive-latex-recommended
 
 SANITIZE_BUILD ?= build-sanitize
+TSAN_BUILD ?= build-tsan
+TIDY_BUILD ?= build-tidy
 PREFIX ?= /usr/local
 # Debian's Python, which python3-matplotlib serves (another python3 may come first on the PATH).
 PLOT_PYTHON ?= /usr/bin/python3
 
-.PHONY: deps view-deps build run install test test-quick test-sanitize bench scenes format format-check clean
+.PHONY: deps view-deps build run install test test-quick test-sanitize test-tsan tidy bench scenes \
+        format format-check clean
 
 # Installs only what is missing, so it is quick when everything is present.
 deps:
@@ -85,6 +89,33 @@ test-sanitize: deps
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -L fuzz
 
+# The tests that run threads (TSAN_TESTS, by name: docs/testing.md#threadsanitizer says which),
+# under ThreadSanitizer (clang). TBB is built from Debian's source with it (scripts/tsan_tbb.sh:
+# TSan cannot see the synchronisation inside an uninstrumented TBB); the reports that pass
+# through Embree, not instrumented either, are suppressed (tests/tsan.supp says why), and VTK's
+# parallel loops run sequentially. A report fails the test.
+TSAN_TESTS ?= Thread|LinkCache|AtomicFile\.Concurrent
+test-tsan: deps
+	scripts/tsan_tbb.sh $(TSAN_BUILD) $(JOBS)
+	cmake -S . -B $(TSAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_COMPILER=clang++ -DHMCR_TSAN=ON \
+	  -DTBB_DIR=$(CURDIR)/$(TSAN_BUILD)/tbb-tsan/lib/cmake/TBB \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG"
+	cmake --build $(TSAN_BUILD) -j $(JOBS) --target hmcr_fast_tests
+	cd $(TSAN_BUILD) && VTK_SMP_BACKEND_IN_USE=Sequential \
+	  TSAN_OPTIONS="second_deadlock_stack=1 suppressions=$(CURDIR)/tests/tsan.supp" \
+	  ctest --output-on-failure -j $(JOBS) -R '$(TSAN_TESTS)'
+
+# clang-tidy 14 over every source of hmcr, the tests aside (.clang-tidy: the checks, and why some
+# are left out); a finding fails. It reads the unity build's sources, 8 sources each as the
+# compiler builds them, so the heavy library headers (VTK, Eigen, nlohmann/json) are parsed once
+# for 8 sources; a source's findings are still named by its own file and line. Only CMake's
+# configure is needed (compile_commands.json): nothing is built.
+tidy: deps
+	cmake -S . -B $(TIDY_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+	  -DBUILD_TESTING=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+	run-clang-tidy-14 -p $(TIDY_BUILD) -j $(JOBS) -quiet
+
 # The oracle table, the default solve's rows, then the scaling study on office instances of
 # 10^2 ... 10^6 patches: bench/results.json (every row) and bench/scaling.pdf and .png (the
 # curves).
@@ -118,4 +149,4 @@ spdx:
 	python3 tests/docs/check_spdx.py . --add
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(TSAN_BUILD) $(TIDY_BUILD)

@@ -107,7 +107,7 @@ int run_error(ErrorArgs& a) {
             throw InputError("output must be a .json file, got " + quote(a.output));
         }
         std::vector<std::filesystem::path> inputs = scene.inputs;
-        inputs.push_back(a.solution);
+        inputs.emplace_back(a.solution);
         inputs.push_back(dir / "reference.json");
         refuse_overwriting({a.output}, inputs);
         out.emplace(std::vector<std::filesystem::path>{a.output});

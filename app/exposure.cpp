@@ -12,15 +12,16 @@
 
 namespace hmcr {
 
-void add_exposure_flags(CLI::App& cmd, ExposureChoice& choice) {
-    auto* exposure =
-        cmd.add_option("--exposure", choice.exposure, "fixed exposure (default: from this image)");
-    cmd.add_option("--reference", choice.reference, "use the exposure of this reference folder")
+void add_exposure_flags(CLI::App& command, ExposureChoice& choice) {
+    auto* exposure = command.add_option("--exposure", choice.exposure,
+                                        "fixed exposure (default: from this image)");
+    command
+        .add_option("--reference", choice.reference, "use the exposure of this reference folder")
         ->excludes(exposure);
 }
 
-void note_exposure_given(const CLI::App& cmd, ExposureChoice& choice) {
-    choice.given = cmd.count("--exposure") > 0;
+void note_exposure_given(const CLI::App& command, ExposureChoice& choice) {
+    choice.given = command.count("--exposure") > 0;
 }
 
 void check_exposure(const ExposureChoice& choice) {

@@ -9,9 +9,9 @@
 // own arrays with malloc, Embree's BVH) is not. The block comes from malloc as before and goes back
 // through free (the default operator delete); the advice changes speed, never contents. Off under
 // the sanitizers, which own operator new.
-#if !defined(__SANITIZE_ADDRESS__) && !defined(HMCR_NO_HUGE_PAGES)
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__) && !defined(HMCR_NO_HUGE_PAGES)
 #if defined(__has_feature)
-#if __has_feature(address_sanitizer)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
 #define HMCR_NO_HUGE_PAGES
 #endif
 #endif

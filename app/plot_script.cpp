@@ -50,6 +50,7 @@ std::string last_line_of(int fd) {
 // there. Silent, its output goes to /dev/null.
 int run(std::vector<std::string> args, Stderr err, std::string* last = nullptr) {
     std::vector<char*> argv;
+    argv.reserve(args.size() + 1);
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     int pipe_fds[2] = {-1, -1};

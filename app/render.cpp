@@ -34,10 +34,10 @@ std::vector<std::filesystem::path> check_outputs(const RenderArgs& a, const Scen
         throw InputError("pfm must be a .pfm file, got " + quote(a.pfm));
     }
     std::vector<std::filesystem::path> inputs = scene.inputs;
-    inputs.push_back(a.solution);
+    inputs.emplace_back(a.solution);
     for (const auto& in : exposure_inputs(a.exposure)) inputs.push_back(in);
     std::vector<std::filesystem::path> outputs{a.output};
-    if (!a.pfm.empty()) outputs.push_back(a.pfm);
+    if (!a.pfm.empty()) outputs.emplace_back(a.pfm);
     refuse_overwriting(outputs, inputs);
     return outputs;
 }

@@ -40,7 +40,7 @@ struct SolveArgs {
 };
 
 fs::path output_path(const SolveArgs& args, const Scene& scene) {
-    const fs::path vtp =
+    fs::path vtp =
         args.output.empty() ? named_file("out", scene.name, ".vtp") : fs::path(args.output);
     if (vtp.extension() != ".vtp") {
         throw InputError("output must be a .vtp file, got " + quote(vtp.string()));

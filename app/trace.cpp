@@ -96,7 +96,7 @@ std::vector<fs::path> check_outputs(const TraceArgs& a, const Scene& scene) {
     }
     std::vector<fs::path> inputs = scene.inputs;
     for (const auto& in : exposure_inputs(a.exposure)) inputs.push_back(in);
-    const std::vector<fs::path> out = outputs(a);
+    std::vector<fs::path> out = outputs(a);
     refuse_overwriting(out, inputs);
     refuse_replacing_scene_files(out);
     return out;

@@ -66,25 +66,28 @@ void add_sampling_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
 
 }  // namespace
 
-void add_trace_flags(CLI::App& cmd, TraceOptions& o, TraceFlags& flags,
+void add_trace_flags(CLI::App& command, TraceOptions& options, TraceFlags& flags,
                      const std::set<std::string>& except) {
-    add_sampling_flags(cmd, o, flags, except);
+    add_sampling_flags(command, options, flags, except);
     if (wanted(except, "seed")) {
-        cmd.add_option("--seed", o.seed, "keys every sample's random stream")
+        command.add_option("--seed", options.seed, "keys every sample's random stream")
             ->transform(count_notation())
             ->capture_default_str();
     }
     if (wanted(except, "threads")) {
-        cmd.add_option("--threads", o.threads,
-                       "worker threads, 0 = all cores; images do not depend on it")
+        command
+            .add_option("--threads", options.threads,
+                        "worker threads, 0 = all cores; images do not depend on it")
             ->capture_default_str();
     }
-    cmd.add_option("--bounces", o.path.max_depth, "most bounces of a path")->capture_default_str();
-    cmd.add_option("--estimator", flags.estimator,
-                   "mis (next-event + BSDF sampling), nee or bsdf alone")
+    command.add_option("--bounces", options.path.max_depth, "most bounces of a path")
+        ->capture_default_str();
+    command
+        .add_option("--estimator", flags.estimator,
+                    "mis (next-event + BSDF sampling), nee or bsdf alone")
         ->capture_default_str();
     if (wanted(except, "width")) {
-        cmd.add_option_function<int>(
+        command.add_option_function<int>(
             "--width", [&flags](const int& w) { flags.width = w; },
             "render at this width (the view's aspect kept)");
     }

@@ -39,7 +39,7 @@ Spread spread(const Scene& scene, ControlVariate cv, int seeds) {
         s.seconds += sol.stats.total_seconds / seeds;
         std::size_t k = 0;
         sol.hierarchy->for_each_leaf_of(kFront, [&](const Element& e) {
-            if (sum.size() <= k) sum.push_back(Rgb::Zero()), sum2.push_back(Rgb::Zero());
+            if (sum.size() <= k) sum.emplace_back(Rgb::Zero()), sum2.emplace_back(Rgb::Zero());
             sum[k] += e.radiosity;
             sum2[k] += e.radiosity * e.radiosity;
             s.negative += (e.radiosity < 0).any();

@@ -32,6 +32,7 @@ nlohmann::json run_point(const std::string& self, const Point& p) {
     const std::string rays = std::to_string(p.rays), threads = std::to_string(p.threads);
     std::vector<std::string> args = {self, "--row", p.scene, kOracle, "nan", rays, threads};
     std::vector<char*> argv;
+    argv.reserve(args.size() + 1);
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     int out[2];

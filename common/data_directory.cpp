@@ -32,7 +32,7 @@ fs::path data_directory() {
     if (env != nullptr && *env != '\0') return env;
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    const fs::path installed = (exe.parent_path() / ".." / "share" / "hmcr").lexically_normal();
+    fs::path installed = (exe.parent_path() / ".." / "share" / "hmcr").lexically_normal();
     if (!ec && fs::is_directory(installed, ec)) return installed;
     const fs::path build = fs::weakly_canonical(HMCR_BUILD_DIR, ec);
     if (!exe.empty() && lies_in(exe, build)) return HMCR_SOURCE_DIR;

@@ -63,7 +63,7 @@ void sync(const fs::path& path, int flags, const fs::path& target) {
 fs::path create_temp_beside(const fs::path& target) {
     const fs::path folder = target.parent_path();
     for (int attempt = 0;; ++attempt) {
-        const fs::path tmp = folder / (temp_prefix(target) + random_suffix());
+        fs::path tmp = folder / (temp_prefix(target) + random_suffix());
         const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0) {
             ::close(fd);

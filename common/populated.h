@@ -21,6 +21,7 @@ void reserve_populated(std::vector<T>& v, std::size_t n) {
     if (n <= v.capacity()) return;
     std::vector<T> grown;
     grown.reserve(n);
+    // NOLINTNEXTLINE(bugprone-sizeof-expression): n elements' bytes, whatever T is (a pointer too)
     populate_pages(grown.data(), n * sizeof(T));
     grown.insert(grown.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
     v.swap(grown);

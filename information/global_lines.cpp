@@ -61,7 +61,7 @@ Vec3 trace_line(const PatchSet& set, const EmbreeScene& scene, const BackSides* 
                 const Sphere& s, std::uint64_t seed, std::uint64_t k, std::vector<LineHit>& hits) {
     Rng rng(seed, kGlobalKey, k);
     const double xi1 = rng.uniform(), xi2 = rng.uniform();
-    const Vec3 direction = sample_uniform_sphere(xi1, xi2);
+    Vec3 direction = sample_uniform_sphere(xi1, xi2);
     const double xi3 = rng.uniform(), xi4 = rng.uniform();
     const Vec2 disk = sample_uniform_disk(xi3, xi4) * s.radius;
     Vec3 t, b;

@@ -76,13 +76,16 @@ InformationMeasures scene_information(const PatchSet& patches, const LineOptions
     return scene_information(patch_states(patches), options, progress);
 }
 
-InformationMeasures scene_information(const ChannelStates& c, const LineOptions& options,
+InformationMeasures scene_information(const ChannelStates& channels, const LineOptions& options,
                                       Progress& progress) {
-    const std::vector<Patch> fronts(c.states.patches.begin(),
-                                    c.states.patches.begin() + std::ptrdiff_t(c.fronts()));
+    const std::vector<Patch> fronts(
+        channels.states.patches.begin(),
+        channels.states.patches.begin() + std::ptrdiff_t(channels.fronts()));
     const EmbreeScene scene(fronts);
     return scene_information(
-        c.states, trace_lines(c.states, scene, options, progress, c.backs.get()), options.method);
+        channels.states,
+        trace_lines(channels.states, scene, options, progress, channels.backs.get()),
+        options.method);
 }
 
 InformationMeasures scene_information(const PatchSet& patches, const ChannelSamples& samples,

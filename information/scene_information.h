@@ -54,7 +54,7 @@ struct InformationMeasures {
 InformationMeasures scene_information(const PatchSet& patches, const LineOptions& options,
                                       Progress& progress = no_progress());
 // The same for the states of any discretisation (a solution's leaves).
-InformationMeasures scene_information(const ChannelStates& states, const LineOptions& options,
+InformationMeasures scene_information(const ChannelStates& channels, const LineOptions& options,
                                       Progress& progress = no_progress());
 // The same from samples already traced on these patches.
 InformationMeasures scene_information(const PatchSet& patches, const ChannelSamples& samples,

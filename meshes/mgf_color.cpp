@@ -56,11 +56,14 @@ Eigen::Matrix3d xyz_to_rgb() {
 
 }  // namespace
 
-Eigen::Vector3d cie_matching(double l) {
-    const double x = 1.056 * lobe(l, 599.8, 37.9, 31.0) + 0.362 * lobe(l, 442.0, 16.0, 26.7) -
-                     0.065 * lobe(l, 501.1, 20.4, 26.2);
-    const double y = 0.821 * lobe(l, 568.8, 46.9, 40.5) + 0.286 * lobe(l, 530.9, 16.3, 31.1);
-    const double z = 1.217 * lobe(l, 437.0, 11.8, 36.0) + 0.681 * lobe(l, 459.0, 26.0, 13.8);
+Eigen::Vector3d cie_matching(double nanometres) {
+    const double x = 1.056 * lobe(nanometres, 599.8, 37.9, 31.0) +
+                     0.362 * lobe(nanometres, 442.0, 16.0, 26.7) -
+                     0.065 * lobe(nanometres, 501.1, 20.4, 26.2);
+    const double y =
+        0.821 * lobe(nanometres, 568.8, 46.9, 40.5) + 0.286 * lobe(nanometres, 530.9, 16.3, 31.1);
+    const double z =
+        1.217 * lobe(nanometres, 437.0, 11.8, 36.0) + 0.681 * lobe(nanometres, 459.0, 26.0, 13.8);
     return {x, y, z};
 }
 

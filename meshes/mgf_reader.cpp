@@ -412,7 +412,7 @@ void MgfReader::cone(const std::vector<std::string>& w, int segments) {
     const bool cylinder = w[0] == "cyl";
     need(w, cylinder ? 3 : 4, cylinder ? 3 : 4);
     const Eigen::Vector3d a = m_vertices.get(w[1], m_where).p;
-    const Eigen::Vector3d b = m_vertices.get(w[cylinder ? 3 : 3], m_where).p;
+    const Eigen::Vector3d b = m_vertices.get(w[3], m_where).p;
     const double ra = number(w, 2), rb = cylinder ? ra : number(w, 4);
     if (a == b) throw InputError(m_where, fmt::format("{}: both ends are the same point", w[0]));
     if (ra * rb < 0 || (ra == 0 && rb == 0)) {

@@ -244,7 +244,7 @@ void build_patch_mesh(const PolygonSoup& soup, const Welding& welding, const Loa
     std::vector<Material> materials;
     std::vector<std::int64_t> resolved(soup.materials.size() + 1, -1);  // by soup id + 1
     const auto index_of = [&](std::int32_t soup_id, std::size_t k) {
-        std::int64_t& slot = resolved[std::size_t(soup_id + 1)];
+        std::int64_t& slot = resolved[std::size_t(std::int64_t(soup_id) + 1)];
         if (slot < 0) {
             slot = std::int64_t(materials.size());
             materials.push_back(face_material(soup, soup_id, k, options));

@@ -131,10 +131,11 @@ std::optional<View> inside_view(const std::vector<BoundsFace>& faces, const Scen
     if (corners[0].norm() <= 0) return std::nullopt;
     // From 35% of the way to each corner across the middle, and from the middle to each corner.
     std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> candidates;
+    candidates.reserve(2 * corners.size());
     for (const Eigen::Vector3d& half : corners) {
-        candidates.push_back({middle + 0.35 * half, middle - 0.35 * half});
+        candidates.emplace_back(middle + 0.35 * half, middle - 0.35 * half);
     }
-    for (const Eigen::Vector3d& half : corners) candidates.push_back({middle, middle + half});
+    for (const Eigen::Vector3d& half : corners) candidates.emplace_back(middle, middle + half);
     std::optional<View> best;
     double best_depth = 0;
     for (const auto& [position, look_at] : candidates) {

@@ -105,10 +105,10 @@ std::optional<std::string> check_channels(const Material& m, const Eigen::Vector
 
 }  // namespace
 
-double largest_edge(const std::vector<Eigen::Vector3d>& p) {
+double largest_edge(const std::vector<Eigen::Vector3d>& corners) {
     double longest = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        longest = std::max(longest, (p[(i + 1) % p.size()] - p[i]).norm());
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        longest = std::max(longest, (corners[(i + 1) % corners.size()] - corners[i]).norm());
     }
     return longest;
 }

@@ -109,6 +109,6 @@ struct DescentScratch {
 // rays are grouped. For a refining mesh only (std::logic_error on a fixed one).
 void refine_links(const RefinementContext& ctx, std::span<const LinkQuery> queries,
                   std::span<Element*> receivers, RefinementCounters& counters,
-                  DescentScratch& scratch);
+                  DescentScratch& buffers);
 
 }  // namespace hmcr

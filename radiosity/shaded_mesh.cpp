@@ -111,7 +111,7 @@ private:
                 const bool through_v = v.kind == VertexKind::mesh_edge
                                            ? fe[k] == v.id
                                            : fv[k] == v.id || fv[(k + 1) % n] == v.id;
-                if (through_v && m_blends[fe[k]]) m_sides.push_back({fe[k], int(i)});
+                if (through_v && m_blends[fe[k]]) m_sides.emplace_back(fe[k], int(i));
             }
         }
         std::sort(m_sides.begin(), m_sides.end());

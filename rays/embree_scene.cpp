@@ -166,33 +166,33 @@ void EmbreeScene::add_patch_triangles(const unsigned* v, bool quad, unsigned*& i
     }
 }
 
-EmbreeScene::EmbreeScene(const std::vector<Vec3>& points,
+EmbreeScene::EmbreeScene(const std::vector<Vec3>& vertices,
                          const std::vector<std::array<unsigned, 3>>& triangles)
     : m_impl(std::make_unique<Impl>()) {
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
-    for (const Vec3& c : points) {
+    for (const Vec3& c : vertices) {
         lo = lo.cwiseMin(c);
         hi = hi.cwiseMax(c);
     }
     m_triangle_patch.reserve(triangles.size());
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
         for (unsigned i : triangles[t]) {
-            if (i >= points.size()) {
+            if (i >= vertices.size()) {
                 throw std::invalid_argument("triangle " + std::to_string(t) + " names vertex " +
                                             std::to_string(i) + " of " +
-                                            std::to_string(points.size()));
+                                            std::to_string(vertices.size()));
             }
         }
         m_triangle_patch.push(false);  // a soup's "patch" is the triangle itself
     }
-    if (points.empty()) lo = hi = Vec3::Zero();
+    if (vertices.empty()) lo = hi = Vec3::Zero();
     const auto fill = [&](float* vertex, unsigned* index) {
-        for (const Vec3& c : points) {
+        for (const Vec3& c : vertices) {
             for (int k = 0; k < 3; ++k) *vertex++ = float(c[k]);
         }
         for (const auto& t : triangles) index = std::copy(t.begin(), t.end(), index);
     };
-    build(points.size(), triangles.size(), lo, hi, fill, /*robust=*/true);
+    build(vertices.size(), triangles.size(), lo, hi, fill, /*robust=*/true);
 }
 
 void EmbreeScene::build(std::size_t vertex_count, std::size_t triangle_count, const Vec3& lo,

@@ -8,7 +8,7 @@
 namespace hmcr {
 namespace {
 
-Vec2 clamp_to_unit(Vec2 uv) { return uv.cwiseMax(0.0).cwiseMin(1.0); }
+Vec2 clamp_to_unit(const Vec2& uv) { return uv.cwiseMax(0.0).cwiseMin(1.0); }
 
 // Inverse of the bilinear map, in 2D plane coordinates: q = u e1 + v e3 + u v g.
 // Eliminating v gives a quadratic in u (zero leading term for parallelograms).

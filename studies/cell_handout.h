@@ -88,6 +88,7 @@ std::vector<Cell> hand_out_cells(const CellLoop<Cell>& loop, Progress& progress,
     }
     if (failure) throw OtherRankFailed(failure->message, failure->exit_code);
     std::vector<Cell> out;
+    out.reserve(cells.size());
     for (auto& c : cells) out.push_back(std::move(*c));
     return out;
 }

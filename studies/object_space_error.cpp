@@ -60,7 +60,7 @@ std::vector<Vec2> quadrature_points(int k) {
     const auto add_rule = [&](const Vec2& a, const Vec2& b, const Vec2& c) {
         for (const auto& [x, y, z] :
              {std::tuple(a, b, c), std::tuple(b, c, a), std::tuple(c, a, b)}) {
-            out.push_back((4 * x + y + z) / (6.0 * k));  // (2/3, 1/6, 1/6), in units of 1/k
+            out.emplace_back((4 * x + y + z) / (6.0 * k));  // (2/3, 1/6, 1/6), in units of 1/k
         }
     };
     for (int i = 0; i < k; ++i) {

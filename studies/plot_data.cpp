@@ -173,6 +173,7 @@ std::vector<const SamplingCell*> successful(const std::vector<SamplingCell>& cel
 std::vector<double> values(const std::vector<const SamplingCell*>& cells,
                            double (*value)(const SamplingCell&)) {
     std::vector<double> out;
+    out.reserve(cells.size());
     for (const SamplingCell* c : cells) out.push_back(value(*c));
     return out;
 }

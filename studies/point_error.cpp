@@ -73,20 +73,20 @@ PointTarget point_target(PointRadiosity points, const PatchSet& set) {
 }
 
 ObjectError point_object_error(const ShadedTracer& tracer, const ShadedMesh& solution,
-                               const PointTarget& t) {
-    const std::size_t n = t.points.points.size();
+                               const PointTarget& reference) {
+    const std::size_t n = reference.points.points.size();
     const SolutionProbe probe(tracer, solution);
     std::vector<Terms> terms(n);
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
         set_tracing_float_mode();
-        terms[i] = point_terms(probe, t, i);
+        terms[i] = point_terms(probe, reference, i);
     });
     // Summed in point order: the same bits for any thread count.
     Sums sum;
     SideErrors by_side;
     for (std::size_t i = 0; i < n; ++i) {
         sum.add(terms[i]);
-        by_side.add(t.points.points[i].patch, t.points.points[i].side, terms[i].n);
+        by_side.add(reference.points.points[i].patch, reference.points.points[i].side, terms[i].n);
     }
     ObjectError out;
     out.samples = n;

@@ -40,7 +40,7 @@ struct PointTarget {
 PointTarget point_target(PointRadiosity points, const PatchSet& set);
 
 // Parallel over the points with TBB; the result does not depend on the number of threads.
-ObjectError point_object_error(const ShadedTracer& solution_tracer, const ShadedMesh& solution,
+ObjectError point_object_error(const ShadedTracer& tracer, const ShadedMesh& solution,
                                const PointTarget& reference);
 
 }  // namespace hmcr

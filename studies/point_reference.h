@@ -109,7 +109,7 @@ PointRadiosity estimate_reference_points(const Scene& scene, const PathTracer& t
                                          const Ranks& ranks, std::uint64_t& rays);
 
 // The report of a reference's points (compute_point_reference fills it; a reader recomputes it).
-PointReferenceReport point_report(const PointRadiosity& points, const std::vector<Rgb>& emission);
+PointReferenceReport point_report(const PointRadiosity& r, const std::vector<Rgb>& emission);
 
 // The emitted radiosity E of each point's side.
 std::vector<Rgb> point_emission(const PatchSet& set, const std::vector<SurfacePoint>& points);

@@ -258,7 +258,7 @@ SamplingCell sampling_cell_from_json(const nlohmann::json& j) {
 
 TableColumns sampling_table_columns() {
     TableColumns out{{"seeds"}, {"seeds", "rmse_p", "psnr_p", "spp", "rays"}};
-    for (const Column& col : columns()) out.all.push_back(col.key);
+    for (const Column& col : columns()) out.all.emplace_back(col.key);
     return out;
 }
 

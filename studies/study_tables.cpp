@@ -314,7 +314,7 @@ CellResult cell_from_json(const nlohmann::json& j) {
 
 TableColumns study_table_columns() {
     TableColumns out{{"seeds"}, {"seeds", "psnr_p", "object_error", "mesh_object_error"}};
-    for (const MeshingColumn& col : md_columns()) out.all.push_back(col.key);
+    for (const MeshingColumn& col : md_columns()) out.all.emplace_back(col.key);
     return out;
 }
 

@@ -130,8 +130,8 @@ std::string legend(const SummaryTable& t) {
             exact |= m.n >= 2 && m.se == 0;
         }
     std::vector<std::string> alone;
-    if (one_seed) alone.push_back("of one seed (a standard error needs two or more)");
-    if (exact) alone.push_back("of seeds that agree exactly");
+    if (one_seed) alone.emplace_back("of one seed (a standard error needs two or more)");
+    if (exact) alone.emplace_back("of seeds that agree exactly");
     std::string out = "Mean ± standard error over the seeds";
     if (!alone.empty()) out += fmt::format("; a mean alone is {}", fmt::join(alone, " or "));
     out += ".";

@@ -50,7 +50,7 @@ inline std::uint64_t json_count(const nlohmann::json& j, const char* key,
 
 // A cell's status: "ok" or "failed".
 inline std::string json_status(const nlohmann::json& j) {
-    const std::string status = j.at("status").get<std::string>();
+    std::string status = j.at("status").get<std::string>();
     if (status != "ok" && status != "failed") {
         throw InputError("status: " + quote(status) + " is neither \"ok\" nor \"failed\"");
     }

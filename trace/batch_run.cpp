@@ -17,7 +17,10 @@ namespace {
 constexpr std::uint64_t kOrderKey = std::uint64_t(1) << 63;
 
 // Stratum s of a batch: column s % 2 of 2, row s / 2 of 4.
-Stratum batch_stratum(int s) { return {0.5 * (s % 2), 0.25 * (s / 2), 0.5, 0.25}; }
+Stratum batch_stratum(int s) {
+    const int column = s % 2, row = s / 2;
+    return {0.5 * column, 0.25 * row, 0.5, 0.25};
+}
 
 // A uniformly random order of the 8 strata (Fisher-Yates).
 std::array<int, kBatchSize> stratum_order(Rng rng) {

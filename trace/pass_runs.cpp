@@ -66,7 +66,7 @@ private:
     std::uint32_t count(std::size_t k) const {
         return std::min(kBatchSize * std::uint32_t(k + 1), m_max);
     }
-    void add_batch(std::size_t pixel);
+    void add_batch(std::size_t i);
     // Gives batch `k` to every pixel of `active` that lacks it, in parallel.
     void trace_pass(const std::vector<std::uint32_t>& active, std::size_t k);
     // Whether pixel i or one of its 8 neighbours is flagged.

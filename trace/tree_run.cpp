@@ -121,7 +121,7 @@ void TreeRun::extend(std::size_t i, const Region& r, double threshold, const Pix
         for (int q = 0; q < 4; ++q) m_nodes.push_back(make_node(r.child(q), &parent, tracer));
     }
     for (int q = 0; q < 4; ++q) {
-        extend(std::size_t(m_nodes[i].first_child + q), r.child(q), threshold, tracer);
+        extend(std::size_t(m_nodes[i].first_child) + std::size_t(q), r.child(q), threshold, tracer);
     }
 }
 
@@ -136,7 +136,7 @@ Tally TreeRun::tally(std::size_t i, const Region& r, double threshold) const {
         return t;
     }
     for (int q = 0; q < 4; ++q) {
-        const Tally c = tally(std::size_t(n.first_child + q), r.child(q), threshold);
+        const Tally c = tally(std::size_t(n.first_child) + std::size_t(q), r.child(q), threshold);
         t.samples += c.samples;
         t.rays += c.rays;
         t.radiance += c.radiance / 4;  // children weighed by their area

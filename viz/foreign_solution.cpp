@@ -84,7 +84,7 @@ ShadedMesh read_foreign_solution(const std::filesystem::path& path, std::uint64_
         Rgb mean = Rgb::Zero();
         const auto first = m.offsets[std::size_t(c)], last = m.offsets[std::size_t(c) + 1];
         for (auto k = first; k < last; ++k) mean += m.point_radiosity[m.connectivity[k]];
-        m.element_radiosity.push_back(mean / double(last - first));
+        m.element_radiosity.emplace_back(mean / double(last - first));
         m.element_area.push_back(polygon_area(m, std::size_t(c)));
         m.hierarchy_level.push_back(0);
     }

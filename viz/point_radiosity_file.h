@@ -38,7 +38,7 @@ struct PointRadiosity {
 };
 
 // Writes the file atomically; throws InputError naming it on failure, leaving none behind.
-void write_point_radiosity(const std::filesystem::path& path, const PointRadiosity& points);
+void write_point_radiosity(const std::filesystem::path& path, const PointRadiosity& r);
 
 // Reads it back with every array, count and value checked (a PatchId beyond PatchCount, a Side
 // other than 0 or 1, a weight that is not positive, a negative or non-finite variance or a
