@@ -42,8 +42,7 @@ std::uint64_t read_uint(std::string_view bytes, std::size_t at, std::size_t widt
     return v;  // the header reader refuses files that are not little-endian
 }
 
-// Bytes as a file stores them: raw, or base64 text in which an array's header and its data
-// are encoded each on its own.
+// Bytes as a file stores them: raw, or base64 text (decode() says how an array is encoded).
 struct Stored {
     std::string_view bytes;
     bool base64 = false;
@@ -160,14 +159,36 @@ private:
         }
     }
 
+    // A compressed array's header: its blocks' uncompressed size, the last one's (0: as the
+    // others) and each one's compressed size.
+    struct Blocks {
+        std::uint64_t size = 0, last = 0;
+        std::vector<std::uint64_t> stored;
+        std::uint64_t header_bytes = 0;  // of the header itself
+        std::uint64_t bytes(std::size_t k) const {
+            return k + 1 == stored.size() && last ? last : size;
+        }
+    };
+    Blocks blocks(const Stored& s, std::uint64_t offset) const {  // check_array first
+        const std::string head = decode(s, offset, 3 * m_width);
+        const std::uint64_t count = read_uint(head, 0, m_width);
+        Blocks b{read_uint(head, m_width, m_width),
+                 read_uint(head, 2 * m_width, m_width),
+                 {},
+                 (3 + count) * m_width};
+        const std::string sizes = decode(s, offset, b.header_bytes);
+        for (std::uint64_t k = 0; k < count; ++k)
+            b.stored.push_back(read_uint(sizes, (3 + k) * m_width, m_width));
+        return b;
+    }
+
     // The bytes of an array's values once decoded, from its header alone (check_array first).
     std::uint64_t value_bytes(const Stored& s, std::uint64_t offset) const {
         if (!m_compressed) return read_uint(decode(s, offset, m_width), 0, m_width);
-        const std::string head = decode(s, offset, 3 * m_width);
-        const std::uint64_t blocks = read_uint(head, 0, m_width);
-        const std::uint64_t block_size = read_uint(head, m_width, m_width);
-        const std::uint64_t last_size = read_uint(head, 2 * m_width, m_width);
-        return last_size == 0 ? blocks * block_size : (blocks - 1) * block_size + last_size;
+        const Blocks b = blocks(s, offset);
+        std::uint64_t bytes = 0;
+        for (std::size_t k = 0; k < b.stored.size(); ++k) bytes += b.bytes(k);
+        return bytes;
     }
 
     // An array's values, decoded and decompressed (check_array first).
@@ -175,30 +196,23 @@ private:
         if (!m_compressed) {  // the size and the values are encoded together
             return decode(s, offset, m_width + value_bytes(s, offset)).substr(m_width);
         }
-        const std::string head = decode(s, offset, 3 * m_width);
-        const std::uint64_t blocks = read_uint(head, 0, m_width);
-        const std::uint64_t block_size = read_uint(head, m_width, m_width);
-        const std::uint64_t last_size = read_uint(head, 2 * m_width, m_width);
-        const std::uint64_t header_bytes = (3 + blocks) * m_width;
-        const std::string sizes = decode(s, offset, header_bytes);
+        const Blocks b = blocks(s, offset);
         std::uint64_t stored = 0;
-        for (std::uint64_t k = 0; k < blocks; ++k)
-            stored += read_uint(sizes, (3 + k) * m_width, m_width);
-        const std::string packed = decode(s, offset + s.size(header_bytes), stored);
+        for (const std::uint64_t n : b.stored) stored += n;
+        const std::string packed = decode(s, offset + s.size(b.header_bytes), stored);
         const vtkSmartPointer<vtkDataCompressor> compressor = make_compressor();
         std::string out;
         std::uint64_t at = 0;
-        for (std::uint64_t k = 0; k < blocks; ++k) {
-            const std::uint64_t in = read_uint(sizes, (3 + k) * m_width, m_width);
-            const std::uint64_t size = k + 1 == blocks && last_size ? last_size : block_size;
+        for (std::size_t k = 0; k < b.stored.size(); ++k) {
+            const std::uint64_t size = b.bytes(k);
             const std::size_t start = out.size();
             out.resize(start + size);
-            if (compressor->Uncompress(reinterpret_cast<const unsigned char*>(packed.data() + at),
-                                       in, reinterpret_cast<unsigned char*>(out.data() + start),
-                                       size) != size) {
+            if (compressor->Uncompress(
+                    reinterpret_cast<const unsigned char*>(packed.data() + at), b.stored[k],
+                    reinterpret_cast<unsigned char*>(out.data() + start), size) != size) {
                 fail(what + " do not decompress");
             }
-            at += in;
+            at += b.stored[k];
         }
         return out;
     }
