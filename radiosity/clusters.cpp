@@ -9,7 +9,7 @@
 
 namespace hmcr {
 
-ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights)
+ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights, Clustering model)
     : m_h(h), m_weights(receiver_weights) {
     const PatchSet& ps = h.patch_set();
     const auto patches = std::uint32_t(h.patch_count());
@@ -44,6 +44,7 @@ ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights)
     if (backs.empty()) {
         m_top = build(fronts, kFront);
         m_power_cumulative = m_cumulative;  // by area until an iteration begins
+        if (model == Clustering::oriented) orient();
         return;
     }
     // docs/design.md §2.7: fronts and backs meet only in the top cluster, which never receives.
@@ -56,6 +57,23 @@ ClusterTree::ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights)
     finish(top);
     m_top = m_join = &top;
     m_power_cumulative = m_cumulative;
+    if (model == Clustering::oriented) orient();
+}
+
+// Children have larger indices than their parent (depth-first numbering): the reverse index
+// order gives every cluster's classes after its children's.
+void ClusterTree::orient() {
+    m_orientations = std::make_unique<ClusterOrientations>(m_elements.size(), m_position.size());
+    const PatchSet& ps = m_h.patch_set();
+    const auto child = [&](const Element& k) {
+        if (is_cluster(k)) return ClusterOrientations::Child{true, k.id.patch, k.area, {}};
+        return ClusterOrientations::Child{false, 2 * k.id.patch + k.id.side, k.area,
+                                          side_normal(ps.patches[k.id.patch], k.id.side)};
+    };
+    for (std::size_t k = m_elements.size(); k-- > 0;) {
+        const Node& n = m_nodes[k];
+        m_orientations->add_cluster(std::uint32_t(k), child(*n.child[0]), child(*n.child[1]));
+    }
 }
 
 Element& ClusterTree::new_cluster(std::uint32_t first) {
@@ -182,7 +200,13 @@ void ClusterTree::begin_iteration(LinkWeight weight) {
 
 void ClusterTree::push(const PowerQuantum& quantum, std::vector<Rgb>& from_above) {
     from_above.assign(m_position.size(), Rgb::Zero());
-    if (is_cluster(*m_top)) push_node(*m_top, Rgb::Zero(), quantum, from_above);
+    if (!is_cluster(*m_top)) return;
+    if (!m_orientations) return push_node(*m_top, Rgb::Zero(), quantum, from_above);
+    m_orientations->push(quantum, from_above);
+    for (const std::uint32_t side : m_side) {
+        from_above[side] = m_h.patch_set().material(side >> 1, std::uint8_t(side & 1)).reflectance *
+                           from_above[side];
+    }
 }
 
 void ClusterTree::push_node(Element& c, const Rgb& above, const PowerQuantum& quantum,

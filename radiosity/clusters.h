@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Clusters of patches above the patch roots, each receiving and emitting as an isotropic cloud of
-// surfaces (docs/design.md §2.7): binary trees built once from the patches' centres, one over
-// the fronts and one over the backs, whose nodes are elements the descent links like any other.
+// Clusters of patches above the patch roots, each receiving as an isotropic cloud of surfaces or
+// by its sides' orientations (docs/design.md §2.7): binary trees built once from the patches'
+// centres, one over the fronts and one over the backs, whose nodes are elements the descent
+// links like any other.
 #pragma once
 
 #include <array>
@@ -12,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "radiosity/cluster_orientations.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/solver_options.h"
 
@@ -27,14 +29,18 @@ public:
     // The trees over h's sides. Makes every two-sided patch's back root, which the clusters
     // hold from the start. receiver_weights (per side value) are what a link's weight takes
     // for each side instead of its reflectance (view importance, docs/design.md §3.12); empty:
-    // the reflectances.
-    explicit ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights = {});
+    // the reflectances. `model`: how a cluster receives, isotropic or oriented.
+    explicit ClusterTree(Hierarchy& h, std::span<const Rgb> receiver_weights = {},
+                         Clustering model = Clustering::isotropic);
     ClusterTree(const ClusterTree&) = delete;
     ClusterTree& operator=(const ClusterTree&) = delete;
 
     // Where every descent starts: a cluster, or the only patch's front root.
     Element& top() const { return *m_top; }
     std::size_t size() const { return m_elements.size(); }
+    Clustering model() const {
+        return m_orientations ? Clustering::oriented : Clustering::isotropic;
+    }
     // Whether cluster c may take a ray's deposit: every cluster but the one joining the fronts'
     // tree and the backs' (docs/design.md §2.7), which a descent always splits.
     bool may_receive(const Element& c) const { return &c != m_join; }
@@ -71,6 +77,26 @@ public:
     // At the start of an iteration, the values frozen for it: what each side shoots (A Delta B,
     // or A B under LinkWeight::total, summed over channels), and every top factor forgotten.
     void begin_iteration(LinkWeight weight);
+
+    // A ray's incident power Phi (in quanta), arriving along unit `direction` on cluster c:
+    // all of it to c (isotropic), or split among c's sides by their projected area toward the
+    // ray (oriented; `dither`, the ray's, keys the rounding).
+    void receive(Element& c, const Vec3& direction, const Quanta& incident, double dither) {
+        if (m_orientations) {
+            m_orientations->deposit(c.id.patch, direction, incident, dither);
+        } else {
+            add(c.received, incident);
+        }
+    }
+    // The cosine the power oracle takes at cluster c's end of a centre line along unit d: 1/4
+    // (isotropic), or the fraction of c's area projected toward d (oriented).
+    double end_cosine(const Element& c, const Vec3& d) const {
+        return m_orientations ? m_orientations->projected_fraction(c.id.patch, d) : 0.25;
+    }
+    // What the orientation classes received, for the ranks' sum; empty when isotropic.
+    std::span<Quanta> class_received() {
+        return m_orientations ? m_orientations->received() : std::span<Quanta>{};
+    }
 
     // The first half of push-pull: the clusters' received power, as irradiance carried down,
     // becomes for each side the radiosity rho_q h its root starts its own push-pull with
@@ -135,6 +161,7 @@ private:
     std::pair<Vec3, Vec3> point_by(const std::vector<double>& cumulative, const Element& c,
                                    double xu, double xv) const;
     void average(Element& c) const;  // B and Delta B from the children's
+    void orient();                   // m_orientations, from the finished tree
     void push_node(Element& c, const Rgb& above, const PowerQuantum& quantum,
                    std::vector<Rgb>& from_above);
 
@@ -154,6 +181,7 @@ private:
     std::vector<double> m_power_cumulative;  // their shot power, as of begin_iteration
     Element* m_top = nullptr;
     Element* m_join = nullptr;  // the top, when it joins the fronts' tree and the backs'; none
+    std::unique_ptr<ClusterOrientations> m_orientations;  // oriented clusters only
 };
 
 }  // namespace hmcr

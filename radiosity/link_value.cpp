@@ -24,24 +24,26 @@ std::uint64_t element_key(const ElementId& id) {
     return Rng(id.patch, id.path, id.depth + 256 * std::uint64_t(id.side)).next_u64();
 }
 
-// The cosine at one end of the centre line, along d of length `distance` (negating d is exact):
-// 0 where the side faces away; 1/4 at a cluster's end, which has no normal (docs/design.md §2.7).
-double end_cosine(const Vec3& normal, const Vec3& d, double distance) {
-    if (normal == Vec3::Zero()) return 0.25;
+// The cosine at element e's end of the centre line, along d of length `distance` (negating d
+// is exact): 0 where the side faces away; at a cluster's end, which has no normal, its tree's
+// (docs/design.md §2.7).
+double end_cosine(const ClusterTree* clusters, const Element& e, const Vec3& normal, const Vec3& d,
+                  double distance) {
+    if (is_cluster(e)) return clusters->end_cosine(e, d / distance);
     return std::max(0.0, normal.dot(d) / distance);
 }
 
-LinkGeometry centre_geometry(const Hierarchy& h, const PatchPair& pp, const Element& i,
+LinkGeometry centre_geometry(const RefinementContext& ctx, const PatchPair& pp, const Element& i,
                              const Element& j) {
     LinkGeometry g;
     g.receiver_area = i.area;
     g.source_area = j.area;
-    g.total_area = h.patch_set().total_area;
+    g.total_area = ctx.hierarchy.patch_set().total_area;
     const Vec3 d = j.centre - i.centre;
     g.centre_distance = d.norm();
     if (g.centre_distance > 0) {
-        g.receiver_cos = end_cosine(pp.receiver_normal, d, g.centre_distance);
-        g.source_cos = end_cosine(pp.source_normal, -d, g.centre_distance);
+        g.receiver_cos = end_cosine(ctx.clusters, i, pp.receiver_normal, d, g.centre_distance);
+        g.source_cos = end_cosine(ctx.clusters, j, pp.source_normal, -d, g.centre_distance);
     }
     return g;
 }
@@ -63,7 +65,7 @@ double line_factor(const RefinementContext& ctx, const PatchPair& pp, const Elem
     kernel.resize(std::size_t(ctx.lines));
     Rng rng(ctx.seed, element_key(receiver.id), element_key(source.id));
     sample_kernel(ctx.scene, ctx.hierarchy, receiver, source, rng, kernel, ctx.clusters);
-    LinkGeometry g = centre_geometry(ctx.hierarchy, pp, receiver, source);
+    LinkGeometry g = centre_geometry(ctx, pp, receiver, source);
     g.kernel = kernel;
     const double factor = unseen_cluster_link(receiver, source, kernel)
                               ? std::numeric_limits<double>::infinity()
@@ -81,7 +83,7 @@ double geometric_factor(const RefinementContext& ctx, const PatchPair& pp, const
                         const Element& source, RefinementCounters& counters) {
     if (!ctx.oracle.uses_lines()) {
         ++counters.oracle_evaluations;
-        return ctx.oracle.geometric_factor(centre_geometry(ctx.hierarchy, pp, receiver, source));
+        return ctx.oracle.geometric_factor(centre_geometry(ctx, pp, receiver, source));
     }
     if (is_cluster(receiver) && &source == &ctx.clusters->top()) {
         const double kept = ctx.clusters->top_factor(receiver);

@@ -101,6 +101,8 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
     each_cluster([&](const Element& e) {
         quanta.insert(quanta.end(), e.received.begin(), e.received.end());
     });
+    const std::span<Quanta> classes = clusters ? clusters->class_received() : std::span<Quanta>{};
+    for (const Quanta& q : classes) quanta.insert(quanta.end(), q.begin(), q.end());
     for (const Quanta* q : {&out.shot_power, &out.escaped_power, &out.back_face_power}) {
         quanta.insert(quanta.end(), q->begin(), q->end());
     }
@@ -116,6 +118,9 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
     };
     h.for_each_element(take);
     each_cluster(take);
+    for (Quanta& q : classes) {
+        for (auto& c : q) c = quanta[k++];
+    }
     for (Quanta* q : {&out.shot_power, &out.escaped_power, &out.back_face_power}) {
         for (auto& c : *q) c = quanta[k++];
     }

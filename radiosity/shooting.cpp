@@ -169,6 +169,12 @@ BothWays both_ways(const IterationSources& sources, std::uint32_t leaf, const Rg
     return {power * (s_l / (s_l + s_r)), power_scale / (s_l + s_r) * back_shot};
 }
 
+// Ray k's direction, from its source (an oriented cluster's deposit takes its ratios alone).
+Vec3 ray_direction(const GeneratedRays& rays, std::size_t k) {
+    return {double(rays.direction[0][k]), double(rays.direction[1][k]),
+            double(rays.direction[2][k])};
+}
+
 Vec3 hit_point(const GeneratedRays& rays, std::size_t k, float distance) {
     Vec3 y;
     for (int c = 0; c < 3; ++c) {
@@ -427,11 +433,20 @@ private:
             if (!b.deposits[k].lands) continue;
             const ShootingBuffers::Impl::Deposit& d = b.deposits[k];
             Element& receiver = *b.receivers[m_fixed ? k : q++];
-            add(receiver.received, is_cluster(receiver) ? d.incident : d.quanta);
+            const double dither = b.rays.dither[k];
+            if (is_cluster(receiver)) {
+                m_ctx.clusters->receive(receiver, ray_direction(b.rays, k), d.incident, dither);
+            } else {
+                add(receiver.received, d.quanta);
+            }
             if (!m_both) continue;
             const ShootingBuffers::Impl::BackDeposit& back = b.backs[k];
             if (Element* to = back.receiver) {
-                add(to->received, is_cluster(*to) ? back.incident : back.quanta);
+                if (is_cluster(*to)) {
+                    m_ctx.clusters->receive(*to, -ray_direction(b.rays, k), back.incident, dither);
+                } else {
+                    add(to->received, back.quanta);
+                }
             }
         }
         for (const auto& c : b.chunks) {

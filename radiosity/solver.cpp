@@ -157,9 +157,10 @@ StartMesh roots_of(PatchSet patches, const SolverOptions& o,
     return mesh;
 }
 
-// Clusters over `h` open where a shape's tree was (its ClusterTree::open_flags).
-std::unique_ptr<ClusterTree> clusters_opened(Hierarchy& h, std::span<const std::int64_t> open) {
-    auto clusters = std::make_unique<ClusterTree>(h);
+// Clusters over `h` of a shape's model, open where its tree was (its ClusterTree::open_flags).
+std::unique_ptr<ClusterTree> clusters_opened(Hierarchy& h, std::span<const std::int64_t> open,
+                                             Clustering model) {
+    auto clusters = std::make_unique<ClusterTree>(h, std::span<const Rgb>{}, model);
     clusters->set_open_flags(open);
     return clusters;
 }
@@ -171,8 +172,9 @@ StartMesh frozen_in_place(Solution& refined) {
     mesh.hierarchy->reset_values();
     if (refined.clusters) {
         const std::vector<std::int64_t> open = refined.clusters->open_flags();
+        const Clustering model = refined.clusters->model();
         refined.clusters.reset();
-        mesh.clusters = clusters_opened(*mesh.hierarchy, open);
+        mesh.clusters = clusters_opened(*mesh.hierarchy, open, model);
     }
     return mesh;
 }
@@ -182,8 +184,10 @@ StartMesh frozen_like(PatchSet patches, const SolverOptions& o, const Solution& 
                       std::shared_ptr<const EmbreeScene>& scene) {
     StartMesh mesh{roots(std::move(patches), o, scene), nullptr, true};
     mesh.hierarchy->subdivide_like(*shape.hierarchy);
-    if (shape.clusters)
-        mesh.clusters = clusters_opened(*mesh.hierarchy, shape.clusters->open_flags());
+    if (shape.clusters) {
+        mesh.clusters =
+            clusters_opened(*mesh.hierarchy, shape.clusters->open_flags(), shape.clusters->model());
+    }
     return mesh;
 }
 
@@ -401,8 +405,8 @@ Solution solve_in_arena(const SolverOptions& options, const std::function<StartM
     std::unique_ptr<ClusterTree>& clusters = sol.clusters;
     if (mesh.clusters) {
         clusters = std::move(mesh.clusters);
-    } else if (!fixed_mesh && options.clustering == Clustering::isotropic) {
-        clusters = std::make_unique<ClusterTree>(h, receiver_weights);
+    } else if (!fixed_mesh && options.clustering != Clustering::none) {
+        clusters = std::make_unique<ClusterTree>(h, receiver_weights, options.clustering);
     }
     settled_leaves(h, clusters.get());
     // A fixed mesh's leaves by parameter point, where its rays deposit.

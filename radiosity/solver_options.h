@@ -40,9 +40,10 @@ enum class LinkWeight { unshot, total };
 // nothing, or a constant per channel (docs/design.md §3.11).
 enum class ControlVariate { none, constant };
 
-// Clusters of patches above the patch roots, and how a cluster receives and emits: none, or as
-// an isotropic cloud of surfaces (docs/design.md §2.7).
-enum class Clustering { none, isotropic };
+// Clusters of patches above the patch roots, and how a cluster receives: none; as an isotropic
+// cloud of surfaces, one irradiance over all its sides; or oriented, each ray's power to the
+// sides that face it, by their projected area (docs/design.md §2.7).
+enum class Clustering { none, isotropic, oriented };
 
 // What weighs a refining solve's link values besides the oracle: nothing, or the receiver's
 // importance for the scene's views (docs/design.md §3.12).
@@ -65,7 +66,7 @@ struct EnumNames<ControlVariate> {
 };
 template <>
 struct EnumNames<Clustering> {
-    static constexpr std::array<std::string_view, 2> names{"none", "isotropic"};
+    static constexpr std::array<std::string_view, 3> names{"none", "isotropic", "oriented"};
 };
 template <>
 struct EnumNames<RaySequence> {
@@ -140,9 +141,10 @@ concept NamedSetting = requires(T v) {
     X(ControlVariate, control_variate, ControlVariate::none, true,  "none or constant",          \
       scene_file, "on a fixed mesh, shoot the unshot radiosity minus a constant per channel and "\
                   "add the constant's share exactly (none: shoot it all)")                       \
-    X(Clustering,    clustering, Clustering::none, true,            "none or isotropic",         \
-      scene_file, "clusters of patches above the patch roots, each receiving and emitting as an "\
-                  "isotropic cloud of surfaces (none: the hierarchy starts at the patches)")    \
+    X(Clustering,    clustering, Clustering::none, true,   "none, isotropic or oriented",        \
+      scene_file, "clusters of patches above the patch roots, each receiving as an isotropic "   \
+                  "cloud of surfaces or, oriented, by its sides' projected areas toward the ray "\
+                  "(none: the hierarchy starts at the patches)")                                 \
     X(RaySequence,   sequence,  RaySequence::random, true,           "random or sobol",           \
       scene_file, "where the shooting rays' sources and uniforms come from: keyed pseudo-random "\
                   "streams, each ray picking its source leaf (random); or the rays dealt to the "\

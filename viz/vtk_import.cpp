@@ -88,7 +88,7 @@ void check_cell_order(const ShadedMesh& m, const VtpChecker& check, std::uint64_
 void read_cluster_ids(vtkCellData* cd, const VtpChecker& check, const VtpMetadata& meta,
                       ShadedMesh& m) {
     if (!cd->HasArray("ClusterId")) return;
-    if (meta.clustering != "isotropic") {
+    if (meta.clustering == "none") {
         check.fail(fmt::format("has a ClusterId array, but Clustering {}", quote(meta.clustering)));
     }
     const vtkIdType n = vtkIdType(m.cell_count());
@@ -175,7 +175,8 @@ VtpMetadata read_metadata(vtkPolyData* data, const VtpChecker& check) {
     meta.time_value = value_field<vtkDoubleArray>(fd, "TimeValue", check);
     meta.clustering = check.string_field(fd, "Clustering", kOldSolution);
     if (!SettingNames<Clustering>::parse(meta.clustering)) {
-        check.fail(fmt::format("has Clustering {}, not none or isotropic", quote(meta.clustering)));
+        check.fail(fmt::format("has Clustering {}, not none, isotropic or oriented",
+                               quote(meta.clustering)));
     }
     return meta;
 }

@@ -221,7 +221,8 @@ TEST_F(HostileSolution, ClusterIdsThatNoSolveWritesAreRefused) {
             d->GetFieldData()->AddArray(clustering);
         },
         "clustered.vtp");
-    expect_refused("anisotropic.vtp", "has Clustering 'anisotropic', not none or isotropic");
+    expect_refused("anisotropic.vtp",
+                   "has Clustering 'anisotropic', not none, isotropic or oriented");
     spoilt("unclustered.vtp", [](vtkPolyData* d) {
         vtkNew<vtkIntArray> ids;
         ids->SetName("ClusterId");

@@ -125,6 +125,10 @@ TEST(MpiRuns, ClusterLeavesAreTheSameBitsOnAnyRankCount) {
     expect_same_solve_on_ranks(
         "--oracle kl --clustering isotropic --epsilon 0.3 --refine-share 0.4 --rays 300000",
         {1, 2, 3});
+    expect_same_solve_on_ranks(
+        "--oracle power --clustering oriented --epsilon 0.3 --refine-share 0.4 --rays 300000 "
+        "--bidirectional yes",
+        {1, 3});
 }
 
 TEST(MpiRuns, BudgetSearchesAreTheSameBitsOnTwoRanks) {

@@ -15,6 +15,7 @@
 #include "radiosity/clusters.h"
 #include "radiosity/shaded_mesh.h"
 #include "radiosity/solver.h"
+#include "tests/support/cluster_models.h"
 #include "tests/support/furnace.h"
 #include "tests/support/plugins.h"
 #include "tests/support/same_leaves.h"
@@ -24,9 +25,10 @@
 namespace hmcr::test {
 namespace {
 
-SolverOptions with_cluster_leaves(std::uint64_t rays, std::uint64_t seed) {
+SolverOptions with_cluster_leaves(std::uint64_t rays, std::uint64_t seed,
+                                  Clustering model = Clustering::isotropic) {
     SolverOptions o;
-    o.clustering = Clustering::isotropic;
+    o.clustering = model;
     o.rays = rays;
     o.seed = seed;
     o.lines = 4;
@@ -85,13 +87,17 @@ TEST(ClusterLeaves, BudgetBelowThePatchCountIsReached) {
 // The furnace refined to cluster leaves and frozen: every patch's B is the exact K-bounce value
 // E (1 - rho^(K+1)) / (1 - rho) (K the frozen pass's iterations), t-tested over 10 seeds with
 // Bonferroni over the patches: a deposit on a cluster leaf gives its patches the irradiance
-// it carries, which in the furnace is every patch's.
-TEST(ClusterLeaves, FurnaceFrozenOnClusterLeavesIsExact) {
+// it carries, which in the furnace is every patch's; an oriented one gives each class of its
+// sides the part of each ray's power they face, which in the convex furnace is their due.
+class ClusterLeafModels : public testing::TestWithParam<Clustering> {};
+INSTANTIATE_TEST_SUITE_P(ClusterLeaves, ClusterLeafModels, cluster_models(), cluster_model_name);
+
+TEST_P(ClusterLeafModels, FurnaceFrozenOnClusterLeavesIsExact) {
     const PatchMesh mesh = furnace_of(12);  // 864 patches
     expect_furnace_per_patch(
         mesh, 0.5, 1, 10,
         [](std::uint64_t seed) {
-            SolverOptions o = with_cluster_leaves(40'000, seed);
+            SolverOptions o = with_cluster_leaves(40'000, seed, GetParam());
             o.epsilon = 3;  // accepts links at clusters (a guard below)
             return o;
         },
@@ -200,16 +206,17 @@ TEST(ClusterLeaves, TheControlVariateKeepsTheExpectation) {
 }
 
 // The same seed gives the same mesh, cluster leaves and values with one thread and with two.
-TEST(ClusterLeaves, OneAndTwoThreadsGiveTheSameBits) {
-    SolverOptions o = with_cluster_leaves(100'000, 3);
+TEST_P(ClusterLeafModels, OneAndTwoThreadsGiveTheSameBits) {
+    SolverOptions o = with_cluster_leaves(100'000, 3, GetParam());
     o.epsilon = 3;
     EXPECT_GT(solve_on_one_and_two_threads(furnace_of(8), o).stats.cluster_leaves, 0u);
 }
 
-// A mesh frozen from a clustered solve (a study's mesh error) keeps its cluster leaves.
-TEST(ClusterLeaves, SolveOnMeshKeepsTheClusterLeaves) {
+// A mesh frozen from a clustered solve (a study's mesh error) keeps its cluster leaves and how
+// they receive.
+TEST_P(ClusterLeafModels, SolveOnMeshKeepsTheClusterLeaves) {
     const PatchMesh mesh = furnace_of(8);
-    SolverOptions o = with_cluster_leaves(60'000, 4);
+    SolverOptions o = with_cluster_leaves(60'000, 4, GetParam());
     o.epsilon = 3;
     o.refine_share = 1;
     const Solution shape = solve(mesh, o);
@@ -218,6 +225,8 @@ TEST(ClusterLeaves, SolveOnMeshKeepsTheClusterLeaves) {
     const Solution frozen = solve_on_mesh(mesh, o, shape);
     EXPECT_EQ(frozen.cluster_of_side(), shape.cluster_of_side());
     EXPECT_EQ(frozen.stats.leaves, shape.stats.leaves);
+    ASSERT_NE(frozen.clusters, nullptr);
+    EXPECT_EQ(frozen.clusters->model(), GetParam());
     expect_consistent_mesh(frozen);
 }
 

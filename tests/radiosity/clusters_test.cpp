@@ -18,6 +18,7 @@
 #include "rays/embree_scene.h"
 #include "rays/rng.h"
 #include "tests/support/analytic.h"
+#include "tests/support/cluster_models.h"
 #include "tests/support/furnace.h"
 #include "tests/support/plugins.h"
 #include "tests/support/same_leaves.h"
@@ -186,9 +187,10 @@ TEST(Clusters, GroupedDescentEndsWhereOneRayDescentsEnd) {
     EXPECT_GT(on_patches, 0u);
 }
 
-SolverOptions clustered(std::uint64_t rays, std::uint64_t seed) {
+SolverOptions clustered(std::uint64_t rays, std::uint64_t seed,
+                        Clustering model = Clustering::isotropic) {
     SolverOptions o;
-    o.clustering = Clustering::isotropic;
+    o.clustering = model;
     o.rays = rays;
     o.seed = seed;
     o.lines = 4;
@@ -198,9 +200,14 @@ SolverOptions clustered(std::uint64_t rays, std::uint64_t seed) {
 
 // A furnace of 6 x 16 x 16 patches: every patch's B is the exact K-bounce value
 // E (1 - rho^(K+1)) / (1 - rho), t-tested over 10 seeds with Bonferroni over the patches. The
-// furnace's irradiance is uniform, so deposits on clusters keep it exact. A guard that clusters
-// take deposits: the patches' spread about their mean is well below an unclustered solve's.
-TEST(Clusters, FurnaceOfManyPatchesIsExact) {
+// furnace's irradiance is uniform, so isotropic deposits on clusters keep it exact; so do
+// oriented ones, the box being convex (no side of a cluster hides another from a ray). A guard
+// that clusters take deposits: the patches' spread about their mean is well below an
+// unclustered solve's.
+class ClusterModels : public testing::TestWithParam<Clustering> {};
+INSTANTIATE_TEST_SUITE_P(Clusters, ClusterModels, cluster_models(), cluster_model_name);
+
+TEST_P(ClusterModels, FurnaceOfManyPatchesIsExact) {
     const double rho = 0.5, e = 1;
     const auto mesh =
         make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 16, Rgb::Constant(rho), Rgb::Constant(e)));
@@ -217,7 +224,7 @@ TEST(Clusters, FurnaceOfManyPatchesIsExact) {
     // At this epsilon the later iterations' links are accepted at small clusters (at kl's
     // default every link goes down to the patches).
     const auto options = [](std::uint64_t seed) {
-        SolverOptions o = clustered(30'000, seed);
+        SolverOptions o = clustered(30'000, seed, GetParam());
         o.epsilon = 3;
         return o;
     };
@@ -235,7 +242,7 @@ TEST(Clusters, FurnaceOfManyPatchesIsExact) {
 // deposit on the receiver stays on it; the power oracle at this epsilon accepts the first
 // iteration's link (receiver plate, top cluster), value 0.37 W, and refuses (top, top), 1 W
 // (a guard: few distinct values).
-TEST(Clusters, PlatesOfManyPatchesKeepTheFormFactor) {
+TEST_P(ClusterModels, PlatesOfManyPatchesKeepTheFormFactor) {
     const double rho = 0.5;
     std::vector<TestPolygon> polygons;
     for (int i = 0; i < 4; ++i) {
@@ -249,7 +256,7 @@ TEST(Clusters, PlatesOfManyPatchesKeepTheFormFactor) {
             polygons.push_back(receiver);
         }
     }
-    SolverOptions o = clustered(400'000, 21);
+    SolverOptions o = clustered(400'000, 21, GetParam());
     o.oracle = oracle("power");
     o.epsilon = 8;  // a threshold of 0.5 W: see the test's comment
     o.stop = 0.5;   // one iteration: the receiver's light alone, not what it reflects back
@@ -293,8 +300,8 @@ TEST(Clusters, WhereEveryClusterIsRefusedTheSolveIsTheUnclusteredOne) {
 }
 
 // The same seed gives the same hierarchy and values with one thread and with two.
-TEST(Clusters, OneAndTwoThreadsGiveTheSameBits) {
-    solve_on_one_and_two_threads(load_scene("cornell").mesh, clustered(100'000, 3));
+TEST_P(ClusterModels, OneAndTwoThreadsGiveTheSameBits) {
+    solve_on_one_and_two_threads(load_scene("cornell").mesh, clustered(100'000, 3, GetParam()));
 }
 
 }  // namespace

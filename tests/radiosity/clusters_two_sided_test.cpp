@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "radiosity/solver.h"
+#include "tests/support/cluster_models.h"
 #include "tests/support/furnace.h"
 #include "tests/support/same_leaves.h"
 #include "tests/support/statistics.h"
@@ -37,9 +38,9 @@ PatchMesh two_sided_box(int n, double rho, double e, double e_out) {
 }
 
 // At this epsilon clusters take deposits (kl's default refuses them all).
-SolverOptions clustered(std::uint64_t seed) {
+SolverOptions clustered(std::uint64_t seed, Clustering model) {
     SolverOptions o;
-    o.clustering = Clustering::isotropic;
+    o.clustering = model;
     o.rays = 30'000;
     o.seed = seed;
     o.lines = 4;
@@ -48,7 +49,12 @@ SolverOptions clustered(std::uint64_t seed) {
     return o;
 }
 
-TEST(ClustersTwoSided, FurnaceOfTwoSidedWallsIsExactInsideAndOutside) {
+// Isotropic and oriented clusters alike.
+class TwoSidedClusterModels : public testing::TestWithParam<Clustering> {};
+INSTANTIATE_TEST_SUITE_P(ClustersTwoSided, TwoSidedClusterModels, cluster_models(),
+                         cluster_model_name);
+
+TEST_P(TwoSidedClusterModels, FurnaceOfTwoSidedWallsIsExactInsideAndOutside) {
     const double rho = 0.5, e = 1, e_out = 0.3;
     const PatchMesh mesh = two_sided_box(12, rho, e, e_out);
     const std::size_t patches = mesh.n_faces();
@@ -65,7 +71,7 @@ TEST(ClustersTwoSided, FurnaceOfTwoSidedWallsIsExactInsideAndOutside) {
     std::size_t iterations = 0;
     double clustered_spread = 0;
     for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-        const Solution sol = solve(mesh, clustered(seed));
+        const Solution sol = solve(mesh, clustered(seed, GetParam()));
         if (seed > 1) {
             ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
         }
@@ -83,15 +89,15 @@ TEST(ClustersTwoSided, FurnaceOfTwoSidedWallsIsExactInsideAndOutside) {
         EXPECT_TRUE(t_test("inner side of patch " + std::to_string(p), inside[p], expected, 0,
                            int(patches)));
     }
-    SolverOptions none = clustered(1);
+    SolverOptions none = clustered(1, GetParam());
     none.clustering = Clustering::none;
     EXPECT_LT(clustered_spread, 0.8 * spread(solve(mesh, none)));
 }
 
 // The same seed gives the same hierarchy and values with one thread and with two, through the
 // top cluster joining fronts and backs.
-TEST(ClustersTwoSided, OneAndTwoThreadsGiveTheSameBits) {
-    solve_on_one_and_two_threads(two_sided_box(6, 0.5, 1, 0.3), clustered(5));
+TEST_P(TwoSidedClusterModels, OneAndTwoThreadsGiveTheSameBits) {
+    solve_on_one_and_two_threads(two_sided_box(6, 0.5, 1, 0.3), clustered(5, GetParam()));
 }
 
 }  // namespace
