@@ -117,7 +117,7 @@ BudgetResult Search::run() {
     if (m_options.clustering == Clustering::none && m_budget.leaves < patches) {
         fail(
             fmt::format("the scene has {} patches, the fewest leaves a solve can have without "
-                        "clustering (try --clustering isotropic)",
+                        "clustering (try --clustering oriented)",
                         patches));
     }
     const double start = resolved_epsilon(m_options);

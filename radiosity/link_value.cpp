@@ -79,19 +79,27 @@ double line_factor(const RefinementContext& ctx, const PatchPair& pp, const Elem
     return factor;
 }
 
+// The factor from the centre line alone, for an oracle without lines.
+double centre_factor(const RefinementContext& ctx, const PatchPair& pp, const Element& receiver,
+                     const Element& source, RefinementCounters& counters) {
+    ++counters.oracle_evaluations;
+    return ctx.oracle.geometric_factor(centre_geometry(ctx, pp, receiver, source));
+}
+
 double geometric_factor(const RefinementContext& ctx, const PatchPair& pp, const Element& receiver,
                         const Element& source, RefinementCounters& counters) {
-    if (!ctx.oracle.uses_lines()) {
-        ++counters.oracle_evaluations;
-        return ctx.oracle.geometric_factor(centre_geometry(ctx, pp, receiver, source));
-    }
+    const bool lines = ctx.oracle.uses_lines();
+    // A receiver cluster's link to the top, found once an iteration (an oriented cluster's
+    // cosines take a pass over its classes and the top's).
     if (is_cluster(receiver) && &source == &ctx.clusters->top()) {
         const double kept = ctx.clusters->top_factor(receiver);
         if (!std::isnan(kept)) return kept;
-        const double factor = line_factor(ctx, pp, receiver, source, counters);
+        const double factor = lines ? line_factor(ctx, pp, receiver, source, counters)
+                                    : centre_factor(ctx, pp, receiver, source, counters);
         ctx.clusters->set_top_factor(receiver, factor);
         return factor;
     }
+    if (!lines) return centre_factor(ctx, pp, receiver, source, counters);
     if (!ctx.cache) return line_factor(ctx, pp, receiver, source, counters);
     if (const auto cached = ctx.cache->find(&receiver, &source)) {
         ++counters.cache_hits;
