@@ -7,7 +7,8 @@ registered oracle and pixel criterion has its entry in docs/oracles.md or docs/c
 holding line 2 of its source file's opening comment (its paper, or why it has none; the comment
 after the license line); and the viewing advice keeps the build: `make view-deps` installs
 ParaView without its recommended packages (python3-paraview, which would remove libvtk9-dev),
-and the docs send readers there.
+and the docs send readers there; no source includes a folder its layer does not link, and
+docs/developing.md's table of layers names the links of CMakeLists.txt's hmcr_layer lines.
 Usage: check_docs.py REPO_ROOT. Prints one line per problem; exit code 1 if there is any."""
 import pathlib
 import re
@@ -174,6 +175,37 @@ for md in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
             if version and named != version.group(1):
                 problems.append(f"{md.relative_to(root)}:{n}: names version {named}; hmcr is "
                                 f"{version.group(1)} (CMakeLists.txt)")
+
+# The layers (CMakeLists.txt's hmcr_layer lines): no source includes a folder its library does not
+# link, directly or through the folders it links (which the build refuses too, but only for the
+# configurations built); and docs/developing.md's table of layers names each folder's links.
+cmake = (root / "CMakeLists.txt").read_text()
+links = {}
+for m in re.finditer(r"^hmcr_layer\((\w+)([^)]*)\)", cmake, re.M):
+    links[m.group(1)] = re.findall(r"\bhmcr_(\w+)", m.group(2))
+reach = {}
+for folder in links:  # the lines run bottom to top: a folder's links are already resolved
+    reach[folder] = {folder}.union(*(reach.get(f, {f}) for f in links[folder]))
+for folder in links:
+    for src in sorted((root / folder).rglob("*")):
+        if src.suffix not in (".cpp", ".h"):
+            continue
+        for n, line in enumerate(src.read_text(errors="replace").splitlines(), 1):
+            m = re.match(r'\s*#\s*include\s+"(\w+)/', line)
+            if m and m.group(1) in links and m.group(1) not in reach[folder]:
+                problems.append(f"{src.relative_to(root)}:{n}: includes {m.group(1)}/, a layer "
+                                f"{folder}/ does not link (CMakeLists.txt's hmcr_layer lines)")
+rows = {}
+for line in (root / "docs/developing.md").read_text().splitlines():
+    if m := re.match(r"\| `(\w+)/` \| ([^|]*) \|", line):
+        rows[m.group(1)] = set(re.findall(r"\w+", m.group(2))) & set(links)
+for folder, linked in links.items():
+    if folder not in rows:
+        problems.append(f"docs/developing.md: the table of layers has no row for `{folder}/`")
+    elif rows[folder] != set(linked):
+        problems.append(f"docs/developing.md: the layers' table says `{folder}/` links "
+                        f"{sorted(rows[folder]) or 'no folder'}; CMakeLists.txt links "
+                        f"{sorted(linked) or 'no folder'}")
 
 for p in problems:
     print(p)
