@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """The docs stay true to the tree: every relative link of README.md and docs/*.md names a file
 that exists and, with #anchor, one of its headings; every docs/... citation in the sources
-resolves (docs/design.md §N to a heading numbered N, docs/X.md#anchor to a heading); and every
+resolves (docs/design.md §N to a heading numbered N, docs/X.md#anchor to a heading); every
+source path cited in a source's comment is a file of the tree (a cited line within it); every
 registered oracle and pixel criterion has its entry in docs/oracles.md or docs/criteria.md,
 holding line 2 of its source file's opening comment (its paper, or why it has none; the comment
 after the license line); and the viewing advice keeps the build: `make view-deps` installs
@@ -175,6 +176,96 @@ for md in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
             if version and named != version.group(1):
                 problems.append(f"{md.relative_to(root)}:{n}: names version {named}; hmcr is "
                                 f"{version.group(1)} (CMakeLists.txt)")
+
+# Source paths cited in the sources' comments name what is there: a path that starts at a folder
+# of the tree and names a source or doc (`radiosity/solver.h`, `rays/patch.h:12`, `:12-20`) is a
+# file of the tree, with at least as many lines as a line cited; a bare `name.h` or `name.cpp`
+# is beside the citing file or, in a test, in the folder it tests (tests/rays/ tests rays/).
+# A path with a word in capitals is a pattern (`oracles/NAME.cpp`), not a citation.
+def cpp_comments(text):
+    """(line number, text) of each comment of a C++ source, string literals skipped."""
+    out, i, n, line = [], 0, len(text), 1
+    while i < n:
+        c = text[i]
+        if text.startswith("//", i):
+            end = text.find("\n", i)
+            end = n if end < 0 else end
+            out.append((line, text[i + 2:end]))
+            i = end
+        elif text.startswith("/*", i):
+            end = text.find("*/", i + 2)
+            end = n if end < 0 else end
+            for k, part in enumerate(text[i + 2:end].split("\n")):
+                out.append((line + k, part))
+            line += text.count("\n", i, end)
+            i = end + 2
+        elif m := re.match(r'R"([^(\s]*)\(', text[i:i + 20]):
+            end = text.find(")" + m.group(1) + '"', i)
+            end = n if end < 0 else end
+            line += text.count("\n", i, end)
+            i = end + len(m.group(1)) + 2
+        elif c in "\"'" and not (c == "'" and i > 0 and text[i - 1].isalnum()):  # 1'000 is a digit separator
+            k = i + 1
+            while k < n and text[k] != c and text[k] != "\n":
+                k += 2 if text[k] == "\\" else 1
+            i = k + 1
+        else:
+            if c == "\n":
+                line += 1
+            i += 1
+    return out
+
+
+def script_comments(path, text):
+    """(line number, text) of each comment of a script: Python's comments and docstrings
+    (tokenize, ast), a shell's, Make's or CMake's `#` lines and trailing `  # ...`."""
+    if path.suffix == ".py":
+        import ast
+        import io
+        import tokenize
+        out = [(tok.start[0], tok.string) for tok in
+               tokenize.generate_tokens(io.StringIO(text).readline) if tok.type == tokenize.COMMENT]
+        for node in ast.walk(ast.parse(text)):
+            body = getattr(node, "body", None)
+            if isinstance(body, list) and body and isinstance(body[0], ast.Expr) \
+                    and isinstance(body[0].value, ast.Constant) and isinstance(body[0].value.value, str):
+                first = body[0].value.lineno
+                out += [(first + k, part) for k, part in enumerate(body[0].value.value.split("\n"))]
+        return out
+    return [(k, m.group(1)) for k, line in enumerate(text.splitlines(), 1)
+            if (m := re.search(r"(?:^|\s)#(.*)", line))]
+
+
+tops = sorted(p.name for p in root.iterdir() if p.is_dir() and not p.name.startswith((".", "build")))
+cited = re.compile(r"(?<![\w./-])((?:%s)/[\w./-]*\.(?:h|cpp|py|sh|md|txt|supp))(?::(\d+)(?:-(\d+))?)?"
+                   r"(?![\w/])" % "|".join(map(re.escape, tops)))
+bare = re.compile(r"(?<![\w./-])([a-z_][a-z0-9_]*\.(?:h|cpp))(?![\w/])")
+line_counts = {}
+for src in sorted(sources):
+    rel = src.relative_to(root)
+    if rel.parts[0].startswith(("build", ".git")):
+        continue
+    text = src.read_text(errors="replace")
+    comments = cpp_comments(text) if src.suffix in (".cpp", ".h") else script_comments(src, text)
+    near = [src.parent]
+    if rel.parts[0] == "tests" and len(rel.parts) > 2:
+        near.append(root.joinpath(*rel.parts[1:-1]))
+    for n, comment in comments:
+        for m in cited.finditer(comment):
+            path = m.group(1)
+            if re.search(r"[A-Z]{2,}|(^|/)[A-Z](\.|/)", path):
+                continue
+            target = root / path
+            if not target.is_file():
+                problems.append(f"{rel}:{n}: cites {path}: no such file")
+            elif m.group(2):
+                count = line_counts.setdefault(path, len(target.read_text(errors="replace").splitlines()))
+                if int(m.group(3) or m.group(2)) > count:
+                    problems.append(f"{rel}:{n}: cites {m.group(0)}: {path} has {count} lines")
+        if src.suffix in (".cpp", ".h"):
+            for m in bare.finditer(comment):
+                if not any((folder / m.group(1)).is_file() for folder in near):
+                    problems.append(f"{rel}:{n}: cites {m.group(1)}: not beside it (name its folder)")
 
 # The layers (CMakeLists.txt's hmcr_layer lines): no source includes a folder its library does not
 # link, directly or through the folders it links (which the build refuses too, but only for the
