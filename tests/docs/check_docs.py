@@ -158,16 +158,6 @@ for doc in ("README.md", "docs/usage.md"):
     if "make view-deps" not in (root / doc).read_text():
         problems.append(f"{doc}: the viewing advice does not say make view-deps")
 
-# design.md's settings table names every setting of radiosity/solver_options.h's table (the one
-# set by `hmcr reference` alone is named below it).
-settings = re.findall(r"^\s*X\(\s*[\w:<>]+\s*,\s*(\w+)\s*,",
-                      (root / "radiosity/solver_options.h").read_text(), re.M)
-design = (root / "docs/design.md").read_text()
-for name in settings:
-    if not re.search(rf"^\| `{name}`", design, re.M) and f"`{name}`, is set by" not in design:
-        problems.append(f"docs/design.md: the settings table has no row for `{name}` "
-                        "(radiosity/solver_options.h)")
-
 # An install path that names a version names this one (CMakeLists.txt's project version).
 version = re.search(r"project\(hmcr VERSION ([\d.]+)", (root / "CMakeLists.txt").read_text())
 for md in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
