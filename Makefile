@@ -110,11 +110,18 @@ test-tsan: deps
 # are left out); a finding fails. It reads the unity build's sources, 8 sources each as the
 # compiler builds them, so the heavy library headers (VTK, Eigen, nlohmann/json) are parsed once
 # for 8 sources; a source's findings are still named by its own file and line. Only CMake's
-# configure is needed (compile_commands.json): nothing is built.
+# configure is needed (compile_commands.json): nothing is built. A second run holds the core's
+# functions to 80 lines (readability-function-size): over the sources of radiosity/, rays/ and
+# studies/ alone and their own headers, since app/ and trace/ keep longer ones.
+TIDY_SIZE_CONFIG := {Checks: '-*,readability-function-size', WarningsAsErrors: '*', \
+  HeaderFilterRegex: '(^|/)(radiosity|rays|studies)/[a-z0-9_]+\.(h|cpp)$$', \
+  CheckOptions: [{key: readability-function-size.LineThreshold, value: 80}]}
 tidy: deps
 	cmake -S . -B $(TIDY_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
 	  -DBUILD_TESTING=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
 	run-clang-tidy-14 -p $(TIDY_BUILD) -j $(JOBS) -quiet
+	run-clang-tidy-14 -p $(TIDY_BUILD) -j $(JOBS) -quiet -config="$(TIDY_SIZE_CONFIG)" \
+	  'hmcr_(radiosity|rays|studies)\.dir/|/rays/ray_generator\.cpp$$'
 
 # The oracle table, the default solve's rows, then the scaling study on office instances of
 # 10^2 ... 10^6 patches: bench/results.json (every row) and bench/scaling.pdf and .png (the
