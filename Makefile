@@ -20,8 +20,8 @@ PREFIX ?= /usr/local
 # Debian's Python, which python3-matplotlib serves (another python3 may come first on the PATH).
 PLOT_PYTHON ?= /usr/bin/python3
 
-.PHONY: deps view-deps build run install test test-quick test-sanitize test-tsan tidy bench scenes \
-        format format-check clean
+.PHONY: deps view-deps build run install check-without-tests test test-quick test-sanitize \
+        test-tsan tidy bench scenes format format-check clean
 
 # Installs only what is missing, so it is quick when everything is present.
 deps:
@@ -69,6 +69,17 @@ run: deps $(BUILD)/CMakeCache.txt
 install: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target hmcr
 	cmake --install $(BUILD) --prefix $(PREFIX)
+
+# hmcr built and installed without what only the tests need (docs/testing.md): NOTESTS_BUILD
+# configured with BUILD_TESTING off and GoogleTest and Python made unfindable, then the
+# install test's checks on it (tests/install/install_test.sh: installed into a temporary prefix,
+# the program solves cornell from the prefix alone).
+NOTESTS_BUILD ?= build-notests
+check-without-tests: deps
+	cmake -S . -B $(NOTESTS_BUILD) -DCMAKE_BUILD_TYPE=$(TYPE) -DBUILD_TESTING=OFF \
+	  -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_Python3=ON
+	cmake --build $(NOTESTS_BUILD) -j $(JOBS) --target hmcr
+	sh tests/install/install_test.sh . $(NOTESTS_BUILD)
 
 # The whole suite, statistical tests included (label `slow`).
 test: build
@@ -156,4 +167,4 @@ spdx:
 	python3 tests/docs/check_spdx.py . --add
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD) $(TSAN_BUILD) $(TIDY_BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(TSAN_BUILD) $(TIDY_BUILD) $(NOTESTS_BUILD)
