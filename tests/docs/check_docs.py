@@ -189,12 +189,12 @@ def cpp_comments(text):
                 out.append((line + k, part))
             line += text.count("\n", i, end)
             i = end + 2
-        elif m := re.match(r'R"([^(\s]*)\(', text[i:i + 20]):
+        elif c == "R" and (m := re.match(r'R"([^(\s]*)\(', text[i:i + 20])):
             end = text.find(")" + m.group(1) + '"', i)
             end = n if end < 0 else end
             line += text.count("\n", i, end)
             i = end + len(m.group(1)) + 2
-        elif c in "\"'" and not (c == "'" and i > 0 and text[i - 1].isalnum()):  # 1'000 is a digit separator
+        elif c == '"' or (c == "'" and not text[i - 1].isalnum()):  # 1'000: a digit separator
             k = i + 1
             while k < n and text[k] != c and text[k] != "\n":
                 k += 2 if text[k] == "\\" else 1
@@ -218,17 +218,19 @@ def script_comments(path, text):
         for node in ast.walk(ast.parse(text)):
             body = getattr(node, "body", None)
             if isinstance(body, list) and body and isinstance(body[0], ast.Expr) \
-                    and isinstance(body[0].value, ast.Constant) and isinstance(body[0].value.value, str):
-                first = body[0].value.lineno
-                out += [(first + k, part) for k, part in enumerate(body[0].value.value.split("\n"))]
+                    and isinstance(body[0].value, ast.Constant) \
+                    and isinstance(body[0].value.value, str):
+                first, doc = body[0].value.lineno, body[0].value.value
+                out += [(first + k, part) for k, part in enumerate(doc.split("\n"))]
         return out
     return [(k, m.group(1)) for k, line in enumerate(text.splitlines(), 1)
             if (m := re.search(r"(?:^|\s)#(.*)", line))]
 
 
-tops = sorted(p.name for p in root.iterdir() if p.is_dir() and not p.name.startswith((".", "build")))
-cited = re.compile(r"(?<![\w./-])((?:%s)/[\w./-]*\.(?:h|cpp|py|sh|md|txt|supp))(?::(\d+)(?:-(\d+))?)?"
-                   r"(?![\w/])" % "|".join(map(re.escape, tops)))
+tops = sorted(p.name for p in root.iterdir()
+              if p.is_dir() and not p.name.startswith((".", "build")))
+cited = re.compile(r"(?<![\w./-])((?:%s)/[\w./-]*\.(?:h|cpp|py|sh|md|txt|supp))"
+                   r"(?::(\d+)(?:-(\d+))?)?(?![\w/])" % "|".join(map(re.escape, tops)))
 bare = re.compile(r"(?<![\w./-])([a-z_][a-z0-9_]*\.(?:h|cpp))(?![\w/])")
 line_counts = {}
 for src in sorted(sources):
@@ -249,13 +251,16 @@ for src in sorted(sources):
             if not target.is_file():
                 problems.append(f"{rel}:{n}: cites {path}: no such file")
             elif m.group(2):
-                count = line_counts.setdefault(path, len(target.read_text(errors="replace").splitlines()))
+                if path not in line_counts:
+                    line_counts[path] = len(target.read_text(errors="replace").splitlines())
+                count = line_counts[path]
                 if int(m.group(3) or m.group(2)) > count:
                     problems.append(f"{rel}:{n}: cites {m.group(0)}: {path} has {count} lines")
         if src.suffix in (".cpp", ".h"):
             for m in bare.finditer(comment):
                 if not any((folder / m.group(1)).is_file() for folder in near):
-                    problems.append(f"{rel}:{n}: cites {m.group(1)}: not beside it (name its folder)")
+                    problems.append(f"{rel}:{n}: cites {m.group(1)}: not beside it "
+                                    "(name its folder)")
 
 # The layers (CMakeLists.txt's hmcr_layer lines): no source includes a folder its library does not
 # link, directly or through the folders it links (which the build refuses too, but only for the
