@@ -20,8 +20,8 @@ PREFIX ?= /usr/local
 # Debian's Python, which python3-matplotlib serves (another python3 may come first on the PATH).
 PLOT_PYTHON ?= /usr/bin/python3
 
-.PHONY: deps view-deps build run install test test-quick test-sanitize test-tsan tidy bench scenes \
-        format format-check clean
+.PHONY: deps view-deps build run install check-without-tests test test-quick test-sanitize \
+        test-tsan tidy bench scenes format format-check clean
 
 # Installs only what is missing, so it is quick when everything is present.
 deps:
@@ -70,6 +70,17 @@ install: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target hmcr
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
+# hmcr built and installed without what only the tests need (docs/testing.md): NOTESTS_BUILD
+# configured with BUILD_TESTING off and GoogleTest and Python made unfindable, then the
+# install test's checks on it (tests/install/install_test.sh: installed into a temporary prefix,
+# the program solves cornell from the prefix alone).
+NOTESTS_BUILD ?= build-notests
+check-without-tests: deps
+	cmake -S . -B $(NOTESTS_BUILD) -DCMAKE_BUILD_TYPE=$(TYPE) -DBUILD_TESTING=OFF \
+	  -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_Python3=ON
+	cmake --build $(NOTESTS_BUILD) -j $(JOBS) --target hmcr
+	sh tests/install/install_test.sh . $(NOTESTS_BUILD)
+
 # The whole suite, statistical tests included (label `slow`).
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -110,11 +121,18 @@ test-tsan: deps
 # are left out); a finding fails. It reads the unity build's sources, 8 sources each as the
 # compiler builds them, so the heavy library headers (VTK, Eigen, nlohmann/json) are parsed once
 # for 8 sources; a source's findings are still named by its own file and line. Only CMake's
-# configure is needed (compile_commands.json): nothing is built.
+# configure is needed (compile_commands.json): nothing is built. A second run holds the core's
+# functions to 80 lines (readability-function-size): over the sources of radiosity/, rays/ and
+# studies/ alone and their own headers, since app/ and trace/ keep longer ones.
+TIDY_SIZE_CONFIG := {Checks: '-*,readability-function-size', WarningsAsErrors: '*', \
+  HeaderFilterRegex: '(^|/)(radiosity|rays|studies)/[a-z0-9_]+\.(h|cpp)$$', \
+  CheckOptions: [{key: readability-function-size.LineThreshold, value: 80}]}
 tidy: deps
 	cmake -S . -B $(TIDY_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
 	  -DBUILD_TESTING=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
 	run-clang-tidy-14 -p $(TIDY_BUILD) -j $(JOBS) -quiet
+	run-clang-tidy-14 -p $(TIDY_BUILD) -j $(JOBS) -quiet -config="$(TIDY_SIZE_CONFIG)" \
+	  'hmcr_(radiosity|rays|studies)\.dir/|/rays/ray_generator\.cpp$$'
 
 # The oracle table, the default solve's rows, then the scaling study on office instances of
 # 10^2 ... 10^6 patches: bench/results.json (every row) and bench/scaling.pdf and .png (the
@@ -149,4 +167,4 @@ spdx:
 	python3 tests/docs/check_spdx.py . --add
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD) $(TSAN_BUILD) $(TIDY_BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(TSAN_BUILD) $(TIDY_BUILD) $(NOTESTS_BUILD)

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// `hmcr error SOLUTION.vtp --reference DIR`: a study's metrics for one solution (studies/
-// reference_measure.h): the object error with its standard error, each view's RMSE and PSNR,
-// the share of its area finer than the reference resolves and the patches that hold the most
-// of its squared error. The solution may be hmcr's or another program's (`--foreign`: the
-// arrays of viz/foreign_solution.h).
+// `hmcr error SOLUTION.vtp --reference DIR`: a study's metrics for one solution
+// (studies/reference_measure.h): the object error with its standard error, each view's RMSE
+// and PSNR, the share of its area finer than the reference resolves and the patches that hold
+// the most of its squared error. The solution may be hmcr's or another program's (`--foreign`:
+// the arrays of viz/foreign_solution.h).
 #include <fmt/core.h>
 
 #include <memory>

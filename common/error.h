@@ -33,7 +33,7 @@ std::string at(const std::filesystem::path& path, int line);
 // megabyte-long name must not flood the terminal.
 std::string quote(std::string_view token);
 
-// The plug-in of `registry` (oracles/registry.h) called name; throws InputError "unknown
+// The plug-in of `registry` (common/registry.h) called name; throws InputError "unknown
 // oracle 'x' (valid: power, ks, ...)" for a name it does not hold.
 template <class Registry>
 const auto& find_named(const Registry& registry, std::string_view name) {

@@ -5,7 +5,7 @@
 //
 // Every collective here must be reached by every rank: code that may throw between two of them
 // runs inside together(), which catches, reaches agree() on every rank, and rethrows there (see
-// solver.cpp).
+// radiosity/solver.cpp).
 #pragma once
 
 #include <cstddef>

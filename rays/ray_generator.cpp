@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // The ray generator of rays/ray_generator.h. The vector kernel is compiled once per instruction
-// set Highway knows (foreach_target.h includes this file again for each) and the widest the
+// set Highway knows (hwy/foreach_target.h includes this file again for each) and the widest the
 // machine supports is chosen when the program runs. Every operation is one IEEE operation per
 // lane (no fused multiply-add, no approximate reciprocal), so all widths give the same bits.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "rays/ray_generator.cpp"
 #include "rays/ray_generator.h"
 
-#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/foreach_target.h>  // must come before hwy/highway.h
 #include <hwy/highway.h>
 
 #include <algorithm>

@@ -2,12 +2,14 @@
 # SPDX-License-Identifier: Apache-2.0
 """The docs stay true to the tree: every relative link of README.md and docs/*.md names a file
 that exists and, with #anchor, one of its headings; every docs/... citation in the sources
-resolves (docs/design.md §N to a heading numbered N, docs/X.md#anchor to a heading); and every
+resolves (docs/design.md §N to a heading numbered N, docs/X.md#anchor to a heading); every
+source path cited in a source's comment is a file of the tree (a cited line within it); every
 registered oracle and pixel criterion has its entry in docs/oracles.md or docs/criteria.md,
 holding line 2 of its source file's opening comment (its paper, or why it has none; the comment
 after the license line); and the viewing advice keeps the build: `make view-deps` installs
 ParaView without its recommended packages (python3-paraview, which would remove libvtk9-dev),
-and the docs send readers there.
+and the docs send readers there; no source includes a folder its layer does not link, and
+docs/developing.md's table of layers names the links of CMakeLists.txt's hmcr_layer lines.
 Usage: check_docs.py REPO_ROOT. Prints one line per problem; exit code 1 if there is any."""
 import pathlib
 import re
@@ -156,16 +158,6 @@ for doc in ("README.md", "docs/usage.md"):
     if "make view-deps" not in (root / doc).read_text():
         problems.append(f"{doc}: the viewing advice does not say make view-deps")
 
-# design.md's settings table names every setting of radiosity/solver_options.h's table (the one
-# set by `hmcr reference` alone is named below it).
-settings = re.findall(r"^\s*X\(\s*[\w:<>]+\s*,\s*(\w+)\s*,",
-                      (root / "radiosity/solver_options.h").read_text(), re.M)
-design = (root / "docs/design.md").read_text()
-for name in settings:
-    if not re.search(rf"^\| `{name}`", design, re.M) and f"`{name}`, is set by" not in design:
-        problems.append(f"docs/design.md: the settings table has no row for `{name}` "
-                        "(radiosity/solver_options.h)")
-
 # An install path that names a version names this one (CMakeLists.txt's project version).
 version = re.search(r"project\(hmcr VERSION ([\d.]+)", (root / "CMakeLists.txt").read_text())
 for md in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
@@ -174,6 +166,132 @@ for md in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
             if version and named != version.group(1):
                 problems.append(f"{md.relative_to(root)}:{n}: names version {named}; hmcr is "
                                 f"{version.group(1)} (CMakeLists.txt)")
+
+# Source paths cited in the sources' comments name what is there: a path that starts at a folder
+# of the tree and names a source or doc (`radiosity/solver.h`, `rays/patch.h:12`, `:12-20`) is a
+# file of the tree, with at least as many lines as a line cited; a bare `name.h` or `name.cpp`
+# is beside the citing file or, in a test, in the folder it tests (tests/rays/ tests rays/).
+# A path with a word in capitals is a pattern (`oracles/NAME.cpp`), not a citation.
+def cpp_comments(text):
+    """(line number, text) of each comment of a C++ source, string literals skipped."""
+    out, i, n, line = [], 0, len(text), 1
+    while i < n:
+        c = text[i]
+        if text.startswith("//", i):
+            end = text.find("\n", i)
+            end = n if end < 0 else end
+            out.append((line, text[i + 2:end]))
+            i = end
+        elif text.startswith("/*", i):
+            end = text.find("*/", i + 2)
+            end = n if end < 0 else end
+            for k, part in enumerate(text[i + 2:end].split("\n")):
+                out.append((line + k, part))
+            line += text.count("\n", i, end)
+            i = end + 2
+        elif c == "R" and (m := re.match(r'R"([^(\s]*)\(', text[i:i + 20])):
+            end = text.find(")" + m.group(1) + '"', i)
+            end = n if end < 0 else end
+            line += text.count("\n", i, end)
+            i = end + len(m.group(1)) + 2
+        elif c == '"' or (c == "'" and not text[i - 1].isalnum()):  # 1'000: a digit separator
+            k = i + 1
+            while k < n and text[k] != c and text[k] != "\n":
+                k += 2 if text[k] == "\\" else 1
+            i = k + 1
+        else:
+            if c == "\n":
+                line += 1
+            i += 1
+    return out
+
+
+def script_comments(path, text):
+    """(line number, text) of each comment of a script: Python's comments and docstrings
+    (tokenize, ast), a shell's, Make's or CMake's `#` lines and trailing `  # ...`."""
+    if path.suffix == ".py":
+        import ast
+        import io
+        import tokenize
+        out = [(tok.start[0], tok.string) for tok in
+               tokenize.generate_tokens(io.StringIO(text).readline) if tok.type == tokenize.COMMENT]
+        for node in ast.walk(ast.parse(text)):
+            body = getattr(node, "body", None)
+            if isinstance(body, list) and body and isinstance(body[0], ast.Expr) \
+                    and isinstance(body[0].value, ast.Constant) \
+                    and isinstance(body[0].value.value, str):
+                first, doc = body[0].value.lineno, body[0].value.value
+                out += [(first + k, part) for k, part in enumerate(doc.split("\n"))]
+        return out
+    return [(k, m.group(1)) for k, line in enumerate(text.splitlines(), 1)
+            if (m := re.search(r"(?:^|\s)#(.*)", line))]
+
+
+tops = sorted(p.name for p in root.iterdir()
+              if p.is_dir() and not p.name.startswith((".", "build")))
+cited = re.compile(r"(?<![\w./-])((?:%s)/[\w./-]*\.(?:h|cpp|py|sh|md|txt|supp))"
+                   r"(?::(\d+)(?:-(\d+))?)?(?![\w/])" % "|".join(map(re.escape, tops)))
+bare = re.compile(r"(?<![\w./-])([a-z_][a-z0-9_]*\.(?:h|cpp))(?![\w/])")
+line_counts = {}
+for src in sorted(sources):
+    rel = src.relative_to(root)
+    if rel.parts[0].startswith(("build", ".git")):
+        continue
+    text = src.read_text(errors="replace")
+    comments = cpp_comments(text) if src.suffix in (".cpp", ".h") else script_comments(src, text)
+    near = [src.parent]
+    if rel.parts[0] == "tests" and len(rel.parts) > 2:
+        near.append(root.joinpath(*rel.parts[1:-1]))
+    for n, comment in comments:
+        for m in cited.finditer(comment):
+            path = m.group(1)
+            if re.search(r"[A-Z]{2,}|(^|/)[A-Z](\.|/)", path):
+                continue
+            target = root / path
+            if not target.is_file():
+                problems.append(f"{rel}:{n}: cites {path}: no such file")
+            elif m.group(2):
+                if path not in line_counts:
+                    line_counts[path] = len(target.read_text(errors="replace").splitlines())
+                count = line_counts[path]
+                if int(m.group(3) or m.group(2)) > count:
+                    problems.append(f"{rel}:{n}: cites {m.group(0)}: {path} has {count} lines")
+        if src.suffix in (".cpp", ".h"):
+            for m in bare.finditer(comment):
+                if not any((folder / m.group(1)).is_file() for folder in near):
+                    problems.append(f"{rel}:{n}: cites {m.group(1)}: not beside it "
+                                    "(name its folder)")
+
+# The layers (CMakeLists.txt's hmcr_layer lines): no source includes a folder its library does not
+# link, directly or through the folders it links (which the build refuses too, but only for the
+# configurations built); and docs/developing.md's table of layers names each folder's links.
+cmake = (root / "CMakeLists.txt").read_text()
+links = {}
+for m in re.finditer(r"^hmcr_layer\((\w+)([^)]*)\)", cmake, re.M):
+    links[m.group(1)] = re.findall(r"\bhmcr_(\w+)", m.group(2))
+reach = {}
+for folder in links:  # the lines run bottom to top: a folder's links are already resolved
+    reach[folder] = {folder}.union(*(reach.get(f, {f}) for f in links[folder]))
+for folder in links:
+    for src in sorted((root / folder).rglob("*")):
+        if src.suffix not in (".cpp", ".h"):
+            continue
+        for n, line in enumerate(src.read_text(errors="replace").splitlines(), 1):
+            m = re.match(r'\s*#\s*include\s+"(\w+)/', line)
+            if m and m.group(1) in links and m.group(1) not in reach[folder]:
+                problems.append(f"{src.relative_to(root)}:{n}: includes {m.group(1)}/, a layer "
+                                f"{folder}/ does not link (CMakeLists.txt's hmcr_layer lines)")
+rows = {}
+for line in (root / "docs/developing.md").read_text().splitlines():
+    if m := re.match(r"\| `(\w+)/` \| ([^|]*) \|", line):
+        rows[m.group(1)] = set(re.findall(r"\w+", m.group(2))) & set(links)
+for folder, linked in links.items():
+    if folder not in rows:
+        problems.append(f"docs/developing.md: the table of layers has no row for `{folder}/`")
+    elif rows[folder] != set(linked):
+        problems.append(f"docs/developing.md: the layers' table says `{folder}/` links "
+                        f"{sorted(rows[folder]) or 'no folder'}; CMakeLists.txt links "
+                        f"{sorted(linked) or 'no folder'}")
 
 for p in problems:
     print(p)

@@ -4,7 +4,8 @@
 # configures hmcr, in a fresh build folder, with GoogleTest and Python made unfindable
 # (CMAKE_DISABLE_FIND_PACKAGE_*, which fails the configure at any find_package of them that is
 # REQUIRED), and the build it generates has the program and no test target or test. zlib cannot
-# be hidden so: libpng's own CMake module needs it (docs/testing.md).
+# be hidden so: CMake's FindPNG and VTK's package file look for it (docs/testing.md).
+# `make check-without-tests` also builds, installs and runs the program so configured.
 # Usage: without_tests_test.sh SOURCE_DIR CXX_COMPILER
 set -eu
 src=$1

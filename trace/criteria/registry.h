@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// The pixel sampling criteria by name (`hmcr samplers`, `--sampler NAME`).
+// The pixel sampling criteria by name (`hmcr samplers`, `--sampler NAME`), a Registry of
+// common/registry.h.
 #pragma once
 
-#include "oracles/registry.h"
+#include "common/registry.h"
 #include "trace/criteria/criterion.h"
 
 namespace hmcr {
