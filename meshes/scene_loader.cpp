@@ -4,7 +4,7 @@
 // JSON scene file (keys other than these are an error, to catch typos):
 //   {
 //     "mesh": "cornell.obj",              required; relative to the JSON file; a format of
-//                                         kMeshFormats (.obj, .mgf)
+//                                         kMeshFormats (.obj, .mgf, .ply)
 //     "description": "...",               optional string
 //     "views": [                          optional; each view:
 //       {"name": "camera",                  required, unique; it names files (views/camera.pfm),
@@ -43,6 +43,7 @@
 #include "meshes/material_sides.h"
 #include "meshes/mgf_reader.h"
 #include "meshes/obj_reader.h"
+#include "meshes/ply_reader.h"
 #include "meshes/repairs.h"
 #include "meshes/scene.h"
 #include "meshes/scene_bounds.h"
@@ -178,6 +179,7 @@ constexpr MeshFormat kMeshFormats[] = {
          mgf.curve_segments = options.curve_segments.value_or(kDefaultCurveSegments);
          return read_mgf(path, mgf);
      }},
+    {".ply", [](const fs::path& path, const LoadOptions&) { return read_ply(path); }},
 };
 
 const MeshFormat* find_mesh_format(const fs::path& path) {
@@ -195,9 +197,7 @@ std::string mesh_extensions() {
     return fmt::format("{}", fmt::join(extensions, ", "));
 }
 
-std::string formats_read() {
-    return fmt::format("hmcr reads meshes of {}", mesh_extensions());
-}
+std::string formats_read() { return fmt::format("hmcr reads meshes of {}", mesh_extensions()); }
 
 void check_mesh_extension(const fs::path& mesh, const std::string& where) {
     if (find_mesh_format(mesh) == nullptr) {
