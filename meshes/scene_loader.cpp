@@ -4,7 +4,7 @@
 // JSON scene file (keys other than these are an error, to catch typos):
 //   {
 //     "mesh": "cornell.obj",              required; relative to the JSON file; a format of
-//                                         kMeshFormats (.obj, .mgf, .ply)
+//                                         kMeshFormats (.obj, .mgf, .ply, .gltf, .glb)
 //     "description": "...",               optional string
 //     "views": [                          optional; each view:
 //       {"name": "camera",                  required, unique; it names files (views/camera.pfm),
@@ -40,6 +40,7 @@
 #include "common/data_directory.h"
 #include "common/file_names.h"
 #include "common/text_file.h"
+#include "meshes/gltf_reader.h"
 #include "meshes/material_sides.h"
 #include "meshes/mgf_reader.h"
 #include "meshes/obj_reader.h"
@@ -180,6 +181,8 @@ constexpr MeshFormat kMeshFormats[] = {
          return read_mgf(path, mgf);
      }},
     {".ply", [](const fs::path& path, const LoadOptions&) { return read_ply(path); }},
+    {".gltf", [](const fs::path& path, const LoadOptions&) { return read_gltf(path); }},
+    {".glb", [](const fs::path& path, const LoadOptions&) { return read_gltf(path); }},
 };
 
 const MeshFormat* find_mesh_format(const fs::path& path) {

@@ -217,7 +217,7 @@ TEST_F(Hostile, BadSceneFilesAreRefusedWithFileAndPlace) {
         {R"({"mesh": "plates.obj", "solver": {"stop": 2}})", "plates.json: solver.stop: "},
         {R"({"mesh": "plates.obj", "solver": {"threads": 2}})", "unknown setting 'threads'"},
         {R"({"mesh": "none.obj"})", "none.obj: no such file"},
-        {R"({"mesh": "plates.stl"})", "hmcr reads meshes of .obj, .mgf, .ply"},
+        {R"({"mesh": "plates.stl"})", "hmcr reads meshes of .obj, .mgf, .ply, .gltf, .glb"},
         // JSON strings may hold control characters: the message escapes them and stays one
         // line (found by the scene fuzz target).
         {R"({"mesh": "plates.obj", "descriptio\n": 1})", "unknown key 'descriptio\\n'"},

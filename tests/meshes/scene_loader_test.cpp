@@ -219,7 +219,7 @@ TEST(SceneLoader, UnknownNameListsBundledScenes) {
     const auto stl = files.write("mesh.stl", "solid\n");
     EXPECT_TRUE(contains(scene_error([&] { load_scene(stl.string()); }),
                          "mesh.stl: unknown extension '.stl': give a .json scene, a mesh (.obj, "
-                         ".mgf, .ply) or a bundled scene name (box, room)"));
+                         ".mgf, .ply, .gltf, .glb) or a bundled scene name (box, room)"));
 }
 
 TEST(SceneLoader, EveryBundledSceneLoads) {
