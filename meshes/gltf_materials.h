@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// glTF materials as hmcr's (docs/design.md §11.5): the diffuse reflectance is the base colour
+// glTF materials as hmcr's (docs/design.md §11.12): the diffuse reflectance is the base colour
 // factor's RGB times 1 - metallicFactor (the metal part is absorbed, with a warning); the emitted
 // radiance (W sr^-1 m^-2, MTL's Ke) the emissive factor times KHR_materials_emissive_strength's
 // emissiveStrength (1 without it); doubleSided gives 2 sides, else 1. Textures are not read

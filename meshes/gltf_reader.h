@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // glTF 2.0 (.gltf with its buffers, or the binary .glb), parsed by TinyGLTF (docs/decisions.md),
-// its meshes placed by the nodes of its scene (docs/design.md §11.5). Read: the triangles of
+// its meshes placed by the nodes of its scene (docs/design.md §11.12). Read: the triangles of
 // every primitive of mode triangles, strip or fan (points and lines are skipped with a warning),
 // from a float VEC3 POSITION accessor and optional indices; a transformation whose determinant is
 // negative turns the triangles over, as the specification says. Positions are single precision

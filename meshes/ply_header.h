@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The header of a PLY file (the Stanford polygon file format; docs/design.md §11.4): its format
+// The header of a PLY file (the Stanford polygon file format; docs/design.md §11.11): its format
 // (ascii, binary little or big endian), its elements with their counts and properties, and where
 // the data after `end_header` starts. The counts are checked against the bytes that follow
 // before anything is allocated for them: a header of a few lines may declare 10^12 faces.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // PLY, the Stanford polygon file format (ascii, binary little and big endian), read by hmcr
-// itself (docs/design.md §11.4). Read: the element `vertex` with x, y, z and the element `face`
+// itself (docs/design.md §11.11). Read: the element `vertex` with x, y, z and the element `face`
 // with its list `vertex_indices` (or `vertex_index`); a face's reflectance from its own `red`,
 // `green`, `blue` (uchar 0-255, or float or double 0-1), else the mean of its corners' vertex
 // colours; its emitted radiance (W sr^-1 m^-2, MTL's Ke) from the float properties

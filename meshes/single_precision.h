@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Numbers a file holds in single precision (glTF's positions and colours, a binary PLY's float
-// properties), read as doubles (docs/design.md §11.4).
+// properties), read as doubles (docs/design.md §11.12).
 #pragma once
 
 namespace hmcr {

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
 """Exports an OBJ scene (by default the bundled Cornell box) to glTF 2.0 and PLY, laid out as
-Blender's exporters lay them out, without Blender (docs/usage.md#mesh-formats):
+Blender's exporters lay them out, without Blender (docs/usage.md#ply-and-gltf):
 
 - glTF (NAME.gltf with NAME.bin, and the binary NAME.glb): one mesh and one node per object (OBJ
   `g` or `o`), one primitive per material; every face has vertices of its own (a flat-shaded
