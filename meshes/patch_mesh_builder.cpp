@@ -213,7 +213,7 @@ void PolygonSoup::add_polygon(std::span<const std::uint32_t> ids, std::int32_t m
 }
 
 std::string PolygonSoup::where(SourcePlace p) const {
-    const std::string file = p.file < files.size() ? files[p.file].string() : "?";
+    std::string file = p.file < files.size() ? files[p.file].string() : "?";
     if (p.line == 0) return file;
     const auto item = item_names.find(p.file);
     if (item != item_names.end()) return fmt::format("{}: {} {}", file, item->second, p.line);
