@@ -116,7 +116,8 @@ struct Elements {
 
 class GltfReader {
 public:
-    GltfReader(const fs::path& gltf) : m_path(gltf.string()) {
+    GltfReader(const fs::path& gltf, const GltfOptions& options)
+        : m_path(gltf.string()), m_options(options) {
         m_soup.files.push_back(gltf);
         m_soup.item_names[0] = "face";
         m_soup.no_material = "its primitive has no material";
@@ -184,15 +185,23 @@ private:
         return m;
     }
 
-    // Places the nodes of the scene, each under its parent's transformation, depth first with a
-    // stack of its own: a chain of a million nodes is a few lines of JSON.
-    void place_all() {
+    // A mesh where a node places it.
+    struct Placement {
+        std::size_t mesh;
+        Eigen::Affine3d transform;
+        bool moved;  // the transform is not the identity
+    };
+
+    // The meshes the nodes of the scene place, each under its parent's transformation, depth
+    // first with a stack of its own: a chain of a million nodes is a few lines of JSON.
+    std::vector<Placement> placements() {
         struct Placing {
             int node;
             Eigen::Affine3d parent;
-            bool moved;  // parent is not the identity
+            bool moved;
         };
         std::vector<Placing> stack;
+        std::vector<Placement> out;
         const std::vector<int> first = roots();
         for (auto r = first.rbegin(); r != first.rend(); ++r) {
             stack.push_back({*r, Eigen::Affine3d::Identity(), false});
@@ -210,20 +219,64 @@ private:
             const bool own = !n.matrix.empty() || !n.translation.empty() || !n.rotation.empty() ||
                              !n.scale.empty();
             const Eigen::Affine3d transform = own ? at.parent * local(n, k) : at.parent;
-            if (!transform.matrix().allFinite())
+            if (!transform.matrix().allFinite()) {
                 fail("nodes", k, "its transformation is not finite");
+            }
             const bool moved = at.moved || own;
-            if (n.mesh >= 0) mesh(std::size_t(n.mesh), transform, moved);
+            if (n.mesh >= 0) {
+                if (std::size_t(n.mesh) >= m_model.meshes.size()) {
+                    throw InputError(m_path, fmt::format("mesh {} does not exist", n.mesh));
+                }
+                out.push_back({std::size_t(n.mesh), transform, moved});
+            }
             for (auto c = n.children.rbegin(); c != n.children.rend(); ++c) {
                 stack.push_back({*c, transform, moved});
             }
         }
+        return out;
+    }
+
+    // An accessor's count, checked to lie in its buffer; 0 for one that does not exist (reading
+    // it then says so).
+    std::uint64_t count_of(int accessor) const {
+        if (accessor < 0 || std::size_t(accessor) >= m_model.accessors.size()) return 0;
+        const int type = m_model.accessors[std::size_t(accessor)].type;
+        return elements(accessor, "", type).count;
+    }
+
+    // Nodes may place one mesh any number of times: what they place is counted first, and
+    // refused above the limits before anything is read.
+    void check_size(const std::vector<Placement>& placed) const {
+        std::uint64_t triangles = 0, vertices = 0;
+        for (const Placement& at : placed) {
+            for (const tinygltf::Primitive& p : m_model.meshes[at.mesh].primitives) {
+                const auto position = p.attributes.find("POSITION");
+                const std::uint64_t v =
+                    position == p.attributes.end() ? 0 : count_of(position->second);
+                const std::uint64_t corners = p.indices >= 0 ? count_of(p.indices) : v;
+                vertices += v;
+                if (p.mode == TINYGLTF_MODE_TRIANGLES) {
+                    triangles += corners / 3;
+                } else if (corners >= 3) {
+                    triangles += corners - 2;
+                }
+            }
+            if (triangles > m_options.max_polygons || vertices > 3 * m_options.max_polygons) {
+                throw InputError(m_path,
+                                 fmt::format("its nodes place more than {} triangles or {} "
+                                             "vertices: hmcr reads no more",
+                                             m_options.max_polygons, 3 * m_options.max_polygons));
+            }
+        }
+    }
+
+    void place_all() {
+        const std::vector<Placement> placed = placements();
+        check_size(placed);
+        for (const Placement& at : placed) mesh(at.mesh, at.transform, at.moved);
     }
 
     void mesh(std::size_t index, const Eigen::Affine3d& transform, bool moved) {
-        if (index >= m_model.meshes.size()) {
-            throw InputError(m_path, fmt::format("mesh {} does not exist", index));
-        }
         const tinygltf::Mesh& mesh = m_model.meshes[index];
         const bool flip = moved && transform.linear().determinant() < 0;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
@@ -366,6 +419,7 @@ private:
     }
 
     std::string m_path;
+    GltfOptions m_options;
     PolygonSoup m_soup;
     tinygltf::Model m_model;
     std::vector<bool> m_placed;  // by node
@@ -374,6 +428,8 @@ private:
 
 }  // namespace
 
-PolygonSoup read_gltf(const fs::path& gltf) { return GltfReader(gltf).read(); }
+PolygonSoup read_gltf(const fs::path& gltf, const GltfOptions& options) {
+    return GltfReader(gltf, options).read();
+}
 
 }  // namespace hmcr

@@ -9,14 +9,22 @@
 // without a material has none (a scene file's default_material gives it one).
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 
 #include "meshes/polygon_soup.h"
 
 namespace hmcr {
 
+struct GltfOptions {
+    // Triangles the nodes may place (and three times as many vertices): a node placing a mesh
+    // is a dozen bytes of JSON, so a small file may place a large mesh any number of times.
+    // MGF's limit (meshes/mgf_reader.h).
+    std::size_t max_polygons = 50'000'000;
+};
+
 // The glTF's polygons and materials. Throws InputError "path: why" on a file that is not valid
 // glTF or not one hmcr reads; a face is placed as "path: face N", N counted over the scene.
-PolygonSoup read_gltf(const std::filesystem::path& gltf);
+PolygonSoup read_gltf(const std::filesystem::path& gltf, const GltfOptions& options = {});
 
 }  // namespace hmcr

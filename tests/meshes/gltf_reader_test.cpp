@@ -3,6 +3,8 @@
 // factors (base colour, metallic, emissive strength, doubleSided), nodes place and turn meshes;
 // .glb reads as .gltf; bad and hostile files are refused with one line naming the file and the
 // part of it.
+#include "meshes/gltf_reader.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -179,7 +181,8 @@ TEST(GltfReader, BadFilesAreRefusedNamingTheirPart) {
          "scene.gltf: accessors[1]: its elements do not lie in its buffer view and buffer"},
         {with("/accessors/0/componentType"_json_pointer, 5123),
          "scene.gltf: accessors[0]: POSITION must be float"},
-        {with("/accessors/1/type"_json_pointer, "VEC2"),
+        {with("/accessors/1"_json_pointer,
+              {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "VEC2"}}),
          "scene.gltf: accessors[1]: has the wrong type for meshes[0].primitives[0] indices"},
         {with("/accessors/1/count"_json_pointer, 5),
          "scene.gltf: meshes[0].primitives[0]: 5 indices are not triangles"},
@@ -210,6 +213,25 @@ TEST(GltfReader, IndicesOutOfRangeAreRefused) {
     bytes[48 + 2] = 7;  // the second index
     EXPECT_EQ(gltf_error(quad_gltf(), bytes),
               "scene.gltf: accessors[1]: index 7 is out of range (4 vertices)");
+}
+
+// Nodes that place one mesh many times are counted before anything is read.
+TEST(GltfReader, PlacingMoreThanTheLimitIsRefusedBeforeReading) {
+    json gltf = quad_gltf();
+    gltf["nodes"] = json::array();
+    for (int k = 0; k < 6; ++k) gltf["nodes"].push_back({{"mesh", 0}});
+    gltf["scenes"][0]["nodes"] = {0, 1, 2, 3, 4, 5};
+    SceneFiles files;
+    files.write("mesh.bin", quad_bytes());
+    const auto path = files.write("scene.gltf", gltf.dump());
+    GltfOptions options;
+    options.max_polygons = 12;  // the six quads' twelve triangles pass
+    EXPECT_EQ(read_gltf(path, options).polygon_count(), 6u);
+    options.max_polygons = 11;
+    EXPECT_EQ(scene_error([&] { read_gltf(path, options); }),
+              path.string() +
+                  ": its nodes place more than 11 triangles or 33 vertices: hmcr "
+                  "reads no more");
 }
 
 // What TinyGLTF refuses is one line naming the file.
