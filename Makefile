@@ -8,7 +8,8 @@ SANITIZE ?= OFF
 # Debian 12 packages hmcr builds, tests and plots with, each used by a target, a test or a script
 # (README.md: "Dependencies" says why each is there; docs/decisions.md what was left out).
 DEPS := g++ cmake make libpng-dev libembree-dev libopenmesh-dev libvtk9-dev libeigen3-dev \
-        libhwy-dev libtbb-dev libexpat1-dev libcli11-dev nlohmann-json3-dev libfmt-dev \
+        libhwy-dev libtinygltf-dev libtbb-dev libexpat1-dev libcli11-dev nlohmann-json3-dev \
+        libfmt-dev \
         libopenmpi-dev openmpi-bin libgtest-dev libboost-dev zlib1g-dev clang libclang-rt-14-dev \
         clang-format clang-tidy dpkg-dev python3 python3-matplotlib xvfb xauth \
         texlive-latex-recommended

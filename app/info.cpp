@@ -256,8 +256,8 @@ Command info_command(CLI::App& app) {
     auto* cmd = app.add_subcommand(
         "info", "information measures of a scene's patches (entropies, mutual information)");
     cmd->add_option("scene", a->scene,
-                    "bundled scene name, scene .json, .obj, .mgf, or a solution's .vtp (its "
-                    "cells)")
+                    "bundled scene name, scene .json, mesh (.obj .mgf .ply .gltf .glb), or a "
+                    "solution's .vtp (its cells)")
         ->required();
     cmd->add_option("--scene", a->solution_scene,
                     "with a .vtp: the scene it solves (checked against the solution)");

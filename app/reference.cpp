@@ -175,7 +175,9 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
         "reference",
         "a converged reference: points traced without a mesh (default), or a uniform mesh");
     ReferenceOptions& o = a->options;
-    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, .obj or .mgf")->required();
+    cmd->add_option("scene", a->scene,
+                    "bundled scene name, scene .json, or mesh (.obj .mgf .ply .gltf .glb)")
+        ->required();
     cmd->add_option("-o,--output", a->output, "output folder")->required();
     add_scene_flags(*cmd, a->scene_flags);
     cmd->add_option("--kind", a->kind,

@@ -131,7 +131,8 @@ Command solve_command(CLI::App& app, const std::string& command_line) {
     auto args = std::make_shared<SolveArgs>();
     auto* cmd = app.add_subcommand(
         "solve", "solve a scene and write its Gouraud mesh (.vtp + .json + .pvsm)");
-    cmd->add_option("scene", args->scene, "bundled scene name, scene .json, or .obj or .mgf file")
+    cmd->add_option("scene", args->scene,
+                    "bundled scene name, scene .json, or mesh (.obj .mgf .ply .gltf .glb)")
         ->required();
     cmd->add_option("-o,--output", args->output,
                     "output .vtp (default out/SCENE.vtp); the summary (.json) and a ParaView state "

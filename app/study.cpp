@@ -226,7 +226,9 @@ Command study_command(CLI::App& app) {
         "oracles at element budgets (--budgets) or pixel samplers at spp values (--samplers) "
         "against a reference: tables, images, plots");
     StudyOptions& o = a->options;
-    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, .obj or .mgf")->required();
+    cmd->add_option("scene", a->scene,
+                    "bundled scene name, scene .json, or mesh (.obj .mgf .ply .gltf .glb)")
+        ->required();
     cmd->add_option("--reference", o.reference,
                     "folder written by `hmcr reference` or `hmcr trace-reference`")
         ->required();

@@ -137,7 +137,8 @@ int run_trace(TraceArgs& a, const std::string& command_line) {
 Command trace_command(CLI::App& app, const std::string& command_line) {
     auto a = std::make_shared<TraceArgs>();
     auto* cmd = app.add_subcommand("trace", "path-trace a view, with adaptive supersampling");
-    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj or .mgf file")
+    cmd->add_option("scene", a->scene,
+                    "bundled scene name, scene .json, or mesh (.obj .mgf .ply .gltf .glb)")
         ->required();
     add_view_flag(*cmd, a->view);
     cmd->add_option("-o,--output", a->output,

@@ -56,7 +56,8 @@ Command trace_reference_command(CLI::App& app, const std::string& command_line) 
     auto a = std::make_shared<TraceReferenceArgs>();
     auto* cmd = app.add_subcommand(
         "trace-reference", "path-trace every view uniformly at many samples: a study's reference");
-    cmd->add_option("scene", a->scene, "bundled scene name, scene .json, or .obj or .mgf file")
+    cmd->add_option("scene", a->scene,
+                    "bundled scene name, scene .json, or mesh (.obj .mgf .ply .gltf .glb)")
         ->required();
     cmd->add_option("-o,--output", a->output, "output folder")->required();
     cmd->add_option("--spp", a->options.spp, "samples per pixel")->capture_default_str();

@@ -107,7 +107,7 @@ std::vector<Record> sorted_records(Faces& faces, const std::vector<int>& welded)
 // "on lines A and B" when both are in the file of `at`, else "at FILE:A and FILE:B".
 std::string places_of(const PolygonSoup& soup, SourcePlace a, SourcePlace b, SourcePlace at) {
     if (a.file == at.file && b.file == at.file)
-        return fmt::format("on lines {} and {}", a.line, b.line);
+        return fmt::format("on {}s {} and {}", soup.item_word(a.file), a.line, b.line);
     return fmt::format("at {} and {}", soup.where(a), soup.where(b));
 }
 

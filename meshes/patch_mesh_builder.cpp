@@ -53,7 +53,7 @@ Material face_material(const PolygonSoup& soup, std::int32_t id, std::size_t k,
     if (options.default_material) return *options.default_material;
     const std::string where = soup.where(soup.place[k]);
     if (id == PolygonSoup::kNoMaterial) {
-        throw InputError(where, "face has no material (no usemtl before it)");
+        throw InputError(where, fmt::format("face has no material ({})", soup.no_material));
     }
     throw InputError(where, fmt::format("face uses material {}, which no loaded material file "
                                         "defines",
@@ -89,8 +89,9 @@ void check_duplicates(const PolygonSoup& soup, const std::vector<int>& id,
     if (auto duplicate = find_duplicate_face(keys)) {
         const auto [later, earlier] = *duplicate;
         const SourcePlace a = soup.place[later], b = soup.place[earlier];
-        const std::string earlier_at =
-            a.file == b.file ? fmt::format("on line {}", b.line) : "at " + soup.where(b);
+        const std::string earlier_at = a.file == b.file
+                                           ? fmt::format("on {} {}", soup.item_word(b.file), b.line)
+                                           : "at " + soup.where(b);
         throw InputError(soup.where(a),
                          fmt::format("duplicate face: same vertices as the face {}{}", earlier_at,
                                      duplicate_detail(soup, id, later, earlier)));
@@ -212,8 +213,16 @@ void PolygonSoup::add_polygon(std::span<const std::uint32_t> ids, std::int32_t m
 }
 
 std::string PolygonSoup::where(SourcePlace p) const {
-    const std::string file = p.file < files.size() ? files[p.file].string() : "?";
-    return p.line == 0 ? file : at(file, int(p.line));
+    std::string file = p.file < files.size() ? files[p.file].string() : "?";
+    if (p.line == 0) return file;
+    const auto item = item_names.find(p.file);
+    if (item != item_names.end()) return fmt::format("{}: {} {}", file, item->second, p.line);
+    return at(file, int(p.line));
+}
+
+std::string PolygonSoup::item_word(std::uint32_t file) const {
+    const auto item = item_names.find(file);
+    return item == item_names.end() ? "line" : item->second;
 }
 
 void check_positions(const PolygonSoup& soup) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// What every mesh reader (OBJ, MGF) produces and the patch-mesh builder turns into a
+// What every mesh reader (OBJ, MGF, PLY, glTF) produces and the patch-mesh builder turns into a
 // validated PatchMesh: positions, polygons with their material and the place they were read
 // from, and materials with the places of their reflectance and emission. Errors found later
 // (a degenerate face, a reflectance of 1.2) are reported at those places.
@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,7 +18,7 @@
 
 namespace hmcr {
 
-// A line of one of the soup's files.
+// A line of one of the soup's files (or, in a file without lines, a numbered item of it).
 struct SourcePlace {
     std::uint32_t file = 0;  // index into PolygonSoup::files
     std::uint32_t line = 0;  // 1-based; 0: the file as a whole
@@ -41,6 +42,11 @@ struct PolygonSoup {
     std::vector<Eigen::Vector3d> positions;    // finite
     std::vector<SoupMaterial> materials;
     std::vector<std::string> warnings;  // "file:line: what", one line each
+    // Files without lines (a binary PLY, glTF), by index into files: there a place's `line`
+    // numbers an item, of the kind named here ("face"), and where() says "path: face 12".
+    std::map<std::uint32_t, std::string> item_names;
+    // Why a face may have no material, in the reader's terms, for the error when one has none.
+    std::string no_material = "no usemtl before it";
 
     // Polygon k: corners (indices into positions, counter-clockwise seen from the front),
     // material (index into materials, or kNoMaterial), the material of its back (the same, or
@@ -58,7 +64,9 @@ struct PolygonSoup {
     std::vector<std::int32_t> back;
     std::vector<SourcePlace> place;
 
-    std::string where(SourcePlace p) const;  // "path:line", or "path" for line 0
+    std::string where(SourcePlace p) const;  // "path:line", "path: face N", or "path" for 0
+    // What a place's `line` counts in the file: "line", or its item_names entry ("face").
+    std::string item_word(std::uint32_t file) const;
 };
 
 // Throws InputError at the place of the first polygon with a corner that check_position

@@ -3,7 +3,8 @@
 //
 // JSON scene file (keys other than these are an error, to catch typos):
 //   {
-//     "mesh": "cornell.obj",              required; relative to the JSON file; .obj or .mgf
+//     "mesh": "cornell.obj",              required; relative to the JSON file; a format of
+//                                         kMeshFormats (.obj, .mgf, .ply, .gltf, .glb)
 //     "description": "...",               optional string
 //     "views": [                          optional; each view:
 //       {"name": "camera",                  required, unique; it names files (views/camera.pfm),
@@ -34,13 +35,16 @@
 #include <cmath>
 #include <cstdlib>
 #include <set>
+#include <string_view>
 
 #include "common/data_directory.h"
 #include "common/file_names.h"
 #include "common/text_file.h"
+#include "meshes/gltf_reader.h"
 #include "meshes/material_sides.h"
 #include "meshes/mgf_reader.h"
 #include "meshes/obj_reader.h"
+#include "meshes/ply_reader.h"
 #include "meshes/repairs.h"
 #include "meshes/scene.h"
 #include "meshes/scene_bounds.h"
@@ -162,13 +166,45 @@ Material parse_default_material(const json& j, const std::string& file, bool str
     return m;
 }
 
-bool is_mesh_extension(const fs::path& path) {
-    return path.extension() == ".obj" || path.extension() == ".mgf";
+// The mesh formats, by extension: the one place a format is added.
+struct MeshFormat {
+    std::string_view extension;
+    PolygonSoup (*read)(const fs::path& path, const LoadOptions& options);
+};
+
+constexpr MeshFormat kMeshFormats[] = {
+    {".obj", [](const fs::path& path, const LoadOptions&) { return read_obj(path); }},
+    {".mgf",
+     [](const fs::path& path, const LoadOptions& options) {
+         MgfOptions mgf;
+         mgf.curve_segments = options.curve_segments.value_or(kDefaultCurveSegments);
+         return read_mgf(path, mgf);
+     }},
+    {".ply", [](const fs::path& path, const LoadOptions&) { return read_ply(path); }},
+    {".gltf", [](const fs::path& path, const LoadOptions&) { return read_gltf(path); }},
+    {".glb", [](const fs::path& path, const LoadOptions&) { return read_gltf(path); }},
+};
+
+const MeshFormat* find_mesh_format(const fs::path& path) {
+    const std::string extension = path.extension().string();
+    for (const MeshFormat& format : kMeshFormats) {
+        if (format.extension == extension) return &format;
+    }
+    return nullptr;
 }
 
+// ".obj, .mgf, ...": the formats a message offers.
+std::string mesh_extensions() {
+    std::vector<std::string_view> extensions;
+    for (const MeshFormat& format : kMeshFormats) extensions.push_back(format.extension);
+    return fmt::format("{}", fmt::join(extensions, ", "));
+}
+
+std::string formats_read() { return fmt::format("hmcr reads meshes of {}", mesh_extensions()); }
+
 void check_mesh_extension(const fs::path& mesh, const std::string& where) {
-    if (!is_mesh_extension(mesh)) {
-        fail(where, fmt::format("mesh {}: hmcr reads .obj and .mgf meshes", quote(mesh.string())));
+    if (find_mesh_format(mesh) == nullptr) {
+        fail(where, fmt::format("mesh {}: {}", quote(mesh.string()), formats_read()));
     }
 }
 
@@ -263,10 +299,10 @@ Scene load_mesh_scene(const fs::path& path, LoadOptions options) {
 Scene load_file(const fs::path& path, const LoadOptions& options) {
     const std::string extension = path.extension().string();
     if (extension == ".json") return load_json_scene(path, path.stem().string(), options);
-    if (is_mesh_extension(path)) return load_mesh_scene(path, options);
-    fail(path.string(), fmt::format("unknown extension '{}': give a .json scene, an .obj or .mgf "
-                                    "mesh or a bundled scene name ({})",
-                                    extension, bundled_list()));
+    if (find_mesh_format(path) != nullptr) return load_mesh_scene(path, options);
+    fail(path.string(), fmt::format("unknown extension {}: give a .json scene, a mesh ({}) or a "
+                                    "bundled scene name ({})",
+                                    quote(extension), mesh_extensions(), bundled_list()));
 }
 
 // Tells the reader's warnings, repairs the soup unless strict (telling the repairs' warnings),
@@ -312,15 +348,9 @@ const View& find_view(const Scene& scene, const std::string& name) {
 }
 
 MeshReport load_mesh(const fs::path& path, const LoadOptions& options, PatchMesh& mesh) {
-    if (path.extension() == ".mgf") {
-        MgfOptions mgf;
-        mgf.curve_segments = options.curve_segments.value_or(kDefaultCurveSegments);
-        return load_soup(read_mgf(path, mgf), options, mesh);
-    }
-    if (path.extension() != ".obj") {
-        throw InputError(path.string(), "hmcr reads .obj and .mgf meshes");
-    }
-    return load_soup(read_obj(path), options, mesh);
+    const MeshFormat* format = find_mesh_format(path);
+    if (format == nullptr) throw InputError(path.string(), formats_read());
+    return load_soup(format->read(path, options), options, mesh);
 }
 
 MeshFile load_mesh(const fs::path& path, const LoadOptions& options) {

@@ -217,7 +217,7 @@ TEST_F(Hostile, BadSceneFilesAreRefusedWithFileAndPlace) {
         {R"({"mesh": "plates.obj", "solver": {"stop": 2}})", "plates.json: solver.stop: "},
         {R"({"mesh": "plates.obj", "solver": {"threads": 2}})", "unknown setting 'threads'"},
         {R"({"mesh": "none.obj"})", "none.obj: no such file"},
-        {R"({"mesh": "plates.ply"})", "hmcr reads .obj and .mgf meshes"},
+        {R"({"mesh": "plates.stl"})", "hmcr reads meshes of .obj, .mgf, .ply, .gltf, .glb"},
         // JSON strings may hold control characters: the message escapes them and stays one
         // line (found by the scene fuzz target).
         {R"({"mesh": "plates.obj", "descriptio\n": 1})", "unknown key 'descriptio\\n'"},
@@ -229,7 +229,7 @@ TEST_F(Hostile, BadSceneFilesAreRefusedWithFileAndPlace) {
         // characters made a message of 2,333).
         {R"({"mesh": ")" + std::string(3000, 'm') + R"(.obj"})", "mmm...mmm"},
         {R"({"mesh": ")" + std::string(3000, 'm') + R"(.obj"})", "mmm.obj: no such file"},
-        {R"({"mesh": ")" + std::string(3000, 'm') + R"(.ply"})", "hmcr reads .obj and .mgf"},
+        {R"({"mesh": ")" + std::string(3000, 'm') + R"(.stl"})", "hmcr reads meshes of .obj"},
     };
     for (const auto& [json, needle] : cases) {
         plates(kPlatesObj, kPlatesMtl, json);

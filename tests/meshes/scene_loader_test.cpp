@@ -215,10 +215,11 @@ TEST(SceneLoader, UnknownNameListsBundledScenes) {
     EXPECT_EQ(scene_error([] { load_scene("nothing"); }),
               "nothing: no such file or bundled scene (bundled scenes: box, room)");
     EXPECT_TRUE(contains(scene_error([] { load_scene("missing.json"); }), "box, room"));
-    const auto ply = files.write("mesh.ply", "ply\n");
-    EXPECT_TRUE(contains(scene_error([&] { load_scene(ply.string()); }),
-                         "mesh.ply: unknown extension '.ply'"));
-    EXPECT_TRUE(contains(scene_error([&] { load_scene(ply.string()); }), "box, room"));
+    // The extensions offered are the formats table's.
+    const auto stl = files.write("mesh.stl", "solid\n");
+    EXPECT_TRUE(contains(scene_error([&] { load_scene(stl.string()); }),
+                         "mesh.stl: unknown extension '.stl': give a .json scene, a mesh (.obj, "
+                         ".mgf, .ply, .gltf, .glb) or a bundled scene name (box, room)"));
 }
 
 TEST(SceneLoader, EveryBundledSceneLoads) {
