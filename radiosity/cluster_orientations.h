@@ -20,7 +20,7 @@ public:
     // kBins of them, each some 13 degrees across.
     static constexpr std::uint32_t kGrid = 16;
     static constexpr std::uint32_t kBins = kGrid * kGrid;
-    static std::uint16_t bin(const Vec3& facing_normal);
+    static std::uint16_t bin(const Vec3& n);  // n: a facing normal, of any length
 
     // One child of a cluster as add_cluster takes it: a cluster (by index) or a side (by its
     // value 2 * patch + side, with its area and the normal it faces by).
