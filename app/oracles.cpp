@@ -3,7 +3,7 @@
 #include <fmt/core.h>
 
 #include "app/command.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 
 namespace hmcr {
 

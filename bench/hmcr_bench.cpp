@@ -28,7 +28,7 @@
 #include "bench/control_variate.h"
 #include "bench/scaling.h"
 #include "common/atomic_file.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/solver_options.h"
 
 namespace hmcr::bench {

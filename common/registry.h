@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// A registry of plug-ins by name: the refinement oracles (oracles/registry.h) and the pixel
-// criteria (trace/criteria/registry.h) are each one. A name is resolved once, where it is read
-// (a flag, a scene file; find_named of common/error.h), and from there on the code holds the
+// A registry of plug-ins by name: the refinement oracles (radiosity/oracle_registry.h) and the
+// pixel criteria (trace/criteria/registry.h) are each one. A name is resolved once, where it is
+// read (a flag, a scene file; find_named of common/error.h), and from there on the code holds the
 // plug-in itself.
 #pragma once
 

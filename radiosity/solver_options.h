@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "meshes/view.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "rays/sobol.h"
 
 namespace hmcr {

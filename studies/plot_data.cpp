@@ -11,7 +11,7 @@
 
 #include "common/error.h"
 #include "common/text_file.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "studies/cell_errors.h"
 #include "studies/mean_se.h"
 #include "trace/criteria/registry.h"

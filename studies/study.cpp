@@ -18,7 +18,7 @@
 #include "common/text_file.h"
 #include "image/image.h"
 #include "meshes/scene.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/solver_settings.h"
 #include "rays/patch.h"
 #include "studies/cell_handout.h"

@@ -121,7 +121,7 @@ def plugin_entries(registry, folder, doc):
                             f"{src.relative_to(root)}: {paper!r}")
 
 
-plugin_entries("oracles/registry.cpp", "oracles", "docs/oracles.md")
+plugin_entries("radiosity/oracle_registry.cpp", "oracles", "docs/oracles.md")
 plugin_entries("trace/criteria/registry.cpp", "trace/criteria", "docs/criteria.md")
 
 # 4. ParaView without what would remove libvtk9-dev: `make view-deps`, and no doc that installs

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "information/scene_information.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/shaded_mesh.h"
 #include "radiosity/solver.h"
 #include "tests/support/information.h"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 
 namespace hmcr::test {
 namespace {

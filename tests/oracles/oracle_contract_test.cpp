@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "common/error.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "rays/rng.h"
 
 namespace hmcr::test {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "rays/rng.h"
 
 namespace hmcr::test {

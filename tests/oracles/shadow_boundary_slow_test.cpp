@@ -44,7 +44,7 @@
 
 #include "common/error.h"
 #include "meshes/scene.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/solver.h"
 #include "tests/support/plugins.h"
 

@@ -13,7 +13,7 @@
 
 #include "common/error.h"
 #include "meshes/scene.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 
 namespace hmcr::test {
 namespace {

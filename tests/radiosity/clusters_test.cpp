@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "meshes/scene.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/refinement.h"
 #include "radiosity/solver.h"
 #include "rays/embree_scene.h"

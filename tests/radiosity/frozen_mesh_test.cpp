@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/solver.h"
 #include "tests/support/analytic.h"
 #include "tests/support/statistics.h"

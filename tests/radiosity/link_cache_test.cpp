@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "meshes/scene.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/solver.h"
 
 namespace hmcr::test {

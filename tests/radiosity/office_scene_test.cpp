@@ -7,7 +7,7 @@
 #include <string>
 
 #include "meshes/scene.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/solver.h"
 #include "tests/support/temp_dir.h"
 

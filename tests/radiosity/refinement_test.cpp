@@ -15,8 +15,8 @@
 
 #include "common/error.h"
 #include "meshes/scene.h"
-#include "oracles/registry.h"
 #include "radiosity/leaf_index.h"
+#include "radiosity/oracle_registry.h"
 #include "rays/embree_scene.h"
 #include "rays/rng.h"
 #include "tests/support/plugins.h"

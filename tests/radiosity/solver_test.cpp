@@ -10,7 +10,7 @@
 #include <set>
 
 #include "meshes/scene.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/solver_settings.h"
 #include "tests/support/analytic.h"
 #include "tests/support/energy_balance.h"

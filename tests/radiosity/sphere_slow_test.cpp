@@ -13,7 +13,7 @@
 
 #include <cmath>
 
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "radiosity/solver.h"
 #include "tests/support/statistics.h"
 #include "tests/support/test_scenes.h"

@@ -15,8 +15,8 @@
 // seed's identical mesh; they count as B = 0 and are bounded here, not hidden.
 #include <gtest/gtest.h>
 
-#include "oracles/registry.h"
 #include "radiosity/budget_search.h"
+#include "radiosity/oracle_registry.h"
 #include "studies/reference.h"
 
 namespace hmcr::test {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 #include "trace/criteria/registry.h"
 
 namespace hmcr::test {

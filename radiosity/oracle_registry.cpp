@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "oracles/registry.h"
+#include "radiosity/oracle_registry.h"
 
 namespace hmcr {
 

@@ -8,7 +8,7 @@
 
 namespace hmcr {
 
-// Every refinement oracle (oracles/registry.cpp: one line per oracle).
+// Every refinement oracle (radiosity/oracle_registry.cpp: one line per oracle).
 const Registry<Oracle>& oracle_registry();
 
 }  // namespace hmcr
