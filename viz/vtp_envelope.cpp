@@ -110,6 +110,7 @@ public:
             for (const std::uint64_t offset : header.offsets) check_array(appended, offset);
         }
         check_cells(header.cell_arrays);
+        for (const VtpStringArray& a : header.string_arrays) check_strings(a);
     }
 
 private:
@@ -255,6 +256,29 @@ private:
         }
     }
 
+    // VTK keeps each string of a String array up to its '\0': the values must end one string
+    // for each place the array has.
+    void check_strings(const VtpStringArray& a) const {
+        std::uint64_t ends = 0;
+        bool ended = true;  // the values so far end a string
+        if (a.format == "ascii") {
+            ascii_values(a.text, "String array " + quote(a.name), [&](std::uint64_t v, bool) {
+                ends += v == 0;
+                ended = v == 0;
+            });
+        } else {
+            const Stored s = a.format == "appended" ? m_appended : inline_binary(a.text);
+            if (a.format == "binary") check_array(s, 0);
+            const std::string bytes = values(s, a.offset, "String array " + quote(a.name));
+            ends = std::uint64_t(std::count(bytes.begin(), bytes.end(), '\0'));
+            ended = bytes.empty() || bytes.back() == '\0';
+        }
+        if (ends != a.strings || !ended) {
+            fail(fmt::format("String array {} holds {} strings{}; it has places for {}",
+                             quote(a.name), ends, ended ? "" : " and more", a.strings));
+        }
+    }
+
     IntType integers(const VtpCellArray& a) const {
         const auto type = int_type(a.type);
         if (!type) {
@@ -266,10 +290,12 @@ private:
     static const char* name(const VtpCellArray& a) {
         return a.offsets ? "offsets" : "connectivity";
     }
+    static std::string what(const VtpCellArray& a) {
+        return fmt::format("{} {}", a.section, name(a));
+    }
 
     // An inline binary array: its text without the white space before it.
-    static Stored inline_binary(const VtpCellArray& a) {
-        std::string_view text = a.text;
+    static Stored inline_binary(std::string_view text) {
         while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) {
             text.remove_prefix(1);
         }
@@ -280,10 +306,10 @@ private:
         const IntType type = integers(a);
         if (a.format == "ascii") {
             std::uint64_t n = 0;
-            ascii_values(a, [&](std::uint64_t, bool) { ++n; });
+            ascii_values(a.text, what(a), [&](std::uint64_t, bool) { ++n; });
             return n;
         }
-        const Stored s = a.format == "appended" ? m_appended : inline_binary(a);
+        const Stored s = a.format == "appended" ? m_appended : inline_binary(a.text);
         if (a.format == "binary") check_array(s, 0);
         return value_bytes(s, a.offset) / type.width;
     }
@@ -292,13 +318,13 @@ private:
         const IntType type = integers(a);
         Extent e;
         if (a.format == "ascii") {
-            ascii_values(a, [&](std::uint64_t v, bool negative) {
+            ascii_values(a.text, what(a), [&](std::uint64_t v, bool negative) {
                 e.negative |= negative;
                 e.add(v);
             });
             return e;
         }
-        const Stored s = a.format == "appended" ? m_appended : inline_binary(a);
+        const Stored s = a.format == "appended" ? m_appended : inline_binary(a.text);
         if (a.format == "binary") check_array(s, 0);
         const std::string bytes = values(s, a.offset, fmt::format("its {} offsets", a.section));
         for (std::size_t at = 0; at + type.width <= bytes.size(); at += type.width) {
@@ -311,10 +337,9 @@ private:
         return e;
     }
 
-    // Calls f(value, negative) for each number of an ascii array; refuses anything else.
+    // Calls f(value, negative) for each number of an ascii array's text; refuses anything else.
     template <class F>
-    void ascii_values(const VtpCellArray& a, F f) const {
-        std::string_view text = a.text;
+    void ascii_values(std::string_view text, const std::string& what, F f) const {
         while (true) {
             const std::size_t first = text.find_first_not_of(" \t\r\n\v\f");
             if (first == std::string_view::npos) return;
@@ -326,7 +351,7 @@ private:
             const auto digits = word.substr(negative ? 1 : 0);
             const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
             if (ec != std::errc() || end != digits.data() + digits.size()) {
-                fail(fmt::format("its {} {} hold {}, not an integer", a.section, name(a),
+                fail(fmt::format("its {} hold {}, not an integer", what,
                                  quote(std::string(word.substr(0, 40)))));
             }
             f(v, negative && v != 0);

@@ -135,13 +135,13 @@ private:
     static void XMLCALL on_end(void* self, const XML_Char* name) {
         HeaderReader& reader = *static_cast<HeaderReader*>(self);
         reader.m_in_points = false;
-        reader.m_collecting = false;
+        reader.m_collecting = nullptr;
         if (is_data_section(name)) reader.m_section.clear();
         if (is_cell_section(name)) reader.m_cell_section.clear();
     }
     static void XMLCALL on_text(void* self, const XML_Char* text, int length) {
         HeaderReader& reader = *static_cast<HeaderReader*>(self);
-        if (reader.m_collecting) reader.header.cell_arrays.back().text.append(text, length);
+        if (reader.m_collecting) reader.m_collecting->append(text, length);
     }
     static void XMLCALL on_doctype(void* self, const XML_Char*, const XML_Char*, const XML_Char*,
                                    int) {
@@ -178,7 +178,19 @@ private:
             m_cell_section = element;
             ++m_cell_groups;
         }
+        if (element == "Piece") piece(attributes);
         m_in_points = element == "Points";
+    }
+
+    // The counts of a piece, which size its PointData and CellData arrays (checked as counts).
+    void piece(const XML_Char** attributes) {
+        const auto count = [&](std::string_view name) -> std::uint64_t {
+            const char* value = attribute_value(attributes, name);
+            return value ? std::stoull(std::string(plain_digits(value))) : 0;
+        };
+        m_piece_points = count("NumberOfPoints");
+        m_piece_cells = count("NumberOfVerts") + count("NumberOfLines") + count("NumberOfStrips") +
+                        count("NumberOfPolys");
     }
 
     // An array's type, the points' components, and the array's name in its data section.
@@ -213,6 +225,46 @@ private:
             (std::string_view(name) == "offsets" || std::string_view(name) == "connectivity")) {
             return cell_array(name, type, attributes);
         }
+        if (std::string_view(type) == "String") return string_array(name, attributes);
+        return true;
+    }
+
+    // Where an array's values are: its format, and its offset when appended.
+    bool place(const std::string& what, const XML_Char** attributes, std::string& format,
+               std::uint64_t& offset) {
+        const char* f = attribute_value(attributes, "format");
+        format = f ? f : "";
+        if (format == "appended") {
+            const char* at = attribute_value(attributes, "offset");
+            if (!at) return refuse(fmt::format("its {} have no offset", what));
+            offset = std::stoull(std::string(plain_digits(at)));  // checked as read
+        } else if (format != "binary" && format != "ascii") {
+            return refuse(
+                fmt::format("its {} are of format {}, not one VTK reads", what, quote(format)));
+        }
+        return true;
+    }
+
+    // A String array, kept for the envelope's count of its strings. FieldData arrays are sized
+    // by their NumberOfTuples, PointData and CellData arrays by their piece.
+    bool string_array(const char* name, const XML_Char** attributes) {
+        VtpStringArray a;
+        a.name = name ? shown_name(name) : "";
+        const std::string what = "String array " + quote(a.name) + "'s values";
+        if (!place(what, attributes, a.format, a.offset)) return false;
+        const char* tuples = attribute_value(attributes, "NumberOfTuples");
+        const char* components = attribute_value(attributes, "NumberOfComponents");
+        std::uint64_t count = m_section == "PointData" ? m_piece_points : m_piece_cells;
+        if (m_section != "PointData" && m_section != "CellData") {
+            if (!tuples) {
+                return refuse(fmt::format("String array {} has no NumberOfTuples", quote(a.name)));
+            }
+            count = std::stoull(std::string(plain_digits(tuples)));  // checked as read
+        }
+        a.strings = count * (components ? std::stoull(std::string(plain_digits(components))) : 1);
+        header.string_arrays.push_back(std::move(a));
+        if (header.string_arrays.back().format != "appended")
+            m_collecting = &header.string_arrays.back().text;
         return true;
     }
 
@@ -223,18 +275,11 @@ private:
         a.group = m_cell_groups;
         a.offsets = name == "offsets";
         a.type = type;
-        const char* format = attribute_value(attributes, "format");
-        a.format = format ? format : "";
-        if (a.format == "appended") {
-            const char* offset = attribute_value(attributes, "offset");
-            if (!offset) return refuse(fmt::format("its {} {} have no offset", a.section, name));
-            a.offset = std::stoull(std::string(plain_digits(offset)));  // checked as read
-        } else if (a.format != "binary" && a.format != "ascii") {
-            return refuse(fmt::format("its {} {} are of format {}, not one VTK reads", a.section,
-                                      name, quote(a.format)));
-        }
-        m_collecting = a.format != "appended";
+        if (!place(fmt::format("{} {}", a.section, name), attributes, a.format, a.offset))
+            return false;
         header.cell_arrays.push_back(std::move(a));
+        if (header.cell_arrays.back().format != "appended")
+            m_collecting = &header.cell_arrays.back().text;
         return true;
     }
 
@@ -307,7 +352,9 @@ private:
     std::uint64_t m_largest_count = 0;      // the largest count of tuples, points or cells so far
     std::string m_cell_section;             // the cell section being read, if any
     std::size_t m_cell_groups = 0;          // cell sections started so far
-    bool m_collecting = false;              // the text read is the last cell array's
+    std::string* m_collecting = nullptr;    // where the text read goes: an inline array's
+    std::uint64_t m_piece_points = 0;       // the piece being read: its NumberOfPoints
+    std::uint64_t m_piece_cells = 0;        // and its cells, of every section
     std::string m_error;
 };
 

@@ -24,6 +24,17 @@ struct VtpCellArray {
     std::string text;          // binary or ascii: the element's character data
 };
 
+// A String array. VTK 9.1 sizes it by its declared count but stores every string its values
+// hold, writing past its end for values of more strings (found by the fuzzer), so its strings
+// are counted (vtp_envelope.h).
+struct VtpStringArray {
+    std::string name;           // its Name, for messages
+    std::string format;         // "appended", "binary" or "ascii"
+    std::uint64_t offset = 0;   // appended: where in the appended data
+    std::string text;           // binary or ascii: the element's character data
+    std::uint64_t strings = 0;  // components times tuples: the strings VTK sizes it for
+};
+
 struct VtpHeader {
     bool compressed = false;       // a `compressor` attribute: arrays are in blocks
     std::string compressor;        // its value: VTK's compressor class
@@ -32,6 +43,7 @@ struct VtpHeader {
     std::size_t data = std::string_view::npos;  // the '_' marker of the appended data, if any
     std::vector<std::uint64_t> offsets;         // every `offset` attribute, in file order
     std::vector<VtpCellArray> cell_arrays;      // in file order
+    std::vector<VtpStringArray> string_arrays;  // in file order
 };
 
 // Reads the header of the .vtp whose bytes are `bytes`. Throws InputError "path: damaged VTK
@@ -39,8 +51,9 @@ struct VtpHeader {
 // .vtp of hmcr holds, an array without one of VTK's types, points of other than 3 components, a
 // count (`NumberOf...`) or offset that is not a plain number, a count (or components times
 // the largest count) beyond what zlib's largest ratio could expand the file to, a cell
-// section's offsets or connectivity of a format VTK does not read or without its offset, and
-// appended data without its '_' marker.
+// section's offsets or connectivity, or a String array, of a format VTK does not read or
+// without its offset, a FieldData String array without NumberOfTuples, and appended data
+// without its '_' marker.
 VtpHeader read_vtp_header(const std::string& path, std::string_view bytes);
 
 // zlib's largest expansion is about 1032:1; a file declaring more than this many times its size

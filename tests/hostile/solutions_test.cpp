@@ -18,6 +18,8 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
+#include <vector>
 
 #include "tests/hostile/hostile.h"
 
@@ -313,9 +315,10 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
 // VTK makes a cell array's connectivity as long as its last offset says, whatever the
 // connectivity holds: one byte of an offset changed asked for 10^17 bytes (AddressSanitizer,
 // fuzzer). Every way VTK stores an array is checked, and each is read when it is sound.
-TEST_F(HostileSolution, OffsetsBeyondTheConnectivityAreRefusedBeforeReading) {
-    using Mode = std::function<void(vtkXMLPolyDataWriter*)>;
-    const std::pair<std::string, Mode> modes[] = {
+// Every way VTK's writer stores arrays: compressed three ways, raw, base64, inline and ascii.
+using WriterMode = std::function<void(vtkXMLPolyDataWriter*)>;
+const std::vector<std::pair<std::string, WriterMode>>& writer_modes() {
+    static const std::vector<std::pair<std::string, WriterMode>> modes = {
         {"zlib", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToZLib(); }},
         {"lz4", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToLZ4(); }},
         {"lzma", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToLZMA(); }},
@@ -333,7 +336,11 @@ TEST_F(HostileSolution, OffsetsBeyondTheConnectivityAreRefusedBeforeReading) {
         {"binary", [](vtkXMLPolyDataWriter* w) { w->SetDataModeToBinary(); }},
         {"ascii", [](vtkXMLPolyDataWriter* w) { w->SetDataModeToAscii(); }},
     };
-    for (const auto& [mode, configure] : modes) {
+    return modes;
+}
+
+TEST_F(HostileSolution, OffsetsBeyondTheConnectivityAreRefusedBeforeReading) {
+    for (const auto& [mode, configure] : writer_modes()) {
         for (const bool spoil : {false, true}) {
             vtkNew<vtkXMLPolyDataReader> reader;
             reader->SetFileName((dir() / "good.vtp").c_str());
@@ -358,6 +365,37 @@ TEST_F(HostileSolution, OffsetsBeyondTheConnectivityAreRefusedBeforeReading) {
                 expect_refused(name, name +
                                          ": damaged VTK file: its Polys offsets reach "
                                          "4000000000000, but its connectivity holds");
+            } else {
+                accepted("info " + name + " --scene plates.json --lines 1000");
+            }
+        }
+    }
+}
+
+// A String array whose values hold more strings than it has places: VTK 9.1 writes the strings
+// past the array's end (found by the fuzzer).
+TEST_F(HostileSolution, StringArraysOfMoreStringsThanPlacesAreRefusedBeforeReading) {
+    for (const auto& [mode, configure] : writer_modes()) {
+        for (const bool spoil : {false, true}) {
+            vtkNew<vtkXMLPolyDataReader> reader;
+            reader->SetFileName((dir() / "good.vtp").c_str());
+            reader->Update();
+            vtkPolyData* data = reader->GetOutput();
+            vtkNew<vtkStringArray> note;
+            note->SetName("Note");
+            // The writer stores a string's bytes and then its end: one more inside makes two.
+            note->InsertNextValue(spoil ? std::string("one\0two", 7) : std::string("one"));
+            data->GetFieldData()->AddArray(note);
+            const std::string name = mode + (spoil ? "-strings.vtp" : "-string.vtp");
+            vtkNew<vtkXMLPolyDataWriter> writer;
+            writer->SetFileName((dir() / name).c_str());
+            writer->SetInputData(data);
+            configure(writer);
+            ASSERT_EQ(writer->Write(), 1) << name;
+            if (spoil) {
+                expect_refused(name, name +
+                                         ": damaged VTK file: String array 'Note' holds 2 "
+                                         "strings; it has places for 1");
             } else {
                 accepted("info " + name + " --scene plates.json --lines 1000");
             }
