@@ -61,8 +61,11 @@ T json_value([[maybe_unused]] const Setting<T>& s, const json& j) {
                                       std::numeric_limits<T>::is_signed);
         if (!whole) throw InputError("must be a whole number in range" + got(j));
         if constexpr (std::is_signed_v<T>) {
-            const auto v = j.is_number_unsigned() ? std::numeric_limits<std::int64_t>::max()
-                                                  : j.get<std::int64_t>();
+            // An unsigned number beyond int64's range is out of every signed setting's.
+            const std::uint64_t largest = std::numeric_limits<std::int64_t>::max();
+            const auto v = j.is_number_unsigned()
+                               ? std::int64_t(std::min(j.get<std::uint64_t>(), largest))
+                               : j.get<std::int64_t>();
             if (v < std::numeric_limits<T>::min() || v > std::numeric_limits<T>::max()) {
                 throw InputError("must be a whole number in range" + got(j));
             }

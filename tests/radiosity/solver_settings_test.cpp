@@ -48,6 +48,20 @@ TEST(SolverSettings, SceneValuesApply) {
     EXPECT_EQ(o.max_depth, SolverOptions{}.max_depth);  // not given: untouched
 }
 
+// Whole numbers read from a file's text are JSON's unsigned ones: a signed setting takes them.
+TEST(SolverSettings, SignedSettingsTakeTheWholeNumbersOfAFile) {
+    SolverOptions o;
+    apply_scene_settings(json::parse(R"({"lines": 4, "max_depth": 3})"), "scene.json", o);
+    EXPECT_EQ(o.lines, 4);
+    EXPECT_EQ(o.max_depth, 3);
+    for (const char* text :
+         {R"({"max_depth": 4294967296})", R"({"lines": 18446744073709551615})"}) {
+        EXPECT_NE(solver_error(json::parse(text)).find("must be a whole number in range"),
+                  std::string::npos)
+            << text;
+    }
+}
+
 // Every bad value is refused with the file and the key, never rounded, wrapped or clamped.
 TEST(SolverSettings, BadSceneValuesAreRefusedWithFileAndKey) {
     for (const json& rays : {json(-5), json(1e30), json(2.5), json("abc"), json(0)}) {
