@@ -12,6 +12,7 @@ DEPS := g++ cmake make libpng-dev libembree-dev libopenmesh-dev libvtk9-dev libe
         libfmt-dev \
         libopenmpi-dev openmpi-bin libgtest-dev libboost-dev zlib1g-dev clang libclang-rt-14-dev \
         clang-format clang-tidy dpkg-dev python3 python3-matplotlib xvfb xauth \
+        pybind11-dev python3-dev python3-numpy python3-pytest \
         texlive-latex-recommended
 
 SANITIZE_BUILD ?= build-sanitize
@@ -68,7 +69,7 @@ run: deps $(BUILD)/CMakeCache.txt
 # hmcr alone, installed: PREFIX/bin/hmcr and PREFIX/share/hmcr (the scenes, their generators and
 # the plotting script), which the installed program finds beside itself.
 install: deps $(BUILD)/CMakeCache.txt
-	cmake --build $(BUILD) -j $(JOBS) --target hmcr
+	cmake --build $(BUILD) -j $(JOBS) --target hmcr_installed
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
 # hmcr built and installed without what only the tests need (docs/testing.md): NOTESTS_BUILD
@@ -78,7 +79,8 @@ install: deps $(BUILD)/CMakeCache.txt
 NOTESTS_BUILD ?= build-notests
 check-without-tests: deps
 	cmake -S . -B $(NOTESTS_BUILD) -DCMAKE_BUILD_TYPE=$(TYPE) -DBUILD_TESTING=OFF \
-	  -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_Python3=ON
+	  -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_Python3=ON \
+	  -DCMAKE_DISABLE_FIND_PACKAGE_pybind11=ON
 	cmake --build $(NOTESTS_BUILD) -j $(JOBS) --target hmcr
 	sh tests/install/install_test.sh . $(NOTESTS_BUILD)
 

@@ -78,6 +78,11 @@ void check_positions(const PolygonSoup& soup);
 // checked (geometry, material), no duplicate faces, an emitter when the scene is to be solved.
 // Throws InputError at the place of the first problem.
 PatchMesh build_patch_mesh(const PolygonSoup& soup, const LoadOptions& options);
+
+// A scene of the soup, loaded as a mesh file's (its warnings told, repaired unless
+// options.strict, validated), named `name`, with the default view: a program's own polygons (the
+// Python module's arrays). Throws InputError at the place of the first problem.
+Scene load_soup_scene(const std::string& name, PolygonSoup soup, const LoadOptions& options);
 // The same built into `mesh`, which must be empty, with the soup's welding, weld(soup.positions),
 // already made.
 void build_patch_mesh(const PolygonSoup& soup, const Welding& welding, const LoadOptions& options,

@@ -112,6 +112,10 @@ Scene load_scene(const std::string& name_or_path, SceneUse use = SceneUse::solve
 // The same with every load option (default_material is ignored: a scene file sets it).
 Scene load_scene(const std::string& name_or_path, const LoadOptions& options);
 
+// Views given as a scene file's "views" array, checked as a scene file's are: throws InputError
+// "WHERE: views[i] ('name'): why".
+std::vector<View> read_views(const nlohmann::json& views, const std::string& where);
+
 // The view called name (the first view for ""); throws InputError listing the views.
 const View& find_view(const Scene& scene, const std::string& name);
 

@@ -335,6 +335,22 @@ MeshReport load_soup(PolygonSoup soup, const LoadOptions& options, PatchMesh& me
 
 }  // namespace
 
+std::vector<View> read_views(const json& views, const std::string& where) {
+    return parse_views(views, where);
+}
+
+Scene load_soup_scene(const std::string& name, PolygonSoup soup, const LoadOptions& options) {
+    Scene scene;
+    scene.name = name;
+    scene.strict = options.strict;
+    MeshReport report = load_soup(std::move(soup), options, scene.mesh);
+    scene.warnings = std::move(report.warnings);
+    scene.repairs = std::move(report.repairs);
+    scene.views.push_back(default_view(scene.mesh));
+    scene.default_views = true;
+    return scene;
+}
+
 const View& find_view(const Scene& scene, const std::string& name) {
     if (scene.views.empty()) throw InputError(scene.name + " has no views");
     if (name.empty()) return scene.views.front();

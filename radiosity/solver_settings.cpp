@@ -170,6 +170,42 @@ void apply_scene_settings(const json& solver, const std::string& where, SolverOp
     }
 }
 
+void apply_settings(const json& values, SolverOptions& options) {
+    std::set<std::string> known;
+    for_each_setting(
+        [&](const auto& setting, auto&) {
+            if (setting.scope != SettingScope::internal) known.emplace(setting.name);
+        },
+        options);
+    for (const auto& [key, value] : values.items()) {
+        if (known.count(key) == 0) {
+            throw InputError(fmt::format("unknown setting {} (settings: {})", quote(key),
+                                         fmt::join(known, ", ")));
+        }
+    }
+    for_each_setting(
+        [&](const auto& setting, auto& field) {
+            using T = std::remove_reference_t<decltype(field)>;
+            const std::string key(setting.name);
+            if (setting.scope == SettingScope::internal || !values.contains(key)) return;
+            T value;
+            const json& given = values.at(key);
+            if constexpr (NamedSetting<T>) {  // a name: the flag's own message if it is none
+                if (!given.is_string()) throw InputError(key, "must be a string");
+                value = parse_named(setting, given.get<std::string>());
+            } else {
+                try {
+                    value = json_value<T>(setting, given);
+                } catch (const InputError& e) {
+                    throw InputError(key, e.what());
+                }
+            }
+            check(setting, value);
+            field = value;
+        },
+        options);
+}
+
 json settings_json(const SolverOptions& options) {
     json j = json::object();
     for_each_setting(

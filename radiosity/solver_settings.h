@@ -49,6 +49,11 @@ void validate(const SolverOptions& options);
 void apply_scene_settings(const nlohmann::json& solver, const std::string& where,
                           SolverOptions& options);
 
+// Applies settings by name, every user's setting (command-line ones too): a program's keywords (the
+// Python module's). A bad value gets the command line's message, "NAME must be RANGE, got VALUE"; a
+// value of the wrong type "KEY: why"; an unknown name lists the settings.
+void apply_settings(const nlohmann::json& values, SolverOptions& options);
+
 // Every setting by name: the run summary's "options".
 nlohmann::json settings_json(const SolverOptions& options);
 

@@ -45,8 +45,10 @@ ShadedMesh write_solution(const std::filesystem::path& vtp, const Solution& solu
                           const Scene& scene, double crease_degrees, double time_value) {
     ShadedMesh shaded = shade(solution, crease_degrees);
     write_solution(vtp, shaded, solution, scene_identity(scene), time_value);
-    // What the file holds (its radiosities are single precision), so that a study measures
-    // what `hmcr error` of the file measures.
+    return as_stored(std::move(shaded));
+}
+
+ShadedMesh as_stored(ShadedMesh mesh) {
     // Through a volatile float: GCC 12's vectoriser folds a double-float-double round trip on
     // Eigen's arrays into nothing for some of the channels (docs/decisions.md).
     const auto as_float = [](Rgb& b) {
@@ -55,9 +57,9 @@ ShadedMesh write_solution(const std::filesystem::path& vtp, const Solution& solu
             b[k] = f;
         }
     };
-    for (Rgb& b : shaded.point_radiosity) as_float(b);
-    for (Rgb& b : shaded.element_radiosity) as_float(b);
-    return shaded;
+    for (Rgb& b : mesh.point_radiosity) as_float(b);
+    for (Rgb& b : mesh.element_radiosity) as_float(b);
+    return mesh;
 }
 
 SolutionFile read_solution(const std::filesystem::path& vtp) {

@@ -39,6 +39,10 @@ void write_solution(const std::filesystem::path& vtp, const ShadedMesh& shaded,
 ShadedMesh write_solution(const std::filesystem::path& vtp, const Solution& solution,
                           const Scene& scene, double crease_degrees, double time_value);
 
+// The mesh as its file holds it, radiosities rounded to single precision: what a study measures,
+// so that it measures what `hmcr error` of the file measures.
+ShadedMesh as_stored(ShadedMesh mesh);
+
 // A solution file read back: its mesh and its metadata (viz/vtk_import.h checks both).
 struct SolutionFile {
     ShadedMesh mesh;

@@ -8,6 +8,8 @@
 #   2. `cornell` removed from the prefix, the installed hmcr refuses it (exit 2) although the
 #      source tree, visible here, holds it;
 #   3. $HMCR_DATA_DIR names another data folder, and the installed hmcr takes its scenes there.
+# Where the build made the Python module, case 1 also imports the installed one and solves
+# cornell with it: the same bytes as the installed program's.
 # Usage: install_test.sh SOURCE_DIR BUILD_DIR
 set -eu
 src=$(cd "$1" && pwd)
@@ -22,6 +24,14 @@ test -f "$prefix/share/hmcr/scenes/cornell/cornell.json"
 test -f "$prefix/share/hmcr/scenes/office/generate.py"
 test -f "$prefix/share/hmcr/scripts/plot_study.py"
 unset HMCR_SCENES HMCR_DATA_DIR
+# The Python module, where the build made it.
+python=$prefix/lib/python3/dist-packages
+python_said=""
+if [ -d "$python/hmcr" ]; then
+    test -f "$python/hmcr/__init__.py"
+    test ! -e "$python/hmcr/_build_tree.py"
+    python_said=", and from Python with the same bytes"
+fi
 
 # 1. The source tree gone.
 mkdir "$tmp/empty" "$tmp/run"
@@ -33,8 +43,12 @@ if unshare -m --propagation private true 2>/dev/null; then
         cd "$3"
         "$4" scenes | grep -qx cornell
         "$4" solve cornell --rays 20000 -q -o cornell.vtp
-        test -s cornell.vtp' sh "$tmp/empty" "$src" "$tmp/run" "$hmcr"
-    echo "solved cornell with the source tree hidden"
+        test -s cornell.vtp
+        if [ -d "$5" ]; then
+            PYTHONPATH=$5 /usr/bin/python3 -c "import hmcr; s = hmcr.solve(hmcr.load_scene(\"cornell\"), rays=20000); s.write_vtp(\"py.vtp\")"
+            cmp py.vtp cornell.vtp
+        fi' sh "$tmp/empty" "$src" "$tmp/run" "$hmcr" "$python"
+    echo "solved cornell with the source tree hidden${python_said}"
 else
     echo "unshare unavailable: the source tree was not hidden (cases 2 and 3 still prove it)"
 fi
