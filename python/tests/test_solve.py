@@ -2,7 +2,10 @@
 """The Python module against the engine's exact values and the command line's own output."""
 import json
 import os
+import signal
 import subprocess
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -214,3 +217,38 @@ def test_views_from_arrays_are_checked_as_a_scene_files():
         hmcr.scene_from_arrays(v, faces, [RHO] * 3, [E] * 3, views=[
             {"name": "up", "position": [0.5, 0.5, 0.1], "look_at": [0.5, 0.5, 0.9],
              "up": [0, 0, 1]}])
+
+
+def test_ctrl_c_stops_a_solve():
+    # SIGINT while hmcr works: Python's handler only notes it, and the solve raises
+    # KeyboardInterrupt at its next ray batch. 10^9 rays would take minutes.
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    started = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        hmcr.solve(furnace(), rays=1_000_000_000, threads=1)
+    timer.join()
+    assert time.monotonic() - started < 30
+
+
+def test_the_gil_is_released_while_hmcr_works():
+    # Another Python thread wakes every millisecond while a solve shoots. Held by the solve, the
+    # GIL would keep it asleep until the solve returned (hmcr runs no Python in between); released,
+    # it wakes about once a millisecond of the solve's.
+    wakes, done = [0], threading.Event()
+
+    def wake():
+        while not done.is_set():
+            time.sleep(0.001)
+            wakes[0] += 1
+
+    waker = threading.Thread(target=wake)
+    waker.start()
+    time.sleep(0.05)
+    before, started = wakes[0], time.monotonic()
+    hmcr.solve(furnace(), rays=3_000_000, threads=1)
+    during, seconds = wakes[0] - before, time.monotonic() - started
+    done.set()
+    waker.join()
+    assert seconds > 0.1, "a solve long enough to tell"
+    assert during > 20, (during, seconds)
