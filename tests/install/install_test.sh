@@ -8,8 +8,10 @@
 #   2. `cornell` removed from the prefix, the installed hmcr refuses it (exit 2) although the
 #      source tree, visible here, holds it;
 #   3. $HMCR_DATA_DIR names another data folder, and the installed hmcr takes its scenes there.
-# Where the build made the Python module, case 1 also imports the installed one and solves
-# cornell with it: the same bytes as the installed program's.
+# Case 1 also builds an outside CMake project (tests/install/consumer) against the prefix alone,
+# find_package(hmcr) and hmcr::hmcr, whose solve of cornell must give the installed program's
+# bytes; and where the build made the Python module, imports the installed one and solves
+# cornell with it, to the same bytes.
 # Usage: install_test.sh SOURCE_DIR BUILD_DIR
 set -eu
 src=$(cd "$1" && pwd)
@@ -30,27 +32,27 @@ python_said=""
 if [ -d "$python/hmcr" ]; then
     test -f "$python/hmcr/__init__.py"
     test ! -e "$python/hmcr/_build_tree.py"
-    python_said=", and from Python with the same bytes"
+    python_said=" and the Python module"
 fi
 
-# 1. The source tree gone.
+# 1. The source tree gone: what the installed program, an outside project of the installed
+# library and the installed Python module do with the prefix alone (installed_uses.sh). The
+# outside project's own files are copied out first.
 mkdir "$tmp/empty" "$tmp/run"
+cp -r "$src/tests/install/consumer" "$tmp/consumer"
+uses="$src/tests/install/installed_uses.sh"
+cp "$uses" "$tmp/installed_uses.sh"
 if unshare -m --propagation private true 2>/dev/null; then
     unshare -m --propagation private sh -c '
         set -eu
         mount --bind "$1" "$2"
         test -z "$(ls -A "$2")"
-        cd "$3"
-        "$4" scenes | grep -qx cornell
-        "$4" solve cornell --rays 20000 -q -o cornell.vtp
-        test -s cornell.vtp
-        if [ -d "$5" ]; then
-            PYTHONPATH=$5 /usr/bin/python3 -c "import hmcr; s = hmcr.solve(hmcr.load_scene(\"cornell\"), rays=20000); s.write_vtp(\"py.vtp\")"
-            cmp py.vtp cornell.vtp
-        fi' sh "$tmp/empty" "$src" "$tmp/run" "$hmcr" "$python"
-    echo "solved cornell with the source tree hidden${python_said}"
+        shift 2
+        sh "$@"' sh "$tmp/empty" "$src" "$tmp/installed_uses.sh" "$prefix" "$tmp/run" "$tmp/consumer"
+    echo "with the source tree hidden: the program, an outside project of the library${python_said} solved cornell to the same bytes"
 else
-    echo "unshare unavailable: the source tree was not hidden (cases 2 and 3 still prove it)"
+    sh "$tmp/installed_uses.sh" "$prefix" "$tmp/run" "$tmp/consumer"
+    echo "unshare unavailable: the source tree was not hidden (cases 2 and 3 still prove it); the program, an outside project of the library${python_said} solved cornell to the same bytes"
 fi
 
 # 2. The prefix without cornell: refused, whatever the source tree holds.
