@@ -189,10 +189,7 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
                     "size the reference (--points or --max-area) for studies up to this many "
                     "leaves");
     // The uniform mesh has no oracle and no limits; rays and seeds are the reference's own.
-    a->flags = add_solver_flags(*cmd, o.solver,
-                                {"oracle", "epsilon", "lines", "min_area", "max_depth", "cache_mb",
-                                 "link_weight", "refine_share", "clustering", "importance"},
-                                {"rays", "seed"});
+    a->flags = add_solver_flags(*cmd, o.solver, kNotReferenceSettings, kReferenceOwnSettings);
     for (const char* name : {"--rays", "--stop", "--max-elements", "--control-variate",
                              "--sequence", "--bidirectional"}) {
         if (auto* option = cmd->get_option_no_throw(name)) a->mesh_only.push_back(option);

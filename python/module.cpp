@@ -14,17 +14,23 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "app/run_summary.h"
 #include "common/interrupt.h"
+#include "common/output_paths.h"
+#include "common/output_set.h"
 #include "common/progress.h"
 #include "meshes/polygon_soup.h"
 #include "radiosity/budget_search.h"
 #include "radiosity/solver_settings.h"
 #include "rays/patch.h"
 #include "studies/object_error_json.h"
+#include "studies/reference.h"
 #include "studies/reference_measure.h"
+#include "studies/study.h"
 #include "viz/renderer.h"
 #include "viz/solution_file.h"
 
@@ -102,17 +108,20 @@ json keyword_json(const py::handle& value) {
                                  std::string(py::str(value.get_type().attr("__name__")))));
 }
 
-// The options of a solve of `scene`: the defaults, then the scene file's "solver" object, then
-// the keywords, as `hmcr solve` takes its flags over the scene file.
-SolverOptions solve_options(const Scene& scene, const py::kwargs& keywords) {
-    SolverOptions options;
-    apply_scene_settings(scene.solver_defaults, scene.source.string(), options);
+// The options of a solve of `scene`: `base`, then the scene file's "solver" object but for the
+// keys in `not_from_scene`, then the keywords, as `hmcr solve` takes its flags over the scene
+// file.
+SolverOptions solve_options(const Scene& scene, const py::kwargs& keywords, SolverOptions base = {},
+                            const std::set<std::string>& not_from_scene = {}) {
+    json from_scene = scene.solver_defaults;
+    for (const std::string& key : not_from_scene) from_scene.erase(key);
+    apply_scene_settings(from_scene, scene.source.string(), base);
     json values = json::object();
     for (const auto& [key, value] : keywords) values[py::str(key)] = keyword_json(value);
-    apply_settings(values, options);
-    validate(options);
-    options.views = scene.views;
-    return options;
+    apply_settings(values, base);
+    validate(base);
+    base.views = scene.views;
+    return base;
 }
 
 // A solve's result as Python holds it: the solution, its shaded mesh (what the .vtp and the
@@ -244,6 +253,114 @@ py::object solution_error(const PySolution& s, const std::string& reference, con
                {"views", views}};
     }
     return python_json(out);
+}
+
+// `hmcr reference SCENE --kind mesh -o OUTPUT`: a uniform mesh of elements of at most max_area
+// m^2 solved with two seeds, its views' images, its convergence and its check, in OUTPUT.
+// Returns the summary hmcr prints, as a dict.
+py::object mesh_reference(const Scene& scene, const std::string& output, double max_area,
+                          int samples, std::optional<std::uint64_t> check_points,
+                          py::object progress, const py::kwargs& keywords) {
+    for (const auto& [key, value] : keywords) {
+        const std::string name = py::str(key);
+        if (kNotReferenceSettings.count(name)) {
+            throw InputError(
+                fmt::format("{} is not a reference's setting: its uniform mesh has "
+                            "no oracle, no refinement limits and no clusters",
+                            name));
+        }
+    }
+    if (!(max_area > 0)) throw InputError("max-area must be positive");
+    if (samples < 1 || samples > 16) throw InputError("samples must be in 1..16");
+    ReferenceOptions o;
+    o.max_area = max_area;
+    o.samples_per_axis = samples;
+    o.check_points = check_points;
+    o.solver = solve_options(scene, keywords, o.solver, kReferenceOwnSettings);
+    const std::filesystem::path dir(output);
+    refuse_overwriting(reference_files(dir, scene), scene.inputs);
+    OutputSet out(reference_files(dir, scene), dir);
+    PythonProgress told(std::move(progress));
+    std::optional<Reference> ref;
+    try {
+        const CallersFloatMode mode;
+        const py::gil_scoped_release released;
+        ref.emplace(compute_reference(scene, o, told));
+    } catch (const Interrupted&) {
+        told.raise_if_stopped();
+        throw;
+    }
+    RunTimings timings;
+    timings.total_seconds = ref->seconds;
+    write_reference(out, dir, scene, *ref, o,
+                    run_summary(scene, ref->solution, timings, "python: hmcr.mesh_reference",
+                                (dir / "reference.vtp").string()));
+    out.commit();
+    return python_json(
+        {{"leaves", ref->solution.stats.leaves},
+         {"seconds", ref->seconds},
+         {"seed_difference", object_error_json(ref->object_error)},
+         {"truncation",
+          {ref->truncation.relative[0], ref->truncation.relative[1], ref->truncation.relative[2]}},
+         {"discretisation", object_error_json(ref->discretisation)}});
+}
+
+// `hmcr study SCENE --reference DIR --budgets ... -o OUTPUT` without its plots: every oracle x
+// budget x seed into OUTPUT (cells, tables, images, meshes), resumed where OUTPUT holds cells of
+// the same settings. Returns table.json's cells.
+py::object meshing_study(const Scene& scene, const std::string& reference,
+                         const std::vector<std::size_t>& budgets, const std::string& output,
+                         const std::vector<std::string>& oracles, int seeds,
+                         std::uint64_t rays_per_leaf, std::optional<std::uint64_t> mesh_rays,
+                         double budget_tolerance, int samples, py::object progress,
+                         const py::kwargs& keywords) {
+    for (const char* per_cell : {"oracle", "epsilon"}) {
+        if (keywords.contains(per_cell)) {
+            throw InputError(
+                fmt::format("{} is set per cell: give oracles=[...] (a budget "
+                            "search finds each cell's epsilon)",
+                            per_cell));
+        }
+    }
+    StudyOptions o;
+    o.reference = reference;
+    o.output = output;
+    o.budgets = budgets;
+    if (!oracles.empty()) {
+        o.oracles.clear();
+        for (const std::string& name : oracles) {
+            const Oracle* oracle = oracle_registry().find(name);
+            if (!oracle) {
+                throw InputError(fmt::format("oracles: {} is none of {}", quote(name),
+                                             oracle_registry().names()));
+            }
+            o.oracles.push_back(oracle);
+        }
+    }
+    o.seeds = seeds;
+    o.rays_per_leaf = rays_per_leaf;
+    o.mesh_rays = mesh_rays;
+    o.budget_tolerance = budget_tolerance;
+    o.samples_per_axis = samples;
+    o.solver = solve_options(scene, keywords);
+    validate_study(o);
+    refuse_nested_dirs(o.output, o.reference);
+    refuse_overwriting(study_output_files(scene, o), scene.inputs);
+    PythonProgress told(std::move(progress));
+    try {
+        const CallersFloatMode mode;
+        const py::gil_scoped_release released;
+        run_study(scene, o, told);
+    } catch (const Interrupted&) {
+        told.raise_if_stopped();
+        throw;
+    }
+    return py::module_::import("json")
+        .attr("loads")(py::module_::import("pathlib")
+                           .attr("Path")(output)
+                           .attr("joinpath")("table.json")
+                           .attr("read_text")())
+        .attr("__getitem__")("cells");
 }
 
 // The polygons of arrays as a soup of one file, "<arrays>", whose items are faces: a face's
@@ -408,6 +525,20 @@ PYBIND11_MODULE(_core, m) {
           py::arg("budget") = 0, py::arg("budget_tolerance") = BudgetOptions{}.tolerance,
           py::arg("crease_angle") = kCreaseDegrees,
           "solves the scene; every solver setting is a keyword (hmcr.settings())");
+
+    m.def("mesh_reference", &mesh_reference, py::arg("scene"), py::arg("output"),
+          py::arg("max_area") = ReferenceOptions{}.max_area,
+          py::arg("samples") = ReferenceOptions{}.samples_per_axis,
+          py::arg("check_points") = py::none(), py::arg("progress") = py::none(),
+          "`hmcr reference --kind mesh`: a converged uniform-mesh reference in a folder");
+
+    m.def("meshing_study", &meshing_study, py::arg("scene"), py::arg("reference"),
+          py::arg("budgets"), py::arg("output"), py::arg("oracles") = std::vector<std::string>{},
+          py::arg("seeds") = StudyOptions{}.seeds, py::arg("rays_per_leaf") = 0,
+          py::arg("mesh_rays") = py::none(),
+          py::arg("budget_tolerance") = StudyOptions{}.budget_tolerance,
+          py::arg("samples") = StudyOptions{}.samples_per_axis, py::arg("progress") = py::none(),
+          "`hmcr study` of every oracle x budget x seed, its plots aside; returns its cells");
 
     m.def("error", &solution_error, py::arg("solution"), py::arg("reference"), py::arg("scene"),
           py::arg("samples") = 2,

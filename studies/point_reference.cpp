@@ -248,7 +248,7 @@ void write_point_reference(OutputSet& out, const std::filesystem::path& dir, con
     write_point_radiosity(out.temp(dir / "points.vtp"), ref.points);
     const nlohmann::json views = write_view_images(out, dir, ref.views);
     const PointReferenceReport& rep = ref.report;
-    const nlohmann::json j = {
+    nlohmann::json j = {
         {"command", command},
         {"hmcr_version", HMCR_VERSION},
         {"reference",
@@ -277,6 +277,7 @@ void write_point_reference(OutputSet& out, const std::filesystem::path& dir, con
           {"view_spp", o.views.spp},
           {"seconds", ref.seconds},
           {"views", views}}}};
+    if (scene.source.empty()) j["reference"].erase("scene_file");
     write_text_atomically(out.temp(dir / "reference.json"), j.dump(2) + "\n");
 }
 

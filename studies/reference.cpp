@@ -111,6 +111,7 @@ CheckSize check_size(const ReferenceOptions& o, std::uint64_t elements) {
 }
 
 std::string scene_file(const Scene& scene) {
+    if (scene.source.empty()) return "";  // a program's own polygons (meshes/polygon_soup.h)
     return std::filesystem::absolute(scene.source).lexically_normal().string();
 }
 
@@ -170,6 +171,7 @@ void write_reference(OutputSet& out, const std::filesystem::path& dir, const Sce
         {"seconds", ref.seconds},
         {"scene", scene.name},
         {"scene_file", scene_file(scene)}};
+    if (scene.source.empty()) summary["reference"].erase("scene_file");
     write_text_atomically(out.temp(dir / "reference.json"), summary.dump(2) + "\n");
 }
 

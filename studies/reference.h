@@ -15,6 +15,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,14 @@ namespace hmcr {
 // The check of a mesh reference's discretisation (check_size): by default at most this many
 // points, four a uniform element, with paths for about a tenth of the solve's rays.
 inline constexpr std::uint64_t kMostCheckPoints = 20'000;
+
+// The solver settings a mesh reference does not take: its uniform mesh has no oracle, no
+// refinement limits and no clusters.
+inline const std::set<std::string> kNotReferenceSettings{
+    "oracle",   "epsilon",     "lines",        "min_area",   "max_depth",
+    "cache_mb", "link_weight", "refine_share", "clustering", "importance"};
+// The settings a scene file's "solver" object does not set for a reference: its own.
+inline const std::set<std::string> kReferenceOwnSettings{"rays", "seed"};
 
 struct ReferenceOptions {
     double max_area = 1e-4;  // m^2: every patch cut to elements no larger
@@ -94,7 +103,8 @@ Reference compute_reference(const Scene& scene, const ReferenceOptions& options,
 ObjectErrorOptions reflected_error_options(const PatchMesh& mesh);
 
 // The scene's file as references record it (reference.json's "scene_file"), absolute, so that
-// `hmcr error` finds the scene from any folder.
+// `hmcr error` finds the scene from any folder; "" for a scene of no file, whose reference does
+// not record one (`hmcr error` then needs --scene).
 std::string scene_file(const Scene& scene);
 
 // The files write_reference writes for this scene.

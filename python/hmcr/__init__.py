@@ -22,6 +22,7 @@ if "HMCR_DATA_DIR" not in os.environ:
         _data = str(Path(__file__).resolve().parents[4] / "share" / "hmcr")
     os.environ["HMCR_DATA_DIR"] = _data
 
+from . import _core  # noqa: E402
 from ._core import (  # noqa: E402
     InputError,
     Scene,
@@ -29,10 +30,44 @@ from ._core import (  # noqa: E402
     __version__,
     error,
     load_scene,
+    mesh_reference,
     scene_from_arrays,
     settings,
     solve,
 )
 
 __all__ = ["InputError", "Scene", "Solution", "__version__", "error", "load_scene",
-           "scene_from_arrays", "settings", "solve"]
+           "mesh_reference", "meshing_study", "scene_from_arrays", "settings", "solve"]
+
+# A cell's values that are one number or name each, as table.json names them.
+_CELL_VALUES = ("scene", "oracle", "budget", "seed", "status", "message", "epsilon", "leaves",
+                "probes", "rays", "mesh_rays", "seconds", "finer_share")
+
+
+def _flat_cell(cell):
+    """One row of plain values: a cell's object errors and its views' metrics by name."""
+    row = {key: cell[key] for key in _CELL_VALUES if key in cell}
+    for part in ("", "mesh_"):
+        error = cell.get(part + "object_error")
+        if error:
+            row[part + "object_error"] = error["relative_l2"]
+            row[part + "object_error_se"] = error["standard_error"]
+        for view, metrics in (cell.get(part + "views") or {}).items():
+            for metric, value in metrics.items():
+                row[f"{part}{metric}_{view}"] = value
+    return row
+
+
+def meshing_study(scene, reference, budgets, output, **keywords):
+    """`hmcr study SCENE --reference REFERENCE --budgets ... -o OUTPUT`, its plots aside.
+
+    Every oracle (oracles=[...], all by default) x budget x seed (seeds=3) is solved and measured
+    against the reference; OUTPUT gets the cells, tables, images and meshes the command writes,
+    and a second call resumes it. Every other keyword is a solver setting, as for solve().
+    Returns one dict of plain values per cell (a pandas DataFrame takes the list as it is):
+    oracle, budget, seed, leaves, epsilon, object_error and its standard error, each view's
+    rmse_a/rmse_p/psnr_a/psnr_p, and the mesh error's (mesh_...).
+    """
+    cells = _core.meshing_study(scene, str(reference), [int(b) for b in budgets], str(output),
+                                **keywords)
+    return [_flat_cell(cell) for cell in cells]

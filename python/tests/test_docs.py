@@ -15,5 +15,6 @@ def test_every_example_of_the_tutorial_runs(tmp_path, monkeypatch, capsys):
         exec(compile(block, f"{DOC.name} example {k + 1}", "exec"), namespace)
     out = capsys.readouterr().out
     assert "min-area must be in [0, 1), got 2" in out
-    for written in ["room.vtp", "inside.png", "leaves.png", "cornell.vtp"]:
+    for written in ["room.vtp", "inside.png", "room-reference/reference.vtp",
+                    "room-study/table.json", "room-study.png", "cornell.vtp"]:
         assert (tmp_path / written).stat().st_size > 0, written

@@ -252,3 +252,44 @@ def test_the_gil_is_released_while_hmcr_works():
     waker.join()
     assert seconds > 0.1, "a solve long enough to tell"
     assert during > 20, (during, seconds)
+
+
+def test_a_meshing_study_is_the_command_lines(tmp_path):
+    binary = os.environ["HMCR_BINARY"]
+    subprocess.run([binary, "reference", "plates", "--kind", "mesh", "--rays", "200000", "-o",
+                    "ref", "-q"], check=True, cwd=tmp_path)
+    subprocess.run([binary, "study", "plates", "--reference", "ref", "--budgets", "8,32",
+                    "--oracles", "power,kl", "--seeds", "2", "--rays", "20000", "-o", "cli", "-q"],
+                   check=True, cwd=tmp_path)
+    rows = hmcr.meshing_study(hmcr.load_scene("plates"), tmp_path / "ref", [8, 32],
+                              tmp_path / "py", oracles=["power", "kl"], seeds=2, rays=20_000)
+    assert len(rows) == 8
+    assert all(not isinstance(v, (dict, list)) for row in rows for v in row.values())
+    cli = json.loads((tmp_path / "cli" / "table.json").read_text())["cells"]
+    untimed = lambda cell: {k: v for k, v in cell.items() if k not in ("seconds", "probe_history")}
+    assert [untimed(c) for c in cli] == \
+        [untimed(c) for c in json.loads((tmp_path / "py" / "table.json").read_text())["cells"]]
+    row = next(r for r in rows if r["oracle"] == "kl" and r["budget"] == 32 and r["seed"] == 1)
+    cell = next(c for c in cli if c["oracle"] == "kl" and c["budget"] == 32 and c["seed"] == 1)
+    assert row["leaves"] == cell["leaves"]
+    assert row["object_error"] == cell["object_error"]["relative_l2"]
+    assert row["rmse_a_side"] == cell["views"]["side"]["rmse_a"]
+    with pytest.raises(hmcr.InputError, match="oracle is set per cell"):
+        hmcr.meshing_study(hmcr.load_scene("plates"), tmp_path / "ref", [8], tmp_path / "x",
+                           oracle="kl")
+
+
+def test_a_mesh_reference_is_the_command_lines(tmp_path):
+    subprocess.run([os.environ["HMCR_BINARY"], "reference", "plates", "--kind", "mesh", "--rays",
+                    "200000", "-o", "cli", "-q"], check=True, cwd=tmp_path)
+    said = hmcr.mesh_reference(hmcr.load_scene("plates"), str(tmp_path / "py"), rays=200_000)
+    assert said["leaves"] == 2 * 4**7  # two unit squares halved until an element is <= 1e-4 m^2
+    cli, py = tmp_path / "cli", tmp_path / "py"
+    assert (py / "reference.vtp").read_bytes() == (cli / "reference.vtp").read_bytes()
+    images = sorted(p.relative_to(cli) for p in (cli / "views").rglob("*") if p.is_file())
+    assert images and images == sorted(p.relative_to(py) for p in (py / "views").rglob("*")
+                                       if p.is_file())
+    for image in images:
+        assert (py / image).read_bytes() == (cli / image).read_bytes(), image
+    with pytest.raises(hmcr.InputError, match="oracle is not a reference's setting"):
+        hmcr.mesh_reference(hmcr.load_scene("plates"), str(tmp_path / "x"), oracle="kl")
