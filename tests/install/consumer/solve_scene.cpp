@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// solve_scene SCENE RAYS OUT.vtp: what `hmcr solve SCENE --rays RAYS -o OUT.vtp` writes, from hmcr's
-// installed library (tests/install/install_test.sh compares the bytes).
+// solve_scene SCENE RAYS OUT.vtp: what `hmcr solve SCENE --rays RAYS -o OUT.vtp` writes, from
+// hmcr's installed library (tests/install/install_test.sh compares the bytes).
 #include <cstdlib>
 #include <exception>
 #include <iostream>
