@@ -19,10 +19,13 @@
 #include <vector>
 
 #include "app/run_summary.h"
+#include "app/trace_flags.h"
 #include "common/interrupt.h"
 #include "common/output_paths.h"
 #include "common/output_set.h"
 #include "common/progress.h"
+#include "information/back_sides.h"
+#include "information/scene_information.h"
 #include "meshes/polygon_soup.h"
 #include "radiosity/budget_search.h"
 #include "radiosity/solver_settings.h"
@@ -31,6 +34,8 @@
 #include "studies/reference.h"
 #include "studies/reference_measure.h"
 #include "studies/study.h"
+#include "trace/criteria/registry.h"
+#include "trace/path_tracer.h"
 #include "viz/renderer.h"
 #include "viz/solution_file.h"
 
@@ -363,6 +368,81 @@ py::object meshing_study(const Scene& scene, const std::string& reference,
         .attr("__getitem__")("cells");
 }
 
+// `hmcr info SCENE --json` (patches) or `hmcr info SOLUTION.vtp --json` (leaves): the entropies
+// and mutual information of the channel whose states are `states`.
+py::object information(const ChannelStates& states, std::uint64_t lines, const std::string& method,
+                       std::uint64_t seed, py::object progress) {
+    if (lines < 16) throw InputError("lines must be at least 16");
+    LineOptions o;
+    o.method = parse_line_method(method);
+    o.lines = lines;
+    o.seed = seed;
+    PythonProgress told(std::move(progress));
+    std::optional<InformationMeasures> m;
+    try {
+        const CallersFloatMode mode;
+        const py::gil_scoped_release released;
+        m.emplace(scene_information(states, o, told));
+    } catch (const Interrupted&) {
+        told.raise_if_stopped();
+        throw;
+    }
+    json j = to_json(*m);
+    j["open_fraction"] = double(m->samples_open) / double(std::max<std::size_t>(1, m->samples));
+    return python_json(j);
+}
+
+// `hmcr trace SCENE --pfm`'s image and the samples each pixel took, from the path tracer.
+py::dict trace_scene(const Scene& scene, const std::string& view, const std::string& sampler,
+                     double spp, std::optional<double> threshold, double spp_tolerance,
+                     std::optional<std::uint32_t> max_spp, int tree_depth, std::uint64_t seed,
+                     int threads, bool fresh, const std::string& allocation, int bounces,
+                     const std::string& estimator, std::optional<int> width, py::object progress) {
+    TraceOptions o;
+    o.sampler = criterion_registry().find(sampler);
+    if (!o.sampler) {
+        throw InputError(fmt::format("sampler must be one of {}, got {}",
+                                     criterion_registry().names(), quote(sampler)));
+    }
+    o.spp = spp;
+    if (threshold) o.threshold = *threshold;
+    o.spp_tolerance = spp_tolerance;
+    o.max_spp = max_spp;
+    o.tree_depth = tree_depth;
+    o.seed = seed;
+    o.threads = threads;
+    o.fresh = fresh;
+    o.path.max_depth = bounces;
+    TraceFlags flags;
+    flags.estimator = estimator;
+    flags.allocation = allocation;
+    flags.width = width;
+    apply_trace_flags(flags, o);
+    validate_trace_options(o);
+    const View v = sized_view(find_view(scene, view), flags);
+    check_trace_memory(o, v);
+    PythonProgress told(std::move(progress));
+    std::optional<TraceResult> r;
+    try {
+        const CallersFloatMode mode;
+        const py::gil_scoped_release released;
+        const PathTracer tracer(build_patch_set(scene.mesh), o.path);
+        r.emplace(trace_image(tracer, v, o, told));
+    } catch (const Interrupted&) {
+        told.raise_if_stopped();
+        throw;
+    }
+    py::array_t<std::uint32_t> samples({py::ssize_t(v.height), py::ssize_t(v.width)});
+    std::copy(r->samples.begin(), r->samples.end(), samples.mutable_data());
+    py::dict d;
+    d["image"] = image_array(r->image);
+    d["samples"] = samples;
+    d["threshold"] = r->threshold;
+    d["rays"] = r->rays;
+    d["seconds"] = r->seconds;
+    return d;
+}
+
 // The polygons of arrays as a soup of one file, "<arrays>", whose items are faces: a face's
 // problem is reported as "<arrays>: face N" (1-based).
 PolygonSoup arrays_soup(const py::array_t<double, py::array::c_style | py::array::forcecast>& v,
@@ -509,6 +589,16 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly(
             "options",
             [](const PySolution& s) { return python_json(settings_json(s.solution.options)); })
+        .def(
+            "information",
+            [](const PySolution& s, std::uint64_t lines, const std::string& method,
+               std::uint64_t seed, py::object progress) {
+                return information(leaf_states(as_stored(s.shaded)), lines, method, seed,
+                                   std::move(progress));
+            },
+            py::arg("lines") = LineOptions{}.lines, py::arg("method") = "local",
+            py::arg("seed") = LineOptions{}.seed, py::arg("progress") = py::none(),
+            "`hmcr info SOLUTION.vtp --json`: the measures of the channel of its leaves")
         .def("render", &render_solution, py::arg("scene"), py::arg("view") = "",
              py::arg("samples") = 1,
              "the linear radiance image of the solution from a view of its scene (H x W x 3)")
@@ -531,6 +621,26 @@ PYBIND11_MODULE(_core, m) {
           py::arg("samples") = ReferenceOptions{}.samples_per_axis,
           py::arg("check_points") = py::none(), py::arg("progress") = py::none(),
           "`hmcr reference --kind mesh`: a converged uniform-mesh reference in a folder");
+
+    m.def(
+        "information",
+        [](const Scene& scene, std::uint64_t lines, const std::string& method, std::uint64_t seed,
+           py::object progress) {
+            return information(patch_states(build_patch_set(scene.mesh)), lines, method, seed,
+                               std::move(progress));
+        },
+        py::arg("scene"), py::arg("lines") = LineOptions{}.lines, py::arg("method") = "local",
+        py::arg("seed") = LineOptions{}.seed, py::arg("progress") = py::none(),
+        "`hmcr info SCENE --json`: the entropies and mutual information of the scene's patches");
+    m.def("trace", &trace_scene, py::arg("scene"), py::arg("view") = "",
+          py::arg("sampler") = "uniform", py::arg("spp") = TraceOptions{}.spp,
+          py::arg("threshold") = py::none(),
+          py::arg("spp_tolerance") = TraceOptions{}.spp_tolerance, py::arg("max_spp") = py::none(),
+          py::arg("tree_depth") = TraceOptions{}.tree_depth, py::arg("seed") = TraceOptions{}.seed,
+          py::arg("threads") = 0, py::arg("fresh") = false, py::arg("allocation") = "refine",
+          py::arg("bounces") = PathOptions{}.max_depth, py::arg("estimator") = "mis",
+          py::arg("width") = py::none(), py::arg("progress") = py::none(),
+          "`hmcr trace`: a path-traced view (image, H x W x 3) and each pixel's samples");
 
     m.def("meshing_study", &meshing_study, py::arg("scene"), py::arg("reference"),
           py::arg("budgets"), py::arg("output"), py::arg("oracles") = std::vector<std::string>{},

@@ -29,15 +29,18 @@ from ._core import (  # noqa: E402
     Solution,
     __version__,
     error,
+    information,
     load_scene,
     mesh_reference,
     scene_from_arrays,
     settings,
     solve,
+    trace,
 )
 
-__all__ = ["InputError", "Scene", "Solution", "__version__", "error", "load_scene",
-           "mesh_reference", "meshing_study", "scene_from_arrays", "settings", "solve"]
+__all__ = ["InputError", "Scene", "Solution", "__version__", "error", "information",
+           "load_scene", "mesh_reference", "meshing_study", "scene_from_arrays", "settings",
+           "solve", "trace"]
 
 # A cell's values that are one number or name each, as table.json names them.
 _CELL_VALUES = ("scene", "oracle", "budget", "seed", "status", "message", "epsilon", "leaves",

@@ -293,3 +293,27 @@ def test_a_mesh_reference_is_the_command_lines(tmp_path):
         assert (py / image).read_bytes() == (cli / image).read_bytes(), image
     with pytest.raises(hmcr.InputError, match="oracle is not a reference's setting"):
         hmcr.mesh_reference(hmcr.load_scene("plates"), str(tmp_path / "x"), oracle="kl")
+
+
+def test_information_and_trace_are_the_command_lines(tmp_path):
+    binary = os.environ["HMCR_BINARY"]
+
+    def cli(*args):
+        return subprocess.run([binary, *args], check=True, cwd=tmp_path, capture_output=True,
+                              text=True).stdout
+
+    scene = hmcr.load_scene("cornell")
+    shared = ("h_p", "h_s", "i_s", "h_j", "i_cs", "discretisation_error", "lines", "samples")
+    patches = json.loads(cli("info", "cornell", "--json", "--lines", "100000"))
+    measured = hmcr.information(scene, lines=100_000)
+    assert all(measured[k] == patches[k] for k in shared if k in patches)
+    assert measured["i_s"] == patches["i_s"]
+    cli("solve", "cornell", "--rays", "30000", "-q", "-o", "sol.vtp")
+    leaves = json.loads(cli("info", "sol.vtp", "--json", "--lines", "100000"))
+    assert hmcr.solve(scene, rays=30_000).information(lines=100_000)["i_s"] == leaves["i_s"]
+    cli("trace", "cornell", "--spp", "4", "--width", "64", "-q", "-o", "t.png", "--pfm", "t.pfm")
+    traced = hmcr.trace(scene, spp=4, width=64)
+    assert np.array_equal(traced["image"].astype(np.float32), read_pfm(tmp_path / "t.pfm"))
+    assert traced["samples"].shape == traced["image"].shape[:2] and (traced["samples"] == 4).all()
+    with pytest.raises(hmcr.InputError, match="sampler must be one of"):
+        hmcr.trace(scene, sampler="nope")
