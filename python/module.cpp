@@ -31,8 +31,10 @@
 #include "radiosity/solver_settings.h"
 #include "rays/patch.h"
 #include "studies/object_error_json.h"
+#include "studies/point_reference.h"
 #include "studies/reference.h"
 #include "studies/reference_measure.h"
+#include "studies/sampling_study.h"
 #include "studies/study.h"
 #include "trace/criteria/registry.h"
 #include "trace/path_tracer.h"
@@ -310,6 +312,13 @@ py::object mesh_reference(const Scene& scene, const std::string& output, double 
          {"discretisation", object_error_json(ref->discretisation)}});
 }
 
+// table.json's cells of a study folder.
+py::object study_cells(const std::string& output) {
+    const py::object text =
+        py::module_::import("pathlib").attr("Path")(output).attr("joinpath")("table.json");
+    return py::module_::import("json").attr("loads")(text.attr("read_text")())["cells"];
+}
+
 // `hmcr study SCENE --reference DIR --budgets ... -o OUTPUT` without its plots: every oracle x
 // budget x seed into OUTPUT (cells, tables, images, meshes), resumed where OUTPUT holds cells of
 // the same settings. Returns table.json's cells.
@@ -360,12 +369,7 @@ py::object meshing_study(const Scene& scene, const std::string& reference,
         told.raise_if_stopped();
         throw;
     }
-    return py::module_::import("json")
-        .attr("loads")(py::module_::import("pathlib")
-                           .attr("Path")(output)
-                           .attr("joinpath")("table.json")
-                           .attr("read_text")())
-        .attr("__getitem__")("cells");
+    return study_cells(output);
 }
 
 // `hmcr info SCENE --json` (patches) or `hmcr info SOLUTION.vtp --json` (leaves): the entropies
@@ -392,6 +396,17 @@ py::object information(const ChannelStates& states, std::uint64_t lines, const s
     return python_json(j);
 }
 
+// The trace flags that name things (estimator, allocation) applied as the command line applies
+// them, with the path's bounces.
+void apply_trace_names(TraceOptions& o, const std::string& estimator, const std::string& allocation,
+                       int bounces, std::optional<int> width, TraceFlags& flags) {
+    o.path.max_depth = bounces;
+    flags.estimator = estimator;
+    flags.allocation = allocation;
+    flags.width = width;
+    apply_trace_flags(flags, o);
+}
+
 // `hmcr trace SCENE --pfm`'s image and the samples each pixel took, from the path tracer.
 py::dict trace_scene(const Scene& scene, const std::string& view, const std::string& sampler,
                      double spp, std::optional<double> threshold, double spp_tolerance,
@@ -412,12 +427,8 @@ py::dict trace_scene(const Scene& scene, const std::string& view, const std::str
     o.seed = seed;
     o.threads = threads;
     o.fresh = fresh;
-    o.path.max_depth = bounces;
     TraceFlags flags;
-    flags.estimator = estimator;
-    flags.allocation = allocation;
-    flags.width = width;
-    apply_trace_flags(flags, o);
+    apply_trace_names(o, estimator, allocation, bounces, width, flags);
     validate_trace_options(o);
     const View v = sized_view(find_view(scene, view), flags);
     check_trace_memory(o, v);
@@ -441,6 +452,96 @@ py::dict trace_scene(const Scene& scene, const std::string& view, const std::str
     d["rays"] = r->rays;
     d["seconds"] = r->seconds;
     return d;
+}
+
+// `hmcr reference SCENE --kind points -o OUTPUT`: radiosity at stratified points, path-traced
+// with two seeds, and the views traced uniformly. Returns what it says of itself.
+py::object points_reference(const Scene& scene, const std::string& output, std::uint64_t points,
+                            std::uint64_t paths, std::uint64_t seed, std::uint64_t strata_seed,
+                            int threads, double spp, int bounces, const std::string& estimator,
+                            std::optional<int> width, py::object progress) {
+    PointReferenceOptions o;
+    o.points = points;
+    o.paths = paths;
+    o.seed = seed;
+    o.strata_seed = strata_seed;
+    o.threads = threads;
+    o.views.spp = spp;
+    TraceFlags flags;
+    apply_trace_names(o.views, estimator, "refine", bounces, width, flags);
+    o.path = o.views.path;
+    Scene sized = scene;
+    for (View& v : sized.views) v = sized_view(v, flags);
+    validate_point_reference(sized, o);
+    const std::filesystem::path dir(output);
+    refuse_overwriting(point_reference_files(dir, sized), sized.inputs);
+    OutputSet out(point_reference_files(dir, sized), dir);
+    PythonProgress told(std::move(progress));
+    std::optional<PointReference> ref;
+    try {
+        const CallersFloatMode mode;
+        const py::gil_scoped_release released;
+        ref.emplace(compute_point_reference(sized, o, told));
+    } catch (const Interrupted&) {
+        told.raise_if_stopped();
+        throw;
+    }
+    write_point_reference(out, dir, sized, *ref, o, "python: hmcr.points_reference");
+    out.commit();
+    const PointReferenceReport& r = ref->report;
+    return python_json({{"points", ref->points.points.size()},
+                        {"area_per_point", r.area_per_point},
+                        {"noise", r.noise},
+                        {"seed_check", r.seed_check},
+                        {"seed_check_se", r.seed_check_se},
+                        {"rays", r.rays},
+                        {"seconds", ref->seconds}});
+}
+
+// `hmcr study SCENE --reference DIR --samplers ... -o OUTPUT` without its plots: every pixel
+// sampler x mean spp x seed. Returns table.json's cells.
+py::object sampling_study(const Scene& scene, const std::string& reference,
+                          const std::string& output, const std::vector<std::string>& samplers,
+                          const std::vector<double>& spps, int seeds, std::uint64_t seed,
+                          int threads, int tree_depth, bool fresh, const std::string& allocation,
+                          int bounces, const std::string& estimator, bool display_criteria,
+                          py::object progress) {
+    SamplingStudyOptions o;
+    o.reference = reference;
+    o.output = output;
+    if (!samplers.empty()) {
+        o.samplers.clear();
+        for (const std::string& name : samplers) {
+            const Criterion* c = criterion_registry().find(name);
+            if (!c) {
+                throw InputError(fmt::format("samplers: {} is none of {}", quote(name),
+                                             criterion_registry().names()));
+            }
+            o.samplers.push_back(c);
+        }
+    }
+    o.spps = spps;
+    o.seeds = seeds;
+    o.trace.seed = seed;
+    o.trace.threads = threads;
+    o.trace.tree_depth = tree_depth;
+    o.trace.fresh = fresh;
+    o.display_criteria = display_criteria;
+    TraceFlags flags;
+    apply_trace_names(o.trace, estimator, allocation, bounces, std::nullopt, flags);
+    validate_sampling_study(o);
+    refuse_nested_dirs(o.output, o.reference);
+    refuse_overwriting(sampling_study_output_files(scene, o), scene.inputs);
+    PythonProgress told(std::move(progress));
+    try {
+        const CallersFloatMode mode;
+        const py::gil_scoped_release released;
+        run_sampling_study(scene, o, told);
+    } catch (const Interrupted&) {
+        told.raise_if_stopped();
+        throw;
+    }
+    return study_cells(output);
 }
 
 // The polygons of arrays as a soup of one file, "<arrays>", whose items are faces: a face's
@@ -641,6 +742,23 @@ PYBIND11_MODULE(_core, m) {
           py::arg("bounces") = PathOptions{}.max_depth, py::arg("estimator") = "mis",
           py::arg("width") = py::none(), py::arg("progress") = py::none(),
           "`hmcr trace`: a path-traced view (image, H x W x 3) and each pixel's samples");
+
+    m.def("points_reference", &points_reference, py::arg("scene"), py::arg("output"),
+          py::arg("points") = PointReferenceOptions{}.points,
+          py::arg("paths") = PointReferenceOptions{}.paths, py::arg("seed") = 1,
+          py::arg("strata_seed") = 0, py::arg("threads") = 0,
+          py::arg("spp") = PointReferenceOptions{}.views.spp,
+          py::arg("bounces") = PathOptions{}.max_depth, py::arg("estimator") = "mis",
+          py::arg("width") = py::none(), py::arg("progress") = py::none(),
+          "`hmcr reference --kind points`: radiosity at stratified points, path-traced");
+    m.def("sampling_study", &sampling_study, py::arg("scene"), py::arg("reference"),
+          py::arg("output"), py::arg("samplers") = std::vector<std::string>{},
+          py::arg("spps") = SamplingStudyOptions{}.spps, py::arg("seeds") = 3, py::arg("seed") = 1,
+          py::arg("threads") = 0, py::arg("tree_depth") = TraceOptions{}.tree_depth,
+          py::arg("fresh") = false, py::arg("allocation") = "refine",
+          py::arg("bounces") = PathOptions{}.max_depth, py::arg("estimator") = "mis",
+          py::arg("display_criteria") = false, py::arg("progress") = py::none(),
+          "`hmcr study --samplers` of every sampler x spp x seed, its plots aside; its cells");
 
     m.def("meshing_study", &meshing_study, py::arg("scene"), py::arg("reference"),
           py::arg("budgets"), py::arg("output"), py::arg("oracles") = std::vector<std::string>{},

@@ -32,6 +32,7 @@ from ._core import (  # noqa: E402
     information,
     load_scene,
     mesh_reference,
+    points_reference,
     scene_from_arrays,
     settings,
     solve,
@@ -39,8 +40,8 @@ from ._core import (  # noqa: E402
 )
 
 __all__ = ["InputError", "Scene", "Solution", "__version__", "error", "information",
-           "load_scene", "mesh_reference", "meshing_study", "scene_from_arrays", "settings",
-           "solve", "trace"]
+           "load_scene", "mesh_reference", "meshing_study", "points_reference",
+           "sampling_study", "scene_from_arrays", "settings", "solve", "trace"]
 
 # A cell's values that are one number or name each, as table.json names them.
 _CELL_VALUES = ("scene", "oracle", "budget", "seed", "status", "message", "epsilon", "leaves",
@@ -74,3 +75,32 @@ def meshing_study(scene, reference, budgets, output, **keywords):
     cells = _core.meshing_study(scene, str(reference), [int(b) for b in budgets], str(output),
                                 **keywords)
     return [_flat_cell(cell) for cell in cells]
+
+
+# A sampling cell's values that are one number or name each.
+_SAMPLING_VALUES = ("scene", "sampler", "spp", "seed", "status", "message", "seconds")
+
+
+def _flat_sampling_cell(cell):
+    """One row of plain values: each view's errors and its achieved samples by name."""
+    row = {key: cell[key] for key in _SAMPLING_VALUES if key in cell}
+    for view, values in (cell.get("views") or {}).items():
+        for key, value in values.items():
+            if isinstance(value, dict):
+                for metric, v in value.items():
+                    row[f"{metric}_{view}"] = v
+            else:
+                row[f"{key}_{view}"] = value
+    return row
+
+
+def sampling_study(scene, reference, output, **keywords):
+    """`hmcr study SCENE --reference REFERENCE --samplers ... -o OUTPUT`, its plots aside.
+
+    Every pixel sampler (samplers=[...], all by default) x mean spp (spps=[60]) x seed (seeds=3)
+    traces the scene's views and is measured against the reference. Returns one dict of plain
+    values per cell: sampler, spp, seed, and per view its rmse_a/rmse_p/psnr_a/psnr_p and the
+    samples it took (spp_VIEW, min_spp_VIEW, max_spp_VIEW, threshold_VIEW, rays_VIEW).
+    """
+    cells = _core.sampling_study(scene, str(reference), str(output), **keywords)
+    return [_flat_sampling_cell(cell) for cell in cells]

@@ -317,3 +317,33 @@ def test_information_and_trace_are_the_command_lines(tmp_path):
     assert traced["samples"].shape == traced["image"].shape[:2] and (traced["samples"] == 4).all()
     with pytest.raises(hmcr.InputError, match="sampler must be one of"):
         hmcr.trace(scene, sampler="nope")
+
+
+def test_a_points_reference_and_a_sampling_study_are_the_command_lines(tmp_path):
+    binary = os.environ["HMCR_BINARY"]
+
+    def cli(*args):
+        subprocess.run([binary, *args, "-q"], check=True, cwd=tmp_path)
+
+    cli("reference", "plates", "--kind", "points", "--points", "2000", "--paths", "16", "--spp",
+        "4", "-o", "cli-ref")
+    scene = hmcr.load_scene("plates")
+    said = hmcr.points_reference(scene, str(tmp_path / "py-ref"), points=2000, paths=16, spp=4)
+    assert said["points"] > 0 and said["noise"] > 0
+    assert (tmp_path / "py-ref" / "points.vtp").read_bytes() == \
+        (tmp_path / "cli-ref" / "points.vtp").read_bytes()
+    cli("study", "plates", "--reference", "cli-ref", "--samplers", "uniform,srhe", "--spp", "10",
+        "--seeds", "1", "-o", "cli-study")
+    rows = hmcr.sampling_study(scene, tmp_path / "cli-ref", tmp_path / "py-study",
+                               samplers=["uniform", "srhe"], spps=[10], seeds=1)
+    assert len(rows) == 2
+    assert all(not isinstance(v, (dict, list)) for row in rows for v in row.values())
+    untimed = lambda views: {name: {k: v for k, v in view.items() if k != "seconds"}
+                             for name, view in views.items()}
+    for row, cell in zip(rows, json.loads((tmp_path / "cli-study" / "table.json").read_text())
+                         ["cells"]):
+        assert row["sampler"] == cell["sampler"] and row["spp"] == cell["spp"]
+        assert row["rmse_a_side"] == cell["views"]["side"]["errors"]["rmse_a"]
+    py_cells = json.loads((tmp_path / "py-study" / "table.json").read_text())["cells"]
+    cli_cells = json.loads((tmp_path / "cli-study" / "table.json").read_text())["cells"]
+    assert [untimed(c["views"]) for c in py_cells] == [untimed(c["views"]) for c in cli_cells]
