@@ -102,7 +102,7 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
 
     TerminalProgress progress(mode, "hmcr " + scene.name);
     BudgetResult found =
-        solve_mesh(scene.mesh, args.options, args.budget, progress, Ranks::world());
+        solve_mesh(scene.mesh, args.options, args.budget, {scene.views}, progress, Ranks::world());
     Solution& sol = found.solution;
     if (!Ranks::world().root()) return 0;  // every rank holds the solution; rank 0 writes it
 

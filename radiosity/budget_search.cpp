@@ -19,10 +19,11 @@ namespace {
 class Search {
 public:
     Search(const PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-           Progress& progress, const Ranks& ranks, KnownProbes* known)
+           const SolveInputs& inputs, Progress& progress, const Ranks& ranks, KnownProbes* known)
         : m_mesh(mesh),
           m_options(options),
           m_budget(budget),
+          m_inputs(inputs),
           m_progress(progress),
           m_ranks(ranks),
           m_known(known) {}
@@ -45,6 +46,7 @@ private:
     SolverOptions m_options;
     ShootingSetup m_shooting;  // the probes' (they solve the same patches)
     BudgetOptions m_budget;
+    SolveInputs m_inputs;
     Progress& m_progress;
     const Ranks& m_ranks;
     KnownProbes* m_known;
@@ -68,7 +70,8 @@ std::size_t Search::probe(double x) {
         }
     }
     m_progress.stage(fmt::format("budget probe {}", k));
-    Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks, m_shooting);
+    Solution sol =
+        refine_pass(build_patch_set(m_mesh), o, m_inputs, m_progress, m_ranks, m_shooting);
     m_shooting = sol.shooting;  // the same scene, buffers and view importance for every probe
     const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
     if (m_known) (*m_known)[o.epsilon] = p.leaves;
@@ -155,13 +158,13 @@ BudgetResult Search::run() {
 }  // namespace
 
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
-                              const BudgetOptions& budget, Progress& progress, const Ranks& ranks,
-                              KnownProbes* known) {
+                              const BudgetOptions& budget, const SolveInputs& inputs,
+                              Progress& progress, const Ranks& ranks, KnownProbes* known) {
     if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
     validate(budget);
     validate(options);
     check_root_count(mesh.n_faces(), options.max_elements);
-    return Search(mesh, options, budget, progress, ranks, known).run();
+    return Search(mesh, options, budget, inputs, progress, ranks, known).run();
 }
 
 void validate(const BudgetOptions& budget) {
@@ -172,8 +175,8 @@ void validate(const BudgetOptions& budget) {
 }
 
 BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-                        Progress& progress, const Ranks& ranks) {
-    if (budget.leaves > 0) return solve_for_budget(mesh, options, budget, progress, ranks);
+                        const SolveInputs& inputs, Progress& progress, const Ranks& ranks) {
+    if (budget.leaves > 0) return solve_for_budget(mesh, options, budget, inputs, progress, ranks);
     validate(options);
     check_root_count(mesh.n_faces(), options.max_elements);  // a root per face, at least
     const auto start = std::chrono::steady_clock::now();
@@ -182,7 +185,7 @@ BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const Bud
     const double patch_seconds = seconds_since(start);
     progress.stage("shooting rays");
     BudgetResult out;
-    out.solution = solve(std::move(patches), options, progress, ranks);
+    out.solution = solve(std::move(patches), options, inputs, progress, ranks);
     out.solution.stats.setup_seconds += patch_seconds;  // the patches are part of the setup
     return out;
 }

@@ -59,7 +59,8 @@ public:
 // share each probe's solve (solver.h). With `known`, the search reads it and adds the probes it
 // solves to it.
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
-                              const BudgetOptions& budget, Progress& progress = no_progress(),
+                              const BudgetOptions& budget, const SolveInputs& inputs = {},
+                              Progress& progress = no_progress(),
                               const Ranks& ranks = Ranks::single(), KnownProbes* known = nullptr);
 
 // Throws InputError on a tolerance outside (0, 1); a budget of 0 leaves means none.
@@ -70,6 +71,7 @@ void validate(const BudgetOptions& budget);
 // output needs of it, so the mesh is released before the rays are shot; a budget search keeps
 // it, since every probe builds its patches from it.
 BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-                        Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
+                        const SolveInputs& inputs = {}, Progress& progress = no_progress(),
+                        const Ranks& ranks = Ranks::single());
 
 }  // namespace hmcr

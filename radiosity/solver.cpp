@@ -203,9 +203,10 @@ void record_scene(SolveStats& st, const PatchSet& patches) {
 // The receiver weights of view importance (§3.12), empty where the solve has none: shooting's
 // importance, solved first where it has none. Importance weighs the oracle's decisions, so a
 // fixed mesh has no use for it.
-std::span<const Rgb> importance_weights(const SolverOptions& options, bool fixed_mesh,
-                                        const Hierarchy& h, ShootingSetup& shooting, SolveStats& st,
-                                        Progress& progress, const Ranks& ranks) {
+std::span<const Rgb> importance_weights(const SolverOptions& options, std::span<const View> views,
+                                        bool fixed_mesh, const Hierarchy& h,
+                                        ShootingSetup& shooting, SolveStats& st, Progress& progress,
+                                        const Ranks& ranks) {
     std::shared_ptr<const ViewImportance>& importance = shooting.importance;
     if (fixed_mesh || options.importance == Importance::none) {
         importance.reset();
@@ -213,9 +214,9 @@ std::span<const Rgb> importance_weights(const SolverOptions& options, bool fixed
     }
     if (!importance) {
         importance = std::make_shared<const ViewImportance>(
-            solve_view_importance(h.patch_set(), *shooting.scene, options.views, options, ranks));
-        progress.note(fmt::format("view importance of {} view(s): {} rays, {:.2f} s",
-                                  options.views.size(), importance->rays, importance->seconds));
+            solve_view_importance(h.patch_set(), *shooting.scene, views, options, ranks));
+        progress.note(fmt::format("view importance of {} view(s): {} rays, {:.2f} s", views.size(),
+                                  importance->rays, importance->seconds));
     }
     st.importance_rays = importance->rays;
     st.importance_seconds = importance->seconds;
@@ -375,9 +376,10 @@ struct Shooter {
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
 // refining pass's, so that its rays are not theirs again. Runs in the calling thread's task
 // arena, which solve_with() sizes to the solve's threads.
-Solution solve_in_arena(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
-                        ShootingSetup& shooting, Progress& progress, const Ranks& ranks,
-                        std::uint32_t first_iteration, int threads) {
+Solution solve_in_arena(const SolverOptions& options, const SolveInputs& inputs,
+                        const std::function<StartMesh()>& make_mesh, ShootingSetup& shooting,
+                        Progress& progress, const Ranks& ranks, std::uint32_t first_iteration,
+                        int threads) {
     const auto start = Clock::now();
 
     Solution sol;
@@ -400,7 +402,7 @@ Solution solve_in_arena(const SolverOptions& options, const std::function<StartM
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
     const std::span<const Rgb> receiver_weights =
-        importance_weights(options, fixed_mesh, h, shooting, st, progress, ranks);
+        importance_weights(options, inputs.views, fixed_mesh, h, shooting, st, progress, ranks);
     // A fixed mesh has clusters only where its shape has cluster leaves (§2.7).
     std::unique_ptr<ClusterTree>& clusters = sol.clusters;
     if (mesh.clusters) {
@@ -445,16 +447,16 @@ Solution solve_in_arena(const SolverOptions& options, const std::function<StartM
 
 // A solve in a task arena of its own threads: the caller's other work, and TBB's process-wide
 // settings, are left as they were.
-Solution solve_with(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
-                    ShootingSetup& shooting, Progress& progress, const Ranks& ranks,
-                    std::uint32_t first_iteration = 0) {
+Solution solve_with(const SolverOptions& options, const SolveInputs& inputs,
+                    const std::function<StartMesh()>& make_mesh, ShootingSetup& shooting,
+                    Progress& progress, const Ranks& ranks, std::uint32_t first_iteration = 0) {
     validate(options);
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
     tbb::task_arena arena(threads);
     Solution sol;
     arena.execute([&] {
-        sol =
-            solve_in_arena(options, make_mesh, shooting, progress, ranks, first_iteration, threads);
+        sol = solve_in_arena(options, inputs, make_mesh, shooting, progress, ranks, first_iteration,
+                             threads);
     });
     return sol;
 }
@@ -488,14 +490,14 @@ private:
 
 }  // namespace
 
-Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& progress,
-                     const Ranks& ranks, ShootingSetup shooting) {
+Solution refine_pass(PatchSet patches, const SolverOptions& options, const SolveInputs& inputs,
+                     Progress& progress, const Ranks& ranks, ShootingSetup shooting) {
     SolverOptions o = options;
     o.rays = refining_rays(options);
     o.refine_share = 1;
     Solution sol = solve_with(
-        o, [&] { return roots_of(std::move(patches), o, shooting.scene); }, shooting, progress,
-        ranks);
+        o, inputs, [&] { return roots_of(std::move(patches), o, shooting.scene); }, shooting,
+        progress, ranks);
     sol.options = options;
     sol.shooting = std::move(shooting);
     return sol;
@@ -508,7 +510,7 @@ Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     SolverOptions o = options;
     o.rays = options.rays - refining_rays(options);
     Solution sol = solve_with(
-        o, [&] { return frozen_in_place(refined); }, shooting, progress, ranks,
+        o, {}, [&] { return frozen_in_place(refined); }, shooting, progress, ranks,
         std::uint32_t(refined.stats.iterations.size()));
     sol.options = options;
     for (IterationRecord& it : sol.stats.iterations) it.frozen = true;
@@ -516,30 +518,32 @@ Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
     return sol;
 }
 
-Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& progress,
-               const Ranks& ranks) {
-    return solve(build_patch_set(mesh), options, progress, ranks);
+Solution solve(const PatchMesh& mesh, const SolverOptions& options, const SolveInputs& inputs,
+               Progress& progress, const Ranks& ranks) {
+    return solve(build_patch_set(mesh), options, inputs, progress, ranks);
 }
 
-Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress,
-               const Ranks& ranks) {
+Solution solve(PatchSet patches, const SolverOptions& options, const SolveInputs& inputs,
+               Progress& progress, const Ranks& ranks) {
     if (!refines_then_freezes(options)) {
         ShootingSetup shooting;
         return solve_with(
-            options, [&] { return roots_of(std::move(patches), options, shooting.scene); },
+            options, inputs, [&] { return roots_of(std::move(patches), options, shooting.scene); },
             shooting, progress, ranks);
     }
     validate(options);
     const double share = double(refining_rays(options)) / double(options.rays);
     PartProgress first(progress, 0, share), second(progress, share, 1 - share);
-    return freeze_pass(refine_pass(std::move(patches), options, first, ranks), second, ranks);
+    return freeze_pass(refine_pass(std::move(patches), options, inputs, first, ranks), second,
+                       ranks);
 }
 
 Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Solution& shape,
                        Progress& progress) {
     ShootingSetup shooting;
     return solve_with(
-        options, [&] { return frozen_like(build_patch_set(mesh), options, shape, shooting.scene); },
+        options, {},
+        [&] { return frozen_like(build_patch_set(mesh), options, shape, shooting.scene); },
         shooting, progress, Ranks::single());
 }
 

@@ -10,6 +10,7 @@
 #include "common/progress.h"
 #include "common/ranks.h"
 #include "meshes/patch_mesh.h"
+#include "meshes/view.h"
 #include "radiosity/clusters.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/solver_options.h"
@@ -28,6 +29,12 @@ struct ShootingSetup {
     std::shared_ptr<const EmbreeScene> scene;
     std::shared_ptr<ShootingBuffers> buffers;
     std::shared_ptr<const ViewImportance> importance;
+};
+
+// What a solve takes besides its settings: the scene's views, which importance = views solves
+// for (the caller keeps them alive for the solve).
+struct SolveInputs {
+    std::span<const View> views;
 };
 
 struct IterationRecord {
@@ -127,12 +134,12 @@ struct Solution {
 // Reports the fraction of the rays shot to `progress`. `ranks` share every iteration's rays
 // (rank_merge.h) and all return the same solution, bit for bit, as one process would. With
 // options.refine_share below 1 it is refine_pass, then freeze_pass.
-Solution solve(const PatchMesh& mesh, const SolverOptions& options,
+Solution solve(const PatchMesh& mesh, const SolverOptions& options, const SolveInputs& inputs = {},
                Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 // The same from the mesh's patches (build_patch_set), so that the mesh can be released before
 // the rays are shot.
-Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress = no_progress(),
-               const Ranks& ranks = Ranks::single());
+Solution solve(PatchSet patches, const SolverOptions& options, const SolveInputs& inputs = {},
+               Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 
 // Refine-then-freeze (docs/design.md §3.10). refine_pass is the refined solve with the refining
 // share of the rays, what a budget search probes; freeze_pass solves its leaves again from
@@ -140,7 +147,7 @@ Solution solve(PatchSet patches, const SolverOptions& options, Progress& progres
 // both passes' iterations. With refine_share 1 they are solve() and the identity. refine_pass
 // shoots with `shooting` where given (a budget search's earlier probe's, of these patches) and
 // keeps its own in the solution; freeze_pass shoots with that and lets it go.
-Solution refine_pass(PatchSet patches, const SolverOptions& options,
+Solution refine_pass(PatchSet patches, const SolverOptions& options, const SolveInputs& inputs = {},
                      Progress& progress = no_progress(), const Ranks& ranks = Ranks::single(),
                      ShootingSetup shooting = {});
 Solution freeze_pass(Solution refined, Progress& progress = no_progress(),

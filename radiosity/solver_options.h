@@ -18,9 +18,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
 
-#include "meshes/view.h"
 #include "radiosity/oracle_registry.h"
 #include "rays/sobol.h"
 
@@ -185,8 +183,6 @@ struct SolverOptions {
 #define HMCR_FIELD(type, name, default_value, ...) type name = default_value;
     HMCR_SOLVER_SETTINGS(HMCR_FIELD)
 #undef HMCR_FIELD
-    // Not a setting: the scene's views, which importance = views solves for.
-    std::vector<View> views;
 };
 
 // The threshold a solve uses: options.epsilon, or the oracle's default where it is not given.

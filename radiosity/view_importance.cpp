@@ -122,7 +122,7 @@ ViewImportance solve_view_importance(const PatchSet& patches, const EmbreeScene&
     o.refine_share = 1;
     o.uniform_max_area = patches.total_area;  // every patch one element
     o.seed = Rng(options.seed, kImportanceKey).next_u64();
-    const Solution sol = solve(std::move(adjoint), o, no_progress(), ranks);
+    const Solution sol = solve(std::move(adjoint), o, {}, no_progress(), ranks);
 
     // K = rho I per side; the weights are K / mean I, the mean over the area that reflects
     // each channel (where rho is 0 the weight is 0 whatever I is).

@@ -89,8 +89,7 @@ TEST(RefineThenFreeze, TheStatisticsJoinBothPasses) {
     const Scene scene = load_scene("cornell");
     SolverOptions o = options("kl", 300'000, 0.25);
     o.importance = Importance::views;
-    o.views = scene.views;
-    Solution refined = refine_pass(build_patch_set(scene.mesh), o);
+    Solution refined = refine_pass(build_patch_set(scene.mesh), o, {scene.views});
     const SolveStats r = refined.stats;
     const Solution both = freeze_pass(std::move(refined));
     const SolveStats& s = both.stats;
@@ -133,8 +132,7 @@ TEST(RefineThenFreeze, ViewImportanceGivesTheSameBitsOnOneAndTwoThreads) {
     const Scene scene = load_scene("cornell");
     SolverOptions o = options("kl", 300'000, 0.5);
     o.importance = Importance::views;
-    o.views = scene.views;
-    EXPECT_GT(solve_on_one_and_two_threads(scene.mesh, o).stats.importance_rays, 0u);
+    EXPECT_GT(solve_on_one_and_two_threads(scene.mesh, o, {scene.views}).stats.importance_rays, 0u);
 }
 
 // The frozen pass solves the refining pass's tree again in place: nothing the refining pass
@@ -176,7 +174,7 @@ TEST(RefineThenFreeze, ThePassesShareOneSceneAndAFinishedSolveLetsItGo) {
     const std::weak_ptr<const EmbreeScene> kept = refined.shooting.scene;
     const std::weak_ptr<ShootingBuffers> kept_buffers = refined.shooting.buffers;
     // A probe given them shoots with them and hands them on.
-    const Solution probe = refine_pass(build_patch_set(scene.mesh), o, no_progress(),
+    const Solution probe = refine_pass(build_patch_set(scene.mesh), o, {}, no_progress(),
                                        Ranks::single(), refined.shooting);
     EXPECT_EQ(probe.shooting.scene, refined.shooting.scene);
     EXPECT_EQ(probe.shooting.buffers, refined.shooting.buffers);
@@ -231,11 +229,11 @@ TEST(RefineThenFreeze, ABudgetSearchSharesItsViewImportance) {
     Scene scene = load_scene("cornell");
     SolverOptions o = options("power", 200'000, 0.5);
     o.importance = Importance::views;
-    o.views = scene.views;
-    const BudgetResult found = solve_for_budget(scene.mesh, o, {.leaves = 3000, .tolerance = 0.02});
+    const BudgetResult found =
+        solve_for_budget(scene.mesh, o, {.leaves = 3000, .tolerance = 0.02}, {scene.views});
     ASSERT_GT(found.probes.size(), 1u);
     o.epsilon = found.solution.stats.epsilon;
-    const Solution alone = solve(scene.mesh, o);
+    const Solution alone = solve(scene.mesh, o, {scene.views});
     expect_same_leaves(*found.solution.hierarchy, *alone.hierarchy);
     EXPECT_EQ(found.solution.stats.importance_rays, alone.stats.importance_rays);
 }

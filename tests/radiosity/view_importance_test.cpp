@@ -74,10 +74,10 @@ TEST(ViewImportance, ElementsGoWhereTheViewLooks) {
     o.rays = 200'000;
     o.epsilon = 2e-5;
     o.refine_share = 1;
-    o.views = {test_view({0.25, 0.8, 0.5}, {0.25, 0, 0.5}, 30, 64)};
+    const std::vector<View> views{test_view({0.25, 0.8, 0.5}, {0.25, 0, 0.5}, 30, 64)};
     auto floor_halves = [&](Importance importance) {
         o.importance = importance;
-        const Solution sol = solve(mesh, o);
+        const Solution sol = solve(mesh, o, {views});
         const PatchSet& ps = sol.hierarchy->patch_set();
         std::array<double, 2> leaves{0, 0};  // left (x < 0.5), right
         sol.hierarchy->for_each_leaf([&](const Element& e) {
