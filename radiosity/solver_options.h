@@ -176,7 +176,8 @@ inline constexpr std::uint64_t kMaxRays = 1'000'000'000'000'000;
 // Elements in a quarter of this machine's memory.
 std::uint64_t default_max_elements();
 
-// epsilon's default: the oracle's own (Oracle::default_epsilon).
+// epsilon's default: the oracle's own (Oracle::default_epsilon), which a solve resolves when it
+// derives its passes (passes_of, radiosity/solve_passes.h).
 inline constexpr double kOracleDefault = std::numeric_limits<double>::quiet_NaN();
 
 struct SolverOptions {
@@ -184,10 +185,5 @@ struct SolverOptions {
     HMCR_SOLVER_SETTINGS(HMCR_FIELD)
 #undef HMCR_FIELD
 };
-
-// The threshold a solve uses: options.epsilon, or the oracle's default where it is not given.
-inline double resolved_epsilon(const SolverOptions& options) {
-    return std::isnan(options.epsilon) ? options.oracle->default_epsilon() : options.epsilon;
-}
 
 }  // namespace hmcr

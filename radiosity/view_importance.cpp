@@ -104,7 +104,7 @@ std::vector<double> view_pixel_shares(const PatchSet& patches, const EmbreeScene
 
 ViewImportance solve_view_importance(const PatchSet& patches, const EmbreeScene& scene,
                                      std::span<const View> views, const SolverOptions& options,
-                                     const Ranks& ranks) {
+                                     std::uint64_t rays, const Ranks& ranks) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<double> shares;
     try {
@@ -116,7 +116,9 @@ ViewImportance solve_view_importance(const PatchSet& patches, const EmbreeScene&
     if (adjoint.max_emitted_power <= 0) {
         throw InputError("view importance: the views see no side that reflects light");
     }
+    // The adjoint solve's own settings, from the radiance solve's.
     SolverOptions o = options;
+    o.rays = rays;
     o.importance = Importance::none;
     o.control_variate = ControlVariate::none;
     o.refine_share = 1;

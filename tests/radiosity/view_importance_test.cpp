@@ -54,7 +54,7 @@ TEST(ViewImportance, TheAdjointTotalIsExactInAClosedBox) {
     SolverOptions o;
     o.rays = 50'000;
     const std::vector<View> views{test_view({0.5, 0.5, 0.5}, {0.1, 0.2, 0.0}, 60, 24)};
-    const ViewImportance vi = solve_view_importance(ps, scene, views, o);
+    const ViewImportance vi = solve_view_importance(ps, scene, views, o, o.rays);
     double total = 0;
     for (std::size_t p = 0; p < ps.patches.size(); ++p) {
         total += ps.patches[p].area * vi.importance[2 * p][1];
@@ -99,7 +99,7 @@ TEST(ViewImportance, ViewsThatSeeNothingAreAnInputError) {
     const PatchSet ps = build_patch_set(make_patch_mesh({plate}));
     const EmbreeScene scene(ps);
     const std::vector<View> away{test_view({0, 0, 1}, {0, 0, 2}, 40, 8)};
-    EXPECT_THROW(solve_view_importance(ps, scene, away, SolverOptions{}), InputError);
+    EXPECT_THROW(solve_view_importance(ps, scene, away, SolverOptions{}, 1000), InputError);
 }
 
 }  // namespace
