@@ -10,7 +10,6 @@
 
 #include "common/stopwatch.h"
 #include "radiosity/solve_passes.h"
-#include "radiosity/solver_settings.h"
 
 namespace hmcr {
 namespace {
@@ -172,8 +171,6 @@ BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& option
                               const BudgetOptions& budget, const SolveInputs& inputs,
                               Progress& progress, const Ranks& ranks, KnownProbes* known) {
     if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
-    validate(budget);
-    validate(options);
     check_root_count(mesh.n_faces(), options.max_elements);
     return Search(mesh, options, budget, inputs, progress, ranks, known).run();
 }
@@ -188,7 +185,6 @@ void validate(const BudgetOptions& budget) {
 BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
                         const SolveInputs& inputs, Progress& progress, const Ranks& ranks) {
     if (budget.leaves > 0) return solve_for_budget(mesh, options, budget, inputs, progress, ranks);
-    validate(options);
     check_root_count(mesh.n_faces(), options.max_elements);  // a root per face, at least
     const auto start = std::chrono::steady_clock::now();
     PatchSet patches = build_patch_set(mesh);

@@ -22,7 +22,6 @@
 #include "radiosity/ray_schedule.h"
 #include "radiosity/shooting.h"
 #include "radiosity/solve_passes.h"
-#include "radiosity/solver_settings.h"
 #include "radiosity/view_importance.h"
 #include "rays/embree_scene.h"
 
@@ -370,7 +369,7 @@ struct Shooter {
     }
 };
 
-// make_mesh() builds the mesh once the options are validated and the threads limited, and the
+// make_mesh() builds the mesh once the threads are limited, and the
 // scene before its roots when shooting.scene is none; the solve shoots in shooting.scene
 // (building it, as part of its setup, if make_mesh did not) through shooting.buffers (made
 // here if none), with shooting.importance where a refining solve weighs by it (solved here if
@@ -452,7 +451,6 @@ Solution solve_in_arena(const SolverOptions& options, const Pass& pass, const So
 Solution solve_with(const SolverOptions& options, const Pass& pass, const SolveInputs& inputs,
                     const std::function<StartMesh()>& make_mesh, ShootingSetup& shooting,
                     Progress& progress, const Ranks& ranks, std::uint32_t first_iteration = 0) {
-    validate(options);
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
     tbb::task_arena arena(threads);
     Solution sol;
@@ -532,7 +530,6 @@ Solution solve(PatchSet patches, const SolverOptions& options, const SolveInputs
         return refine_pass(std::move(patches), options, passes.refining, inputs, shooting, progress,
                            ranks);
     }
-    validate(options);
     const double share = double(passes.refining.rays) / double(options.rays);
     PartProgress first(progress, 0, share), second(progress, share, 1 - share);
     Solution refined =

@@ -113,10 +113,11 @@ struct Solution {
     const std::vector<std::int32_t>& cluster_of_side() const;
 };
 
-// Throws InputError on a bad option (unknown oracle, no rays, ...) or a scene without light.
-// Reports the fraction of the rays shot to `progress`. `ranks` share every iteration's rays
-// (rank_merge.h) and all return the same solution, bit for bit, as one process would. With
-// options.refine_share below 1 it is a refining pass, then a frozen one
+// One solve at the options' epsilon. The options are checked where they are read (validate,
+// radiosity/solver_settings.h), once, and taken here as valid. Throws InputError on a scene
+// without light. Reports the fraction of the rays shot to `progress`. `ranks` share every
+// iteration's rays (rank_merge.h) and all return the same solution, bit for bit, as one process
+// would. With options.refine_share below 1 it is a refining pass, then a frozen one
 // (radiosity/solve_passes.h).
 Solution solve(const PatchMesh& mesh, const SolverOptions& options, const SolveInputs& inputs = {},
                Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
