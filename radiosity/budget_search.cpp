@@ -8,7 +8,6 @@
 #include <optional>
 #include <stdexcept>
 
-#include "common/stopwatch.h"
 #include "radiosity/solve_passes.h"
 
 namespace hmcr {
@@ -180,21 +179,6 @@ void validate(const BudgetOptions& budget) {
         throw InputError(
             fmt::format("budget-tolerance must be in (0, 1), got {}", budget.tolerance));
     }
-}
-
-BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-                        const SolveInputs& inputs, Progress& progress, const Ranks& ranks) {
-    if (budget.leaves > 0) return solve_for_budget(mesh, options, budget, inputs, progress, ranks);
-    check_root_count(mesh.n_faces(), options.max_elements);  // a root per face, at least
-    const auto start = std::chrono::steady_clock::now();
-    PatchSet patches = build_patch_set(mesh);
-    release(mesh);
-    const double patch_seconds = seconds_since(start);
-    progress.stage("shooting rays");
-    BudgetResult out;
-    out.solution = solve(std::move(patches), options, inputs, progress, ranks);
-    out.solution.stats.setup_seconds += patch_seconds;  // the patches are part of the setup
-    return out;
 }
 
 void to_json(nlohmann::json& j, const BudgetProbe& p) {

@@ -65,15 +65,7 @@ BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& option
                               const Ranks& ranks = Ranks::single(), KnownProbes* known = nullptr);
 
 // Throws InputError on a tolerance outside (0, 1); a budget of 0 leaves means none. What reads
-// a budget calls it (app/, studies/).
+// a budget calls it (app/solve.cpp).
 void validate(const BudgetOptions& budget);
-
-// One solve at epsilon when budget.leaves is 0, else a budget search: what `hmcr solve` asks.
-// A solve at epsilon needs the mesh only for its patches (build_patch_set), which keep what the
-// output needs of it, so the mesh is released before the rays are shot; a budget search keeps
-// it, since every probe builds its patches from it.
-BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-                        const SolveInputs& inputs = {}, Progress& progress = no_progress(),
-                        const Ranks& ranks = Ranks::single());
 
 }  // namespace hmcr
