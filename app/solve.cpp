@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,7 +19,10 @@
 #include "common/output_paths.h"
 #include "common/output_set.h"
 #include "common/stopwatch.h"
+#include "meshes/patch_mesh.h"
 #include "radiosity/budget_search.h"
+#include "radiosity/hierarchy.h"
+#include "radiosity/solver.h"
 #include "viz/paraview_state.h"
 #include "viz/solution_file.h"
 
@@ -65,6 +69,26 @@ void report(const Scene& scene, const Solution& sol, const RunTimings& timings, 
                timings.total_seconds, vtp.string(), json.string(), pvsm.string());
 }
 
+// One solve at epsilon when budget.leaves is 0, else a budget search. A solve at epsilon needs
+// the mesh only for its patches (build_patch_set), which keep what the output needs of it, so
+// the mesh is released before the rays are shot; a budget search keeps it, since every probe
+// builds its patches from it.
+BudgetResult solve_as_asked(PatchMesh& mesh, const SolverOptions& options,
+                            const BudgetOptions& budget, const SolveInputs& inputs,
+                            Progress& progress, const Ranks& ranks) {
+    if (budget.leaves > 0) return solve_for_budget(mesh, options, budget, inputs, progress, ranks);
+    check_root_count(mesh.n_faces(), options.max_elements);  // a root per face, at least
+    const auto start = std::chrono::steady_clock::now();
+    PatchSet patches = build_patch_set(mesh);
+    release(mesh);
+    const double patch_seconds = seconds_since(start);
+    progress.stage("shooting rays");
+    BudgetResult out;
+    out.solution = solve(std::move(patches), options, inputs, progress, ranks);
+    out.solution.stats.setup_seconds += patch_seconds;  // the patches are part of the setup
+    return out;
+}
+
 // The budget options are checked whether or not a budget is given: a bad value is a mistake
 // either way.
 void check_budget(const SolveArgs& args, const CLI::App& cmd) {
@@ -96,13 +120,13 @@ int run_solve(SolveArgs& args, const std::string& command_line) {
     together(Ranks::world(), [&] {
         if (Ranks::world().root()) out.emplace(std::vector<fs::path>{vtp, json, pvsm});
     });
-    const SceneIdentity identity = scene_identity(scene);  // before solve_mesh releases the mesh
+    const SceneIdentity identity = scene_identity(scene);  // before the solve releases the mesh
     RunTimings timings;
     timings.load_seconds = seconds_since(start);
 
     TerminalProgress progress(mode, "hmcr " + scene.name);
-    BudgetResult found =
-        solve_mesh(scene.mesh, args.options, args.budget, progress, Ranks::world());
+    BudgetResult found = solve_as_asked(scene.mesh, args.options, args.budget, {scene.views},
+                                        progress, Ranks::world());
     Solution& sol = found.solution;
     if (!Ranks::world().root()) return 0;  // every rank holds the solution; rank 0 writes it
 

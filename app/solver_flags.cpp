@@ -58,7 +58,6 @@ void apply_scene_settings(const SolverFlags& flags, const Scene& scene, SolverOp
         },
         options, from_scene);
     validate(options);
-    options.views = scene.views;
 }
 
 }  // namespace hmcr

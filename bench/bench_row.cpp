@@ -14,6 +14,7 @@
 #include "common/stopwatch.h"
 #include "meshes/scene.h"
 #include "radiosity/solver.h"
+#include "radiosity/solver_settings.h"
 
 namespace hmcr::bench {
 
@@ -33,6 +34,7 @@ RowResult run_row(const RowSpec& spec) {
     o.lines = kLines;
     o.threads = spec.threads;
     o.refine_share = spec.refine_share;
+    validate(o);  // the spec's values, as read
     double first_shooting = 0;
     {
         const Solution sol = solve(scene.mesh, o);

@@ -127,7 +127,6 @@ SolverOptions solve_options(const Scene& scene, const py::kwargs& keywords, Solv
     for (const auto& [key, value] : keywords) values[py::str(key)] = keyword_json(value);
     apply_settings(values, base);
     validate(base);
-    base.views = scene.views;
     return base;
 }
 
@@ -188,13 +187,15 @@ std::unique_ptr<PySolution> solve_scene(const Scene& scene, py::object progress,
     }
     auto result = std::make_unique<PySolution>();
     result->scene = scene_identity(scene);
+    const SolveInputs inputs{scene.views};
     PythonProgress told(std::move(progress));
     const CallersFloatMode mode;
     try {
         const py::gil_scoped_release released;
         result->solution =
-            budget > 0 ? solve_for_budget(scene.mesh, options, budget_options, told).solution
-                       : solve(build_patch_set(scene.mesh), options, told);
+            budget > 0
+                ? solve_for_budget(scene.mesh, options, budget_options, inputs, told).solution
+                : solve(build_patch_set(scene.mesh), options, inputs, told);
         result->shaded = shade(result->solution, crease_degrees);
     } catch (const Interrupted&) {
         told.raise_if_stopped();

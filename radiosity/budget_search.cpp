@@ -8,8 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "common/stopwatch.h"
-#include "radiosity/solver_settings.h"
+#include "radiosity/solve_passes.h"
 
 namespace hmcr {
 namespace {
@@ -19,10 +18,12 @@ namespace {
 class Search {
 public:
     Search(const PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-           Progress& progress, const Ranks& ranks, KnownProbes* known)
+           const SolveInputs& inputs, Progress& progress, const Ranks& ranks, KnownProbes* known)
         : m_mesh(mesh),
           m_options(options),
           m_budget(budget),
+          m_inputs(inputs),
+          m_passes(passes_of(options)),
           m_progress(progress),
           m_ranks(ranks),
           m_known(known) {}
@@ -42,9 +43,16 @@ private:
     [[noreturn]] void fail(const std::string& why) const;
 
     const PatchMesh& m_mesh;
-    SolverOptions m_options;
-    ShootingSetup m_shooting;  // the probes' (they solve the same patches)
+    const SolverOptions& m_options;
     BudgetOptions m_budget;
+    SolveInputs m_inputs;
+    // Every probe is a refining pass of the refining rays at its own epsilon; the accepted one
+    // is then frozen with the rest.
+    Passes m_passes;
+    // The probes' scene, buffers and view importance (they solve the same patches), made by the
+    // first and handed to each next probe, then to the frozen pass.
+    ShootingSetup m_shooting;
+    double m_accepted_epsilon = 0;
     Progress& m_progress;
     const Ranks& m_ranks;
     KnownProbes* m_known;
@@ -55,27 +63,29 @@ private:
 };
 
 std::size_t Search::probe(double x) {
-    SolverOptions o = m_options;
-    o.epsilon = std::exp(x);
+    const Pass pass{std::exp(x), m_passes.refining.rays};
     const std::size_t k = m_result.probes.size() + 1;
     if (m_known) {
-        const auto it = m_known->find(o.epsilon);
+        const auto it = m_known->find(pass.epsilon);
         if (it != m_known->end() && !within(it->second)) {
-            record(x, {o.epsilon, it->second, 0, true});
+            record(x, {pass.epsilon, it->second, 0, true});
             m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves (known)", k,
-                                        o.epsilon, it->second));
+                                        pass.epsilon, it->second));
             return it->second;
         }
     }
     m_progress.stage(fmt::format("budget probe {}", k));
-    Solution sol = refine_pass(build_patch_set(m_mesh), o, m_progress, m_ranks, m_shooting);
-    m_shooting = sol.shooting;  // the same scene, buffers and view importance for every probe
-    const BudgetProbe p{o.epsilon, sol.stats.leaves, sol.stats.total_seconds};
-    if (m_known) (*m_known)[o.epsilon] = p.leaves;
+    Solution sol = refine_pass(build_patch_set(m_mesh), m_options, pass, m_inputs, m_shooting,
+                               m_progress, m_ranks);
+    const BudgetProbe p{pass.epsilon, sol.stats.leaves, sol.stats.total_seconds};
+    if (m_known) (*m_known)[pass.epsilon] = p.leaves;
     record(x, p);
     m_progress.note(fmt::format("budget probe {}: epsilon {:.4g} -> {} leaves ({:.1f} s)", k,
                                 p.epsilon, p.leaves, p.seconds));
-    if (within(p.leaves)) m_result.solution = std::move(sol);
+    if (within(p.leaves)) {
+        m_result.solution = std::move(sol);
+        m_accepted_epsilon = pass.epsilon;
+    }
     return p.leaves;
 }
 
@@ -120,12 +130,14 @@ BudgetResult Search::run() {
                         "clustering (try --clustering oriented)",
                         patches));
     }
-    const double start = resolved_epsilon(m_options);
+    const double start = m_passes.refining.epsilon;
     double x = std::log(start);
     for (int k = 0; k < m_budget.max_probes; ++k) {
         if (within(probe(x))) {
-            if (m_options.refine_share < 1) m_progress.stage("the mesh frozen");
-            m_result.solution = freeze_pass(std::move(m_result.solution), m_progress, m_ranks);
+            const Pass frozen{m_accepted_epsilon, m_passes.frozen.rays};
+            if (frozen.rays > 0) m_progress.stage("the mesh frozen");
+            m_result.solution = freeze_pass(std::move(m_result.solution), frozen,
+                                            std::move(m_shooting), m_progress, m_ranks);
             return std::move(m_result);
         }
         // The leaf count is a step function of epsilon: one decision flipping near the top of a
@@ -155,13 +167,11 @@ BudgetResult Search::run() {
 }  // namespace
 
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
-                              const BudgetOptions& budget, Progress& progress, const Ranks& ranks,
-                              KnownProbes* known) {
+                              const BudgetOptions& budget, const SolveInputs& inputs,
+                              Progress& progress, const Ranks& ranks, KnownProbes* known) {
     if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
-    validate(budget);
-    validate(options);
     check_root_count(mesh.n_faces(), options.max_elements);
-    return Search(mesh, options, budget, progress, ranks, known).run();
+    return Search(mesh, options, budget, inputs, progress, ranks, known).run();
 }
 
 void validate(const BudgetOptions& budget) {
@@ -169,22 +179,6 @@ void validate(const BudgetOptions& budget) {
         throw InputError(
             fmt::format("budget-tolerance must be in (0, 1), got {}", budget.tolerance));
     }
-}
-
-BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-                        Progress& progress, const Ranks& ranks) {
-    if (budget.leaves > 0) return solve_for_budget(mesh, options, budget, progress, ranks);
-    validate(options);
-    check_root_count(mesh.n_faces(), options.max_elements);  // a root per face, at least
-    const auto start = std::chrono::steady_clock::now();
-    PatchSet patches = build_patch_set(mesh);
-    release(mesh);
-    const double patch_seconds = seconds_since(start);
-    progress.stage("shooting rays");
-    BudgetResult out;
-    out.solution = solve(std::move(patches), options, progress, ranks);
-    out.solution.stats.setup_seconds += patch_seconds;  // the patches are part of the setup
-    return out;
 }
 
 void to_json(nlohmann::json& j, const BudgetProbe& p) {

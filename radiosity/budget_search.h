@@ -55,21 +55,17 @@ public:
 // Starts from options.epsilon (or the oracle's default). Each probe is a stage of `progress`,
 // and its result a note. Throws BudgetNotReached with a one-line explanation when the budget
 // cannot be reached: below the patch count, above what the area/depth limits and the rays
-// allow, or not within the tolerance after max_probes; InputError on bad options. `ranks`
+// allow, or not within the tolerance after max_probes. The options and the budget are checked
+// where they are read (validate), not here. `ranks`
 // share each probe's solve (solver.h). With `known`, the search reads it and adds the probes it
 // solves to it.
 BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& options,
-                              const BudgetOptions& budget, Progress& progress = no_progress(),
+                              const BudgetOptions& budget, const SolveInputs& inputs = {},
+                              Progress& progress = no_progress(),
                               const Ranks& ranks = Ranks::single(), KnownProbes* known = nullptr);
 
-// Throws InputError on a tolerance outside (0, 1); a budget of 0 leaves means none.
+// Throws InputError on a tolerance outside (0, 1); a budget of 0 leaves means none. What reads
+// a budget calls it (app/solve.cpp).
 void validate(const BudgetOptions& budget);
-
-// One solve at epsilon when budget.leaves is 0, else a budget search: what `hmcr solve` asks.
-// A solve at epsilon needs the mesh only for its patches (build_patch_set), which keep what the
-// output needs of it, so the mesh is released before the rays are shot; a budget search keeps
-// it, since every probe builds its patches from it.
-BudgetResult solve_mesh(PatchMesh& mesh, const SolverOptions& options, const BudgetOptions& budget,
-                        Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 
 }  // namespace hmcr

@@ -21,7 +21,7 @@
 #include "radiosity/rank_merge.h"
 #include "radiosity/ray_schedule.h"
 #include "radiosity/shooting.h"
-#include "radiosity/solver_settings.h"
+#include "radiosity/solve_passes.h"
 #include "radiosity/view_importance.h"
 #include "rays/embree_scene.h"
 
@@ -201,9 +201,10 @@ void record_scene(SolveStats& st, const PatchSet& patches) {
 }
 
 // The receiver weights of view importance (§3.12), empty where the solve has none: shooting's
-// importance, solved first where it has none. Importance weighs the oracle's decisions, so a
-// fixed mesh has no use for it.
-std::span<const Rgb> importance_weights(const SolverOptions& options, bool fixed_mesh,
+// importance, solved first (from the pass's `rays`) where it has none. Importance weighs the
+// oracle's decisions, so a fixed mesh has no use for it.
+std::span<const Rgb> importance_weights(const SolverOptions& options, std::uint64_t rays,
+                                        std::span<const View> views, bool fixed_mesh,
                                         const Hierarchy& h, ShootingSetup& shooting, SolveStats& st,
                                         Progress& progress, const Ranks& ranks) {
     std::shared_ptr<const ViewImportance>& importance = shooting.importance;
@@ -213,9 +214,9 @@ std::span<const Rgb> importance_weights(const SolverOptions& options, bool fixed
     }
     if (!importance) {
         importance = std::make_shared<const ViewImportance>(
-            solve_view_importance(h.patch_set(), *shooting.scene, options.views, options, ranks));
-        progress.note(fmt::format("view importance of {} view(s): {} rays, {:.2f} s",
-                                  options.views.size(), importance->rays, importance->seconds));
+            solve_view_importance(h.patch_set(), *shooting.scene, views, options, rays, ranks));
+        progress.note(fmt::format("view importance of {} view(s): {} rays, {:.2f} s", views.size(),
+                                  importance->rays, importance->seconds));
     }
     st.importance_rays = importance->rays;
     st.importance_seconds = importance->seconds;
@@ -284,6 +285,7 @@ std::size_t settled_leaves(const Hierarchy& h, ClusterTree* clusters) {
 // and pulls, until the unshot power falls below the stop or the rays run out.
 struct Shooter {
     const SolverOptions& options;
+    std::uint64_t rays;  // the pass's
     const RefinementContext& ctx;
     ClusterTree* clusters;
     bool fixed_mesh;
@@ -301,7 +303,7 @@ struct Shooter {
     Rgb run(std::uint32_t first_iteration) {
         Hierarchy& h = ctx.hierarchy;
         const double emitted = channel_sum(st.emitted_power);
-        RaySchedule schedule(options.rays, options.stop * emitted);
+        RaySchedule schedule(rays, options.stop * emitted);
         Rgb unshot = h.unshot_power();
         Sources sources;
         // The cap only guards against a scene that never converges; stop ends real solves.
@@ -348,17 +350,17 @@ struct Shooter {
     }
 
     // Iteration `it`'s rays, on every rank, with progress and interruption per batch.
-    IterationOutcome shoot(std::uint32_t it, std::uint64_t rays, const Shift& split,
+    IterationOutcome shoot(std::uint32_t it, std::uint64_t it_rays, const Shift& split,
                            const Sources& sources) {
         const std::uint64_t done_before = st.rays;
         IterationOutcome out;
         together(ranks, [&] {
             out = shoot_on_rank(
                 ctx, split.on ? sources.shifted : sources.all, split.on ? &sources.zero : nullptr,
-                it, rays, split.zero_rays, ranks,
+                it, it_rays, split.zero_rays, ranks,
                 [&](std::uint64_t n) {
                     const double done = double(done_before) + double(n) * ranks.size();
-                    progress.advance(std::min(1.0, done / double(options.rays)));
+                    progress.advance(std::min(1.0, done / double(rays)));
                     throw_if_interrupted();
                 },
                 buffers);
@@ -367,7 +369,7 @@ struct Shooter {
     }
 };
 
-// make_mesh() builds the mesh once the options are validated and the threads limited, and the
+// make_mesh() builds the mesh once the threads are limited, and the
 // scene before its roots when shooting.scene is none; the solve shoots in shooting.scene
 // (building it, as part of its setup, if make_mesh did not) through shooting.buffers (made
 // here if none), with shooting.importance where a refining solve weighs by it (solved here if
@@ -375,16 +377,17 @@ struct Shooter {
 // The iterations' rays are keyed from `first_iteration` on: a frozen pass starts after its
 // refining pass's, so that its rays are not theirs again. Runs in the calling thread's task
 // arena, which solve_with() sizes to the solve's threads.
-Solution solve_in_arena(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
-                        ShootingSetup& shooting, Progress& progress, const Ranks& ranks,
-                        std::uint32_t first_iteration, int threads) {
+Solution solve_in_arena(const SolverOptions& options, const Pass& pass, const SolveInputs& inputs,
+                        const std::function<StartMesh()>& make_mesh, ShootingSetup& shooting,
+                        Progress& progress, const Ranks& ranks, std::uint32_t first_iteration,
+                        int threads) {
     const auto start = Clock::now();
 
     Solution sol;
     sol.options = options;
     SolveStats& st = sol.stats;
     const Oracle& oracle = *options.oracle;
-    st.epsilon = resolved_epsilon(options);
+    st.epsilon = pass.epsilon;
     st.threads = threads;
     st.ranks = ranks.size();
 
@@ -399,8 +402,8 @@ Solution solve_in_arena(const SolverOptions& options, const std::function<StartM
     const bool fixed_mesh = mesh.frozen;
     const std::unique_ptr<LinkCache> cache =
         fixed_mesh ? nullptr : make_link_cache(oracle, options);
-    const std::span<const Rgb> receiver_weights =
-        importance_weights(options, fixed_mesh, h, shooting, st, progress, ranks);
+    const std::span<const Rgb> receiver_weights = importance_weights(
+        options, pass.rays, inputs.views, fixed_mesh, h, shooting, st, progress, ranks);
     // A fixed mesh has clusters only where its shape has cluster leaves (§2.7).
     std::unique_ptr<ClusterTree>& clusters = sol.clusters;
     if (mesh.clusters) {
@@ -433,8 +436,8 @@ Solution solve_in_arena(const SolverOptions& options, const std::function<StartM
             ? std::optional<ZeroSurfaces>(control_variate_surfaces(ctx, h))
             : std::nullopt;
     if (!shooting.buffers) shooting.buffers = std::make_shared<ShootingBuffers>();
-    Shooter shooter{options,           ctx,      clusters.get(), fixed_mesh, zero,
-                    *shooting.buffers, progress, ranks,          st};
+    Shooter shooter{options, pass.rays,         ctx,      clusters.get(), fixed_mesh,
+                    zero,    *shooting.buffers, progress, ranks,          st};
     const Rgb unshot = shooter.run(first_iteration);
     st.unshot_power = unshot;
     progress.advance(1.0);
@@ -445,31 +448,22 @@ Solution solve_in_arena(const SolverOptions& options, const std::function<StartM
 
 // A solve in a task arena of its own threads: the caller's other work, and TBB's process-wide
 // settings, are left as they were.
-Solution solve_with(const SolverOptions& options, const std::function<StartMesh()>& make_mesh,
-                    ShootingSetup& shooting, Progress& progress, const Ranks& ranks,
-                    std::uint32_t first_iteration = 0) {
-    validate(options);
+Solution solve_with(const SolverOptions& options, const Pass& pass, const SolveInputs& inputs,
+                    const std::function<StartMesh()>& make_mesh, ShootingSetup& shooting,
+                    Progress& progress, const Ranks& ranks, std::uint32_t first_iteration = 0) {
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
     tbb::task_arena arena(threads);
     Solution sol;
     arena.execute([&] {
-        sol =
-            solve_in_arena(options, make_mesh, shooting, progress, ranks, first_iteration, threads);
+        sol = solve_in_arena(options, pass, inputs, make_mesh, shooting, progress, ranks,
+                             first_iteration, threads);
     });
     return sol;
 }
 
-// Refine-then-freeze applies to a refined mesh of at least two rays; a fixed mesh (a reference's
-// uniform one) has nothing to refine, so all its rays solve it.
-bool refines_then_freezes(const SolverOptions& o) {
-    return o.refine_share < 1 && o.uniform_max_area <= 0 && o.rays >= 2;
-}
-
-// The refining pass's rays: its share of the whole, at least one, leaving one for the frozen pass.
-std::uint64_t refining_rays(const SolverOptions& o) {
-    if (!refines_then_freezes(o)) return o.rays;
-    const auto n = std::uint64_t(std::llround(o.refine_share * double(o.rays)));
-    return std::clamp<std::uint64_t>(n, 1, o.rays - 1);
+// The threshold the options ask for: theirs, or the oracle's default where they give none.
+double resolved_epsilon(const SolverOptions& o) {
+    return std::isnan(o.epsilon) ? o.oracle->default_epsilon() : o.epsilon;
 }
 
 // One pass's fractions as a part [start, start + share] of the whole solve's.
@@ -488,58 +482,67 @@ private:
 
 }  // namespace
 
-Solution refine_pass(PatchSet patches, const SolverOptions& options, Progress& progress,
-                     const Ranks& ranks, ShootingSetup shooting) {
-    SolverOptions o = options;
-    o.rays = refining_rays(options);
-    o.refine_share = 1;
-    Solution sol = solve_with(
-        o, [&] { return roots_of(std::move(patches), o, shooting.scene); }, shooting, progress,
-        ranks);
-    sol.options = options;
-    sol.shooting = std::move(shooting);
-    return sol;
+Passes passes_of(const SolverOptions& options) {
+    const Pass whole = whole_solve(options);
+    // Refine-then-freeze applies to a refined mesh of at least two rays; a fixed mesh (a
+    // reference's uniform one) has nothing to refine, so all its rays solve it.
+    if (!(options.refine_share < 1 && options.uniform_max_area <= 0 && options.rays >= 2)) {
+        return {whole, {whole.epsilon, 0}};
+    }
+    // The refining pass's share, at least one ray, leaving one for the frozen pass.
+    const auto n = std::uint64_t(std::llround(options.refine_share * double(options.rays)));
+    const std::uint64_t refining = std::clamp<std::uint64_t>(n, 1, options.rays - 1);
+    return {{whole.epsilon, refining}, {whole.epsilon, options.rays - refining}};
 }
 
-Solution freeze_pass(Solution refined, Progress& progress, const Ranks& ranks) {
-    const SolverOptions& options = refined.options;
-    ShootingSetup shooting = std::move(refined.shooting);
-    if (!refines_then_freezes(options)) return refined;
-    SolverOptions o = options;
-    o.rays = options.rays - refining_rays(options);
+Pass whole_solve(const SolverOptions& options) { return {resolved_epsilon(options), options.rays}; }
+
+Solution refine_pass(PatchSet patches, const SolverOptions& options, const Pass& pass,
+                     const SolveInputs& inputs, ShootingSetup& shooting, Progress& progress,
+                     const Ranks& ranks) {
+    return solve_with(
+        options, pass, inputs,
+        [&] { return roots_of(std::move(patches), options, shooting.scene); }, shooting, progress,
+        ranks);
+}
+
+Solution freeze_pass(Solution refined, const Pass& pass, ShootingSetup shooting, Progress& progress,
+                     const Ranks& ranks) {
+    if (pass.rays == 0) return refined;
     Solution sol = solve_with(
-        o, [&] { return frozen_in_place(refined); }, shooting, progress, ranks,
-        std::uint32_t(refined.stats.iterations.size()));
-    sol.options = options;
+        refined.options, pass, {}, [&] { return frozen_in_place(refined); }, shooting, progress,
+        ranks, std::uint32_t(refined.stats.iterations.size()));
     for (IterationRecord& it : sol.stats.iterations) it.frozen = true;
     sol.stats.join_refining_pass(refined.stats);
     return sol;
 }
 
-Solution solve(const PatchMesh& mesh, const SolverOptions& options, Progress& progress,
-               const Ranks& ranks) {
-    return solve(build_patch_set(mesh), options, progress, ranks);
+Solution solve(const PatchMesh& mesh, const SolverOptions& options, const SolveInputs& inputs,
+               Progress& progress, const Ranks& ranks) {
+    return solve(build_patch_set(mesh), options, inputs, progress, ranks);
 }
 
-Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress,
-               const Ranks& ranks) {
-    if (!refines_then_freezes(options)) {
-        ShootingSetup shooting;
-        return solve_with(
-            options, [&] { return roots_of(std::move(patches), options, shooting.scene); },
-            shooting, progress, ranks);
+Solution solve(PatchSet patches, const SolverOptions& options, const SolveInputs& inputs,
+               Progress& progress, const Ranks& ranks) {
+    const Passes passes = passes_of(options);
+    ShootingSetup shooting;
+    if (passes.frozen.rays == 0) {
+        return refine_pass(std::move(patches), options, passes.refining, inputs, shooting, progress,
+                           ranks);
     }
-    validate(options);
-    const double share = double(refining_rays(options)) / double(options.rays);
+    const double share = double(passes.refining.rays) / double(options.rays);
     PartProgress first(progress, 0, share), second(progress, share, 1 - share);
-    return freeze_pass(refine_pass(std::move(patches), options, first, ranks), second, ranks);
+    Solution refined =
+        refine_pass(std::move(patches), options, passes.refining, inputs, shooting, first, ranks);
+    return freeze_pass(std::move(refined), passes.frozen, std::move(shooting), second, ranks);
 }
 
 Solution solve_on_mesh(const PatchMesh& mesh, const SolverOptions& options, const Solution& shape,
                        Progress& progress) {
     ShootingSetup shooting;
     return solve_with(
-        options, [&] { return frozen_like(build_patch_set(mesh), options, shape, shooting.scene); },
+        options, whole_solve(options), {},
+        [&] { return frozen_like(build_patch_set(mesh), options, shape, shooting.scene); },
         shooting, progress, Ranks::single());
 }
 

@@ -10,24 +10,17 @@
 #include "common/progress.h"
 #include "common/ranks.h"
 #include "meshes/patch_mesh.h"
+#include "meshes/view.h"
 #include "radiosity/clusters.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/solver_options.h"
 
 namespace hmcr {
 
-class EmbreeScene;      // rays/embree_scene.h
-class ShootingBuffers;  // radiosity/shooting.h
-struct ViewImportance;  // radiosity/view_importance.h
-
-// What a refining pass (refine_pass) leaves for its frozen pass and for a budget search's next
-// probe, which shoot in the same patches: the Embree scene, the buffers the rays' batches pass
-// through, whose pages are then faulted in once a solve instead of once a pass, and the view
-// importance once solved (it depends on the scene, the views, the seed and the rays alone).
-struct ShootingSetup {
-    std::shared_ptr<const EmbreeScene> scene;
-    std::shared_ptr<ShootingBuffers> buffers;
-    std::shared_ptr<const ViewImportance> importance;
+// What a solve takes besides its settings: the scene's views, which importance = views solves
+// for (the caller keeps them alive for the solve).
+struct SolveInputs {
+    std::span<const View> views;
 };
 
 struct IterationRecord {
@@ -114,37 +107,24 @@ struct Solution {
     std::unique_ptr<ClusterTree> clusters;
     SolverOptions options;
     SolveStats stats;
-    // A refining pass's, kept for its frozen pass and a budget search's next probe; a finished
-    // solve holds none.
-    ShootingSetup shooting;
 
     // Each side value's (2 * patch + side) cluster leaf, -1 where the side's own leaves are in
     // the mesh; empty without clustering. What the output calls ClusterId.
     const std::vector<std::int32_t>& cluster_of_side() const;
 };
 
-// Throws InputError on a bad option (unknown oracle, no rays, ...) or a scene without light.
-// Reports the fraction of the rays shot to `progress`. `ranks` share every iteration's rays
-// (rank_merge.h) and all return the same solution, bit for bit, as one process would. With
-// options.refine_share below 1 it is refine_pass, then freeze_pass.
-Solution solve(const PatchMesh& mesh, const SolverOptions& options,
+// One solve at the options' epsilon. The options are checked where they are read (validate,
+// radiosity/solver_settings.h), once, and taken here as valid. Throws InputError on a scene
+// without light. Reports the fraction of the rays shot to `progress`. `ranks` share every
+// iteration's rays (rank_merge.h) and all return the same solution, bit for bit, as one process
+// would. With options.refine_share below 1 it is a refining pass, then a frozen one
+// (radiosity/solve_passes.h).
+Solution solve(const PatchMesh& mesh, const SolverOptions& options, const SolveInputs& inputs = {},
                Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 // The same from the mesh's patches (build_patch_set), so that the mesh can be released before
 // the rays are shot.
-Solution solve(PatchSet patches, const SolverOptions& options, Progress& progress = no_progress(),
-               const Ranks& ranks = Ranks::single());
-
-// Refine-then-freeze (docs/design.md §3.10). refine_pass is the refined solve with the refining
-// share of the rays, what a budget search probes; freeze_pass solves its leaves again from
-// scratch with the rest and returns that solution, with the refining pass's mesh statistics and
-// both passes' iterations. With refine_share 1 they are solve() and the identity. refine_pass
-// shoots with `shooting` where given (a budget search's earlier probe's, of these patches) and
-// keeps its own in the solution; freeze_pass shoots with that and lets it go.
-Solution refine_pass(PatchSet patches, const SolverOptions& options,
-                     Progress& progress = no_progress(), const Ranks& ranks = Ranks::single(),
-                     ShootingSetup shooting = {});
-Solution freeze_pass(Solution refined, Progress& progress = no_progress(),
-                     const Ranks& ranks = Ranks::single());
+Solution solve(PatchSet patches, const SolverOptions& options, const SolveInputs& inputs = {},
+               Progress& progress = no_progress(), const Ranks& ranks = Ranks::single());
 
 // The same solve on a frozen mesh: the leaves of `shape` (a solution of the same mesh, its
 // cluster leaves too), no refinement and no oracle. With many rays its error is the mesh's

@@ -18,9 +18,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
 
-#include "meshes/view.h"
 #include "radiosity/oracle_registry.h"
 #include "rays/sobol.h"
 
@@ -178,20 +176,14 @@ inline constexpr std::uint64_t kMaxRays = 1'000'000'000'000'000;
 // Elements in a quarter of this machine's memory.
 std::uint64_t default_max_elements();
 
-// epsilon's default: the oracle's own (Oracle::default_epsilon).
+// epsilon's default: the oracle's own (Oracle::default_epsilon), which a solve resolves when it
+// derives its passes (passes_of, radiosity/solve_passes.h).
 inline constexpr double kOracleDefault = std::numeric_limits<double>::quiet_NaN();
 
 struct SolverOptions {
 #define HMCR_FIELD(type, name, default_value, ...) type name = default_value;
     HMCR_SOLVER_SETTINGS(HMCR_FIELD)
 #undef HMCR_FIELD
-    // Not a setting: the scene's views, which importance = views solves for.
-    std::vector<View> views;
 };
-
-// The threshold a solve uses: options.epsilon, or the oracle's default where it is not given.
-inline double resolved_epsilon(const SolverOptions& options) {
-    return std::isnan(options.epsilon) ? options.oracle->default_epsilon() : options.epsilon;
-}
 
 }  // namespace hmcr

@@ -104,7 +104,7 @@ std::vector<double> view_pixel_shares(const PatchSet& patches, const EmbreeScene
 
 ViewImportance solve_view_importance(const PatchSet& patches, const EmbreeScene& scene,
                                      std::span<const View> views, const SolverOptions& options,
-                                     const Ranks& ranks) {
+                                     std::uint64_t rays, const Ranks& ranks) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<double> shares;
     try {
@@ -116,13 +116,15 @@ ViewImportance solve_view_importance(const PatchSet& patches, const EmbreeScene&
     if (adjoint.max_emitted_power <= 0) {
         throw InputError("view importance: the views see no side that reflects light");
     }
+    // The adjoint solve's own settings, from the radiance solve's.
     SolverOptions o = options;
+    o.rays = rays;
     o.importance = Importance::none;
     o.control_variate = ControlVariate::none;
     o.refine_share = 1;
     o.uniform_max_area = patches.total_area;  // every patch one element
     o.seed = Rng(options.seed, kImportanceKey).next_u64();
-    const Solution sol = solve(std::move(adjoint), o, no_progress(), ranks);
+    const Solution sol = solve(std::move(adjoint), o, {}, no_progress(), ranks);
 
     // K = rho I per side; the weights are K / mean I, the mean over the area that reflects
     // each channel (where rho is 0 the weight is 0 whatever I is).

@@ -29,7 +29,7 @@ struct ViewImportance {
     std::vector<Rgb> receiver_weights;
     // Per side and channel: the importance I itself (K / rho; 0 where rho is 0).
     std::vector<Rgb> importance;
-    // The importance solve's own (it shoots as many rays as options.rays).
+    // The importance solve's own (it shoots as many rays as it is given).
     std::uint64_t rays = 0;
     std::size_t iterations = 0;
     double seconds = 0;
@@ -37,10 +37,11 @@ struct ViewImportance {
 
 // The importance of every side for `views`: the direct importance V = pixel share / area,
 // propagated by a radiosity solve on the patches (no oracle, no refinement) of K = rho I,
-// K = rho V + rho F K, from options.rays rays keyed apart from the radiance solve's. Throws
+// K = rho V + rho F K, from `rays` rays (the refining pass's) keyed apart from the radiance
+// solve's, its other settings the radiance solve's `options`. Throws
 // InputError when the views see no reflecting side. The same bits for any thread or rank count.
 ViewImportance solve_view_importance(const PatchSet& patches, const EmbreeScene& scene,
                                      std::span<const View> views, const SolverOptions& options,
-                                     const Ranks& ranks = Ranks::single());
+                                     std::uint64_t rays, const Ranks& ranks = Ranks::single());
 
 }  // namespace hmcr

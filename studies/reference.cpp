@@ -29,7 +29,7 @@ Solution solve_uniform(const Scene& scene, const ReferenceOptions& o, std::uint6
     s.seed = seed;
     s.min_area = 0;  // the uniform mesh decides; limits only cap the depth
     s.max_depth = 24;
-    return solve(scene.mesh, s, progress, ranks);
+    return solve(scene.mesh, s, {}, progress, ranks);  // a fixed mesh: no importance, no views
 }
 
 }  // namespace

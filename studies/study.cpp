@@ -234,9 +234,9 @@ CellResult StudyRunner::compute(std::size_t index, FileBatch& files) {
     CellNotes notes(m_progress, where(index) + ": ");
     const auto start = Clock::now();
     try {
-        const BudgetResult r =
-            solve_for_budget(m_scene.mesh, so, {t.budget, m_options.budget_tolerance}, notes,
-                             Ranks::single(), &m_known[{cell.oracle, cell.seed, cell.rays}]);
+        const BudgetResult r = solve_for_budget(
+            m_scene.mesh, so, {t.budget, m_options.budget_tolerance}, {m_scene.views}, notes,
+            Ranks::single(), &m_known[{cell.oracle, cell.seed, cell.rays}]);
         cell.seconds = seconds_since(start);
         cell.probes = r.probes;
         cell.epsilon = r.solution.stats.epsilon;

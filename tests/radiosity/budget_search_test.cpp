@@ -112,10 +112,10 @@ TEST(BudgetSearch, KnownProbesAreNotSolvedAgainAndChangeNothing) {
     const BudgetResult alone = solve_for_budget(scene.mesh, o, {2000, 0.01});
     KnownProbes known;
     const BudgetResult first =
-        solve_for_budget(scene.mesh, o, {1000, 0.01}, no_progress(), Ranks::single(), &known);
+        solve_for_budget(scene.mesh, o, {1000, 0.01}, {}, no_progress(), Ranks::single(), &known);
     ASSERT_EQ(known.size(), first.probes.size());
     const BudgetResult second =
-        solve_for_budget(scene.mesh, o, {2000, 0.01}, no_progress(), Ranks::single(), &known);
+        solve_for_budget(scene.mesh, o, {2000, 0.01}, {}, no_progress(), Ranks::single(), &known);
     ASSERT_EQ(second.probes.size(), alone.probes.size());
     std::size_t taken = 0;
     for (std::size_t k = 0; k < alone.probes.size(); ++k) {
@@ -142,7 +142,7 @@ TEST(BudgetSearch, AKnownProbeWithinTheToleranceIsSolved) {
     const BudgetProbe start = solve_for_budget(scene.mesh, o, {2000, 0.01}).probes.front();
     KnownProbes known{{start.epsilon, 2000}};
     const BudgetResult r =
-        solve_for_budget(scene.mesh, o, {2000, 0.01}, no_progress(), Ranks::single(), &known);
+        solve_for_budget(scene.mesh, o, {2000, 0.01}, {}, no_progress(), Ranks::single(), &known);
     ASSERT_NE(start.leaves, 2000u);
     EXPECT_FALSE(r.probes.front().known);
     EXPECT_EQ(r.probes.front().leaves, start.leaves);

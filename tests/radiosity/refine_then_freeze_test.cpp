@@ -9,6 +9,7 @@
 
 #include "meshes/scene.h"
 #include "radiosity/budget_search.h"
+#include "radiosity/solve_passes.h"
 #include "radiosity/solver.h"
 #include "rays/embree_scene.h"
 #include "tests/support/analytic.h"
@@ -89,10 +90,12 @@ TEST(RefineThenFreeze, TheStatisticsJoinBothPasses) {
     const Scene scene = load_scene("cornell");
     SolverOptions o = options("kl", 300'000, 0.25);
     o.importance = Importance::views;
-    o.views = scene.views;
-    Solution refined = refine_pass(build_patch_set(scene.mesh), o);
+    const Passes passes = passes_of(o);
+    ShootingSetup shooting;
+    Solution refined =
+        refine_pass(build_patch_set(scene.mesh), o, passes.refining, {scene.views}, shooting);
     const SolveStats r = refined.stats;
-    const Solution both = freeze_pass(std::move(refined));
+    const Solution both = freeze_pass(std::move(refined), passes.frozen, std::move(shooting));
     const SolveStats& s = both.stats;
     ASSERT_GT(r.oracle_calls, 0u);
     ASSERT_GT(r.importance_rays, 0u);
@@ -133,8 +136,7 @@ TEST(RefineThenFreeze, ViewImportanceGivesTheSameBitsOnOneAndTwoThreads) {
     const Scene scene = load_scene("cornell");
     SolverOptions o = options("kl", 300'000, 0.5);
     o.importance = Importance::views;
-    o.views = scene.views;
-    EXPECT_GT(solve_on_one_and_two_threads(scene.mesh, o).stats.importance_rays, 0u);
+    EXPECT_GT(solve_on_one_and_two_threads(scene.mesh, o, {scene.views}).stats.importance_rays, 0u);
 }
 
 // The frozen pass solves the refining pass's tree again in place: nothing the refining pass
@@ -146,15 +148,20 @@ TEST(RefineThenFreeze, TheFrozenPassForgetsTheRefiningPassValues) {
         SolverOptions o = options("kl", 200'000, 0.5);
         o.clustering = clustering;
         if (clustering == Clustering::isotropic) o.epsilon = 3;  // accepts links at clusters
-        Solution clean = refine_pass(build_patch_set(scene.mesh), o);
-        Solution scribbled = refine_pass(build_patch_set(scene.mesh), o);
+        const Passes passes = passes_of(o);
+        ShootingSetup clean_shooting, scribbled_shooting;
+        Solution clean =
+            refine_pass(build_patch_set(scene.mesh), o, passes.refining, {}, clean_shooting);
+        Solution scribbled =
+            refine_pass(build_patch_set(scene.mesh), o, passes.refining, {}, scribbled_shooting);
         scribbled.hierarchy->for_each_element([](Element& e) {
             e.radiosity = Rgb(3, 5, 7);
             e.unshot = Rgb(-1, 2, 0.5);
             e.received = {11, 13, 17};
         });
-        const Solution a = freeze_pass(std::move(clean));
-        const Solution b = freeze_pass(std::move(scribbled));
+        const Solution a = freeze_pass(std::move(clean), passes.frozen, std::move(clean_shooting));
+        const Solution b =
+            freeze_pass(std::move(scribbled), passes.frozen, std::move(scribbled_shooting));
         ASSERT_GT(frozen_iterations(a.stats), 0u);
         expect_same_leaves(*a.hierarchy, *b.hierarchy);
         EXPECT_EQ(a.cluster_of_side(), b.cluster_of_side());
@@ -165,36 +172,47 @@ TEST(RefineThenFreeze, TheFrozenPassForgetsTheRefiningPassValues) {
 }
 
 // Embree's scene and the shooting buffers are made once for both passes, and for every probe of
-// a budget search: the refining pass keeps them for the frozen pass, and no finished solve holds
-// on to them (the scene is most of a large scene's memory after the patches).
-TEST(RefineThenFreeze, ThePassesShareOneSceneAndAFinishedSolveLetsItGo) {
+// a budget search: the refining pass leaves them in its ShootingSetup for the next probe and the
+// frozen pass, which lets them go (a Solution holds none: the scene is most of a large scene's
+// memory after the patches).
+TEST(RefineThenFreeze, ThePassesShareOneSceneAndTheFrozenPassLetsItGo) {
     const Scene scene = load_scene("cornell");
     const SolverOptions o = options("kl", 100'000, 0.5);
-    Solution refined = refine_pass(build_patch_set(scene.mesh), o);
-    ASSERT_TRUE(refined.shooting.scene);
-    ASSERT_TRUE(refined.shooting.buffers);
-    const std::weak_ptr<const EmbreeScene> kept = refined.shooting.scene;
-    const std::weak_ptr<ShootingBuffers> kept_buffers = refined.shooting.buffers;
-    // A probe given them shoots with them and hands them on.
-    const Solution probe = refine_pass(build_patch_set(scene.mesh), o, no_progress(),
-                                       Ranks::single(), refined.shooting);
-    EXPECT_EQ(probe.shooting.scene, refined.shooting.scene);
-    EXPECT_EQ(probe.shooting.buffers, refined.shooting.buffers);
-    const Solution frozen = freeze_pass(std::move(refined));
-    const auto holds_none = [](const Solution& s) {
-        return !s.shooting.scene && !s.shooting.buffers;
-    };
-    EXPECT_TRUE(holds_none(frozen));
-    EXPECT_EQ(kept.use_count(), 1);  // the probe's alone
-    EXPECT_EQ(kept_buffers.use_count(), 1);
-    EXPECT_TRUE(holds_none(solve(scene.mesh, o)));
-    EXPECT_TRUE(holds_none(solve(scene.mesh, options("kl", 100'000, 1))));
-    EXPECT_TRUE(holds_none(solve_on_mesh(scene.mesh, o, frozen)));
-    const BudgetOptions budget{.leaves = 1000, .tolerance = 0.05};
-    for (const double share : {0.5, 1.0}) {
-        EXPECT_TRUE(holds_none(
-            solve_for_budget(scene.mesh, options("power", 100'000, share), budget).solution));
-    }
+    const Passes passes = passes_of(o);
+    ShootingSetup shooting;
+    Solution refined = refine_pass(build_patch_set(scene.mesh), o, passes.refining, {}, shooting);
+    ASSERT_TRUE(shooting.scene);
+    ASSERT_TRUE(shooting.buffers);
+    const std::weak_ptr<const EmbreeScene> kept = shooting.scene;
+    const std::weak_ptr<ShootingBuffers> kept_buffers = shooting.buffers;
+    // A probe given them shoots with them and leaves them as they were.
+    ShootingSetup probe = shooting;
+    refine_pass(build_patch_set(scene.mesh), o, passes.refining, {}, probe);
+    EXPECT_EQ(probe.scene, shooting.scene);
+    EXPECT_EQ(probe.buffers, shooting.buffers);
+    probe = {};
+    const Solution frozen = freeze_pass(std::move(refined), passes.frozen, std::move(shooting));
+    ASSERT_GT(frozen_iterations(frozen.stats), 0u);
+    EXPECT_EQ(kept.use_count(), 0);
+    EXPECT_EQ(kept_buffers.use_count(), 0);
+}
+
+// The two passes split the rays by the share, at least one each, and both take the oracle's
+// threshold where the options give none; a solve that does not refine then freeze is one pass.
+TEST(RefineThenFreeze, ThePassesSplitTheRaysOnce) {
+    SolverOptions o = options("kl", 1000, 0.25);
+    o.epsilon = kOracleDefault;
+    const Passes passes = passes_of(o);
+    EXPECT_EQ(passes.refining.rays, 250u);
+    EXPECT_EQ(passes.frozen.rays, 750u);
+    EXPECT_EQ(passes.refining.epsilon, o.oracle->default_epsilon());
+    EXPECT_EQ(passes.frozen.epsilon, o.oracle->default_epsilon());
+    o.refine_share = 1;
+    EXPECT_EQ(passes_of(o).refining.rays, 1000u);
+    EXPECT_EQ(passes_of(o).frozen.rays, 0u);
+    o.refine_share = 0.5;
+    o.rays = 1;
+    EXPECT_EQ(passes_of(o).frozen.rays, 0u);
 }
 
 // A reference's uniform mesh has nothing to refine: every ray solves it, whatever the share.
@@ -231,11 +249,11 @@ TEST(RefineThenFreeze, ABudgetSearchSharesItsViewImportance) {
     Scene scene = load_scene("cornell");
     SolverOptions o = options("power", 200'000, 0.5);
     o.importance = Importance::views;
-    o.views = scene.views;
-    const BudgetResult found = solve_for_budget(scene.mesh, o, {.leaves = 3000, .tolerance = 0.02});
+    const BudgetResult found =
+        solve_for_budget(scene.mesh, o, {.leaves = 3000, .tolerance = 0.02}, {scene.views});
     ASSERT_GT(found.probes.size(), 1u);
     o.epsilon = found.solution.stats.epsilon;
-    const Solution alone = solve(scene.mesh, o);
+    const Solution alone = solve(scene.mesh, o, {scene.views});
     expect_same_leaves(*found.solution.hierarchy, *alone.hierarchy);
     EXPECT_EQ(found.solution.stats.importance_rays, alone.stats.importance_rays);
 }

@@ -52,7 +52,8 @@ TEST_P(EveryOracle, PlatesReceiverGetsRhoTimesEmissionTimesFormFactor) {
 // patch, whatever the mesh. The total power is exact in a furnace, so K is the same for every
 // seed; each patch's B is t-tested over 16 seeds. Refined then frozen, K + 1 are the frozen
 // pass's iterations (it starts from scratch).
-void expect_furnace(const SolverOptions& base, int split, std::size_t min_leaves) {
+void expect_furnace(const SolverOptions& base, int split, std::size_t min_leaves,
+                    const SolveInputs& inputs = {}) {
     const double rho = 0.5, e = 1;
     const auto mesh = make_patch_mesh(
         inward_box({0, 0, 0}, {1, 1, 1}, split, Rgb::Constant(rho), Rgb::Constant(e)));
@@ -64,7 +65,7 @@ void expect_furnace(const SolverOptions& base, int split, std::size_t min_leaves
             o.seed = seed;
             return o;
         },
-        [&](const Solution& sol) { leaves = std::max(leaves, sol.stats.leaves); });
+        [&](const Solution& sol) { leaves = std::max(leaves, sol.stats.leaves); }, inputs);
     EXPECT_GE(leaves, min_leaves);
     // The stop criterion (1%) is what separates the K-bounce value from E / (1 - rho).
     const double expected = furnace_value(rho, e, iterations);
@@ -98,8 +99,8 @@ TEST_P(EveryOracle, FurnaceWithViewImportance) {
     o.epsilon = 1e-4;
     o.refine_share = 0.4;
     o.importance = Importance::views;
-    o.views = {test_view({0.5, 0.5, 0.5}, {0.1, 0.1, 0.1}, 60, 32)};
-    expect_furnace(o, 1, 100);
+    const std::vector<View> views{test_view({0.5, 0.5, 0.5}, {0.1, 0.1, 0.1}, 60, 32)};
+    expect_furnace(o, 1, 100, {views});
 }
 
 // The plates with view importance from a view of the receiver: its first iteration's binomial
@@ -107,8 +108,8 @@ TEST_P(EveryOracle, FurnaceWithViewImportance) {
 TEST_P(EveryOracle, PlatesWithViewImportance) {
     SolverOptions o = options(400'000, 21);
     o.importance = Importance::views;
-    o.views = {test_view({0.5, -1.5, 0.5}, {0.5, 0.5, 1}, 60, 32)};
-    const Solution sol = solve(unit_plates(0.5), o);
+    const std::vector<View> views{test_view({0.5, -1.5, 0.5}, {0.5, 0.5, 1}, 60, 32)};
+    const Solution sol = solve(unit_plates(0.5), o, {views});
     ASSERT_GT(sol.stats.importance_rays, 0u);
     const double f = parallel_rectangles(1, 1, 1), n0 = double(sol.stats.iterations[0].rays);
     const double se = 0.5 * std::sqrt(f * (1 - f) / n0);

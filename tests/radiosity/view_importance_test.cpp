@@ -54,7 +54,7 @@ TEST(ViewImportance, TheAdjointTotalIsExactInAClosedBox) {
     SolverOptions o;
     o.rays = 50'000;
     const std::vector<View> views{test_view({0.5, 0.5, 0.5}, {0.1, 0.2, 0.0}, 60, 24)};
-    const ViewImportance vi = solve_view_importance(ps, scene, views, o);
+    const ViewImportance vi = solve_view_importance(ps, scene, views, o, o.rays);
     double total = 0;
     for (std::size_t p = 0; p < ps.patches.size(); ++p) {
         total += ps.patches[p].area * vi.importance[2 * p][1];
@@ -74,10 +74,10 @@ TEST(ViewImportance, ElementsGoWhereTheViewLooks) {
     o.rays = 200'000;
     o.epsilon = 2e-5;
     o.refine_share = 1;
-    o.views = {test_view({0.25, 0.8, 0.5}, {0.25, 0, 0.5}, 30, 64)};
+    const std::vector<View> views{test_view({0.25, 0.8, 0.5}, {0.25, 0, 0.5}, 30, 64)};
     auto floor_halves = [&](Importance importance) {
         o.importance = importance;
-        const Solution sol = solve(mesh, o);
+        const Solution sol = solve(mesh, o, {views});
         const PatchSet& ps = sol.hierarchy->patch_set();
         std::array<double, 2> leaves{0, 0};  // left (x < 0.5), right
         sol.hierarchy->for_each_leaf([&](const Element& e) {
@@ -99,7 +99,7 @@ TEST(ViewImportance, ViewsThatSeeNothingAreAnInputError) {
     const PatchSet ps = build_patch_set(make_patch_mesh({plate}));
     const EmbreeScene scene(ps);
     const std::vector<View> away{test_view({0, 0, 1}, {0, 0, 2}, 40, 8)};
-    EXPECT_THROW(solve_view_importance(ps, scene, away, SolverOptions{}), InputError);
+    EXPECT_THROW(solve_view_importance(ps, scene, away, SolverOptions{}, 1000), InputError);
 }
 
 }  // namespace

@@ -12,12 +12,13 @@ namespace hmcr::test {
 
 std::size_t expect_furnace_per_patch(const PatchMesh& mesh, double rho, double e, int seeds,
                                      const std::function<SolverOptions(std::uint64_t)>& options,
-                                     const std::function<void(const Solution&)>& check) {
+                                     const std::function<void(const Solution&)>& check,
+                                     const SolveInputs& inputs) {
     const std::size_t patches = mesh.n_faces();
     std::vector<std::vector<double>> per_patch(patches);
     std::size_t iterations = 0;
     for (std::uint64_t seed = 1; seed <= std::uint64_t(seeds); ++seed) {
-        const Solution sol = solve(mesh, options(seed));
+        const Solution sol = solve(mesh, options(seed), inputs);
         if (check) check(sol);
         const std::size_t counted = sol.stats.value_iterations().size();
         // The expected value below assumes one K for every seed.

@@ -22,9 +22,10 @@ inline double furnace_value(double rho, double e, std::size_t iterations) {
 // Solves `mesh` (such a box) with options(seed) for the seeds 1..seeds, passing each solution
 // to `check` (a test's guards), expects the same K (the iterations the values hold) for every
 // seed, and t-tests every patch's B over the seeds against the K-bounce value, with Bonferroni
-// over the patches. Returns K.
+// over the patches. Returns K. `inputs` are every solve's (the views of view importance).
 std::size_t expect_furnace_per_patch(const PatchMesh& mesh, double rho, double e, int seeds,
                                      const std::function<SolverOptions(std::uint64_t)>& options,
-                                     const std::function<void(const Solution&)>& check = {});
+                                     const std::function<void(const Solution&)>& check = {},
+                                     const SolveInputs& inputs = {});
 
 }  // namespace hmcr::test

@@ -23,11 +23,12 @@ void expect_same_leaves(const Hierarchy& a, const Hierarchy& b) {
     }
 }
 
-Solution solve_on_one_and_two_threads(const PatchMesh& mesh, SolverOptions options) {
+Solution solve_on_one_and_two_threads(const PatchMesh& mesh, SolverOptions options,
+                                      const SolveInputs& inputs) {
     options.threads = 1;
-    Solution one = solve(mesh, options);
+    Solution one = solve(mesh, options, inputs);
     options.threads = 2;
-    const Solution two = solve(mesh, options);
+    const Solution two = solve(mesh, options, inputs);
     expect_same_leaves(*one.hierarchy, *two.hierarchy);
     EXPECT_EQ(one.cluster_of_side(), two.cluster_of_side());
     return one;

@@ -14,6 +14,7 @@ void expect_same_leaves(const Hierarchy& a, const Hierarchy& b);
 
 // Solves `mesh` with `options` on 1 and on 2 threads and expects the same leaves and the same
 // cluster leaves. Returns the one-thread solution.
-Solution solve_on_one_and_two_threads(const PatchMesh& mesh, SolverOptions options);
+Solution solve_on_one_and_two_threads(const PatchMesh& mesh, SolverOptions options,
+                                      const SolveInputs& inputs = {});
 
 }  // namespace hmcr::test

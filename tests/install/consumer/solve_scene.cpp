@@ -21,8 +21,7 @@ int main(int argc, char** argv) {
         hmcr::SolverOptions options;
         hmcr::apply_scene_settings(scene.solver_defaults, scene.source.string(), options);
         options.rays = std::stoull(argv[2]);
-        options.views = scene.views;
-        const hmcr::Solution solution = hmcr::solve(scene.mesh, options);
+        const hmcr::Solution solution = hmcr::solve(scene.mesh, options, {scene.views});
         hmcr::write_solution(argv[3], solution, scene, hmcr::kCreaseDegrees,
                              double(solution.stats.iterations.size()));
     } catch (const std::exception& e) {
