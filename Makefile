@@ -81,7 +81,7 @@ check-without-tests: deps
 	cmake -S . -B $(NOTESTS_BUILD) -DCMAKE_BUILD_TYPE=$(TYPE) -DBUILD_TESTING=OFF \
 	  -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_Python3=ON \
 	  -DCMAKE_DISABLE_FIND_PACKAGE_pybind11=ON
-	cmake --build $(NOTESTS_BUILD) -j $(JOBS) --target hmcr
+	cmake --build $(NOTESTS_BUILD) -j $(JOBS) --target hmcr_installed
 	sh tests/install/install_test.sh . $(NOTESTS_BUILD)
 
 # The whole suite, statistical tests included (label `slow`).

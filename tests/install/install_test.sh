@@ -12,10 +12,14 @@
 # find_package(hmcr) and hmcr::hmcr, whose solve of cornell must give the installed program's
 # bytes; and where the build made the Python module, imports the installed one and solves
 # cornell with it, to the same bytes.
-# Usage: install_test.sh SOURCE_DIR BUILD_DIR
+# Usage: install_test.sh SOURCE_DIR BUILD_DIR [library|no-library] (no-library: a sanitizer
+# build's, whose libraries an outside project cannot link without the sanitizer's runtime).
 set -eu
 src=$(cd "$1" && pwd)
 build=$2
+library=${3:-library}
+library_said=""
+[ "$library" = library ] && library_said=", an outside project of the library"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 prefix=$tmp/prefix
@@ -48,11 +52,12 @@ if unshare -m --propagation private true 2>/dev/null; then
         mount --bind "$1" "$2"
         test -z "$(ls -A "$2")"
         shift 2
-        sh "$@"' sh "$tmp/empty" "$src" "$tmp/installed_uses.sh" "$prefix" "$tmp/run" "$tmp/consumer"
-    echo "with the source tree hidden: the program, an outside project of the library${python_said} solved cornell to the same bytes"
+        sh "$@"' sh "$tmp/empty" "$src" "$tmp/installed_uses.sh" "$prefix" "$tmp/run" "$tmp/consumer" \
+        "$library"
+    echo "with the source tree hidden: the program${library_said}${python_said} solved cornell to the same bytes"
 else
-    sh "$tmp/installed_uses.sh" "$prefix" "$tmp/run" "$tmp/consumer"
-    echo "unshare unavailable: the source tree was not hidden (cases 2 and 3 still prove it); the program, an outside project of the library${python_said} solved cornell to the same bytes"
+    sh "$tmp/installed_uses.sh" "$prefix" "$tmp/run" "$tmp/consumer" "$library"
+    echo "unshare unavailable: the source tree was not hidden (cases 2 and 3 still prove it); the program${library_said}${python_said} solved cornell to the same bytes"
 fi
 
 # 2. The prefix without cornell: refused, whatever the source tree holds.

@@ -1,15 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // solve_scene SCENE RAYS OUT.vtp: what `hmcr solve SCENE --rays RAYS -o OUT.vtp` writes, from
-// hmcr's installed library (tests/install/install_test.sh compares the bytes).
-#include <cstdlib>
+// hmcr's installed library by its common path, "hmcr/hmcr.h" (tests/install/install_test.sh
+// compares the bytes).
 #include <exception>
 #include <iostream>
 #include <string>
 
-#include "hmcr/meshes/scene.h"
-#include "hmcr/radiosity/solver.h"
-#include "hmcr/radiosity/solver_settings.h"
-#include "hmcr/viz/solution_file.h"
+#include "hmcr/hmcr.h"
 
 int main(int argc, char** argv) {
     if (argc != 4) {
@@ -17,13 +14,11 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        const hmcr::Scene scene = hmcr::load_scene(argv[1]);
-        hmcr::SolverOptions options;
-        hmcr::apply_scene_settings(scene.solver_defaults, scene.source.string(), options);
+        const hmcr::Scene scene = hmcr::load(argv[1]);
+        hmcr::SolverOptions options = hmcr::settings_of(scene);
         options.rays = std::stoull(argv[2]);
-        const hmcr::Solution solution = hmcr::solve(scene.mesh, options, {scene.views});
-        hmcr::write_solution(argv[3], solution, scene, hmcr::kCreaseDegrees,
-                             double(solution.stats.iterations.size()));
+        const hmcr::Solution solution = hmcr::solve(scene, options);
+        hmcr::write(argv[3], solution, scene);
     } catch (const std::exception& e) {
         std::cerr << "solve_scene: " << e.what() << "\n";
         return 2;
