@@ -113,7 +113,7 @@ test-tsan: deps
 	scripts/tsan_tbb.sh $(TSAN_BUILD) $(JOBS)
 	cmake -S . -B $(TSAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_COMPILER=clang++ -DHMCR_TSAN=ON \
-	  -DTBB_DIR=$(CURDIR)/$(TSAN_BUILD)/tbb-tsan/lib/cmake/TBB \
+	  -DTBB_DIR=$(abspath $(TSAN_BUILD))/tbb-tsan/lib/cmake/TBB \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG"
 	cmake --build $(TSAN_BUILD) -j $(JOBS) --target hmcr_fast_tests
 	cd $(TSAN_BUILD) && VTK_SMP_BACKEND_IN_USE=Sequential \
