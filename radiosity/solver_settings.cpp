@@ -39,15 +39,12 @@ std::string got(const json& j) {
     return ", got " + quote(j.is_string() ? j.get<std::string>() : j.dump());
 }
 
-// The JSON value as T, or a one-line reason it is not one.
+// The JSON value as T, or a one-line reason it is not one (a named setting's: set_value).
 template <class T>
 T json_value([[maybe_unused]] const Setting<T>& s, const json& j) {
     if constexpr (std::is_same_v<T, std::string>) {
         if (!j.is_string()) throw InputError("must be a string");
         return j.get<std::string>();
-    } else if constexpr (NamedSetting<T>) {
-        if (!j.is_string()) throw InputError("must be a string");
-        return parse_named(s, j.get<std::string>());
     } else if constexpr (std::is_floating_point_v<T>) {
         if (!j.is_number() || !std::isfinite(j.get<double>())) {
             throw InputError("must be a finite number" + got(j));
@@ -91,6 +88,51 @@ void check(const Setting<T>& s, const T& value) {
         }
     }
     if (!s.valid(value)) refuse(s.name, s.range, shown(value));
+}
+
+// Sets `field` from the JSON value of setting `s`. A value of the wrong type is refused naming
+// `type_place`, one out of range (or a name that is none) naming `value_place`; an empty place
+// leaves the message as it is, the command line's own words ("stop must be in (0, 1), got 2").
+template <class T>
+void set_value(const Setting<T>& s, const json& j, const std::string& type_place,
+               const std::string& value_place, T& field) {
+    const auto fail = [](const std::string& place, const InputError& e) {
+        if (place.empty()) throw e;
+        throw InputError(place, e.what());
+    };
+    T value{};
+    if constexpr (NamedSetting<T>) {
+        if (!j.is_string()) fail(type_place, InputError("must be a string"));
+        try {
+            value = parse_named(s, j.get<std::string>());
+        } catch (const InputError& e) {
+            fail(value_place, e);
+        }
+    } else {
+        try {
+            value = json_value<T>(s, j);
+        } catch (const InputError& e) {
+            fail(type_place, e);
+        }
+    }
+    try {
+        check(s, value);
+    } catch (const InputError& e) {
+        fail(value_place, e);
+    }
+    field = value;
+}
+
+// Throws InputError at `place` ("" for none) for the first key of `values` not in `known`.
+void refuse_unknown(const json& values, const std::set<std::string>& known,
+                    const std::string& place) {
+    for (const auto& [key, value] : values.items()) {
+        if (known.count(key) > 0) continue;
+        const std::string why =
+            fmt::format("unknown setting {} (settings: {})", quote(key), fmt::join(known, ", "));
+        if (place.empty()) throw InputError(why);
+        throw InputError(place, why);
+    }
 }
 
 }  // namespace
@@ -148,26 +190,15 @@ void apply_scene_settings(const json& solver, const std::string& where, SolverOp
     std::set<std::string> known;
     for_each_setting(
         [&](const auto& setting, auto& field) {
-            using T = std::remove_reference_t<decltype(field)>;
             if (setting.scope != SettingScope::scene_file) return;
             known.emplace(setting.name);
             const std::string key(setting.name);
             if (!solver.contains(key)) return;
             const std::string place = fmt::format("{}: solver.{}", where, setting.name);
-            try {
-                field = json_value<T>(setting, solver.at(key));
-                check(setting, field);
-            } catch (const InputError& e) {
-                throw InputError(place, e.what());
-            }
+            set_value(setting, solver.at(key), place, place, field);
         },
         options);
-    for (const auto& [key, value] : solver.items()) {
-        if (known.count(key) == 0) {
-            throw InputError(where + ": solver", fmt::format("unknown setting {} (settings: {})",
-                                                             quote(key), fmt::join(known, ", ")));
-        }
-    }
+    refuse_unknown(solver, known, where + ": solver");
 }
 
 void apply_settings(const json& values, SolverOptions& options) {
@@ -177,31 +208,12 @@ void apply_settings(const json& values, SolverOptions& options) {
             if (setting.scope != SettingScope::internal) known.emplace(setting.name);
         },
         options);
-    for (const auto& [key, value] : values.items()) {
-        if (known.count(key) == 0) {
-            throw InputError(fmt::format("unknown setting {} (settings: {})", quote(key),
-                                         fmt::join(known, ", ")));
-        }
-    }
+    refuse_unknown(values, known, "");
     for_each_setting(
         [&](const auto& setting, auto& field) {
-            using T = std::remove_reference_t<decltype(field)>;
             const std::string key(setting.name);
             if (setting.scope == SettingScope::internal || !values.contains(key)) return;
-            T value;
-            const json& given = values.at(key);
-            if constexpr (NamedSetting<T>) {  // a name: the flag's own message if it is none
-                if (!given.is_string()) throw InputError(key, "must be a string");
-                value = parse_named(setting, given.get<std::string>());
-            } else {
-                try {
-                    value = json_value<T>(setting, given);
-                } catch (const InputError& e) {
-                    throw InputError(key, e.what());
-                }
-            }
-            check(setting, value);
-            field = value;
+            set_value(setting, values.at(key), key, "", field);
         },
         options);
 }
