@@ -59,11 +59,7 @@ py::dict trace_scene(const Scene& scene, const std::string& view, const std::str
                      int threads, bool fresh, const std::string& allocation, int bounces,
                      const std::string& estimator, std::optional<int> width, py::object progress) {
     TraceOptions o;
-    o.sampler = criterion_registry().find(sampler);
-    if (!o.sampler) {
-        throw InputError(fmt::format("sampler must be one of {}, got {}",
-                                     criterion_registry().names(), quote(sampler)));
-    }
+    o.sampler = &find_named(criterion_registry(), sampler);
     o.spp = spp;
     if (threshold) o.threshold = *threshold;
     o.spp_tolerance = spp_tolerance;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/named_list.h"
 #include "app/run_summary.h"
 #include "app/trace_flags.h"
 #include "common/output_paths.h"
@@ -97,17 +98,7 @@ py::object meshing_study(const Scene& scene, const std::string& reference,
     o.reference = reference;
     o.output = output;
     o.budgets = budgets;
-    if (!oracles.empty()) {
-        o.oracles.clear();
-        for (const std::string& name : oracles) {
-            const Oracle* oracle = oracle_registry().find(name);
-            if (!oracle) {
-                throw InputError(fmt::format("oracles: {} is none of {}", quote(name),
-                                             oracle_registry().names()));
-            }
-            o.oracles.push_back(oracle);
-        }
-    }
+    o.oracles = named_list(oracle_registry(), oracles);
     o.seeds = seeds;
     o.rays_per_leaf = rays_per_leaf;
     o.mesh_rays = mesh_rays;
@@ -169,17 +160,7 @@ py::object sampling_study(const Scene& scene, const std::string& reference,
     SamplingStudyOptions o;
     o.reference = reference;
     o.output = output;
-    if (!samplers.empty()) {
-        o.samplers.clear();
-        for (const std::string& name : samplers) {
-            const Criterion* c = criterion_registry().find(name);
-            if (!c) {
-                throw InputError(fmt::format("samplers: {} is none of {}", quote(name),
-                                             criterion_registry().names()));
-            }
-            o.samplers.push_back(c);
-        }
-    }
+    o.samplers = named_list(criterion_registry(), samplers);
     o.spps = spps;
     o.seeds = seeds;
     o.trace.seed = seed;
@@ -215,7 +196,7 @@ void bind_studies(py::module_& m) {
           "`hmcr reference --kind points`: radiosity at stratified points, path-traced");
 
     m.def("meshing_study", &meshing_study, py::arg("scene"), py::arg("reference"),
-          py::arg("budgets"), py::arg("output"), py::arg("oracles") = std::vector<std::string>{},
+          py::arg("budgets"), py::arg("output"), py::arg("oracles") = std::vector<std::string>{"all"},
           py::arg("seeds") = StudyOptions{}.seeds, py::arg("rays_per_leaf") = 0,
           py::arg("mesh_rays") = py::none(),
           py::arg("budget_tolerance") = StudyOptions{}.budget_tolerance,
@@ -223,7 +204,7 @@ void bind_studies(py::module_& m) {
           "`hmcr study` of every oracle x budget x seed, its plots aside; returns its cells");
 
     m.def("sampling_study", &sampling_study, py::arg("scene"), py::arg("reference"),
-          py::arg("output"), py::arg("samplers") = std::vector<std::string>{},
+          py::arg("output"), py::arg("samplers") = std::vector<std::string>{"all"},
           py::arg("spps") = SamplingStudyOptions{}.spps, py::arg("seeds") = 3, py::arg("seed") = 1,
           py::arg("threads") = 0, py::arg("tree_depth") = TraceOptions{}.tree_depth,
           py::arg("fresh") = false, py::arg("allocation") = "refine",

@@ -30,8 +30,7 @@ SolverOptions solve_options(const Scene& scene, const py::kwargs& keywords, Solv
     apply_scene_settings(from_scene, scene.source.string(), base);
     json values = json::object();
     for (const auto& [key, value] : keywords) values[py::str(key)] = keyword_json(value);
-    apply_settings(values, base);
-    validate(base);
+    apply_settings(values, base);  // each value checked as it is set
     return base;
 }
 

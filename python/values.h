@@ -24,7 +24,7 @@ nlohmann::json keyword_json(const py::handle& value);
 
 // The options of a solve of `scene`: `base`, then the scene file's "solver" object but for the
 // keys in `not_from_scene`, then the keywords, as `hmcr solve` takes its flags over the scene
-// file; checked, with the command line's messages.
+// file; each value checked as it is set, with the command line's messages.
 SolverOptions solve_options(const Scene& scene, const py::kwargs& keywords, SolverOptions base = {},
                             const std::set<std::string>& not_from_scene = {});
 

@@ -306,8 +306,8 @@ def test_information_and_trace_are_the_command_lines(tmp_path):
     shared = ("h_p", "h_s", "i_s", "h_j", "i_cs", "discretisation_error", "lines", "samples")
     patches = json.loads(cli("info", "cornell", "--json", "--lines", "100000"))
     measured = hmcr.information(scene, lines=100_000)
-    assert all(measured[k] == patches[k] for k in shared if k in patches)
-    assert measured["i_s"] == patches["i_s"]
+    for key in shared:
+        assert measured[key] == patches[key], key
     cli("solve", "cornell", "--rays", "30000", "-q", "-o", "sol.vtp")
     leaves = json.loads(cli("info", "sol.vtp", "--json", "--lines", "100000"))
     assert hmcr.solve(scene, rays=30_000).information(lines=100_000)["i_s"] == leaves["i_s"]
@@ -315,7 +315,7 @@ def test_information_and_trace_are_the_command_lines(tmp_path):
     traced = hmcr.trace(scene, spp=4, width=64)
     assert np.array_equal(traced["image"].astype(np.float32), read_pfm(tmp_path / "t.pfm"))
     assert traced["samples"].shape == traced["image"].shape[:2] and (traced["samples"] == 4).all()
-    with pytest.raises(hmcr.InputError, match="sampler must be one of"):
+    with pytest.raises(hmcr.InputError, match=r"unknown sampler 'nope' \(valid: "):
         hmcr.trace(scene, sampler="nope")
 
 
