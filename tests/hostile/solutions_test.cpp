@@ -26,6 +26,30 @@
 namespace hmcr::test {
 namespace {
 
+// Every way VTK's writer stores arrays: compressed three ways, raw, base64, inline and ascii.
+using WriterMode = std::function<void(vtkXMLPolyDataWriter*)>;
+const std::vector<std::pair<std::string, WriterMode>>& writer_modes() {
+    static const std::vector<std::pair<std::string, WriterMode>> modes = {
+        {"zlib", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToZLib(); }},
+        {"lz4", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToLZ4(); }},
+        {"lzma", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToLZMA(); }},
+        {"zlib-raw",
+         [](vtkXMLPolyDataWriter* w) {
+             w->SetCompressorTypeToZLib();
+             w->EncodeAppendedDataOff();
+         }},
+        {"raw",
+         [](vtkXMLPolyDataWriter* w) {
+             w->SetCompressorTypeToNone();
+             w->EncodeAppendedDataOff();
+         }},
+        {"base64", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToNone(); }},
+        {"binary", [](vtkXMLPolyDataWriter* w) { w->SetDataModeToBinary(); }},
+        {"ascii", [](vtkXMLPolyDataWriter* w) { w->SetDataModeToAscii(); }},
+    };
+    return modes;
+}
+
 class HostileSolution : public Hostile {
 protected:
     void SetUp() override {
@@ -58,6 +82,33 @@ protected:
         edit(bytes);
         m_temp.write(name, bytes);
         expect_refused(name, name + ": damaged VTK file: " + what);
+    }
+    // good.vtp as VTK reads it, written again by VTK in each of writer_modes() as NAME-MODE.vtp,
+    // and changed by `spoil` first as NAME-MODE-spoilt.vtp: the first accepted, the second
+    // refused as "damaged VTK file: WHY".
+    void expect_every_layout(const std::string& name,
+                             const std::function<void(vtkPolyData*)>& spoil,
+                             const std::string& why) const {
+        for (const auto& [mode, configure] : writer_modes()) {
+            for (const bool spoilt : {false, true}) {
+                vtkNew<vtkXMLPolyDataReader> reader;
+                reader->SetFileName((dir() / "good.vtp").c_str());
+                reader->Update();
+                vtkPolyData* data = reader->GetOutput();
+                if (spoilt) spoil(data);
+                const std::string file = name + "-" + mode + (spoilt ? "-spoilt.vtp" : ".vtp");
+                vtkNew<vtkXMLPolyDataWriter> writer;
+                writer->SetFileName((dir() / file).c_str());
+                writer->SetInputData(data);
+                configure(writer);
+                ASSERT_EQ(writer->Write(), 1) << file;
+                if (spoilt) {
+                    expect_refused(file, file + ": damaged VTK file: " + why);
+                } else {
+                    accepted("info " + file + " --scene plates.json --lines 1000");
+                }
+            }
+        }
     }
 };
 
@@ -315,92 +366,34 @@ TEST_F(HostileSolution, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
 // VTK makes a cell array's connectivity as long as its last offset says, whatever the
 // connectivity holds: one byte of an offset changed asked for 10^17 bytes (AddressSanitizer,
 // fuzzer). Every way VTK stores an array is checked, and each is read when it is sound.
-// Every way VTK's writer stores arrays: compressed three ways, raw, base64, inline and ascii.
-using WriterMode = std::function<void(vtkXMLPolyDataWriter*)>;
-const std::vector<std::pair<std::string, WriterMode>>& writer_modes() {
-    static const std::vector<std::pair<std::string, WriterMode>> modes = {
-        {"zlib", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToZLib(); }},
-        {"lz4", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToLZ4(); }},
-        {"lzma", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToLZMA(); }},
-        {"zlib-raw",
-         [](vtkXMLPolyDataWriter* w) {
-             w->SetCompressorTypeToZLib();
-             w->EncodeAppendedDataOff();
-         }},
-        {"raw",
-         [](vtkXMLPolyDataWriter* w) {
-             w->SetCompressorTypeToNone();
-             w->EncodeAppendedDataOff();
-         }},
-        {"base64", [](vtkXMLPolyDataWriter* w) { w->SetCompressorTypeToNone(); }},
-        {"binary", [](vtkXMLPolyDataWriter* w) { w->SetDataModeToBinary(); }},
-        {"ascii", [](vtkXMLPolyDataWriter* w) { w->SetDataModeToAscii(); }},
-    };
-    return modes;
-}
-
 TEST_F(HostileSolution, OffsetsBeyondTheConnectivityAreRefusedBeforeReading) {
-    for (const auto& [mode, configure] : writer_modes()) {
-        for (const bool spoil : {false, true}) {
-            vtkNew<vtkXMLPolyDataReader> reader;
-            reader->SetFileName((dir() / "good.vtp").c_str());
-            reader->Update();
-            vtkPolyData* data = reader->GetOutput();
-            if (spoil) {
-                vtkCellArray* polys = data->GetPolys();
-                vtkNew<vtkTypeInt64Array> offsets;
-                offsets->DeepCopy(polys->GetOffsetsArray());
-                offsets->SetValue(offsets->GetNumberOfValues() - 1, 4'000'000'000'000);
-                vtkNew<vtkTypeInt64Array> connectivity;
-                connectivity->DeepCopy(polys->GetConnectivityArray());
-                polys->SetData(offsets, connectivity);
-            }
-            const std::string name = mode + (spoil ? "-spoilt.vtp" : ".vtp");
-            vtkNew<vtkXMLPolyDataWriter> writer;
-            writer->SetFileName((dir() / name).c_str());
-            writer->SetInputData(data);
-            configure(writer);
-            ASSERT_EQ(writer->Write(), 1) << name;
-            if (spoil) {
-                expect_refused(name, name +
-                                         ": damaged VTK file: its Polys offsets reach "
-                                         "4000000000000, but its connectivity holds");
-            } else {
-                accepted("info " + name + " --scene plates.json --lines 1000");
-            }
-        }
-    }
+    expect_every_layout(
+        "offsets",
+        [](vtkPolyData* data) {
+            vtkCellArray* polys = data->GetPolys();
+            vtkNew<vtkTypeInt64Array> offsets;
+            offsets->DeepCopy(polys->GetOffsetsArray());
+            offsets->SetValue(offsets->GetNumberOfValues() - 1, 4'000'000'000'000);
+            vtkNew<vtkTypeInt64Array> connectivity;
+            connectivity->DeepCopy(polys->GetConnectivityArray());
+            polys->SetData(offsets, connectivity);
+        },
+        "its Polys offsets reach 4000000000000, but its connectivity holds");
 }
 
 // A String array whose values hold more strings than it has places: VTK 9.1 writes the strings
 // past the array's end (found by the fuzzer).
 TEST_F(HostileSolution, StringArraysOfMoreStringsThanPlacesAreRefusedBeforeReading) {
-    for (const auto& [mode, configure] : writer_modes()) {
-        for (const bool spoil : {false, true}) {
-            vtkNew<vtkXMLPolyDataReader> reader;
-            reader->SetFileName((dir() / "good.vtp").c_str());
-            reader->Update();
-            vtkPolyData* data = reader->GetOutput();
+    expect_every_layout(
+        "strings",
+        [](vtkPolyData* data) {
             vtkNew<vtkStringArray> note;
             note->SetName("Note");
             // The writer stores a string's bytes and then its end: one more inside makes two.
-            note->InsertNextValue(spoil ? std::string("one\0two", 7) : std::string("one"));
+            note->InsertNextValue(std::string("one\0two", 7));
             data->GetFieldData()->AddArray(note);
-            const std::string name = mode + (spoil ? "-strings.vtp" : "-string.vtp");
-            vtkNew<vtkXMLPolyDataWriter> writer;
-            writer->SetFileName((dir() / name).c_str());
-            writer->SetInputData(data);
-            configure(writer);
-            ASSERT_EQ(writer->Write(), 1) << name;
-            if (spoil) {
-                expect_refused(name, name +
-                                         ": damaged VTK file: String array 'Note' holds 2 "
-                                         "strings; it has places for 1");
-            } else {
-                accepted("info " + name + " --scene plates.json --lines 1000");
-            }
-        }
-    }
+        },
+        "String array 'Note' holds 2 strings; it has places for 1");
 }
 
 // A count of 200,000 digits: the envelope check itself once crashed on it (a regular
