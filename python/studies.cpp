@@ -196,7 +196,8 @@ void bind_studies(py::module_& m) {
           "`hmcr reference --kind points`: radiosity at stratified points, path-traced");
 
     m.def("meshing_study", &meshing_study, py::arg("scene"), py::arg("reference"),
-          py::arg("budgets"), py::arg("output"), py::arg("oracles") = std::vector<std::string>{"all"},
+          py::arg("budgets"), py::arg("output"),
+          py::arg("oracles") = std::vector<std::string>{"all"},
           py::arg("seeds") = StudyOptions{}.seeds, py::arg("rays_per_leaf") = 0,
           py::arg("mesh_rays") = py::none(),
           py::arg("budget_tolerance") = StudyOptions{}.budget_tolerance,
