@@ -4,6 +4,7 @@
 #include "radiosity/basis.h"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -36,12 +37,6 @@ double monomial_mean(bool quad, int i, int j) {
 int basis_size(Basis basis) {
     static constexpr std::array<int, 5> kSizes = {1, 3, 4, 6, 10};
     return kSizes[std::size_t(basis)];
-}
-
-std::string_view basis_name(Basis basis) {
-    static constexpr std::array<std::string_view, 5> kNames = {"constant", "linear", "bilinear",
-                                                               "quadratic", "cubic"};
-    return kNames[std::size_t(basis)];
 }
 
 std::span<const QuadraturePoint> domain_quadrature(bool quad) {
@@ -86,6 +81,8 @@ PolynomialBasis::PolynomialBasis(Basis basis, bool quad)
     // gram = L L^T; the rows of L^-1 are orthonormal combinations, the first the constant 1.
     const Eigen::LLT<Transform> cholesky(gram);
     m_orthonormal = cholesky.matrixL().solve(Transform::Identity(m_size, m_size));
+    for (int k = 0; k < m_size; ++k)
+        m_bound[std::size_t(k)] = m_orthonormal.row(k).cwiseAbs().sum();
     const Domain root = Domain::root();
     for (int k = 0; k < 4; ++k) {
         const Domain child = root.child(quad, k);
@@ -135,6 +132,15 @@ const PolynomialBasis& polynomial_basis(Basis basis, bool quad) {
         return t;
     }();
     return table[2 * std::size_t(basis) + (quad ? 1 : 0)];
+}
+
+double term_bound(Basis basis) {
+    double most = 1;
+    for (const bool quad : {false, true}) {
+        const PolynomialBasis& b = polynomial_basis(basis, quad);
+        for (int k = 1; k < b.size(); ++k) most = std::max(most, b.bound(k));
+    }
+    return most;
 }
 
 }  // namespace hmcr

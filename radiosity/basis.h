@@ -10,16 +10,20 @@
 #include <span>
 #include <string_view>
 
+#include "common/types.h"
+
 namespace hmcr {
 
 // RenderPark's approximations: the polynomials an element's radiosity is taken from.
 enum class Basis { constant, linear, bilinear, quadratic, cubic };
 
 inline constexpr int kMaxBasisSize = 10;  // cubic's
+inline constexpr std::array<std::string_view, 5> kBasisNames = {"constant", "linear", "bilinear",
+                                                                "quadratic", "cubic"};
 
 // The number of functions of a basis: 1, 3, 4, 6 or 10, on squares and triangles alike.
 int basis_size(Basis basis);
-std::string_view basis_name(Basis basis);
+inline std::string_view basis_name(Basis basis) { return kBasisNames[std::size_t(basis)]; }
 
 // A point of a quadrature over an element's unit domain, with its share of the domain's
 // measure (the shares sum to 1: a sum over the points is a mean over the domain).
@@ -52,6 +56,7 @@ public:
 
     // ψ_0(a, b) ... ψ_(size-1)(a, b).
     Coefficients evaluate(double a, double b) const;
+    Coefficients evaluate(const Vec2& ab) const { return evaluate(ab.x(), ab.y()); }
     // Σ_k c_k ψ_k(a, b).
     double value(const Coefficients& c, double a, double b) const;
 
@@ -68,6 +73,10 @@ public:
     // child, the coordinates of parent function i in child k's basis.
     const Transform& transform(int k) const { return m_transform[std::size_t(k)]; }
 
+    // A bound on |ψ_k| over the domain: the sum of the magnitudes of its monomials'
+    // coefficients, since every monomial is at most 1 there.
+    double bound(int k) const { return m_bound[std::size_t(k)]; }
+
 private:
     Coefficients monomials(double a, double b) const;
 
@@ -77,9 +86,15 @@ private:
     std::array<std::array<int, 2>, kMaxBasisSize> m_exponents{};  // of a and b, per monomial
     Transform m_orthonormal;  // row k: ψ_k's coefficients on the monomials
     std::array<Transform, 4> m_transform;
+    std::array<double, kMaxBasisSize> m_bound{};
 };
 
 // The basis for (basis, quad), made once.
 const PolynomialBasis& polynomial_basis(Basis basis, bool quad);
+
+// The largest bound(k) of the functions beyond the first of `basis`, on squares and triangles
+// (1 for the constant basis): what a deposit toward one of them can be, relative to the
+// deposit's power.
+double term_bound(Basis basis);
 
 }  // namespace hmcr

@@ -29,6 +29,9 @@ struct ElementId {
 struct Element {
     ElementId id;
     Domain domain;
+    // A higher-order element's first slot of its coefficients beyond the mean (TermStore,
+    // element_terms.h); none on the constant basis. It fills the padding after the domain.
+    std::uint32_t terms = UINT32_MAX;
     double area = 0;
     Vec3 centre{0, 0, 0};  // the image of the domain's centre, kept for the oracles' geometry
     Rgb radiosity = Rgb::Zero();  // B

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "common/memory.h"
@@ -72,6 +73,7 @@ Element& Hierarchy::make_back_root(std::size_t patch) {
     if (Element* r = m_back_roots[patch].load(std::memory_order_acquire)) return *r;
     Element& r = m_back_storage.emplace_back();
     init_root(patch, kBack, r);
+    if (m_terms) give_terms(r);
     m_back_count.fetch_add(1, std::memory_order_relaxed);
     m_back_roots[patch].store(&r, std::memory_order_release);
     return r;
@@ -88,6 +90,55 @@ void Hierarchy::init_child(Element& parent, int k, Element& child) const {
     child.unshot = parent.unshot;
     child.received = {};
     child.first_child.store(nullptr, std::memory_order_relaxed);
+    if (terms(parent)) {
+        // The parent's polynomial restricted to the child, its mean included.
+        const PolynomialBasis& basis = polynomial(parent);
+        const RgbCoefficients b = basis.transform(k).transpose() * radiosity_coefficients(parent);
+        const RgbCoefficients db = basis.transform(k).transpose() * unshot_coefficients(parent);
+        TermSlot* to = terms(child);
+        child.radiosity = b.row(0).transpose().array();
+        child.unshot = db.row(0).transpose().array();
+        for (int j = 1; j < basis.size(); ++j) {
+            to[j - 1] = {b.row(j).transpose().array(), db.row(j).transpose().array(), {}};
+        }
+    }
+}
+
+void Hierarchy::give_terms(Element& e) {
+    if (e.terms != TermStore::kNone) return;
+    e.terms = m_terms->allocate(1);
+}
+
+void Hierarchy::set_basis(Basis basis) {
+    if (basis == m_basis) return;
+    if (m_terms || basis_size(basis) == 1) {
+        throw std::logic_error("a hierarchy's basis is set once, to a higher one");
+    }
+    m_basis = basis;
+    m_term_bound = term_bound(basis);
+    m_terms = std::make_unique<TermStore>(basis_size(basis) - 1);
+    for_each_element([this](Element& e) { give_terms(e); });
+}
+
+namespace {
+
+RgbCoefficients coefficients(const Element& e, const TermSlot* t, int size, bool unshot) {
+    RgbCoefficients c(size, 3);
+    c.row(0) = (unshot ? e.unshot : e.radiosity).matrix().transpose();
+    for (int k = 1; k < size; ++k) {
+        c.row(k) = (unshot ? t[k - 1].unshot : t[k - 1].radiosity).matrix().transpose();
+    }
+    return c;
+}
+
+}  // namespace
+
+RgbCoefficients Hierarchy::radiosity_coefficients(const Element& e) const {
+    return coefficients(e, terms(e), basis_size(m_basis), false);
+}
+
+RgbCoefficients Hierarchy::unshot_coefficients(const Element& e) const {
+    return coefficients(e, terms(e), basis_size(m_basis), true);
 }
 
 Element* Hierarchy::subdivide(Element& e) {
@@ -100,7 +151,12 @@ Element* Hierarchy::subdivide(Element& e) {
     }
     ElementArena& arena = m_arenas.local();
     Element* block = arena.allocate_block();
-    for (int k = 0; k < 4; ++k) init_child(e, k, block[k]);
+    const std::uint32_t first = m_terms ? m_terms->allocate(4) : TermStore::kNone;
+    for (int k = 0; k < 4; ++k) {
+        block[k].terms =
+            m_terms ? first + std::uint32_t(k * m_terms->per_element()) : TermStore::kNone;
+        init_child(e, k, block[k]);
+    }
     Element* expected = nullptr;
     if (e.first_child.compare_exchange_strong(expected, block, std::memory_order_acq_rel)) {
         m_blocks.fetch_add(1, std::memory_order_relaxed);
@@ -143,6 +199,7 @@ void Hierarchy::reset_values() {
     const auto reset = [this](Element& e) {
         e.radiosity = e.unshot = material(e).emission;
         e.received = {};
+        if (TermSlot* t = terms(e)) std::fill_n(t, m_terms->per_element(), TermSlot{});
     };
     tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
         visit_all(m_roots[i], reset);
@@ -194,6 +251,41 @@ void push_pull_element(Element& e, const Rgb& from_above, const PowerQuantum& qu
     e.unshot = db / area;
 }
 
+// The same on a higher basis: `from_above` and what e received are polynomials on e's basis;
+// each child takes their restriction to it.
+void push_pull_terms(const Hierarchy& h, Element& e, const RgbCoefficients& from_above,
+                     const PowerQuantum& quantum, const PowerQuantum& term_quantum) {
+    const PolynomialBasis& basis = h.polynomial(e);
+    TermSlot* t = h.terms(e);
+    RgbCoefficients acc = from_above;
+    acc.row(0) += (quantum.power(e.received) / e.area).matrix().transpose();
+    e.received = {};
+    for (int k = 1; k < basis.size(); ++k) {
+        acc.row(k) += (term_quantum.power(t[k - 1].received) / e.area).matrix().transpose();
+        t[k - 1].received = {};
+    }
+    Element* c = e.children();
+    if (!c) {
+        e.unshot = acc.row(0).transpose().array();
+        e.radiosity += e.unshot;
+        for (int k = 1; k < basis.size(); ++k) {
+            t[k - 1].unshot = acc.row(k).transpose().array();
+            t[k - 1].radiosity += t[k - 1].unshot;
+        }
+        return;
+    }
+    Rgb b = Rgb::Zero(), db = Rgb::Zero();
+    double area = 0;
+    for (int k = 0; k < 4; ++k) {
+        push_pull_terms(h, c[k], basis.transform(k).transpose() * acc, quantum, term_quantum);
+        b += c[k].area * c[k].radiosity;
+        db += c[k].area * c[k].unshot;
+        area += c[k].area;
+    }
+    e.radiosity = b / area;
+    e.unshot = db / area;
+}
+
 }  // namespace
 
 void Hierarchy::push_pull(const PowerQuantum& quantum) { push_pull(quantum, {}); }
@@ -202,12 +294,21 @@ void Hierarchy::push_pull(const PowerQuantum& quantum, std::span<const Rgb> from
     const auto above = [&](std::size_t side_value) -> Rgb {
         return from_above.empty() ? Rgb::Zero() : from_above[side_value];
     };
-    tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
-        push_pull_element(m_roots[i], above(2 * i), quantum);
-        if (m_back_roots.empty()) return;
-        if (Element* r = m_back_roots[i].load(std::memory_order_acquire)) {
-            push_pull_element(*r, above(2 * i + 1), quantum);
+    const PowerQuantum term = term_quantum(quantum);
+    const int size = basis_size(m_basis);
+    const auto one = [&](Element& root, const Rgb& from) {
+        if (!m_terms) {
+            push_pull_element(root, from, quantum);
+            return;
         }
+        RgbCoefficients c = RgbCoefficients::Zero(size, 3);
+        c.row(0) = from.matrix().transpose();
+        push_pull_terms(*this, root, c, quantum, term);
+    };
+    tbb::parallel_for(std::size_t(0), m_roots.size(), [&](std::size_t i) {
+        one(m_roots[i], above(2 * i));
+        if (m_back_roots.empty()) return;
+        if (Element* r = m_back_roots[i].load(std::memory_order_acquire)) one(*r, above(2 * i + 1));
     });
 }
 
@@ -224,6 +325,7 @@ std::size_t Hierarchy::bytes() const {
     std::size_t b = (m_roots.size() + m_back_count.load()) * sizeof(Element) +
                     m_back_roots.size() * sizeof(std::atomic<Element*>);
     for (const ElementArena& a : m_arenas) b += a.bytes();
+    if (m_terms) b += m_terms->bytes();
     return b;
 }
 

@@ -15,6 +15,7 @@
 #include "common/error.h"
 #include "radiosity/element.h"
 #include "radiosity/element_arena.h"
+#include "radiosity/element_terms.h"
 #include "rays/patch.h"
 
 namespace hmcr {
@@ -97,9 +98,34 @@ public:
 
     std::array<Vec3, 4> corners(const Element& e) const;
 
+    // The polynomials B and Delta B are taken from on each element (docs/design.md §3.14).
+    // Gives every element K - 1 slots for its coefficients beyond the mean, all zero but those
+    // that children inherit; elements made later get theirs when made, each child its parent's
+    // polynomial restricted to it. Call before the hierarchy is shared between threads. The
+    // constant basis (the default) keeps no slots.
+    void set_basis(Basis basis);
+    Basis basis() const { return m_basis; }
+    const PolynomialBasis& polynomial(const Element& e) const {
+        return polynomial_basis(m_basis, patch(e).is_quad());
+    }
+    // e's slots of coefficients 1 .. K-1, or none on the constant basis.
+    TermSlot* terms(const Element& e) const {
+        return e.terms == TermStore::kNone ? nullptr : m_terms->at(e.terms);
+    }
+    // e's B or Delta B on its basis: row 0 the element's mean, rows 1 .. K-1 its slots.
+    RgbCoefficients radiosity_coefficients(const Element& e) const;
+    RgbCoefficients unshot_coefficients(const Element& e) const;
+    // The quantum a ray's deposit toward a coefficient beyond the mean is counted in: the
+    // iteration's times term_bound(basis), so that no sum of them can overflow.
+    PowerQuantum term_quantum(const PowerQuantum& quantum) const {
+        return {quantum.watts * m_term_bound};
+    }
+
     // Pushes received radiosity (the power received, in `quantum`s, over the area) to the
     // leaves (Delta B = received, B += received), then pulls B and Delta B up as area-weighted
-    // averages. Parallel over patches.
+    // averages. Parallel over patches. On a higher basis the coefficients beyond the mean are
+    // pushed too, each child taking its parent's polynomial restricted to it; an element with
+    // children keeps only its mean up to date, since only a leaf shoots or is drawn.
     void push_pull(const PowerQuantum& quantum);
     // The same, each side's root starting with the radiosity from_above[2 * patch + side]
     // instead of 0: what its clusters received (docs/design.md §2.7).
@@ -170,6 +196,7 @@ private:
     }
 
     void init_child(Element& parent, int k, Element& child) const;
+    void give_terms(Element& e);
     void init_root(std::size_t patch, std::uint8_t side, Element& root) const;
     Element& make_back_root(std::size_t patch);
 
@@ -185,6 +212,9 @@ private:
     std::atomic<std::size_t> m_back_count{0};
     mutable tbb::enumerable_thread_specific<ElementArena> m_arenas;
     std::atomic<std::size_t> m_blocks{0};
+    Basis m_basis = Basis::constant;
+    double m_term_bound = 1;
+    std::unique_ptr<TermStore> m_terms;  // none on the constant basis
 };
 
 }  // namespace hmcr

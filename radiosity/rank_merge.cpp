@@ -95,6 +95,16 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
     h.for_each_element([&](const Element& e) {
         quanta.insert(quanta.end(), e.received.begin(), e.received.end());
     });
+    // A higher basis's deposits toward the coefficients beyond the mean, element by element.
+    const int terms = basis_size(h.basis()) - 1;
+    const auto each_term = [&](auto&& f) {
+        if (terms == 0) return;
+        h.for_each_element([&](const Element& e) {
+            TermSlot* t = h.terms(e);
+            for (int j = 0; j < terms; ++j) f(t[j].received);
+        });
+    };
+    each_term([&](const Quanta& q) { quanta.insert(quanta.end(), q.begin(), q.end()); });
     const auto each_cluster = [&](auto&& f) {
         if (clusters) clusters->for_each_cluster(f);
     };
@@ -117,6 +127,9 @@ void merge_iteration(Hierarchy& h, IterationOutcome& out, const Ranks& ranks, bo
         for (auto& c : e.received) c = quanta[k++];
     };
     h.for_each_element(take);
+    each_term([&](Quanta& q) {
+        for (auto& c : q) c = quanta[k++];
+    });
     each_cluster(take);
     for (Quanta& q : classes) {
         for (auto& c : q) c = quanta[k++];

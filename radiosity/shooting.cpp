@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "radiosity/shooting.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -32,6 +33,30 @@ void IterationSources::add(const RayRegion& region, double area, const Rgb& shot
     m_weights.push_back(w);
 }
 
+// A leaf of a higher basis: its strength is the root mean square of its Delta B - beta over its
+// domain, sum_c sqrt(sum_k Delta b_kc^2) for an orthonormal basis, and a ray's share can reach
+// |share| + sum_k |terms_k| bound_k.
+void IterationSources::add_with_terms(const RayRegion& region, double area, const Rgb& shot,
+                                      const TermSlot* slots, const PolynomialBasis& functions) {
+    Rgb squares = shot.square();
+    for (int j = 1; j < functions.size(); ++j) squares += slots[j - 1].unshot.square();
+    const double sum = squares.sqrt().sum();
+    const double w = area * sum;
+    if (!(w > 0)) return;
+    total += w;
+    const Rgb unit = shot / sum;
+    Rgb most = unit.cwiseAbs();
+    for (int j = 1; j < functions.size(); ++j) {
+        terms.push_back(slots[j - 1].unshot / sum);
+        most += terms.back().cwiseAbs() * functions.bound(j);
+    }
+    max_share = max_share.max(most);
+    regions.push_back(region);
+    share.push_back(unit);
+    strength.push_back(sum);
+    m_weights.push_back(w);
+}
+
 void IterationSources::finish() {
     if (regions.empty()) {
         alias.reset();
@@ -48,10 +73,18 @@ void IterationSources::rebuild(const Hierarchy& h, const Rgb& beta) {
     patches = &ps;
     shift = beta;
     leaves = true;
+    basis = h.basis();
+    term_count = basis_size(basis) - 1;
+    if (term_count > 0) terms.reserve(h.leaf_count() * std::size_t(term_count));
     h.for_each_leaf([&](const Element& e) {
-        add({e.domain.u0, e.domain.v0, e.domain.s, e.id.patch, region_map(ps[e.id.patch]),
-             e.id.side},
-            e.area, e.unshot - beta);
+        const RayRegion region{
+            e.domain.u0, e.domain.v0, e.domain.s, e.id.patch, region_map(ps[e.id.patch]),
+            e.id.side};
+        if (term_count > 0) {
+            add_with_terms(region, e.area, e.unshot - beta, h.terms(e), h.polynomial(e));
+        } else {
+            add(region, e.area, e.unshot - beta);
+        }
     });
     finish();
 }
@@ -75,6 +108,9 @@ void IterationSources::clear(std::size_t most) {
     share.clear();
     strength.clear();
     m_weights.clear();
+    terms.clear();
+    basis = Basis::constant;
+    term_count = 0;
     // Room for every leaf at once: grown a leaf at a time, a vector doubles and holds its old
     // block and the new one together while it copies, which raised a large scene's peak.
     regions.reserve(most);
@@ -104,6 +140,10 @@ struct ShootingBuffers::Impl {
         Element* receiver = nullptr;  // none: nothing comes back
         Quanta quanta{}, incident{};
     };
+    struct TermHit {
+        Rgb reflected = Rgb::Zero();  // rho * Phi
+        Vec2f y_uv{0, 0};
+    };
     // The batch's descents are made together, after its rays are traced, so that rays between
     // the same patches decide their shared links once (refine_links).
     // The stages pass each chunk of rays on in these arrays: generated (starts, rays), traced
@@ -117,6 +157,12 @@ struct ShootingBuffers::Impl {
         std::vector<BackDeposit> backs;  // lines used both ways only
         std::vector<LinkQuery> queries;
         std::vector<Element*> receivers;
+        // A higher basis only (docs/design.md §3.14): each landed ray's reflected power and
+        // point, and its deposits toward its receiver's coefficients 1 .. K-1 (K - 1 per ray),
+        // and toward its source's for a line used both ways.
+        std::vector<TermHit> term_hits;
+        std::vector<Quanta> term_quanta, back_term_quanta;
+        std::vector<std::uint32_t> landed;  // a refined mesh's landed rays, in order
     };
     std::array<Batch, 2> batches;  // the second while the first descends (2 threads or more)
     DescentScratch descent;
@@ -161,10 +207,26 @@ std::optional<std::uint8_t> hit_side(const PatchSet& ps, const BatchHit& hit,
 struct BothWays {
     Rgb forward, back;
 };
+// On a higher basis s_r is the landed leaf's root mean square (IterationSources::add_with_terms)
+// and what comes back is its Delta B - beta at the hit, y_uv.
 BothWays both_ways(const IterationSources& sources, std::uint32_t leaf, const Rgb& power,
-                   double power_scale, const Element& landed) {
-    const Rgb back_shot = landed.unshot - sources.shift;
-    const double s_l = sources.strength[leaf], s_r = back_shot.cwiseAbs().sum();
+                   double power_scale, const Hierarchy& h, const Element& landed,
+                   const Vec2f& y_uv) {
+    Rgb back_shot = landed.unshot - sources.shift;
+    double s_r = 0;
+    if (const TermSlot* t = sources.term_count > 0 ? h.terms(landed) : nullptr) {
+        const PolynomialBasis& basis = h.polynomial(landed);
+        const auto psi = basis.evaluate(landed.domain.local(y_uv.cast<double>()));
+        Rgb squares = back_shot.square();
+        for (int j = 1; j < basis.size(); ++j) {
+            squares += t[j - 1].unshot.square();
+            back_shot += psi[j] * t[j - 1].unshot;
+        }
+        s_r = squares.sqrt().sum();
+    } else {
+        s_r = back_shot.cwiseAbs().sum();
+    }
+    const double s_l = sources.strength[leaf];
     if (!(s_r > 0)) return {power, Rgb::Zero()};
     return {power * (s_l / (s_l + s_r)), power_scale / (s_l + s_r) * back_shot};
 }
@@ -260,7 +322,9 @@ public:
           m_power_scale(sources.total / double(rays)),  // S / N_iter
           m_fixed(ctx.fixed_leaves != nullptr),
           // Lines both ways between the leaves (the zero surfaces' rays go one way: §3.13).
-          m_both(m_fixed && ctx.bidirectional == Bidirectional::yes && sources.leaves) {
+          m_both(m_fixed && ctx.bidirectional == Bidirectional::yes && sources.leaves),
+          m_terms(basis_size(ctx.hierarchy.basis()) - 1),
+          m_term_quantum(ctx.hierarchy.term_quantum(out.quantum)) {
         // One thread cannot overlap anything: it reuses one batch's buffers, which stay in
         // cache.
         const auto threads = std::min<std::size_t>(
@@ -322,6 +386,11 @@ private:
             resize_populated(b.backs, m_both ? batch_rays : 0);
             resize_populated(b.queries, m_fixed ? 0 : batch_rays);  // no descents: no queries
             resize_populated(b.receivers, batch_rays);
+            const std::uint64_t terms = std::uint64_t(m_terms);
+            resize_populated(b.term_hits, m_terms > 0 && !m_fixed ? batch_rays : 0);
+            resize_populated(b.term_quanta, terms * batch_rays);
+            resize_populated(b.back_term_quanta, m_both ? terms * batch_rays : 0);
+            resize_populated(b.landed, m_terms > 0 && !m_fixed ? batch_rays : 0);
             if (!m_overlap) break;
         }
         if (!m_fixed) m_buffers.descent.reserve(batch_rays);
@@ -352,7 +421,7 @@ private:
     // fixed mesh, its receiver) and what it carries back.
     void shoot_ray(Batch& b, std::uint64_t k, Chunk& chunk) const {
         const std::uint32_t leaf = b.rays.region[k];
-        Rgb power = m_power_scale * m_sources.share[leaf];
+        Rgb power = source_power(b, k, leaf);
         const double dither = b.rays.dither[k];
         // Written field by field, once: a deposit built whole and copied in was read back
         // from the stack before its halves were stored there, a stall on every ray.
@@ -387,6 +456,50 @@ private:
         deposit.quanta = quantum.count(rho * power, dither);
         deposit.incident = quanta;
         deposit.lands = true;
+        if (m_terms == 0) return;
+        if (m_fixed) {
+            project(*b.receivers[k], query.y_uv, rho * power, dither, &b.term_quanta[k * m_terms]);
+        } else {
+            b.term_hits[k] = {rho * power, query.y_uv};
+        }
+    }
+
+    // Ray k's power from its source leaf: (S / N) share, or on a higher basis (S / N) times the
+    // leaf's Delta B - beta at the ray's origin over its strength.
+    Rgb source_power(const Batch& b, std::uint64_t k, std::uint32_t leaf) const {
+        Rgb unit = m_sources.share[leaf];
+        if (m_sources.term_count > 0) {
+            const RayRegion& r = m_sources.regions[leaf];
+            const PolynomialBasis& basis =
+                polynomial_basis(m_sources.basis, r.map != RegionMap::triangle);
+            const auto psi = basis.evaluate((double(b.rays.u[k]) - r.u0) / r.s,
+                                            (double(b.rays.v[k]) - r.v0) / r.s);
+            const Rgb* t = &m_sources.terms[std::size_t(leaf) * std::size_t(m_sources.term_count)];
+            for (int j = 1; j < basis.size(); ++j) unit += psi[j] * t[j - 1];
+        }
+        return m_power_scale * unit;
+    }
+
+    // The deposit of `reflected` at uv toward the receiver's coefficients 1 .. K-1, in the term
+    // quantum: reflected psi_k(a, b) Jbar / J(uv), the receiver's mean Jacobian over the one at
+    // the point (1 on triangles and parallelograms), so that each is an unbiased estimate of
+    // A times the coefficient (docs/design.md §3.14). Nothing for a cluster, which is constant.
+    void project(const Element& receiver, const Vec2f& uv, const Rgb& reflected, double dither,
+                 Quanta* out) const {
+        const Hierarchy& h = m_ctx.hierarchy;
+        if (!h.terms(receiver)) return;
+        const PolynomialBasis& basis = h.polynomial(receiver);
+        const Vec2 at = uv.cast<double>();
+        const auto psi = basis.evaluate(receiver.domain.local(at));
+        const Patch& p = m_ps.patches[receiver.id.patch];
+        double ratio = 1;
+        if (p.is_quad() && !p.is_parallelogram()) {
+            const double s = receiver.domain.s;
+            ratio = receiver.area / (s * s * p.jacobian(at));
+        }
+        for (int j = 1; j < basis.size(); ++j) {
+            out[j - 1] = m_term_quantum.count(reflected * (psi[j] * ratio), dither);
+        }
     }
 
     // A line used both ways: what ray k carries back from the leaf it landed on to its source
@@ -402,7 +515,8 @@ private:
                                                      query.receiver.patch(), query.receiver.side(),
                                                      query.y_uv.cast<double>())
                                                : *b.receivers[k];
-        const BothWays split = both_ways(m_sources, leaf, power, m_power_scale, landed);
+        const BothWays split =
+            both_ways(m_sources, leaf, power, m_power_scale, m_ctx.hierarchy, landed, query.y_uv);
         if ((split.back != 0).any()) {
             const LinkQuery back{query.source, query.receiver, query.x_uv, query.y_uv};
             Element& to = fixed_receiver(m_ctx, back);
@@ -412,6 +526,10 @@ private:
             back_deposit.quanta = m_out.quantum.count(rho_x * split.back, dither);
             back_deposit.incident = back_quanta;
             back_deposit.receiver = &to;
+            if (m_terms > 0) {
+                project(to, query.x_uv, rho_x * split.back, dither,
+                        &b.back_term_quanta[k * m_terms]);
+            }
         }
         return split.forward;
     }
@@ -422,12 +540,15 @@ private:
         std::size_t landed = 0;
         if (!m_fixed) {
             for (std::uint64_t k = 0; k < b.n; ++k) {
-                if (b.deposits[k].lands) b.queries[landed++] = b.queries[k];
+                if (!b.deposits[k].lands) continue;
+                if (m_terms > 0) b.landed[landed] = std::uint32_t(k);
+                b.queries[landed++] = b.queries[k];
             }
             RefinementCounters counters;
             refine_links(m_ctx, {b.queries.data(), landed}, {b.receivers.data(), landed}, counters,
                          m_buffers.descent);
             m_out.counters += counters;
+            if (m_terms > 0) project_landed(b, landed);
         }
         for (std::uint64_t k = 0, q = 0; k < b.n; ++k) {
             if (!b.deposits[k].lands) continue;
@@ -438,6 +559,7 @@ private:
                 m_ctx.clusters->receive(receiver, ray_direction(b.rays, k), d.incident, dither);
             } else {
                 add(receiver.received, d.quanta);
+                add_terms(receiver, b.term_quanta, k);
             }
             if (!m_both) continue;
             const ShootingBuffers::Impl::BackDeposit& back = b.backs[k];
@@ -446,6 +568,7 @@ private:
                     m_ctx.clusters->receive(*to, -ray_direction(b.rays, k), back.incident, dither);
                 } else {
                     add(to->received, back.quanta);
+                    add_terms(*to, b.back_term_quanta, k);
                 }
             }
         }
@@ -456,6 +579,28 @@ private:
         }
         m_out.rays += b.n;
         if (m_on_batch) m_on_batch(m_out.rays);
+    }
+
+    // A refined mesh's landed rays' deposits toward their receivers' coefficients beyond the
+    // mean, once the descents have found the receivers: on every thread, as the tracing.
+    void project_landed(Batch& b, std::size_t landed) const {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, landed, kGrain),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                              for (std::size_t q = range.begin(); q != range.end(); ++q) {
+                                  const std::uint32_t k = b.landed[q];
+                                  const ShootingBuffers::Impl::TermHit& t = b.term_hits[k];
+                                  project(*b.receivers[q], t.y_uv, t.reflected, b.rays.dither[k],
+                                          &b.term_quanta[std::size_t(k) * m_terms]);
+                              }
+                          });
+    }
+
+    // Ray k's deposits toward e's coefficients beyond the mean, from `quanta` (K - 1 per ray).
+    void add_terms(Element& e, const std::vector<Quanta>& quanta, std::uint64_t k) const {
+        if (m_terms == 0) return;
+        TermSlot* t = m_ctx.hierarchy.terms(e);
+        if (!t) return;
+        for (int j = 0; j < m_terms; ++j) add(t[j].received, quanta[k * m_terms + j]);
     }
 
     const RefinementContext& m_ctx;
@@ -470,7 +615,9 @@ private:
     double m_power_scale;
     bool m_fixed;  // a fixed mesh: deposits on its leaves, no descents
     bool m_both;
-    bool m_overlap = false;  // the next batch is traced while this one finishes
+    int m_terms;                  // K - 1: a higher basis's coefficients beyond the mean
+    PowerQuantum m_term_quantum;  // what deposits toward them are counted in
+    bool m_overlap = false;       // the next batch is traced while this one finishes
     const RayStrata* m_strata = nullptr;
 };
 

@@ -33,6 +33,13 @@ struct IterationSources {
     bool leaves = false;              // the hierarchy's leaves (not the zero surfaces)
     Rgb max_share = Rgb::Zero();      // the largest |share| of a leaf in each channel
     std::optional<AliasTable> alias;  // none when nothing is left to shoot
+    // On a higher basis (docs/design.md §3.14), each leaf's coefficients 1 .. K-1 of Delta B over
+    // its strength, K - 1 in a row per region (none on the constant basis): a ray from x shoots
+    // share + sum_k terms_k psi_k(x), the leaf's Delta B at x over its strength, which is then
+    // sum_c sqrt(sum_k Delta b_kc^2), its root mean square.
+    std::vector<Rgb> terms;
+    Basis basis = Basis::constant;
+    int term_count = 0;  // K - 1
     // The patches the regions name: the scene's, or with `zero` its patches and background.
     const std::vector<Patch>* patches = nullptr;
 
@@ -47,6 +54,8 @@ struct IterationSources {
 private:
     void clear(std::size_t most);  // and makes room for `most` sources
     void add(const RayRegion& region, double area, const Rgb& shot);
+    void add_with_terms(const RayRegion& region, double area, const Rgb& shot,
+                        const TermSlot* slots, const PolynomialBasis& functions);
     void finish();
 
     std::vector<double> m_weights;  // A_l |Delta B_l|, for the alias table

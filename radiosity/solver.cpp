@@ -394,6 +394,7 @@ Solution solve_in_arena(const SolverOptions& options, const Pass& pass, const So
     StartMesh mesh = make_mesh();
     sol.hierarchy = std::move(mesh.hierarchy);
     Hierarchy& h = *sol.hierarchy;
+    h.set_basis(options.basis);
     const PatchSet& patches = h.patch_set();
     if (patches.max_emitted_power <= 0) throw InputError("the scene emits no light");
     record_scene(st, patches);

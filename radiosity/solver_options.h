@@ -19,6 +19,7 @@
 #include <string>
 #include <string_view>
 
+#include "radiosity/basis.h"
 #include "radiosity/oracle_registry.h"
 #include "rays/sobol.h"
 
@@ -77,6 +78,10 @@ struct EnumNames<Importance> {
 template <>
 struct EnumNames<Bidirectional> {
     static constexpr std::array<std::string_view, 2> names{"no", "yes"};
+};
+template <>
+struct EnumNames<Basis> {
+    static constexpr std::array<std::string_view, 5> names = kBasisNames;
 };
 template <class E>
 concept NamedEnum = requires {
@@ -152,6 +157,10 @@ concept NamedSetting = requires(T v) {
       scene_file, "on a fixed mesh (the frozen pass, a reference's mesh), each line that lands " \
                   "also carries the unshot power of the leaf it lands on back to the leaf it "   \
                   "left, both ways weighted by the two leaves' unshot radiosity (no: one way)")  \
+    X(Basis,         basis,     Basis::constant, true,  "constant, linear, bilinear, quadratic or cubic", \
+      scene_file, "the polynomials each element's radiosity is taken from, orthonormal on its "  \
+                  "square or triangle: 1, 3, 4, 6 or 10 functions; the oracles decide on the "   \
+                  "mean (constant: one value per element)")                                     \
     X(double,        refine_share, 0.1,     v > 0 && v <= 1,         "in (0, 1]",                 \
       scene_file, "share of the rays that refine the mesh; the rest solve its leaves again, "    \
                   "frozen, from scratch (1: one refined solve)")                                 \

@@ -150,6 +150,7 @@ template struct Setting<Clustering>;
 template struct Setting<RaySequence>;
 template struct Setting<Importance>;
 template struct Setting<Bidirectional>;
+template struct Setting<Basis>;
 template struct Setting<double>;
 template struct Setting<int>;
 template struct Setting<std::uint64_t>;
@@ -166,6 +167,7 @@ template Clustering parse_named(const Setting<Clustering>&, std::string_view);
 template RaySequence parse_named(const Setting<RaySequence>&, std::string_view);
 template Importance parse_named(const Setting<Importance>&, std::string_view);
 template Bidirectional parse_named(const Setting<Bidirectional>&, std::string_view);
+template Basis parse_named(const Setting<Basis>&, std::string_view);
 
 const Oracle* default_oracle() { return oracle_registry().find("kl"); }
 

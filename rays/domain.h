@@ -68,9 +68,13 @@ struct Domain {
         return {float(i) * s, float(j) * s, s};
     }
 
+    // The local coordinates (a, b) = ((u - u0) / s, (v - v0) / s) of uv: the unit square's or
+    // the unit triangle's, where an element's basis functions are defined (radiosity/basis.h).
+    Vec2 local(const Vec2& uv) const { return {(uv.x() - u0) / s, (uv.y() - v0) / s}; }
     // The child containing (u, v) (a point of this domain).
     int child_containing(bool quad, const Vec2& uv) const {
-        return child_at(quad, (uv.x() - u0) / s, (uv.y() - v0) / s);
+        const Vec2 ab = local(uv);
+        return child_at(quad, ab.x(), ab.y());
     }
     // The child containing the point at (a, b) = ((u - u0) / s, (v - v0) / s).
     static int child_at(bool quad, double a, double b) {
