@@ -115,7 +115,20 @@ void Hierarchy::set_basis(Basis basis) {
         throw std::logic_error("a hierarchy's basis is set once, to a higher one");
     }
     m_basis = basis;
-    m_term_bound = term_bound(basis);
+    // A deposit toward a term is at most bound_k Jbar / J times the ray's (shooting.cpp): on a
+    // quad that is no parallelogram J is affine in (u, v), so Jbar / J is below its largest
+    // corner value over its smallest.
+    double stretch = 1;
+    for (const Patch& p : m_patches.patches) {
+        if (!p.is_quad() || p.is_parallelogram()) continue;
+        double lo = p.jacobian({0, 0}), hi = lo;
+        for (const Vec2& uv : {Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)}) {
+            lo = std::min(lo, p.jacobian(uv));
+            hi = std::max(hi, p.jacobian(uv));
+        }
+        if (lo > 0) stretch = std::max(stretch, hi / lo);
+    }
+    m_term_bound = term_bound(basis) * stretch;
     m_terms = std::make_unique<TermStore>(basis_size(basis) - 1);
     for_each_element([this](Element& e) { give_terms(e); });
 }

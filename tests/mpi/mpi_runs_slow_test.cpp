@@ -131,6 +131,15 @@ TEST(MpiRuns, ClusterLeavesAreTheSameBitsOnAnyRankCount) {
         {1, 3});
 }
 
+// A higher basis (docs/design.md §3.14): every coefficient's deposits are summed in whole quanta
+// like the means', refined and frozen, both ways, with oriented clusters.
+TEST(MpiRuns, HigherBasesAreTheSameBitsOnAnyRankCount) {
+    expect_same_solve_on_ranks(
+        "--oracle kl --clustering oriented --epsilon 0.3 --refine-share 0.4 --basis quadratic "
+        "--bidirectional yes --rays 300000",
+        {1, 2, 3});
+}
+
 TEST(MpiRuns, BudgetSearchesAreTheSameBitsOnTwoRanks) {
     expect_same_solve_on_ranks("--oracle power --budget 3000 --rays 300000", {2});
 }

@@ -21,6 +21,18 @@ void expect_same_leaves(const Hierarchy& a, const Hierarchy& b) {
             return;
         }
     }
+    // A higher basis's coefficients beyond the mean, leaf by leaf.
+    EXPECT_EQ(a.basis(), b.basis());
+    if (a.basis() == Basis::constant || a.basis() != b.basis()) return;
+    std::vector<RgbCoefficients> ca, cb;
+    a.for_each_leaf([&](const Element& e) { ca.push_back(a.radiosity_coefficients(e)); });
+    b.for_each_leaf([&](const Element& e) { cb.push_back(b.radiosity_coefficients(e)); });
+    for (std::size_t k = 0; k < std::min(ca.size(), cb.size()); ++k) {
+        if (ca[k] != cb[k]) {
+            ADD_FAILURE() << "leaf " << k << "'s coefficients differ";
+            return;
+        }
+    }
 }
 
 Solution solve_on_one_and_two_threads(const PatchMesh& mesh, SolverOptions options,

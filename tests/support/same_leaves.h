@@ -9,7 +9,8 @@
 
 namespace hmcr::test {
 
-// Expects the same leaves (ids, in order) with the same radiosity, bit for bit.
+// Expects the same leaves (ids, in order) with the same radiosity, bit for bit, and on a higher
+// basis the same coefficients.
 void expect_same_leaves(const Hierarchy& a, const Hierarchy& b);
 
 // Solves `mesh` with `options` on 1 and on 2 threads and expects the same leaves and the same
