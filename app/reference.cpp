@@ -191,7 +191,7 @@ Command reference_command(CLI::App& app, const std::string& command_line) {
     // The uniform mesh has no oracle and no limits; rays and seeds are the reference's own.
     a->flags = add_solver_flags(*cmd, o.solver, kNotReferenceSettings, kReferenceOwnSettings);
     for (const char* name : {"--rays", "--stop", "--max-elements", "--control-variate",
-                             "--sequence", "--bidirectional"}) {
+                             "--sequence", "--bidirectional", "--basis"}) {
         if (auto* option = cmd->get_option_no_throw(name)) a->mesh_only.push_back(option);
     }
     a->mesh_only.push_back(

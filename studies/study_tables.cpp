@@ -113,7 +113,8 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
             ? fmt::format("{} with {} rays, the error of the mesh itself", frozen, *o.mesh_rays)
             : std::string("mesh: not measured (--mesh-rays 0)");
     return fmt::format(
-        "{}, N_s = {}, link weight {}, refine share {}{}{}{}{}, budget tolerance {}%, {} from {}. "
+        "{}, N_s = {}, link weight {}, refine share {}{}{}{}{}{}, budget tolerance {}%, {} from "
+        "{}. "
         "Mean ± standard error over the seeds whose budget search succeeded (seeds column); a "
         "mean alone is of one seed (a standard error needs two or more) or of seeds that agree "
         "exactly. RMSE on the 0–255 scale and PSNR in dB, each averaged over {} ({}); object "
@@ -134,6 +135,8 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
             : fmt::format(", sequence {}", name(o.solver.sequence)),
         o.solver.bidirectional == Bidirectional::no ? std::string()
                                                     : std::string(", lines both ways"),
+        o.solver.basis == Basis::constant ? std::string()
+                                          : fmt::format(", {} basis", name(o.solver.basis)),
         100 * o.budget_tolerance, counted(std::size_t(o.seeds), "seed"), o.solver.seed,
         counted(views.size(), "view"), fmt::join(views, ", "), mesh, 100 * kFinerShareLimit,
         kBoldRule);
@@ -351,6 +354,7 @@ void write_study_tables(OutputSet& out, const std::string& scene, const StudyOpt
     if (o.solver.bidirectional != Bidirectional::no) {
         options["bidirectional"] = name(o.solver.bidirectional);
     }
+    if (o.solver.basis != Basis::constant) options["basis"] = name(o.solver.basis);
     write_text_atomically(out.temp(o.output / "table.json"), table.dump(2) + "\n");
     write_text_atomically(out.temp(o.output / "table.csv"), csv_table(views, cells));
     write_text_atomically(out.temp(o.output / "patches.csv"), patches_csv(cells));
