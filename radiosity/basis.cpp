@@ -97,15 +97,26 @@ PolynomialBasis::PolynomialBasis(Basis basis, bool quad)
 }
 
 PolynomialBasis::Coefficients PolynomialBasis::monomials(double a, double b) const {
+    // Powers by products, not std::pow: every landed ray evaluates its receiver's basis.
+    const std::array<double, 4> pa = {1, a, a * a, a * a * a}, pb = {1, b, b * b, b * b * b};
     Coefficients m(m_size);
     for (int k = 0; k < m_size; ++k) {
-        m[k] = std::pow(a, m_exponents[k][0]) * std::pow(b, m_exponents[k][1]);
+        m[k] = pa[std::size_t(m_exponents[k][0])] * pb[std::size_t(m_exponents[k][1])];
     }
     return m;
 }
 
 PolynomialBasis::Coefficients PolynomialBasis::evaluate(double a, double b) const {
-    return m_orthonormal * monomials(a, b);
+    // L^-1 is lower triangular: the zeros above its diagonal are skipped, and the loop is
+    // written out (Eigen's products of dynamic size were a tenth of a linear solve).
+    const Coefficients m = monomials(a, b);
+    Coefficients psi(m_size);
+    for (int k = 0; k < m_size; ++k) {
+        double sum = 0;
+        for (int j = 0; j <= k; ++j) sum += m_orthonormal(k, j) * m[j];
+        psi[k] = sum;
+    }
+    return psi;
 }
 
 double PolynomialBasis::value(const Coefficients& c, double a, double b) const {

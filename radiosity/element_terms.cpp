@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "radiosity/element_terms.h"
 
+#include <new>
 #include <stdexcept>
 
 namespace hmcr {
@@ -11,7 +12,11 @@ TermStore::TermStore(int per_element)
 }
 
 TermStore::~TermStore() {
-    for (std::size_t c = 0; c < kChunks; ++c) delete[] m_chunks[c].load(std::memory_order_relaxed);
+    for (std::size_t c = 0; c < kChunks; ++c) {
+        if (TermSlot* chunk = m_chunks[c].load(std::memory_order_relaxed)) {
+            ::operator delete(chunk, std::align_val_t(alignof(TermSlot)));
+        }
+    }
 }
 
 std::uint32_t TermStore::allocate(int elements) {
@@ -25,7 +30,7 @@ std::uint32_t TermStore::allocate(int elements) {
         }
         end = first + n;
         if (end > std::uint64_t(kChunks) * kChunkSlots - 1) {
-            throw std::length_error("more than 2^32 coefficient slots");
+            throw std::length_error("more than 2^30 coefficient slots");
         }
         if (m_next.compare_exchange_weak(start, end, std::memory_order_relaxed)) {
             start = first;
@@ -36,12 +41,17 @@ std::uint32_t TermStore::allocate(int elements) {
     if (!m_chunks[chunk].load(std::memory_order_acquire)) {
         const std::lock_guard lock(m_mutex);
         if (!m_chunks[chunk].load(std::memory_order_relaxed)) {
-            m_chunks[chunk].store(new TermSlot[kChunkSlots], std::memory_order_release);
+            // Raw memory: a slot is written when it is handed out, so a chunk's pages are
+            // touched only as far as it is used.
+            m_chunks[chunk].store(
+                static_cast<TermSlot*>(::operator new(kChunkSlots * sizeof(TermSlot),
+                                                      std::align_val_t(alignof(TermSlot)))),
+                std::memory_order_release);
             m_chunk_count.fetch_add(1, std::memory_order_relaxed);
         }
     }
     TermSlot* slots = at(std::uint32_t(start));
-    for (std::uint64_t k = 0; k < n; ++k) slots[k] = TermSlot{};
+    for (std::uint64_t k = 0; k < n; ++k) new (slots + k) TermSlot{};
     return std::uint32_t(start);
 }
 

@@ -50,7 +50,7 @@ public:
 private:
     static constexpr int kChunkBits = 16;
     static constexpr std::uint32_t kChunkSlots = 1u << kChunkBits;
-    static constexpr std::size_t kChunks = std::size_t(1) << (32 - kChunkBits);
+    static constexpr std::size_t kChunks = std::size_t(1) << (30 - kChunkBits);  // 2^30 slots
 
     int m_per;
     std::atomic<std::uint64_t> m_next{0};

@@ -5,9 +5,10 @@
 
 Solves a scene on its patches alone (`--max-depth 0`: no element is split, so every solve has
 the same leaves) with each sequence over several seeds, one thread, and a converged solve of the
-same leaves with `--converged-rays`. A variant is a sequence, or a sequence and `+both` for
-`--bidirectional yes` (`sobol+both`). Prints, per variant, the per-patch relative RMS deviation
-from the converged solve (over the lit patches and the three channels), the median CPU seconds
+same leaves with `--converged-rays`. A variant is a sequence, then `+both` for
+`--bidirectional yes` and `+BASIS` for `--basis BASIS` if wanted (`sobol+both`, `sobol+linear`):
+a basis's per-patch values are its leaves' means, the patches' first coefficients. Prints, per variant, the per-patch relative RMS deviation
+from the converged solve of its basis (over the lit patches and the three channels), the median CPU seconds
 of one solve (the whole process: user + system), and the efficiency 1 / (deviation^2 x seconds)
 relative to the first variant's.
 
@@ -30,21 +31,37 @@ from vtk.util.numpy_support import vtk_to_numpy
 
 
 def radiosity(path):
+    """Each patch's mean B (area-weighted over its cells: a higher basis draws a leaf as several
+    cells, each with the leaf's mean), patch by patch."""
     reader = vtk.vtkXMLPolyDataReader()
     reader.SetFileName(path)
     reader.Update()
-    return vtk_to_numpy(reader.GetOutput().GetCellData().GetArray("ElementRadiosity")).astype(float)
+    cells = reader.GetOutput().GetCellData()
+    b = vtk_to_numpy(cells.GetArray("ElementRadiosity")).astype(float)
+    patch = vtk_to_numpy(cells.GetArray("PatchId")).astype(int)
+    area = vtk_to_numpy(cells.GetArray("ElementArea")).astype(float)
+    patches = patch.max() + 1
+    weights = numpy.bincount(patch, weights=area, minlength=patches)
+    return numpy.stack([numpy.bincount(patch, weights=area * b[:, c], minlength=patches)
+                        for c in range(3)], axis=1) / weights[:, None]
+
+
+BASES = ("linear", "bilinear", "quadratic", "cubic")
 
 
 def solve(args, out, seed, variant, rays):
     """Solves once; returns the process's CPU seconds."""
-    sequence, _, ways = variant.partition("+")
-    if ways not in ("", "both"):
-        sys.exit(f"fixed_mesh_noise.py: variant {variant!r} is a sequence or sequence+both")
+    sequence, *words = variant.split("+")
     command = [args.hmcr, "solve", args.scene, "--max-depth", "0", "--threads", "1", "--seed",
                str(seed), "--sequence", sequence, "--rays", str(rays), "-q", "-o", out]
-    if ways:
-        command += ["--bidirectional", "yes"]
+    for word in words:
+        if word == "both":
+            command += ["--bidirectional", "yes"]
+        elif word in BASES:
+            command += ["--basis", word]
+        else:
+            sys.exit(f"fixed_mesh_noise.py: variant {variant!r} is a sequence, then +both and "
+                     f"+BASIS ({', '.join(BASES)}) if wanted")
     process = subprocess.Popen(command)
     _, status, usage = os.wait4(process.pid, 0)
     if status != 0:
@@ -63,13 +80,19 @@ def main():
     parser.add_argument("--work", help="keep the solutions here (default: a temporary folder)")
     args = parser.parse_args()
     work = args.work or tempfile.mkdtemp(prefix="hmcr-noise-")
-    converged_path = os.path.join(work, "converged.vtp")
-    if not os.path.exists(converged_path):
-        solve(args, converged_path, 1000, "sobol", args.converged_rays)
-    converged = radiosity(converged_path)
-    lit = converged > 0
+    def converged_for(variant):
+        """The converged solve of the variant's basis: another basis converges to another
+        solution of the same leaves."""
+        basis = next((w for w in variant.split("+") if w in BASES), "")
+        path = os.path.join(work, f"converged{'-' + basis if basis else ''}.vtp")
+        if not os.path.exists(path):
+            solve(args, path, 1000, "sobol" + ("+" + basis if basis else ""), args.converged_rays)
+        return radiosity(path)
+
+    lit = converged_for("sobol") > 0
     rows = []
     for variant in args.variants.split(","):
+        converged = converged_for(variant)
         squares, seconds = [], []
         for seed in range(1, args.seeds + 1):
             path = os.path.join(work, f"{variant}-{seed}.vtp")

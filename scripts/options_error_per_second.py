@@ -8,7 +8,8 @@ For each scene and budget, a first solve with the first variant and `--budget` f
 oracle's threshold; every variant and seed then solves with that threshold (`--epsilon`), one
 thread, and `hmcr error` measures the solution against the scene's reference. A variant is
 `+`-joined words: `sobol` (`--sequence sobol`), `both` (`--bidirectional yes`), `cv`
-(`--control-variate constant`), or `random` for none of them. Prints, per scene, budget and
+(`--control-variate constant`), a basis (`linear`, `bilinear`, `quadratic`, `cubic`: `--basis`),
+or `random` for none of them. Prints, per scene, budget and
 variant, the mean leaves, the mean object error with its standard error over the seeds, the
 median CPU seconds of one solve (the whole process: user + system), and the efficiency
 1 / (error^2 x seconds) relative to the first variant's.
@@ -29,7 +30,8 @@ import sys
 import tempfile
 
 FLAGS = {"sobol": ["--sequence", "sobol"], "both": ["--bidirectional", "yes"],
-         "cv": ["--control-variate", "constant"], "random": []}
+         "cv": ["--control-variate", "constant"], "random": [],
+         **{basis: ["--basis", basis] for basis in ("linear", "bilinear", "quadratic", "cubic")}}
 
 
 def variant_flags(variant):
