@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "radiosity/solver.h"
 #include "tests/support/shaded_scenes.h"
+#include "tests/support/test_scenes.h"
 #include "viz/shaded_tracer.h"
 
 namespace hmcr::test {
@@ -198,6 +200,47 @@ INSTANTIATE_TEST_SUITE_P(
                     BasisCase{Basis::bilinear, true}, BasisCase{Basis::quadratic, false},
                     BasisCase{Basis::cubic, true}, BasisCase{Basis::cubic, false}),
     case_name);
+
+// A solved box, linear and cubic: the same exactness on the solver's own coefficients.
+TEST(PolynomialMeshSolved, EveryPointHoldsItsLeafsPolynomial) {
+    const PatchMesh mesh =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 1, Rgb::Constant(0.5), Rgb::Constant(1)));
+    for (const Basis basis : {Basis::linear, Basis::cubic}) {
+        SolverOptions o;
+        o.basis = basis;
+        o.rays = 20'000;
+        const Solution sol = solve(mesh, o);
+        const Hierarchy& h = *sol.hierarchy;
+        std::vector<const Element*> leaves;
+        h.for_each_leaf([&](const Element& e) { leaves.push_back(&e); });
+        const ShadedMesh m = build_shaded_mesh(h);
+        const int n = polynomial_subdivisions(basis);
+        ASSERT_EQ(m.cell_count(), leaves.size() * std::size_t(n * n));
+        ASSERT_EQ(m.leaf_count(), sol.stats.faces);
+        bool varies = false;  // some leaf's polynomial is not its mean
+        for (std::size_t c = 0; c < m.cell_count(); ++c) {
+            const Element& e = *leaves[std::size_t(m.leaf_index[c])];
+            const RgbCoefficients coefficients = h.radiosity_coefficients(e);
+            varies = varies || coefficients.bottomRows(coefficients.rows() - 1).norm() > 0;
+            for (auto k = m.offsets[c]; k < m.offsets[c + 1]; ++k) {
+                const auto point = std::size_t(m.connectivity[std::size_t(k)]);
+                const Vec2& ab = m.leaf_coordinates[point];
+                // Relative to the sum of the terms' magnitudes: where a dark leaf's B is near 0,
+                // the terms cancel, and no evaluation of the sum is closer than its rounding.
+                const PolynomialBasis::Coefficients psi = h.polynomial(e).evaluate(ab);
+                for (int channel = 0; channel < 3; ++channel) {
+                    const double want = h.polynomial(e).value(
+                        PolynomialBasis::Coefficients(coefficients.col(channel)), ab.x(), ab.y());
+                    const double terms =
+                        (coefficients.col(channel).array() * psi.array()).abs().sum();
+                    EXPECT_LE(std::abs(m.point_radiosity[point][channel] - want), 1e-12 * terms)
+                        << basis_name(basis) << " cell " << c << " point " << point;
+                }
+            }
+        }
+        EXPECT_TRUE(varies) << basis_name(basis);
+    }
+}
 
 TEST(PolynomialMeshSubdivisions, AreTheBasissDegreesOfFreedomAlongAnEdge) {
     EXPECT_EQ(polynomial_subdivisions(Basis::linear), 1);
