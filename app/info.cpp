@@ -52,14 +52,17 @@ struct InfoTarget {
 std::pair<std::size_t, std::size_t> leaves_and_clusters(const ShadedMesh& mesh) {
     std::set<std::int32_t> clusters;
     std::size_t unclustered = 0;
-    for (const std::int32_t id : mesh.cluster_id) {
-        if (id < 0) {
-            ++unclustered;
-        } else {
+    // A leaf of a higher-order solution is several cells, all of one side: counted once.
+    for (std::size_t c = 0; c < mesh.cluster_id.size(); ++c) {
+        const std::int32_t id = mesh.cluster_id[c];
+        if (id >= 0) {
             clusters.insert(id);
+        } else if (mesh.leaf_index.empty() || c == 0 ||
+                   mesh.leaf_index[c] != mesh.leaf_index[c - 1]) {
+            ++unclustered;
         }
     }
-    if (mesh.cluster_id.empty()) unclustered = mesh.cell_count();
+    if (mesh.cluster_id.empty()) unclustered = mesh.leaf_count();
     return {unclustered + clusters.size(), clusters.size()};
 }
 

@@ -68,14 +68,15 @@ ChannelStates patch_states(const PatchSet& set) {
 
 ChannelStates leaf_states(const ShadedMesh& mesh) {
     const PatchSet cells = leaf_patches(mesh);
+    const std::vector<std::size_t> first = leaf_first_cells(mesh);  // of each leaf
     ChannelStates c;
     std::vector<std::uint32_t> surface;
     std::size_t fronts = 0;
     for (const std::uint8_t side : {kFront, kBack}) {
         for (std::size_t k = 0; k < cells.patches.size(); ++k) {
-            if ((mesh.side.empty() ? kFront : mesh.side[k]) != side) continue;
+            if ((mesh.side.empty() ? kFront : mesh.side[first[k]]) != side) continue;
             c.states.patches.push_back(cells.patches[k]);
-            surface.push_back(std::uint32_t(mesh.patch_id[k]));
+            surface.push_back(std::uint32_t(mesh.patch_id[first[k]]));
         }
         if (side == kFront) fronts = c.states.patches.size();
     }

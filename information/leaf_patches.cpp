@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "information/leaf_patches.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -21,12 +22,54 @@ std::vector<Vec3> corners(const ShadedMesh& m, std::size_t cell) {
     return out;
 }
 
+// The corners of the leaf whose cells are [first, last): its points at local coordinates
+// (0, 0), (1, 0), (1, 1), (0, 1) (a quad's, cells of 4 points) or (0, 0), (1, 0), (0, 1), in the
+// order its cells run (a back's reversed).
+std::vector<Vec3> leaf_corners(const ShadedMesh& m, std::size_t first, std::size_t last) {
+    const bool quad = m.offsets[first + 1] - m.offsets[first] == 4;
+    const std::vector<Vec2> want = quad ? std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}
+                                        : std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}};
+    std::vector<Vec3> out(want.size());
+    std::vector<bool> found(want.size(), false);
+    for (auto s = m.offsets[first]; s < m.offsets[last]; ++s) {
+        const auto point = std::size_t(m.connectivity[std::size_t(s)]);
+        for (std::size_t k = 0; k < want.size(); ++k) {
+            if (m.leaf_coordinates[point] == want[k]) {
+                out[k] = m.points[point];
+                found[k] = true;
+            }
+        }
+    }
+    if (std::find(found.begin(), found.end(), false) != found.end()) {
+        throw std::invalid_argument("the leaf of cell " + std::to_string(first) +
+                                    " has no point at a corner of its domain");
+    }
+    if (!m.side.empty() && m.side[first] == kBack) std::reverse(out.begin(), out.end());
+    return out;
+}
+
 }  // namespace
+
+std::vector<std::size_t> leaf_first_cells(const ShadedMesh& mesh) {
+    std::vector<std::size_t> first;
+    first.reserve(mesh.leaf_count());
+    for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
+        if (mesh.leaf_index.empty() || c == 0 || mesh.leaf_index[c] != mesh.leaf_index[c - 1]) {
+            first.push_back(c);
+        }
+    }
+    return first;
+}
 
 PatchSet leaf_patches(const ShadedMesh& mesh) {
     PatchSet set;
-    for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
-        const std::vector<Vec3> k = corners(mesh, c);
+    const std::vector<std::size_t> first = leaf_first_cells(mesh);
+    for (std::size_t l = 0; l < first.size(); ++l) {
+        const std::size_t c = first[l];
+        const std::vector<Vec3> k =
+            mesh.leaf_index.empty()
+                ? corners(mesh, c)
+                : leaf_corners(mesh, c, l + 1 < first.size() ? first[l + 1] : mesh.cell_count());
         if (k.size() < 3 || k.size() > 4) {
             throw std::invalid_argument("cell " + std::to_string(c) + " has " +
                                         std::to_string(k.size()) + " corners, not 3 or 4");

@@ -4,6 +4,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -139,6 +140,38 @@ void bind_solutions(py::module_& m) {
                                    if (s.shaded.cluster_id.empty()) return py::none();
                                    return vector_array(s.shaded.cluster_id);
                                })
+        .def_property_readonly(
+            "basis", [](const PySolution& s) { return std::string(basis_name(s.shaded.basis)); })
+        // A higher-order solution's cells are n x n per leaf: leaf_index says whose, None on the
+        // constant basis (one cell per leaf).
+        .def_property_readonly("leaf_index",
+                               [](const PySolution& s) -> py::object {
+                                   if (s.shaded.leaf_index.empty()) return py::none();
+                                   return vector_array(s.shaded.leaf_index);
+                               })
+        .def_property_readonly("leaf_coordinates",
+                               [](const PySolution& s) -> py::object {
+                                   const auto& ab = s.shaded.leaf_coordinates;
+                                   if (ab.empty()) return py::none();
+                                   py::array_t<double> a({py::ssize_t(ab.size()), py::ssize_t(2)});
+                                   auto out = a.mutable_unchecked<2>();
+                                   for (std::size_t i = 0; i < ab.size(); ++i) {
+                                       out(py::ssize_t(i), 0) = ab[i].x();
+                                       out(py::ssize_t(i), 1) = ab[i].y();
+                                   }
+                                   return a;
+                               })
+        // Per cell its leaf's K x 3 coefficients: shape (cells, K, 3).
+        .def_property_readonly(
+            "coefficients",
+            [](const PySolution& s) -> py::object {
+                const ShadedMesh& shaded = s.shaded;
+                if (shaded.coefficients.empty()) return py::none();
+                py::array_t<double> a({py::ssize_t(shaded.cell_count()),
+                                       py::ssize_t(basis_size(shaded.basis)), py::ssize_t(3)});
+                std::copy(shaded.coefficients.begin(), shaded.coefficients.end(), a.mutable_data());
+                return a;
+            })
         .def_property_readonly("stats",
                                [](const PySolution& s) { return stats_dict(s.solution.stats); })
         .def_property_readonly(

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "radiosity/conforming_polygons.h"
+#include "radiosity/polynomial_mesh.h"
 
 namespace hmcr {
 namespace {
@@ -312,10 +313,12 @@ ShadedMesh finish_sides(std::vector<FromTree> sides) {
 }  // namespace
 
 ShadedMesh build_shaded_mesh(const Hierarchy& h, double crease_degrees) {
+    if (h.basis() != Basis::constant) return build_polynomial_mesh(h);
     return finish_sides(take_sides(h, crease_degrees));
 }
 
 ShadedMesh build_shaded_mesh(std::unique_ptr<Hierarchy> h, double crease_degrees) {
+    if (h->basis() != Basis::constant) return build_polynomial_mesh(*h);
     std::vector<FromTree> taken = take_sides(*h, crease_degrees);
     h.reset();
     return finish_sides(std::move(taken));

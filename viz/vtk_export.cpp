@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "common/atomic_file.h"
@@ -106,9 +107,19 @@ void set_attributes(vtkPolyData* pd, const ShadedMesh& mesh) {
     if (!mesh.cluster_id.empty()) {
         cd->AddArray(view_array<vtkIntArray>("ClusterId", mesh.cluster_id));
     }
+    // What evaluates a higher-order solution anywhere (docs/design.md §5.9): only on such a
+    // basis, so that a constant solution's file is what it always was.
+    if (mesh.basis != Basis::constant) {
+        static_assert(sizeof(Vec2) == 2 * sizeof(double));
+        pd->GetPointData()->AddArray(
+            view_array<vtkDoubleArray>("LeafCoordinates", mesh.leaf_coordinates, 2));
+        cd->AddArray(
+            view_array<vtkDoubleArray>("Coefficients", mesh.coefficients, int(mesh.cell_stride())));
+        cd->AddArray(view_array<vtkIntArray>("LeafIndex", mesh.leaf_index));
+    }
 }
 
-void set_metadata(vtkPolyData* pd, const VtpMetadata& meta) {
+void set_metadata(vtkPolyData* pd, const ShadedMesh& mesh, const VtpMetadata& meta) {
     vtkFieldData* fd = pd->GetFieldData();
     add_string_field(fd, "Oracle", meta.oracle);
     add_value_field<vtkDoubleArray>(fd, "Epsilon", meta.epsilon);
@@ -125,6 +136,9 @@ void set_metadata(vtkPolyData* pd, const VtpMetadata& meta) {
     add_string_field(fd, "LinkWeight", meta.link_weight);
     add_string_field(fd, "Clustering", meta.clustering);
     add_value_field<vtkTypeUInt64Array>(fd, "MeshLeaves", meta.mesh_leaves);
+    if (mesh.basis != Basis::constant) {
+        add_string_field(fd, "Basis", std::string(basis_name(mesh.basis)));
+    }
 }
 
 }  // namespace
@@ -134,7 +148,7 @@ void write_vtp(const std::filesystem::path& path, const ShadedMesh& mesh, const 
     vtkNew<vtkPolyData> pd;
     set_geometry(pd, mesh);
     set_attributes(pd, mesh);
-    set_metadata(pd, meta);
+    set_metadata(pd, mesh, meta);
     write_file_atomically(path,
                           [&](const std::filesystem::path& tmp) { write_polydata(pd, tmp, path); });
 }

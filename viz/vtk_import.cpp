@@ -19,8 +19,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "common/error.h"
+#include "radiosity/basis.h"
 #include "radiosity/solver_options.h"
 #include "viz/vtp_io.h"
 
@@ -112,6 +114,86 @@ void read_cluster_ids(vtkCellData* cd, const VtpChecker& check, const VtpMetadat
                             c, id, m.cluster_id[k - 1]));
         }
         m.cluster_id[k] = id;
+    }
+}
+
+// The higher-order arrays (docs/design.md §5.9), all of them exactly when the Basis field names
+// a basis other than the constant; a file without it is a constant solution's. The cells of one
+// leaf run together, numbered from 0 in their order, one patch's side each, and every cell is
+// a sub-square or a sub-triangle, whose basis its point count says.
+void read_basis(vtkPolyData* data, const VtpChecker& check, ShadedMesh& m) {
+    vtkFieldData* fd = data->GetFieldData();
+    vtkPointData* pd = data->GetPointData();
+    vtkCellData* cd = data->GetCellData();
+    m.basis = Basis::constant;
+    if (fd->HasArray("Basis")) {
+        const std::string given = check.string_field(fd, "Basis", "not an hmcr solution");
+        const auto known = std::find(kBasisNames.begin(), kBasisNames.end(), given);
+        if (known == kBasisNames.end()) {
+            check.fail(fmt::format(
+                "has Basis {}, not constant, linear, bilinear, quadratic or cubic", quote(given)));
+        }
+        m.basis = Basis(known - kBasisNames.begin());
+    }
+    if (m.basis == Basis::constant) {
+        for (const char* array : {"Coefficients", "LeafIndex"}) {
+            if (cd->HasArray(array)) {
+                check.fail(fmt::format("has a {} array, but no Basis beyond the constant", array));
+            }
+        }
+        if (pd->HasArray("LeafCoordinates")) {
+            check.fail("has a LeafCoordinates array, but no Basis beyond the constant");
+        }
+        return;
+    }
+    const vtkIdType points = vtkIdType(m.points.size()), cells = vtkIdType(m.cell_count());
+    const std::string missing =
+        fmt::format("not a whole solution on the {} basis", basis_name(m.basis));
+    auto* ab = check.array<vtkDoubleArray>(pd, "LeafCoordinates", 2, points, missing.c_str());
+    m.leaf_coordinates.resize(std::size_t(points));
+    for (vtkIdType i = 0; i < points; ++i) {
+        for (int k = 0; k < 2; ++k) {
+            const double x = ab->GetValue(2 * i + k);
+            if (!(x >= 0 && x <= 1)) {
+                check.fail(fmt::format("point {} has LeafCoordinates {}, not in [0, 1]", i, x));
+            }
+            m.leaf_coordinates[std::size_t(i)][k] = x;
+        }
+    }
+    const int stride = int(m.cell_stride());
+    auto* coefficients =
+        check.array<vtkDoubleArray>(cd, "Coefficients", stride, cells, missing.c_str());
+    m.coefficients.resize(std::size_t(stride) * std::size_t(cells));
+    for (std::size_t k = 0; k < m.coefficients.size(); ++k) {
+        m.coefficients[k] = check.finite_at_least<double>(coefficients->GetValue(vtkIdType(k)),
+                                                          -HUGE_VAL, "Coefficients");
+    }
+    auto* leaf = check.array<vtkIntArray>(cd, "LeafIndex", 1, cells, missing.c_str());
+    m.leaf_index.resize(std::size_t(cells));
+    for (std::size_t c = 0; c < std::size_t(cells); ++c) {
+        const int corners = int(m.offsets[c + 1] - m.offsets[c]);
+        if (corners != 3 && corners != 4) {
+            check.fail(
+                fmt::format("cell {} has {} points: a sub-cell of a leaf on the {} basis "
+                            "is a triangle or a quad",
+                            c, corners, basis_name(m.basis)));
+        }
+        const int id = leaf->GetValue(vtkIdType(c));
+        const int previous = c == 0 ? -1 : m.leaf_index[c - 1];
+        if (id != previous && id != previous + 1) {
+            check.fail(
+                fmt::format("cell {} has LeafIndex {} after {}: the cells of a leaf run "
+                            "together, the leaves numbered from 0",
+                            c, id, previous));
+        }
+        if (c > 0 && id == previous &&
+            (m.patch_id[c] != m.patch_id[c - 1] || m.side[c] != m.side[c - 1])) {
+            check.fail(
+                fmt::format("cell {} has LeafIndex {}, as the cell before it, on another "
+                            "patch or side",
+                            c, id));
+        }
+        m.leaf_index[c] = id;
     }
 }
 
@@ -216,8 +298,13 @@ ShadedMesh read_vtp(const fs::path& path, VtpMetadata* metadata) {
     read_polygon_cells(data, check, m);
     read_cell_data(data, check, meta.patch_count, m);
     read_cluster_ids(data->GetCellData(), check, meta, m);
-    if (m.cell_count() != meta.element_count) {
+    read_basis(data, check, m);
+    if (m.leaf_index.empty() && m.cell_count() != meta.element_count) {
         check.fail(fmt::format("has {} cells but records {} elements", m.cell_count(),
+                               meta.element_count));
+    }
+    if (!m.leaf_index.empty() && m.leaf_count() != meta.element_count) {
+        check.fail(fmt::format("has {} leaves but records {} elements", m.leaf_count(),
                                meta.element_count));
     }
     if (metadata) *metadata = meta;

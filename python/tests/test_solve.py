@@ -126,6 +126,18 @@ def test_arrays_are_the_leaves_polygons():
     assert sol.options["rays"] == 20_000 and sol.options["oracle"] == "kl"
 
 
+def test_a_higher_order_solutions_cells_are_its_leaves_sub_cells():
+    sol = hmcr.solve(hmcr.load_scene("cornell"), rays=20_000, basis="quadratic")
+    cells = len(sol.offsets) - 1
+    assert sol.basis == "quadratic" and cells == 9 * sol.stats["faces"]
+    assert len(sol.leaf_index) == cells and sol.leaf_index[-1] + 1 == sol.stats["faces"]
+    assert sol.coefficients.shape == (cells, 6, 3)
+    assert np.array_equal(sol.coefficients[:, 0, :], sol.radiosity)
+    assert sol.leaf_coordinates.shape == (len(sol.points), 2)
+    constant = hmcr.solve(hmcr.load_scene("cornell"), rays=20_000)
+    assert constant.basis == "constant" and constant.leaf_index is None
+
+
 @pytest.mark.parametrize("keywords, flags", [
     ({"rays": 0}, ["--rays", "0"]),
     ({"oracle": "foo"}, ["--oracle", "foo"]),

@@ -3,7 +3,8 @@
 //
 // Input: the bytes of a .vtp. Whatever read_vtp returns must be a mesh the renderer can use:
 // polygons naming existing points, one value per point and per cell, the cells in a solution's
-// order (fronts patch by patch, then backs), cluster ids only with clustering and in range.
+// order (fronts patch by patch, then backs), cluster ids only with clustering and in range, and
+// on a higher-order basis the coordinates, coefficients and leaf of every point and cell.
 #include <cstdint>
 
 #include "tests/fuzz/fuzz_support.h"
@@ -32,6 +33,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 (m.side[c] == m.side[c - 1] && m.patch_id[c] < m.patch_id[c - 1])) {
                 crash("cells out of their order");
             }
+        }
+        if (m.basis == hmcr::Basis::constant) {
+            if (!m.leaf_coordinates.empty() || !m.coefficients.empty() || !m.leaf_index.empty()) {
+                crash("higher-order arrays on the constant basis");
+            }
+        } else {
+            if (m.leaf_coordinates.size() != m.points.size()) crash("coordinates per point");
+            if (m.coefficients.size() != m.cell_stride() * cells) crash("coefficients per cell");
+            if (m.leaf_index.size() != cells) crash("a leaf per cell");
+            for (const hmcr::Vec2& ab : m.leaf_coordinates) {
+                if (!(ab.minCoeff() >= 0 && ab.maxCoeff() <= 1)) crash("coordinates outside");
+            }
+            for (std::size_t c = 0; c < cells; ++c) {
+                const auto corners = m.offsets[c + 1] - m.offsets[c];
+                if (corners != 3 && corners != 4) crash("a sub-cell of neither shape");
+                const std::int32_t before = c == 0 ? -1 : m.leaf_index[c - 1];
+                if (m.leaf_index[c] != before && m.leaf_index[c] != before + 1) {
+                    crash("a leaf's cells apart");
+                }
+            }
+            if (m.leaf_count() != meta.element_count) crash("leaves, not the elements recorded");
         }
         if (!m.cluster_id.empty() && meta.clustering != "isotropic") crash("ids, no clustering");
         for (std::int32_t id : m.cluster_id) {

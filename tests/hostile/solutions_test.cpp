@@ -286,6 +286,88 @@ TEST_F(HostileSolution, ClusterIdsThatNoSolveWritesAreRefused) {
     expect_refused("unclustered.vtp", "has a ClusterId array, but Clustering 'none'");
 }
 
+// Basis and its arrays: a known basis; LeafCoordinates, Coefficients and LeafIndex exactly with
+// a basis beyond the constant, of its component counts; leaf coordinates in the unit domain,
+// finite coefficients, and the cells of each leaf together, numbered from 0.
+TEST_F(HostileSolution, HigherOrderArraysThatNoSolveWritesAreRefused) {
+    accepted("solve plates.json --rays 2000 --basis cubic -q -o cubic.vtp");
+    accepted("render cubic.vtp --scene plates.json -o cubic.png");
+    accepted("info cubic.vtp --scene plates.json --lines 1000");
+    spoilt(
+        "uncoefficient.vtp", [](vtkPolyData* d) { d->GetCellData()->RemoveArray("Coefficients"); },
+        "cubic.vtp");
+    expect_refused("uncoefficient.vtp",
+                   "uncoefficient.vtp: not a whole solution on the cubic basis (no Coefficients "
+                   "array)");
+    spoilt(
+        "narrow.vtp",
+        [](vtkPolyData* d) {
+            vtkNew<vtkDoubleArray> c;
+            c->SetName("Coefficients");
+            c->SetNumberOfComponents(3);
+            c->SetNumberOfTuples(d->GetNumberOfCells());
+            c->Fill(1);
+            d->GetCellData()->RemoveArray("Coefficients");
+            d->GetCellData()->AddArray(c);
+        },
+        "cubic.vtp");
+    expect_refused("narrow.vtp", "narrow.vtp: array Coefficients has");
+    expect_refused("narrow.vtp", "components; expected");
+    spoilt(
+        "quartic.vtp",
+        [](vtkPolyData* d) {
+            vtkNew<vtkStringArray> basis;
+            basis->SetName("Basis");
+            basis->InsertNextValue("quartic");
+            d->GetFieldData()->RemoveArray("Basis");
+            d->GetFieldData()->AddArray(basis);
+        },
+        "cubic.vtp");
+    expect_refused("quartic.vtp",
+                   "quartic.vtp: has Basis 'quartic', not constant, linear, bilinear, quadratic "
+                   "or cubic");
+    spoilt(
+        "unbased.vtp", [](vtkPolyData* d) { d->GetFieldData()->RemoveArray("Basis"); },
+        "cubic.vtp");
+    expect_refused("unbased.vtp",
+                   "unbased.vtp: has a Coefficients array, but no Basis beyond the constant");
+    spoilt(
+        "outside.vtp",
+        [](vtkPolyData* d) {
+            vtkDoubleArray::SafeDownCast(d->GetPointData()->GetArray("LeafCoordinates"))
+                ->SetValue(1, 1.5);
+        },
+        "cubic.vtp");
+    expect_refused("outside.vtp", "outside.vtp: point 0 has LeafCoordinates 1.5, not in [0, 1]");
+    spoilt(
+        "infinite.vtp",
+        [](vtkPolyData* d) {
+            vtkDoubleArray::SafeDownCast(d->GetCellData()->GetArray("Coefficients"))
+                ->SetValue(4, INFINITY);
+        },
+        "cubic.vtp");
+    expect_refused("infinite.vtp", "infinite.vtp: Coefficients inf is not a finite number");
+    spoilt(
+        "skipped.vtp",
+        [](vtkPolyData* d) {
+            vtkIntArray::SafeDownCast(d->GetCellData()->GetArray("LeafIndex"))->SetValue(1, 5);
+        },
+        "cubic.vtp");
+    expect_refused("skipped.vtp",
+                   "skipped.vtp: cell 1 has LeafIndex 5 after 0: the cells of a leaf run "
+                   "together");
+    spoilt("stray.vtp", [](vtkPolyData* d) {
+        vtkNew<vtkDoubleArray> ab;
+        ab->SetName("LeafCoordinates");
+        ab->SetNumberOfComponents(2);
+        ab->SetNumberOfTuples(d->GetNumberOfPoints());
+        ab->Fill(0);
+        d->GetPointData()->AddArray(ab);
+    });
+    expect_refused("stray.vtp",
+                   "stray.vtp: has a LeafCoordinates array, but no Basis beyond the constant");
+}
+
 TEST_F(HostileSolution, GarbageIsRefused) {
     m_temp.write("junk.vtp", "<VTKFile>nonsense");
     expect_refused("junk.vtp", "junk.vtp: ");

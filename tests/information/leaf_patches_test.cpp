@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include "information/scene_information.h"
 #include "radiosity/oracle_registry.h"
 #include "radiosity/shaded_mesh.h"
@@ -50,6 +52,33 @@ TEST(LeafPatches, CellsBecomeTheirLeavesWithTheSameArea) {
         coarse.i_s.estimate);
     EXPECT_LE(fine.i_s.estimate - kZ * fine.discretisation_error.standard_error,
               fine.i_cs.estimate + fine_bias);
+}
+
+// A higher-order solution's n x n sub-cells of a leaf are one patch, the leaf's own: the leaves
+// of the same tree shaded on the constant basis, corner for corner.
+TEST(LeafPatches, SubCellsOfALeafAreOnePatch) {
+    const PatchMesh mesh =
+        make_patch_mesh(inward_box({0, 0, 0}, {1, 1, 1}, 1, Rgb::Constant(0.5), Rgb::Constant(1)));
+    SolverOptions o;
+    o.oracle = oracle_registry().find("power");
+    o.epsilon = 1e-3;
+    o.rays = 20'000;
+    o.basis = Basis::quadratic;
+    const Solution sol = solve(mesh, o);
+    const ShadedMesh shaded = build_shaded_mesh(*sol.hierarchy);
+    ASSERT_EQ(shaded.cell_count(), 9 * sol.stats.faces);
+    const PatchSet leaves = leaf_patches(shaded);
+    ASSERT_EQ(leaves.patches.size(), sol.stats.faces);
+    ASSERT_EQ(leaf_first_cells(shaded).size(), sol.stats.faces);
+    std::size_t l = 0;
+    sol.hierarchy->for_each_leaf([&](const Element& e) {
+        const std::array<Vec3, 4> corners = sol.hierarchy->corners(e);
+        const Patch& p = leaves.patches[l++];
+        ASSERT_EQ(p.corner_count, 4);
+        for (int k = 0; k < 4; ++k) EXPECT_TRUE(p.corner[k].isApprox(corners[k], 1e-14));
+        EXPECT_NEAR(p.area, e.area, 1e-12);
+    });
+    EXPECT_NEAR(leaves.total_area, 6.0, 1e-9);
 }
 
 }  // namespace
