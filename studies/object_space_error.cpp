@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "radiosity/polynomial_mesh.h"
 #include "rays/embree_scene.h"
 #include "studies/solution_probe.h"
 #include "viz/cell_triangles.h"
@@ -88,8 +89,16 @@ Partial integrate_triangle(const ShadedMesh& ref, const CellTriangle& tri, const
     const std::uint8_t side = cell_side(ref, tri.cell);
     const std::vector<Rgb>& emission = side == kBack ? options.back_emission : options.emission;
     const Rgb e = emission.empty() ? Rgb::Zero() : emission[std::size_t(patch)];
+    const bool polynomial = ref.basis != Basis::constant;
     for (const Vec2& st : points) {
-        const Rgb b_ref = (1 - st.x() - st.y()) * b0 + st.x() * b1 + st.y() * b2;
+        const double w0 = 1 - st.x() - st.y();
+        // A higher-order reference's polynomial at the point, as the tracer evaluates it.
+        const Rgb b_ref =
+            polynomial ? polynomial_radiosity(ref, tri.cell,
+                                              w0 * ref.leaf_coordinates[tri.points[0]] +
+                                                  st.x() * ref.leaf_coordinates[tri.points[1]] +
+                                                  st.y() * ref.leaf_coordinates[tri.points[2]])
+                       : Rgb(w0 * b0 + st.x() * b1 + st.y() * b2);
         const auto b_sol = probe.value(p0 + st.x() * e1 + st.y() * e2, normal, patch, side, e);
         sum.count(b_sol.found);
         sum.squared_error += weight * (b_sol.radiosity - b_ref).matrix().squaredNorm();

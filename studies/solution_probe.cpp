@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "radiosity/polynomial_mesh.h"
+
 namespace hmcr {
 namespace {
 
@@ -80,9 +82,9 @@ SolutionProbe::Value SolutionProbe::value(const Vec3& p, const Vec3& normal, int
     return {*b, by_ray ? Found::ray : Found::nearest};
 }
 
-// The Gouraud value at the closest point of the patch side's cells within delta of p: a point
-// at an edge between patches, which the tracer's float arithmetic may put on the neighbour (a
-// light tile in a ceiling), is still its own patch's.
+// The Gouraud value (a higher basis's polynomial) at the closest point of the patch side's cells
+// within delta of p: a point at an edge between patches, which the tracer's float arithmetic may
+// put on the neighbour (a light tile in a ceiling), is still its own patch's.
 std::optional<Rgb> SolutionProbe::nearest(const Vec3& p, int patch, std::uint8_t side) const {
     const std::size_t k = key(patch, side);
     if (k + 1 >= m_first.size()) return std::nullopt;
@@ -101,9 +103,17 @@ std::optional<Rgb> SolutionProbe::nearest(const Vec3& p, int patch, std::uint8_t
             const double distance = (q - p).squaredNorm();
             if (distance >= best) continue;
             best = distance;
-            value = Rgb((1 - w.x() - w.y()) * s.point_radiosity[corner(v0)] +
-                        w.x() * s.point_radiosity[corner(at)] +
+            const double w0 = 1 - w.x() - w.y();
+            if (s.basis == Basis::constant) {
+                value =
+                    Rgb(w0 * s.point_radiosity[corner(v0)] + w.x() * s.point_radiosity[corner(at)] +
                         w.y() * s.point_radiosity[corner(at + 1)]);
+            } else {  // the leaf's polynomial at the point's local coordinates
+                const Vec2 ab = w0 * s.leaf_coordinates[corner(v0)] +
+                                w.x() * s.leaf_coordinates[corner(at)] +
+                                w.y() * s.leaf_coordinates[corner(at + 1)];
+                value = polynomial_radiosity(s, c, ab);
+            }
         }
     }
     return value;
