@@ -77,7 +77,7 @@ BudgetResult solve_as_asked(PatchMesh& mesh, const SolverOptions& options,
                             const BudgetOptions& budget, const SolveInputs& inputs,
                             Progress& progress, const Ranks& ranks) {
     if (budget.leaves > 0) return solve_for_budget(mesh, options, budget, inputs, progress, ranks);
-    check_root_count(mesh.n_faces(), options.max_elements);  // a root per face, at least
+    check_root_count(mesh.n_faces(), element_limit(options));  // a root per face, at least
     const auto start = std::chrono::steady_clock::now();
     PatchSet patches = build_patch_set(mesh);
     release(mesh);

@@ -170,7 +170,7 @@ BudgetResult solve_for_budget(const PatchMesh& mesh, const SolverOptions& option
                               const BudgetOptions& budget, const SolveInputs& inputs,
                               Progress& progress, const Ranks& ranks, KnownProbes* known) {
     if (budget.leaves == 0) throw InputError("budget must be a positive leaf count");
-    check_root_count(mesh.n_faces(), options.max_elements);
+    check_root_count(mesh.n_faces(), element_limit(options));
     return Search(mesh, options, budget, inputs, progress, ranks, known).run();
 }
 

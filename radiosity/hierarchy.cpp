@@ -160,7 +160,7 @@ Element* Hierarchy::subdivide(Element& e) {
         throw ElementLimitReached(fmt::format(
             "the element hierarchy would grow beyond --max-elements {} (about {} of memory); "
             "raise it, or refine less (a larger epsilon, --min-area or a smaller --max-depth)",
-            m_limits.max_elements, human_bytes(double(m_limits.max_elements) * sizeof(Element))));
+            m_limits.max_elements, human_bytes(double(m_limits.max_elements) * element_bytes())));
     }
     ElementArena& arena = m_arenas.local();
     Element* block = arena.allocate_block();

@@ -138,6 +138,11 @@ public:
     }
     std::size_t leaf_count() const { return element_count() - m_blocks.load(); }
     std::size_t bytes() const;
+    // What an element takes: the Element and, on a higher basis, its coefficients' slots.
+    std::size_t element_bytes() const {
+        return sizeof(Element) +
+               (m_terms ? std::size_t(m_terms->per_element()) * sizeof(TermSlot) : 0);
+    }
 
     // Leaves in canonical order (the fronts patch by patch, then the backs that exist; child
     // index depth-first): the order of the output.

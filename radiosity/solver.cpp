@@ -143,10 +143,10 @@ struct StartMesh {
 // peak of a scene of many patches (docs/performance.md).
 std::unique_ptr<Hierarchy> roots(PatchSet patches, const SolverOptions& o,
                                  std::shared_ptr<const EmbreeScene>& scene) {
-    check_root_count(root_count(patches), o.max_elements);  // before the BVH's memory
+    check_root_count(root_count(patches), element_limit(o));  // before the BVH's memory
     if (!scene) scene = std::make_shared<const EmbreeScene>(patches);
     return std::make_unique<Hierarchy>(std::move(patches),
-                                       HierarchyLimits{o.min_area, o.max_depth, o.max_elements});
+                                       HierarchyLimits{o.min_area, o.max_depth, element_limit(o)});
 }
 
 // A refining solve's mesh (or the uniform one) over `patches`.

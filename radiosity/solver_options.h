@@ -195,4 +195,9 @@ struct SolverOptions {
 #undef HMCR_FIELD
 };
 
+// The elements a solve may make: its max_elements, or with the default limit on a higher basis
+// the elements a quarter of the memory holds with their coefficients (docs/design.md §2.6), so
+// that the default bounds the memory on every basis.
+std::uint64_t element_limit(const SolverOptions& options);
+
 }  // namespace hmcr

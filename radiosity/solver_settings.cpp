@@ -12,6 +12,7 @@
 #include "common/memory.h"
 #include "common/types.h"
 #include "radiosity/element.h"
+#include "radiosity/element_terms.h"
 
 namespace hmcr {
 namespace {
@@ -180,6 +181,16 @@ std::uint64_t default_max_elements() {
     const std::uint64_t memory = physical_memory_bytes();
     return memory > 0 ? std::max<std::uint64_t>(1'000'000, memory / 4 / sizeof(Element))
                       : 10'000'000;
+}
+
+std::uint64_t element_limit(const SolverOptions& options) {
+    if (options.basis == Basis::constant || options.max_elements != default_max_elements()) {
+        return options.max_elements;
+    }
+    const double bytes =
+        double(sizeof(Element) + std::size_t(basis_size(options.basis) - 1) * sizeof(TermSlot));
+    return std::max<std::uint64_t>(
+        1, std::uint64_t(double(options.max_elements) * double(sizeof(Element)) / bytes));
 }
 
 void validate(const SolverOptions& options) {

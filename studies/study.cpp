@@ -87,7 +87,7 @@ public:
     StudyRunner(const Scene& scene, const StudyOptions& o, Progress& progress)
         : m_options(o), m_progress(progress), m_scene(scene) {
         validate(o);
-        check_root_count(scene.mesh.n_faces(), o.solver.max_elements);  // before any cell
+        check_root_count(scene.mesh.n_faces(), element_limit(o.solver));  // before any cell
         for (std::size_t b : o.budgets)
             for (const Oracle* oracle : o.oracles)
                 for (int s = 0; s < o.seeds; ++s) {

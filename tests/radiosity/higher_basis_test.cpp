@@ -316,6 +316,24 @@ TEST(HigherBasis, BothWaysKeepTheOneWayExpectation) {
     }
 }
 
+// The default element limit bounds the same memory on every basis; a limit the user gives is
+// the user's.
+TEST(HigherBasis, TheDefaultElementLimitCountsTheCoefficients) {
+    SolverOptions o;
+    EXPECT_EQ(element_limit(o), o.max_elements);
+    for (const Basis basis : kHigher) {
+        o.basis = basis;
+        const double bytes =
+            double(sizeof(Element) + std::size_t(basis_size(basis) - 1) * sizeof(TermSlot));
+        EXPECT_NEAR(double(element_limit(o)) * bytes, double(o.max_elements) * sizeof(Element),
+                    bytes)
+            << basis_name(basis);
+        EXPECT_LT(element_limit(o), o.max_elements);
+    }
+    o.max_elements = 1000;
+    EXPECT_EQ(element_limit(o), 1000u);
+}
+
 // A refined solve (a refining pass, then its mesh frozen), and a fixed one both ways: the same
 // leaves, radiosity and coefficients on 1 and 2 threads.
 TEST(HigherBasis, SameBitsForOneAndTwoThreads) {
