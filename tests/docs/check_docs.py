@@ -158,13 +158,20 @@ for doc in ("README.md", "docs/usage.md"):
     if "make view-deps" not in (root / doc).read_text():
         problems.append(f"{doc}: the viewing advice does not say make view-deps")
 
-# An install path that names a version names this one (CMakeLists.txt's project version).
+# An install path that names a version names this one (CMakeLists.txt's project version), and a
+# find_package of hmcr asks for its minor version.
 version = re.search(r"project\(hmcr VERSION ([\d.]+)", (root / "CMakeLists.txt").read_text())
 for md in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
     for n, line in enumerate(md.read_text().splitlines(), 1):
         for named in re.findall(r"/hmcr/(\d+\.\d+\.\d+)", line):
             if version and named != version.group(1):
                 problems.append(f"{md.relative_to(root)}:{n}: names version {named}; hmcr is "
+                                f"{version.group(1)} (CMakeLists.txt)")
+        # find_package(hmcr X.Y) asks for the same minor version (hmcrConfigVersion.cmake's
+        # SameMinorVersion): this one's.
+        for named in re.findall(r"find_package\(hmcr (\d+\.\d+)", line):
+            if version and not version.group(1).startswith(named + "."):
+                problems.append(f"{md.relative_to(root)}:{n}: asks for hmcr {named}; hmcr is "
                                 f"{version.group(1)} (CMakeLists.txt)")
 
 # Source paths cited in the sources' comments name what is there: a path that starts at a folder
