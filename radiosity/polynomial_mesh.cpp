@@ -79,7 +79,7 @@ public:
         std::array<double, 3 * kMaxBasisSize> c{};  // coefficient-major
         for (int k = 0; k < basis.size(); ++k) {
             for (int channel = 0; channel < 3; ++channel) {
-                c[std::size_t(3 * k + channel)] = rows(k, channel);
+                c[3 * std::size_t(k) + std::size_t(channel)] = rows(k, channel);
             }
         }
         const int n = polynomial_subdivisions(m_h.basis());

@@ -47,7 +47,7 @@ void IterationSources::add_with_terms(const RayRegion& region, double area, cons
     const Rgb unit = shot / sum;
     Rgb most = unit.cwiseAbs();
     for (int j = 1; j < functions.size(); ++j) {
-        terms.push_back(slots[j - 1].unshot / sum);
+        terms.emplace_back(slots[j - 1].unshot / sum);
         most += terms.back().cwiseAbs() * functions.bound(j);
     }
     max_share = max_share.max(most);
