@@ -266,9 +266,7 @@ TEST(HigherBasis, RefinedSolveHoldsTheProjectionOnEachPatch) {
 // receiver's Delta B at its end, not its mean: every coefficient keeps the one-way solve's
 // expectation. A t test per leaf and coefficient of the difference over 16 seeds.
 TEST(HigherBasis, BothWaysKeepTheOneWayExpectation) {
-    PatchMesh mesh = lit_plate(Receiver::square);
-    {
-        std::vector<TestPolygon> polygons;
+    const PatchMesh mesh = [] {
         TestPolygon emitter = axis_rectangle(2, kPlateHeight, {0.5, 0.2}, {1, 0.6}, false);
         emitter.emission = Rgb::Ones();
         TestPolygon receiver;
@@ -281,8 +279,8 @@ TEST(HigherBasis, BothWaysKeepTheOneWayExpectation) {
         reflector.corners = {centre + along - up, centre - along - up, centre - along + up,
                              centre + along + up};
         reflector.reflectance = Rgb::Constant(0.9);
-        mesh = make_patch_mesh({emitter, receiver, reflector});
-    }
+        return make_patch_mesh({emitter, receiver, reflector});
+    }();
     std::vector<std::vector<double>> difference;
     const auto coefficients = [](const Hierarchy& h) {
         std::vector<double> all;
