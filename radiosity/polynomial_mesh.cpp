@@ -164,4 +164,16 @@ Rgb polynomial_radiosity(const ShadedMesh& mesh, std::size_t cell, const Vec2& a
                                  mesh.coefficients.data() + mesh.cell_stride() * cell, ab);
 }
 
+Rgb radiosity_at(const ShadedMesh& mesh, std::size_t cell, const std::array<std::size_t, 3>& points,
+                 double w1, double w2) {
+    const double w0 = 1 - w1 - w2;
+    if (mesh.basis == Basis::constant) {
+        const auto& b = mesh.point_radiosity;
+        return w0 * b[points[0]] + w1 * b[points[1]] + w2 * b[points[2]];
+    }
+    const auto& ab = mesh.leaf_coordinates;
+    return polynomial_radiosity(mesh, cell,
+                                w0 * ab[points[0]] + w1 * ab[points[1]] + w2 * ab[points[2]]);
+}
+
 }  // namespace hmcr

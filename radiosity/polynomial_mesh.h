@@ -4,6 +4,8 @@
 // holding the leaf's polynomial there, and every cell what evaluates it anywhere inside.
 #pragma once
 
+#include <array>
+
 #include "radiosity/basis.h"
 #include "radiosity/hierarchy.h"
 #include "radiosity/shaded_mesh.h"
@@ -29,5 +31,12 @@ Rgb polynomial_radiosity(Basis basis, bool quad, const double* coefficients, con
 // The same for a cell of a mesh on a higher-order basis: its leaf's polynomial at ab (a quad's
 // basis for a cell of 4 points, a triangle's for one of 3).
 Rgb polynomial_radiosity(const ShadedMesh& mesh, std::size_t cell, const Vec2& ab);
+
+// What `mesh` shows at the point of cell `cell` with weights (1 - w1 - w2, w1, w2) of its points
+// `points` (three of the cell's, a triangle of it): on the constant basis the blend of their
+// Gouraud values; on a higher one the cell's polynomial at the blend of their local coordinates,
+// exact where the patch's map is affine.
+Rgb radiosity_at(const ShadedMesh& mesh, std::size_t cell, const std::array<std::size_t, 3>& points,
+                 double w1, double w2);
 
 }  // namespace hmcr

@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -81,24 +82,14 @@ Partial integrate_triangle(const ShadedMesh& ref, const CellTriangle& tri, const
     const double area = 0.5 * e1.cross(e2).norm();
     Partial sum;
     if (!(area > 0)) return sum;  // a polygon that is not convex may leave one
-    const Rgb& b0 = ref.point_radiosity[tri.points[0]];
-    const Rgb& b1 = ref.point_radiosity[tri.points[1]];
-    const Rgb& b2 = ref.point_radiosity[tri.points[2]];
     const double weight = area / double(points.size());
     const int patch = ref.patch_id[tri.cell];
     const std::uint8_t side = cell_side(ref, tri.cell);
     const std::vector<Rgb>& emission = side == kBack ? options.back_emission : options.emission;
     const Rgb e = emission.empty() ? Rgb::Zero() : emission[std::size_t(patch)];
-    const bool polynomial = ref.basis != Basis::constant;
+    const std::array<std::size_t, 3> corners = {tri.points[0], tri.points[1], tri.points[2]};
     for (const Vec2& st : points) {
-        const double w0 = 1 - st.x() - st.y();
-        // A higher-order reference's polynomial at the point, as the tracer evaluates it.
-        const Rgb b_ref =
-            polynomial ? polynomial_radiosity(ref, tri.cell,
-                                              w0 * ref.leaf_coordinates[tri.points[0]] +
-                                                  st.x() * ref.leaf_coordinates[tri.points[1]] +
-                                                  st.y() * ref.leaf_coordinates[tri.points[2]])
-                       : Rgb(w0 * b0 + st.x() * b1 + st.y() * b2);
+        const Rgb b_ref = radiosity_at(ref, tri.cell, corners, st.x(), st.y());
         const auto b_sol = probe.value(p0 + st.x() * e1 + st.y() * e2, normal, patch, side, e);
         sum.count(b_sol.found);
         sum.squared_error += weight * (b_sol.radiosity - b_ref).matrix().squaredNorm();

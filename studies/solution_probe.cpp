@@ -2,6 +2,7 @@
 #include "studies/solution_probe.h"
 
 #include <algorithm>
+#include <array>
 
 #include "radiosity/polynomial_mesh.h"
 
@@ -82,19 +83,22 @@ SolutionProbe::Value SolutionProbe::value(const Vec3& p, const Vec3& normal, int
     return {*b, by_ray ? Found::ray : Found::nearest};
 }
 
-// The Gouraud value (a higher basis's polynomial) at the closest point of the patch side's cells
+// What the solution shows (radiosity_at) at the closest point of the patch side's cells
 // within delta of p: a point at an edge between patches, which the tracer's float arithmetic may
 // put on the neighbour (a light tile in a ceiling), is still its own patch's.
 std::optional<Rgb> SolutionProbe::nearest(const Vec3& p, int patch, std::uint8_t side) const {
     const std::size_t k = key(patch, side);
     if (k + 1 >= m_first.size()) return std::nullopt;
     double best = m_delta * m_delta;
-    std::optional<Rgb> value;
+    // The closest point found so far: its cell, triangle and weights, valued once at the end.
+    std::optional<std::size_t> cell;
+    std::array<std::size_t, 3> points{};
+    Vec2 weights(0, 0);
     const ShadedMesh& s = m_solution;
     for (std::size_t i = m_first[k]; i < m_first[k + 1]; ++i) {
         const std::size_t c = m_cells[i];
         const auto v0 = s.offsets[c], end = s.offsets[c + 1];
-        const auto corner = [&](std::int64_t at) { return s.connectivity[at]; };
+        const auto corner = [&](std::int64_t at) { return std::size_t(s.connectivity[at]); };
         for (auto at = v0 + 1; at + 1 < end; ++at) {
             const Vec3 &a = s.points[corner(v0)], &b = s.points[corner(at)],
                        &d = s.points[corner(at + 1)];
@@ -103,20 +107,13 @@ std::optional<Rgb> SolutionProbe::nearest(const Vec3& p, int patch, std::uint8_t
             const double distance = (q - p).squaredNorm();
             if (distance >= best) continue;
             best = distance;
-            const double w0 = 1 - w.x() - w.y();
-            if (s.basis == Basis::constant) {
-                value =
-                    Rgb(w0 * s.point_radiosity[corner(v0)] + w.x() * s.point_radiosity[corner(at)] +
-                        w.y() * s.point_radiosity[corner(at + 1)]);
-            } else {  // the leaf's polynomial at the point's local coordinates
-                const Vec2 ab = w0 * s.leaf_coordinates[corner(v0)] +
-                                w.x() * s.leaf_coordinates[corner(at)] +
-                                w.y() * s.leaf_coordinates[corner(at + 1)];
-                value = polynomial_radiosity(s, c, ab);
-            }
+            cell = c;
+            points = {corner(v0), corner(at), corner(at + 1)};
+            weights = w;
         }
     }
-    return value;
+    if (!cell) return std::nullopt;
+    return radiosity_at(s, *cell, points, weights.x(), weights.y());
 }
 
 }  // namespace hmcr
