@@ -22,11 +22,15 @@ namespace hmcr {
 
 void IterationSources::add(const RayRegion& region, double area, const Rgb& shot) {
     const double sum = shot.cwiseAbs().sum();
+    if (!(area * sum > 0)) return;
+    push(region, area, sum, shot / sum, (shot / sum).cwiseAbs());
+}
+
+void IterationSources::push(const RayRegion& region, double area, double sum, const Rgb& unit,
+                            const Rgb& most) {
     const double w = area * sum;
-    if (!(w > 0)) return;
     total += w;
-    const Rgb unit = shot / sum;
-    max_share = max_share.max(unit.cwiseAbs());
+    max_share = max_share.max(most);
     regions.push_back(region);
     share.push_back(unit);
     strength.push_back(sum);
@@ -41,20 +45,14 @@ void IterationSources::add_with_terms(const RayRegion& region, double area, cons
     Rgb squares = shot.square();
     for (int j = 1; j < functions.size(); ++j) squares += slots[j - 1].unshot.square();
     const double sum = squares.sqrt().sum();
-    const double w = area * sum;
-    if (!(w > 0)) return;
-    total += w;
+    if (!(area * sum > 0)) return;
     const Rgb unit = shot / sum;
     Rgb most = unit.cwiseAbs();
     for (int j = 1; j < functions.size(); ++j) {
         terms.emplace_back(slots[j - 1].unshot / sum);
         most += terms.back().cwiseAbs() * functions.bound(j);
     }
-    max_share = max_share.max(most);
-    regions.push_back(region);
-    share.push_back(unit);
-    strength.push_back(sum);
-    m_weights.push_back(w);
+    push(region, area, sum, unit, most);
 }
 
 void IterationSources::finish() {

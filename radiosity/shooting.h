@@ -56,6 +56,9 @@ private:
     void add(const RayRegion& region, double area, const Rgb& shot);
     void add_with_terms(const RayRegion& region, double area, const Rgb& shot,
                         const TermSlot* slots, const PolynomialBasis& functions);
+    // A source of strength `sum` shooting `unit` per strength, whose rays' share is at most
+    // `most` per channel.
+    void push(const RayRegion& region, double area, double sum, const Rgb& unit, const Rgb& most);
     void finish();
 
     std::vector<double> m_weights;  // A_l |Delta B_l|, for the alias table
