@@ -48,9 +48,9 @@ TEST(Sphere, EveryRegionGetsTheUniformRadiosity) {
         const Hierarchy& h = *sol.hierarchy;
         // The expected value below assumes one K for every seed.
         if (seed > 1) {
-            ASSERT_EQ(sol.stats.iterations.size(), iterations) << "seed " << seed;
+            ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
         }
-        iterations = sol.stats.iterations.size();
+        iterations = sol.stats.value_iterations().size();
         total_area = h.patch_set().total_area;
         phi = h.patch_set().emitted_power[0];
         std::array<double, 8> area{}, power{};

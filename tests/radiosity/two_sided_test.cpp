@@ -43,7 +43,8 @@ std::vector<TestPolygon> plate_between_emitters() {
 
 TEST(TwoSided, EachSideOfAPlateGetsTheLightOfTheEmitterItFaces) {
     const Solution sol = solve(make_patch_mesh(plate_between_emitters()), options(600'000, 5));
-    const double f = parallel_rectangles(1, 1, 1), n0 = double(sol.stats.iterations[0].rays);
+    const double f = parallel_rectangles(1, 1, 1),
+                 n0 = double(sol.stats.value_iterations()[0].rays);
     const Hierarchy& h = *sol.hierarchy;
     ASSERT_NE(h.back_root(1), nullptr);
     EXPECT_EQ(h.back_root(0), nullptr);  // one-sided: no back
@@ -84,9 +85,9 @@ TEST(TwoSided, FurnaceInsideTwoSidedWallsAndTheirOuterSides) {
         o.max_depth = 0;
         const Solution sol = solve(mesh, o);
         if (seed > 1) {
-            ASSERT_EQ(sol.stats.iterations.size(), iterations) << "seed " << seed;
+            ASSERT_EQ(sol.stats.value_iterations().size(), iterations) << "seed " << seed;
         }
-        iterations = sol.stats.iterations.size();
+        iterations = sol.stats.value_iterations().size();
         for (std::size_t p = 0; p < mesh.n_faces(); ++p) {
             inside[p].push_back(sol.hierarchy->root(p).radiosity[1]);
             const Element* out = sol.hierarchy->back_root(p);
