@@ -148,7 +148,7 @@ concept NamedSetting = requires(T v) {
       scene_file, "clusters of patches above the patch roots, each receiving as an isotropic "   \
                   "cloud of surfaces or, oriented, by its sides' projected areas toward the ray "\
                   "(none: the hierarchy starts at the patches)")                                 \
-    X(RaySequence,   sequence,  RaySequence::random, true,           "random or sobol",           \
+    X(RaySequence,   sequence,  RaySequence::sobol, true,            "random or sobol",           \
       scene_file, "where the shooting rays' sources and uniforms come from: keyed pseudo-random "\
                   "streams, each ray picking its source leaf (random); or the rays dealt to the "\
                   "source leaves by their power, each leaf's from its own Owen-scrambled Sobol " \

@@ -123,14 +123,14 @@ std::string description(const StudyOptions& o, const std::vector<std::string>& v
         "the share of the area in leaves finer than the reference resolves (above {:.0f}% a "
         "cell's errors are bounded below by the reference's); seconds: the budget search. {}",
         rays, o.solver.lines, name(o.solver.link_weight), o.solver.refine_share,
-        // Named only when on, so that the tables of plain studies keep their bytes.
+        // Named only when not the default, so that the tables of plain studies keep their bytes.
         o.solver.control_variate == ControlVariate::none
             ? std::string()
             : fmt::format(", control variate {}", name(o.solver.control_variate)),
         o.solver.importance == Importance::none
             ? std::string()
             : fmt::format(", importance {}", name(o.solver.importance)),
-        o.solver.sequence == RaySequence::random
+        o.solver.sequence == SolverOptions{}.sequence
             ? std::string()
             : fmt::format(", sequence {}", name(o.solver.sequence)),
         o.solver.bidirectional == Bidirectional::no ? std::string()
@@ -350,7 +350,8 @@ void write_study_tables(OutputSet& out, const std::string& scene, const StudyOpt
     if (o.solver.importance != Importance::none) {
         options["importance"] = name(o.solver.importance);
     }
-    if (o.solver.sequence != RaySequence::random) options["sequence"] = name(o.solver.sequence);
+    if (o.solver.sequence != SolverOptions{}.sequence)
+        options["sequence"] = name(o.solver.sequence);
     if (o.solver.bidirectional != Bidirectional::no) {
         options["bidirectional"] = name(o.solver.bidirectional);
     }
