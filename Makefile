@@ -140,10 +140,11 @@ tidy: deps
 
 # The oracle table, the default solve's rows, then the scaling study on office instances of
 # 10^2 ... 10^6 patches: bench/results.json (every row) and bench/scaling.pdf and .png (the
-# curves).
+# curves). BENCH_ARGS go to hmcr_bench (e.g. --sequence random).
 BENCH_SCENES := $(BUILD)/bench-scenes
+BENCH_ARGS ?=
 bench: build scenes $(BENCH_SCENES)/office-100k.obj
-	$(BUILD)/hmcr_bench --results bench/results.json --scaling $(BENCH_SCENES)
+	$(BUILD)/hmcr_bench --results bench/results.json --scaling $(BENCH_SCENES) $(BENCH_ARGS)
 	$(PLOT_PYTHON) scripts/plot_study.py bench/scaling_plot_data.json
 
 $(BENCH_SCENES)/office-100k.obj: scenes/office/generate.py

@@ -34,6 +34,7 @@ RowResult run_row(const RowSpec& spec) {
     o.lines = kLines;
     o.threads = spec.threads;
     o.refine_share = spec.refine_share;
+    o.sequence = spec.sequence;
     validate(o);  // the spec's values, as read
     double first_shooting = 0;
     {
@@ -75,6 +76,7 @@ nlohmann::json to_json(const RowResult& r) {
         {"epsilon", std::isnan(r.spec.epsilon) ? nlohmann::json() : nlohmann::json(r.spec.epsilon)},
         {"threads", r.spec.threads},
         {"refine_share", r.spec.refine_share},
+        {"sequence", name(r.spec.sequence)},
         {"patches", r.patches},
         {"leaves", r.leaves},
         {"elements", r.elements},

@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "radiosity/solver_options.h"
+
 namespace hmcr::bench {
 
 // Rays of the benchmark solves (the Cornell and cube-room rows, the scaling points).
@@ -21,6 +23,7 @@ struct RowSpec {
     // 1: every ray refines (what the oracle rows bound); below 1, the solve users run: a
     // refining pass, then the frozen pass (docs/design.md §3.10).
     double refine_share = 1;
+    RaySequence sequence = SolverOptions{}.sequence;  // the shooting rays' (design §3.2)
 };
 
 struct RowResult {

@@ -67,7 +67,8 @@ nlohmann::json run_and_print(const RowSpec& spec, const char* study) {
 
 // Every oracle on both scenes, 1 and 2 threads, every ray refining: a line of the table each,
 // and its JSON row.
-std::vector<nlohmann::json> run_oracle_rows() {
+std::vector<nlohmann::json> run_oracle_rows(RaySequence sequence) {
+    fmt::print("sequence {}\n", name(sequence));
     print_header();
     std::vector<nlohmann::json> rows;
     for (const char* scene : {"cornell", "cube-room"}) {
@@ -76,7 +77,8 @@ std::vector<nlohmann::json> run_oracle_rows() {
             if (!kEpsilon.count({scene, oracle})) continue;
             for (int threads : {1, 2}) {
                 rows.push_back(run_and_print(
-                    {scene, oracle, kEpsilon.at({scene, oracle}), kBenchRays, threads}, "oracles"));
+                    {scene, oracle, kEpsilon.at({scene, oracle}), kBenchRays, threads, 1, sequence},
+                    "oracles"));
             }
         }
     }
@@ -86,16 +88,18 @@ std::vector<nlohmann::json> run_oracle_rows() {
 // The solve users run, at the default refine share: `power` and `kl` on both scenes at the
 // same epsilon, a tenth of the rays refining and the rest frozen, against the floor of all its
 // rays (and the refining pass's lines).
-std::vector<nlohmann::json> run_default_share_rows() {
-    fmt::print("default refine share {}\n", SolverOptions{}.refine_share);
+std::vector<nlohmann::json> run_default_share_rows(RaySequence sequence) {
+    fmt::print("default refine share {}, sequence {}\n", SolverOptions{}.refine_share,
+               name(sequence));
     print_header();
     std::vector<nlohmann::json> rows;
     for (const char* scene : {"cornell", "cube-room"}) {
         for (const char* oracle : {"power", "kl"}) {
             for (int threads : {1, 2}) {
-                rows.push_back(run_and_print({scene, oracle, kEpsilon.at({scene, oracle}),
-                                              kBenchRays, threads, SolverOptions{}.refine_share},
-                                             "default-share"));
+                rows.push_back(
+                    run_and_print({scene, oracle, kEpsilon.at({scene, oracle}), kBenchRays, threads,
+                                   SolverOptions{}.refine_share, sequence},
+                                  "default-share"));
             }
         }
     }
@@ -115,6 +119,7 @@ int main(int argc, char** argv) {
     std::string results, scaling;
     int cv_seeds = 0;
     bool default_share_only = false;
+    std::string sequence_name(hmcr::name(hmcr::SolverOptions{}.sequence));
     app.add_option("--results", results, "write every row here (JSON)");
     app.add_option("--scaling", scaling,
                    "run the scaling study on the generated office scenes in this folder");
@@ -123,6 +128,12 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     app.add_flag("--default-share", default_share_only,
                  "run only the rows of the default refine share (refine, then freeze)");
+    app.add_option("--sequence", sequence_name,
+                   "the table's ray sequence, random or sobol (default: the solver's)")
+        ->check([](const std::string& v) {
+            return hmcr::SettingNames<hmcr::RaySequence>::parse(v) ? std::string()
+                                                                   : std::string("random or sobol");
+        });
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -133,8 +144,9 @@ int main(int argc, char** argv) {
     }
     if (cv_seeds > 0) return run_control_variate_study(cv_seeds);
     std::vector<nlohmann::json> rows;
-    if (!default_share_only) rows = run_oracle_rows();
-    for (nlohmann::json& row : run_default_share_rows()) rows.push_back(row);
+    const hmcr::RaySequence sequence = *hmcr::SettingNames<hmcr::RaySequence>::parse(sequence_name);
+    if (!default_share_only) rows = run_oracle_rows(sequence);
+    for (nlohmann::json& row : run_default_share_rows(sequence)) rows.push_back(row);
     if (!scaling.empty() && !default_share_only) {
         const std::filesystem::path plot_data =
             std::filesystem::path(results.empty() ? "." : results).parent_path() /

@@ -448,6 +448,7 @@ def main():
     ap.add_argument("--trace-width", type=int, default=256)
     ap.add_argument("--trace-spp", type=int, default=2048, help="per seed (two seeds)")
     ap.add_argument("--reference-rays", default="200000000")
+    ap.add_argument("--sequence", help="the radiosity reference's ray sequence (default: hmcr's)")
     ap.add_argument("--threads", type=int, default=2)
     args = ap.parse_args()
     hmcr = os.path.abspath(args.hmcr)
@@ -477,8 +478,9 @@ def main():
         folder = os.path.join(work, f"reference-{s}")
         pfm = os.path.join(work, f"radiosity-{s}.pfm")
         if not os.path.exists(os.path.join(folder, "reference.vtp")):
+            sequence = ["--sequence", args.sequence] if args.sequence else []
             run([hmcr, "reference", "cornell", "--rays", args.reference_rays, "--seed", str(s),
-                 "--threads", str(args.threads), "-q", "-o", folder])
+                 "--threads", str(args.threads), "-q", "-o", folder] + sequence)
         if not os.path.exists(pfm):
             run([hmcr, "render", os.path.join(folder, "reference.vtp"), "--scene", "cornell",
                  "--view", "camera", "--samples", "4", "--pfm", pfm,

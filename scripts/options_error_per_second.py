@@ -7,9 +7,9 @@ second").
 For each scene and budget, a first solve with the first variant and `--budget` finds the
 oracle's threshold; every variant and seed then solves with that threshold (`--epsilon`), one
 thread, and `hmcr error` measures the solution against the scene's reference. A variant is
-`+`-joined words: `sobol` (`--sequence sobol`), `both` (`--bidirectional yes`), `cv`
-(`--control-variate constant`), a basis (`linear`, `bilinear`, `quadratic`, `cubic`: `--basis`),
-or `random` for none of them. Prints, per scene, budget and
+`+`-joined words: a sequence (`random`, `sobol`: `--sequence`; without one, hmcr's default),
+`both` (`--bidirectional yes`), `cv` (`--control-variate constant`), a basis (`linear`,
+`bilinear`, `quadratic`, `cubic`: `--basis`). Prints, per scene, budget and
 variant, the mean leaves, the mean object error with its standard error over the seeds, the
 median CPU seconds of one solve (the whole process: user + system), and the efficiency
 1 / (error^2 x seconds) relative to the first variant's.
@@ -17,7 +17,7 @@ median CPU seconds of one solve (the whole process: user + system), and the effi
 Usage:
     scripts/options_error_per_second.py --hmcr build/hmcr --scene cornell \\
         --reference ref/cornell-points --budgets 5000,19000 --seeds 3 \\
-        [--budget-tolerance 0.01] [--variants random,sobol,both,sobol+both,...] [--work DIR]
+        [--budget-tolerance 0.01] [--variants random,sobol,random+both,sobol+both,...] [--work DIR]
 """
 
 import argparse
@@ -30,7 +30,7 @@ import sys
 import tempfile
 
 FLAGS = {"sobol": ["--sequence", "sobol"], "both": ["--bidirectional", "yes"],
-         "cv": ["--control-variate", "constant"], "random": [],
+         "cv": ["--control-variate", "constant"], "random": ["--sequence", "random"],
          **{basis: ["--basis", basis] for basis in ("linear", "bilinear", "quadratic", "cubic")}}
 
 
@@ -76,7 +76,8 @@ def main():
     p.add_argument("--budgets", default="5000,19000")
     p.add_argument("--budget-tolerance", default="0.01")
     p.add_argument("--seeds", type=int, default=3)
-    p.add_argument("--variants", default="random,sobol,both,sobol+both,cv,sobol+cv,sobol+both+cv")
+    p.add_argument("--variants",
+                   default="random,sobol,random+both,sobol+both,random+cv,sobol+cv,sobol+both+cv")
     p.add_argument("--work", help="keep the solutions here (default: a temporary folder)")
     args = p.parse_args()
     variants = args.variants.split(",")

@@ -44,6 +44,12 @@ with tempfile.TemporaryDirectory() as tmp:
                 problems.append(f"{r[1]}: printed error {mean}, the files hold {errors}")
             if len(leaves) != 1 or float(r[2]) != leaves.pop():
                 problems.append(f"{r[1]}: the seeds' leaves differ or are not the printed ones")
+            # A variant's sequence word reaches hmcr (random is not the default).
+            sequences = {json.load(open(f))["options"]["sequence"]
+                         for f in glob.glob(os.path.join(work, f"64-{r[1]}-s*.json"))
+                         if not f.endswith("-error.json")}
+            if sequences != {r[1].split("+")[0]}:
+                problems.append(f"{r[1]}: solved with sequence {sequences}")
             # From the printed figures, rounded to 1e-4 and 0.01: their relative rounding,
             # the first row's and this one's, and the efficiency's own 0.005.
             value = 1 / (mean * mean * seconds)
