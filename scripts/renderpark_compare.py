@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""hmcr against RenderPark's port (rpkCpp), one thread, the Cornell box: times, or errors.
+"""hmcr against RenderPark's port (rpkCpp), one thread, the Cornell box: times, errors or noise.
 
 What it does, in order (docs/performance.md#against-renderpark shows a run):
 
@@ -19,10 +19,25 @@ What it does, in order (docs/performance.md#against-renderpark shows a run):
    Gouraud display) and measures them with `hmcr error --foreign` against a point reference,
    beside hmcr's solves at rpkCpp's ray count and at rpkCpp's CPU time
    (docs/performance.md#renderparks-error).
+   Noise (`--noise`): adds to the copy of rpkCpp, beside the leaf writer, a few lines of this
+   project's (rpk_leaves.NOISE_EDITS) that make its stochastic Jacobi honour
+   -srr-sampling-sequence, seed drand48 from $HMCR_RPK_SEED and, with $HMCR_RPK_DOUBLE, sum the
+   received radiance in double. Then on fixed meshes (hmcr `--max-depth 0`, rpkCpp
+   `-srr-hierarchical no -srr-clustering none`), the Cornell box and RenderPark MGF scenes
+   (`--mgf`, default rpkCpp's etc/cube.mgf; hmcr reads it with `--sides 1`, as RenderPark
+   does), one thread, each engine against its own converged solve at `--converged-factor`
+   times the rays (hmcr: sobol, seed 1000; rpkCpp: Niederreiter with double sums): the
+   per-patch relative RMS deviation of scripts/fixed_mesh_noise.py over the channels lit in
+   both references, on the patches matched between the engines by centroid, normal and area;
+   the median whole-process CPU seconds; the efficiency 1 / (deviation^2 x seconds) relative to
+   rpkCpp Niederreiter's. hmcr's rows (`--variants`) and rpkCpp PseudoRandom run seeds 1..k;
+   rpkCpp Niederreiter, which has no seed, runs k ray-unit counts `--curve-step` apart around
+   the units that shoot `--rays` (docs/performance.md#renderparks-noise-per-patch).
 
 Standard library only.  Usage:
     scripts/renderpark_compare.py --hmcr build/hmcr [--rpk-source DIR] [--pairs 7]
     scripts/renderpark_compare.py --error --hmcr build/hmcr [--rpk-source DIR] [--reference DIR]
+    scripts/renderpark_compare.py --noise --hmcr build/hmcr [--rpk-source DIR] [--seeds 8]
 """
 
 import argparse
