@@ -31,7 +31,12 @@ Two solutions are made from one file:
   leaf with T-vertices is cut into rpkCpp's triangles and quadrilaterals through them.
 
 Each leaf's scene patch (for `PatchId`) is the face of hmcr's scene that holds its centroid, on
-the face's plane and on its front (one-sided faces). Standard library only.
+the face's plane and on its front (one-sided faces).
+
+`add_noise_hooks` inserts, for renderpark_compare.py's noise mode, a few more lines of this
+project's into the copy's stochjacobi.cpp (NOISE_EDITS): -srr-sampling-sequence honoured by the
+stochastic Jacobi's sample points, drand48 seeded from $HMCR_RPK_SEED, and double sums of the
+received radiance with $HMCR_RPK_DOUBLE. Standard library only.
 """
 
 import math
