@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""hmcr against RenderPark's port (rpkCpp), one thread, the Cornell box: times, or errors.
+"""hmcr against RenderPark's port (rpkCpp), one thread, the Cornell box: times, errors or noise.
 
 What it does, in order (docs/performance.md#against-renderpark shows a run):
 
@@ -19,10 +19,25 @@ What it does, in order (docs/performance.md#against-renderpark shows a run):
    Gouraud display) and measures them with `hmcr error --foreign` against a point reference,
    beside hmcr's solves at rpkCpp's ray count and at rpkCpp's CPU time
    (docs/performance.md#renderparks-error).
+   Noise (`--noise`): adds to the copy of rpkCpp, beside the leaf writer, a few lines of this
+   project's (rpk_leaves.NOISE_EDITS) that make its stochastic Jacobi honour
+   -srr-sampling-sequence, seed drand48 from $HMCR_RPK_SEED and, with $HMCR_RPK_DOUBLE, sum the
+   received radiance in double. Then on fixed meshes (hmcr `--max-depth 0`, rpkCpp
+   `-srr-hierarchical no -srr-clustering none`), the Cornell box and RenderPark MGF scenes
+   (`--mgf`, default rpkCpp's etc/cube.mgf; hmcr reads it with `--sides 1`, as RenderPark
+   does), one thread, each engine against its own converged solve at `--converged-factor`
+   times the rays (hmcr: sobol, seed 1000; rpkCpp: Niederreiter with double sums): the
+   per-patch relative RMS deviation of scripts/fixed_mesh_noise.py over the channels lit in
+   both references, on the patches matched between the engines by centroid, normal and area;
+   the median whole-process CPU seconds; the efficiency 1 / (deviation^2 x seconds) relative to
+   rpkCpp Niederreiter's. hmcr's rows (`--variants`) and rpkCpp PseudoRandom run seeds 1..k;
+   rpkCpp Niederreiter, which has no seed, runs k ray-unit counts `--curve-step` apart around
+   the units that shoot `--rays` (docs/performance.md#renderparks-noise-per-patch).
 
 Standard library only.  Usage:
     scripts/renderpark_compare.py --hmcr build/hmcr [--rpk-source DIR] [--pairs 7]
     scripts/renderpark_compare.py --error --hmcr build/hmcr [--rpk-source DIR] [--reference DIR]
+    scripts/renderpark_compare.py --noise --hmcr build/hmcr [--rpk-source DIR] [--seeds 8]
 """
 
 import argparse
@@ -268,14 +283,18 @@ def lz4_block(data, size):
     return out.raw
 
 
-def vtp_array(path, name):
-    """One appended, compressed array of hmcr's .vtp (docs/design.md §11.4) as a flat list."""
+def vtp_array(path, name, section=None):
+    """One appended, compressed array of hmcr's .vtp (docs/design.md §11.4) as a flat list: the
+    first of that name, or the first after the tag `section` (such as "<Polys>")."""
     with open(path, "rb") as f:
         data = f.read()
     head = data[:data.index(b"<AppendedData")].decode()
     lz4 = 'compressor="vtkLZ4DataCompressor"' in head  # zlib in files of older versions
-    tag = re.search(r'<DataArray type="(\w+)" Name="%s"[^>]*offset="(\d+)"' % name, head)
-    kind, offset = {"Float32": "f", "Float64": "d"}[tag.group(1)], int(tag.group(2))
+    start = head.index(section) if section else 0
+    tag = re.search(r'<DataArray type="(\w+)" Name="%s"[^>]*offset="(\d+)"' % name,
+                    head[start:])
+    kind = {"Float32": "f", "Float64": "d", "Int32": "i", "Int64": "q"}[tag.group(1)]
+    offset = int(tag.group(2))
     start = data.index(b"_", data.index(b"<AppendedData")) + 1 + offset
     blocks, block_size, last_size = struct.unpack_from("<3I", data, start)
     sizes = struct.unpack_from(f"<{3 + blocks}I", data, start)[3:]
@@ -519,6 +538,292 @@ def main_error(args, work, rpk, mgf):
             json.dump(results, f, indent=1)
 
 
+# ---------------------------------------------------------------- noise per second (--noise)
+
+
+class Patch:
+    """One engine's patch on a fixed mesh: its area, centroid, unit normal and mean B (3)."""
+
+    def __init__(self, area, centroid, normal, b):
+        self.area, self.centroid, self.normal, self.b = area, centroid, normal, list(b)
+
+
+def _patch(polygons, values):
+    """A patch of polygons (lists of points) and their B: area-weighted centroid and B."""
+    area, centroid, normal, b = 0.0, [0.0] * 3, [0.0] * 3, [0.0] * 3
+    for points, value in zip(polygons, values):
+        a, n = rpk_leaves.polygon_area(points), rpk_leaves.newell(points)
+        c = rpk_leaves.centroid(points)  # exact for triangles and parallelograms
+        area += a
+        for k in range(3):
+            centroid[k] += a * c[k]
+            normal[k] += n[k]
+            b[k] += a * value[k]
+    length = math.sqrt(sum(n * n for n in normal))
+    return Patch(area, [c / area for c in centroid], [n / length for n in normal],
+                 [v / area for v in b])
+
+
+def hmcr_patches(vtp):
+    """hmcr's patches of a fixed-mesh solve, by PatchId: its cells' area-weighted B."""
+    b, patch_ids = vtp_array(vtp, "ElementRadiosity"), vtp_array(vtp, "PatchId")
+    points = vtp_array(vtp, "Points", "<Points>")
+    connectivity = vtp_array(vtp, "connectivity", "<Polys>")
+    offsets = vtp_array(vtp, "offsets", "<Polys>")
+    if len(offsets) != len(patch_ids):
+        raise ValueError(f"{vtp}: {len(offsets)} polygons for {len(patch_ids)} cells")
+    cells = {}
+    for i, end in enumerate(offsets):
+        first = offsets[i - 1] if i else 0
+        corners = [tuple(points[3 * v:3 * v + 3]) for v in connectivity[first:end]]
+        cells.setdefault(patch_ids[i], []).append((corners, b[3 * i:3 * i + 3]))
+    if sorted(cells) != list(range(len(cells))):
+        raise ValueError(f"{vtp}: the PatchIds are not 0..{len(cells) - 1}")
+    return [_patch(*zip(*cells[p])) for p in range(len(cells))]
+
+
+def rpk_patches(leaf_file):
+    """rpkCpp's patches from its leaf file (on a fixed mesh, one leaf a patch), B = pi RAD, and
+    the power they emit (sum pi SRC A, per channel)."""
+    leaves = rpk_leaves.read_leaves(leaf_file)
+    polygons, emitted = {}, [0.0] * 3
+    for leaf in leaves.leaves:
+        corners = [leaves.vertices[v] for v in leaf["corners"]]
+        polygons.setdefault(leaf["patch"], []).append((corners, rpk_leaves.leaf_radiosity(leaf)))
+        a = rpk_leaves.polygon_area(corners)
+        for k in range(3):
+            emitted[k] += math.pi * leaf["src"][k] * a
+    return [_patch(*zip(*polygons[p])) for p in sorted(polygons)], emitted
+
+
+def match_patches(ours, theirs, tolerance=1e-4):
+    """For each of `theirs`, the index of the patch of `ours` with the same centroid (within
+    tolerance x the scenes' extent), facing the same way and of the same area (1e-3); a
+    ValueError when one has none or two share one."""
+    lo = [min(p.centroid[k] for p in ours + theirs) for k in range(3)]
+    hi = [max(p.centroid[k] for p in ours + theirs) for k in range(3)]
+    reach = tolerance * max(max(h - l for h, l in zip(hi, lo)), 1e-30)
+    out = []
+    for j, t in enumerate(theirs):
+        found = [i for i, o in enumerate(ours)
+                 if max(abs(a - b) for a, b in zip(o.centroid, t.centroid)) <= reach
+                 and sum(a * b for a, b in zip(o.normal, t.normal)) > 0.99
+                 and abs(o.area - t.area) <= 1e-3 * max(o.area, t.area)]
+        if len(found) != 1:
+            raise ValueError(f"patch {j} (centroid {t.centroid}, area {t.area:.6g}) matches "
+                             f"{len(found)} patches of the other engine, not one")
+        out.append(found[0])
+    if len(set(out)) != len(out):
+        raise ValueError("two patches match the same patch of the other engine")
+    return out
+
+
+def lit_channels(*references):
+    """The (patch, channel) pairs where every reference (lists of B triples) is above 0."""
+    return [(p, c) for p in range(len(references[0])) for c in range(3)
+            if all(r[p][c] > 0 for r in references)]
+
+
+def relative_rms(runs, reference, lit):
+    """fixed_mesh_noise.py's per-patch deviation: the root of the mean over runs of the mean
+    over the lit (patch, channel) pairs of ((B - B_ref) / B_ref)^2."""
+    squares = [statistics.fmean(((run[p][c] - reference[p][c]) / reference[p][c]) ** 2
+                                for p, c in lit) for run in runs]
+    return math.sqrt(statistics.fmean(squares))
+
+
+def ray_unit_curve(units, count, step):
+    """`count` ray units spread evenly around `units`, `step` apart relatively (the
+    deterministic sequence's curve over ray counts: its error at one count is one sample)."""
+    return [max(1, round(units * (1 + step * (k - (count - 1) / 2)))) for k in range(count)]
+
+
+def efficiency(rms, cpu):
+    return 1.0 / (rms * rms * cpu)
+
+
+def hmcr_noise_command(args, scene, variant, seed, rays, out):
+    """fixed_mesh_noise.py's solve: the scene's patches alone, one thread; `+both` lines used
+    both ways, `+cv` the constant control variate."""
+    sequence, *words = variant.split("+")
+    command = [args.hmcr, "solve", scene["hmcr"], "--max-depth", "0", "--threads", "1",
+               "--seed", str(seed), "--sequence", sequence, "--rays", str(rays), "-q",
+               "-o", out] + scene["hmcr_options"]
+    for word in words:
+        command += {"both": ["--bidirectional", "yes"],
+                    "cv": ["--control-variate", "constant"]}[word]
+    return command
+
+
+def rpk_noise_command(rpk, mgf, units, sequence, iterations):
+    """rpkCpp's stochastic Jacobi on the scene's patches (no hierarchy, no clusters)."""
+    return [rpk, mgf, "-raytracing-method", "none", "-radiance-method", "StochJacobi",
+            "-iterations", str(iterations), "-srr-ray-units", str(units), "-srr-hierarchical",
+            "no", "-srr-clustering", "none", "-srr-sampling-sequence", sequence]
+
+
+def hmcr_noise_run(args, scene, variant, seed, rays, work, name):
+    out = os.path.join(work, f"{name}.vtp")
+    cpu, _ = cpu_runs(hmcr_noise_command(args, scene, variant, seed, rays, out), work, 1)
+    with open(os.path.join(work, f"{name}.json")) as f:
+        summary = json.load(f)
+    return {"cpu_s": cpu, "patches": hmcr_patches(out), "rays": summary["counts"]["rays"],
+            "emitted": summary["power"]["emitted_w"], "faces": summary["counts"]["faces"]}
+
+
+def rpk_noise_run(args, rpk, scene, units, sequence, work, name, seed=None, double=False):
+    leaf_file = os.path.join(work, f"{name}.leaves")
+    env = {**os.environ, rpk_leaves.LEAF_FILE_VARIABLE: leaf_file}
+    if seed is not None:
+        env[rpk_leaves.SEED_VARIABLE] = str(seed)
+    if double:
+        env[rpk_leaves.DOUBLE_VARIABLE] = "1"
+    command = rpk_noise_command(rpk, scene["mgf"], units, sequence, args.iterations)
+    cpu, stderr = cpu_runs(command, work, 1, env)
+    if not os.path.exists(leaf_file):
+        sys.exit(f"{rpk} wrote no leaves: it is not a build of this script's (use --rpk-source)")
+    patches, emitted = rpk_patches(leaf_file)
+    return {"cpu_s": cpu, "patches": patches, "emitted": emitted, "units": units,
+            "rays": int(re.findall(r"Radiance rays: (\d+)", stderr)[-1])}
+
+
+def rpk_units_for(args, rpk, scene, rays, work):
+    """The ray units that shoot about `rays` rays (rpkCpp's rays grow in proportion)."""
+    units = 1000
+    for _ in range(2):
+        got = rpk_noise_run(args, rpk, scene, units, "Niederreiter", work, "calibrate")["rays"]
+        units = max(1, round(units * rays / got))
+    return units
+
+
+def noise_scene(args, rpk, scene, work):
+    """Every row of one scene's table, with its references' checks."""
+    name, rays = scene["name"], args.rays
+    print(f"{name}: references ...", flush=True)
+    hmcr_ref = hmcr_noise_run(args, scene, "sobol", 1000, rays * args.converged_factor, work,
+                              f"{name}-hmcr-converged")
+    units = rpk_units_for(args, rpk, scene, rays, work)
+    rpk_ref = rpk_noise_run(args, rpk, scene, units * args.converged_factor, "Niederreiter",
+                            work, f"{name}-rpk-converged", double=True)
+    try:
+        order = match_patches(hmcr_ref["patches"], rpk_ref["patches"])
+    except ValueError as e:
+        sys.exit(f"{name}: hmcr's and rpkCpp's patches differ: {e}")
+    if len(order) != len(hmcr_ref["patches"]):
+        sys.exit(f"{name}: hmcr has {len(hmcr_ref['patches'])} patches, rpkCpp "
+                 f"{len(order)}")
+    scale = scene["hmcr_per_rpk_unit"]  # hmcr's lm/m^2 per rpkCpp's W/m^2 for MGF
+    hmcr_emitted = [e / scale for e in hmcr_ref["emitted"]]
+    emitted_diff = max(abs(h - r) / r for h, r in zip(hmcr_emitted, rpk_ref["emitted"]))
+    if emitted_diff > 2e-3:
+        sys.exit(f"{name}: hmcr emits {fmt_w(hmcr_emitted)}, rpkCpp {fmt_w(rpk_ref['emitted'])}"
+                 ": not the same scene")
+
+    def in_rpk_order(patches):  # hmcr's patches, in rpkCpp's order (matched by geometry)
+        return [patches[i].b for i in order]
+
+    h_ref = in_rpk_order(hmcr_ref["patches"])
+    r_ref = [p.b for p in rpk_ref["patches"]]
+    lit = lit_channels(h_ref, r_ref)
+    cross = relative_rms([[[v / scale for v in b] for b in h_ref]], r_ref, lit)
+
+    rows = {f"hmcr {v}": [] for v in args.variants.split(",")}
+    rows.update({"rpkCpp PseudoRandom": [], "rpkCpp Niederreiter": []})
+    curve = ray_unit_curve(units, args.seeds, args.curve_step)
+    for k in range(args.seeds):  # interleaved, so that the machine's load falls on every row
+        seed = k + 1
+        for v in args.variants.split(","):
+            run = hmcr_noise_run(args, scene, v, seed, rays, work, f"{name}-hmcr-{v}-{seed}")
+            rows[f"hmcr {v}"].append({**run, "b": in_rpk_order(run["patches"])})
+        run = rpk_noise_run(args, rpk, scene, units, "PseudoRandom", work,
+                            f"{name}-rpk-random-{seed}", seed=seed)
+        rows["rpkCpp PseudoRandom"].append({**run, "b": [p.b for p in run["patches"]]})
+        run = rpk_noise_run(args, rpk, scene, curve[k], "Niederreiter", work,
+                            f"{name}-rpk-nied-{k}")
+        rows["rpkCpp Niederreiter"].append({**run, "b": [p.b for p in run["patches"]]})
+        print(f"  {name}: run {seed} of {args.seeds}", flush=True)
+    # rpkCpp's float sums at the measured rays, against double sums of the same rays
+    single = rpk_noise_run(args, rpk, scene, units, "Niederreiter", work, f"{name}-rpk-float")
+    double = rpk_noise_run(args, rpk, scene, units, "Niederreiter", work, f"{name}-rpk-double",
+                           double=True)
+    float_vs_double = relative_rms([[p.b for p in single["patches"]]],
+                                   [p.b for p in double["patches"]], lit)
+    table = {}
+    for row, runs in rows.items():
+        reference = r_ref if row.startswith("rpkCpp") else h_ref
+        table[row] = {"rms": relative_rms([r["b"] for r in runs], reference, lit),
+                      "cpu_s": statistics.median(r["cpu_s"] for r in runs),
+                      "rays": statistics.mean(r["rays"] for r in runs),
+                      "cpu_s_runs": [r["cpu_s"] for r in runs],
+                      "rays_runs": [r["rays"] for r in runs]}
+        table[row]["efficiency"] = efficiency(table[row]["rms"], table[row]["cpu_s"])
+    return {"name": name, "patches": len(order), "lit_channels": len(lit),
+            "rpk_units": units, "rpk_curve_units": curve,
+            "hmcr_converged_rays": hmcr_ref["rays"], "rpk_converged_rays": rpk_ref["rays"],
+            "emitted_hmcr": hmcr_emitted, "emitted_rpk": rpk_ref["emitted"],
+            "emitted_difference": emitted_diff, "references_difference": cross,
+            "rpk_float_vs_double": float_vs_double, "rows": table}
+
+
+def print_noise(result):
+    base = result["rows"]["rpkCpp Niederreiter"]["efficiency"]
+    print(f"\n{result['name']}: {result['patches']} patches, {result['lit_channels']} lit patch "
+          f"channels; references: hmcr sobol at {result['hmcr_converged_rays']:,} rays, rpkCpp "
+          f"Niederreiter with double sums at {result['rpk_converged_rays']:,} rays")
+    print("| engine, variant | rays | per-patch RMS deviation | CPU s | efficiency, "
+          "1 / (deviation² × s), relative to rpkCpp Niederreiter |")
+    print("|:--|--:|--:|--:|--:|")
+    for row, r in result["rows"].items():
+        print(f"| {row} | {r['rays'] / 1e6:.3f} M | {100 * r['rms']:.3f}% | {r['cpu_s']:.2f} | "
+              f"{r['efficiency'] / base:.2f}× |")
+    sobol = result["rows"].get("hmcr sobol")
+    if sobol:
+        print(f"hmcr sobol / rpkCpp Niederreiter: {sobol['efficiency'] / base:.2f} (target 2)")
+    print(f"emitted: hmcr {fmt_w(result['emitted_hmcr'])}, rpkCpp {fmt_w(result['emitted_rpk'])}"
+          f" (largest relative difference {result['emitted_difference']:.1e}); the two "
+          f"references differ by {100 * result['references_difference']:.2f}% per patch (RMS); "
+          f"rpkCpp's float sums against double at {result['rpk_units']} ray units: "
+          f"{100 * result['rpk_float_vs_double']:.3f}%")
+
+
+def rpk_etc_scene(args, work, name):
+    """rpkCpp's etc/NAME: in the copy built here, else exported from --rpk-source."""
+    path = os.path.join(work, "rpkCpp", "etc", name)
+    if os.path.exists(path):
+        return path
+    if args.rpk_source and os.path.isdir(os.path.join(args.rpk_source, "etc")):
+        return os.path.join(args.rpk_source, "etc", name)
+    if not args.rpk_source:
+        sys.exit("--noise with --rpk needs --mgf FILE or --rpk-source DIR for etc/" + name)
+    archive = subprocess.run(["git", "--git-dir", args.rpk_source, "archive",
+                              args.rpk_commit, "etc/" + name],
+                             check=True, capture_output=True).stdout
+    subprocess.run(["tar", "-x", "-C", work], input=archive, check=True)
+    return os.path.join(work, "etc", name)
+
+
+def main_noise(args, work, rpk):
+    """--noise: the fixed-mesh noise table of each scene, printed and (with --json) written."""
+    cornell_mgf = os.path.join(work, "cornell.mgf")
+    scenes = [{"name": "cornell", "hmcr": "cornell", "hmcr_options": [], "mgf": cornell_mgf,
+               "hmcr_per_rpk_unit": 1.0}]
+    for path in (args.mgf.split(",") if args.mgf else []):
+        # hmcr states an MGF scene in lm/m^2 (its ed as written), rpkCpp in W/m^2 (ed / 183.07);
+        # RenderPark reads every surface one-sided, hmcr then with --sides 1.
+        scenes.append({"name": os.path.splitext(os.path.basename(path))[0],
+                       "hmcr": os.path.abspath(path), "hmcr_options": ["--sides", "1"],
+                       "mgf": os.path.abspath(path), "hmcr_per_rpk_unit": RPK_WHITE_EFFICACY})
+    results = {"machine": os.uname().nodename, "rays": args.rays, "seeds": args.seeds,
+               "scenes": []}
+    for scene in scenes:
+        result = noise_scene(args, rpk, scene, work)
+        print_noise(result)
+        results["scenes"].append(result)
+        if args.json:
+            with open(args.json, "w") as f:
+                json.dump(results, f, indent=1)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--hmcr", default=os.path.join(HERE, "..", "build", "hmcr"))
@@ -548,7 +853,20 @@ def main():
     ap.add_argument("--reference-points", type=int, default=200000)
     ap.add_argument("--reference-paths", type=int, default=64)
     ap.add_argument("--reference-spp", type=float, default=16)
-    ap.add_argument("--seeds", type=int, default=3, help="--error: hmcr's seeds 1..k")
+    ap.add_argument("--seeds", type=int, help="--error: hmcr's seeds 1..k (default 3); "
+                    "--noise: seeds 1..k of each random row and k points of rpkCpp's "
+                    "Niederreiter curve (default 8)")
+    ap.add_argument("--noise", action="store_true",
+                    help="measure per-patch noise per CPU second on fixed meshes instead")
+    ap.add_argument("--mgf", help="--noise: RenderPark MGF scenes beside the Cornell box, "
+                    "comma-separated (default: etc/cube.mgf of rpkCpp's source)")
+    ap.add_argument("--variants", default="random,sobol,sobol+both,sobol+cv",
+                    help="--noise: hmcr's rows: a sequence, then +both (--bidirectional yes) "
+                    "and +cv (--control-variate constant) if wanted")
+    ap.add_argument("--converged-factor", type=int, default=100,
+                    help="--noise: the references' rays over the measured rays")
+    ap.add_argument("--curve-step", type=float, default=0.03,
+                    help="--noise: relative step of rpkCpp's Niederreiter ray units")
     ap.add_argument("--repeats", type=int, default=3,
                     help="--error: runs whose median CPU time is each solve's time")
     args = ap.parse_args()
@@ -563,8 +881,17 @@ def main():
         if rpk is None:
             how = fetch_rpk_source(args.rpk_source, args.rpk_commit, os.path.join(work, "rpkCpp"))
             rpk_leaves.add_leaf_writer(os.path.join(work, "rpkCpp"))
-            print(f"building rpkCpp from {how}, with a leaf writer ...", flush=True)
+            rpk_leaves.add_noise_hooks(os.path.join(work, "rpkCpp"))
+            print(f"building rpkCpp from {how}, with a leaf writer and the noise mode's "
+                  "hooks ...", flush=True)
             rpk = build_rpk(os.path.join(work, "rpkCpp"), args.jobs)
+        if args.noise:
+            args.seeds = args.seeds or 8
+            if not args.mgf:
+                args.mgf = rpk_etc_scene(args, work, "cube.mgf")
+            main_noise(args, work, rpk)
+            return
+        args.seeds = args.seeds or 3
         if args.error:
             main_error(args, work, rpk, mgf)
             return

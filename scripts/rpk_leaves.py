@@ -31,7 +31,12 @@ Two solutions are made from one file:
   leaf with T-vertices is cut into rpkCpp's triangles and quadrilaterals through them.
 
 Each leaf's scene patch (for `PatchId`) is the face of hmcr's scene that holds its centroid, on
-the face's plane and on its front (one-sided faces). Standard library only.
+the face's plane and on its front (one-sided faces).
+
+`add_noise_hooks` inserts, for renderpark_compare.py's noise mode, a few more lines of this
+project's into the copy's stochjacobi.cpp (NOISE_EDITS): -srr-sampling-sequence honoured by the
+stochastic Jacobi's sample points, drand48 seeded from $HMCR_RPK_SEED, and double sums of the
+received radiance with $HMCR_RPK_DOUBLE. Standard library only.
 """
 
 import math
@@ -144,6 +149,142 @@ def add_leaf_writer(source_dir):
     end = text.index("\n", last_include + 1) + 1
     text = text[:end] + LEAF_WRITER_INCLUDES + LEAF_WRITER + text[end:]
     text = text.replace(BATCH_ANCHOR, LEAF_WRITER_CALL + BATCH_ANCHOR)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+# The code inserted into the copy of rpkCpp's src/raycasting/stochasticRaytracing/stochjacobi.cpp
+# for the noise mode (renderpark_compare.py --noise), each piece before or after an anchor line of
+# that file (NOISE_EDITS): the stochastic Jacobi draws its sample points from
+# NextNiedInRange whatever -srr-sampling-sequence says, so the inserted lines honour that option
+# (another sequence is drawn by rpkCpp's sample4D, PseudoRandom by drand48); $HMCR_RPK_SEED seeds
+# drand48 before the first iteration; with $HMCR_RPK_DOUBLE set, the radiance a surface receives
+# in one iteration is summed in double and rounded once into rpkCpp's float accumulator.
+SEED_VARIABLE = "HMCR_RPK_SEED"
+DOUBLE_VARIABLE = "HMCR_RPK_DOUBLE"
+JACOBI_FILE = os.path.join("src", "raycasting", "stochasticRaytracing", "stochjacobi.cpp")
+
+NOISE_HOOKS = r"""
+// Inserted by hmcr's scripts/renderpark_compare.py (not part of rpkCpp), for its noise mode:
+// the -srr-sampling-sequence option for the sample points, $HMCR_RPK_SEED for drand48, and
+// double sums of the received radiance with $HMCR_RPK_DOUBLE.
+#include <cstdlib>
+#include <unordered_map>
+#include "raycasting/stochasticRaytracing/sample4d.h"
+
+static bool
+hmcrOtherSequence(const StochasticRadiosityElement *elem, NiederreiterIndex *rayIndex,
+                  double *zeta) {
+    if ( GLOBAL_stochasticRaytracing_monteCarloRadiosityState.sequence ==
+         Sampler4DSequence::NIEDERREITER ) {
+        return false;
+    }
+    const double *xi = sample4D((unsigned)*rayIndex);
+    (*rayIndex)++;
+    for ( int k = 0; k < 4; k++ ) {
+        zeta[k] = xi[k];
+    }
+    if ( elem->numberOfVertices == 3 ) {
+        foldSampleF(&zeta[0], &zeta[1]);
+    }
+    return true;
+}
+
+static void
+hmcrSeedOnce() {
+    static bool done = false;
+    if ( !done ) {
+        done = true;
+        const char *seed = getenv("HMCR_RPK_SEED");
+        if ( seed != nullptr ) {
+            srand48(atol(seed));
+        }
+    }
+}
+
+struct HmcrSum {
+    double c[3];
+};
+
+static std::unordered_map<const StochasticRadiosityElement *, HmcrSum> hmcrSums;
+
+static bool
+hmcrDoubleSums() {
+    static const bool on = getenv("HMCR_RPK_DOUBLE") != nullptr;
+    return on;
+}
+
+static bool
+hmcrAddDouble(const StochasticRadiosityElement *rcv, int i, double w, const ColorRgb &power) {
+    if ( !hmcrDoubleSums() ) {
+        return false;
+    }
+    if ( i != 0 || rcv->basis->size != 1 ) {
+        fprintf(stderr, "HMCR_RPK_DOUBLE: for the constant basis only\n");
+        exit(2);
+    }
+    HmcrSum &sum = hmcrSums[rcv];
+    sum.c[0] += w * power.r;
+    sum.c[1] += w * power.g;
+    sum.c[2] += w * power.b;
+    return true;
+}
+
+static void
+hmcrFlushDouble(StochasticRadiosityElement *elem) {
+    if ( !hmcrDoubleSums() ) {
+        return;
+    }
+    std::unordered_map<const StochasticRadiosityElement *, HmcrSum>::iterator found =
+        hmcrSums.find(elem);
+    if ( found == hmcrSums.end() ) {
+        return;
+    }
+    ColorRgb &received = elem->receivedRadiance[0];
+    received.r = (float)((double)received.r + found->second.c[0]);
+    received.g = (float)((double)received.g + found->second.c[1]);
+    received.b = (float)((double)received.b + found->second.c[2]);
+    hmcrSums.erase(found);
+}
+"""
+
+# (anchor, text, where): the anchor must be in stochjacobi.cpp once; the text goes before or
+# after its line.
+NOISE_EDITS = [
+    ('#include "raycasting/stochasticRaytracing/StochasticRelaxation.h"\n', NOISE_HOOKS,
+     "after"),
+    ("    globalNumberOfRays = numberOfRays;\n", "    hmcrSeedOnce();\n", "after"),
+    ("    globalSumOfProbabilities = 0.0;\n    stochasticJacobiElementSetup(",
+     "    hmcrSums.clear();\n", "before"),
+    ("    xi = NextNiedInRange(ray_index, +1, nMostSignificantBit, mostSignificantBit1, "
+     "rMostSignificantBit2);\n",
+     "    if ( hmcrOtherSequence(elem, ray_index, zeta) ) {\n        return zeta;\n    }\n",
+     "before"),
+    ("        rcv->receivedRadiance[i].addScaled(rcv->receivedRadiance[i], (float) w, rayPower);\n",
+     "        if ( hmcrAddDouble(rcv, i, w, rayPower) ) {\n            continue;\n        }\n",
+     "before"),
+    ("stochasticJacobiUpdateElement(StochasticRadiosityElement *elem) {\n"
+     "    if ( globalGetRadianceCallback ) {\n", "        hmcrFlushDouble(elem);\n", "after"),
+]
+
+
+def insert_at_anchors(text, edits, path):
+    """text with every edit's lines put before or after its anchor; a ValueError unless each
+    anchor is there exactly once."""
+    for anchor, lines, where in edits:
+        if text.count(anchor) != 1:
+            raise ValueError(f"{path}: not the file this script knows ('{anchor.strip()[:60]}' "
+                             f"is there {text.count(anchor)} times, not once)")
+        text = text.replace(anchor, lines + anchor if where == "before" else anchor + lines)
+    return text
+
+
+def add_noise_hooks(source_dir):
+    """Inserts the noise mode's hooks into the copy of rpkCpp in source_dir."""
+    path = os.path.join(source_dir, JACOBI_FILE)
+    with open(path) as f:
+        text = f.read()
+    text = insert_at_anchors(text, NOISE_EDITS, path)
     with open(path, "w") as f:
         f.write(text)
 

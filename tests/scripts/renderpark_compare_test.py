@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: Apache-2.0
 """scripts/rpk_leaves.py on a small synthetic leaf file, as rpkCpp's inserted writer writes one:
 the leaves' patches, areas, units (B = pi x radiance, a sub-element's Ed an exitance) and power
-balance, rpkCpp's Gouraud values at a T-vertex, the .vtp's arrays and one-line errors.
+balance, rpkCpp's Gouraud values at a T-vertex, the .vtp's arrays and one-line errors; and the
+noise mode's pure parts (renderpark_compare.py --noise) on synthetic patches: the per-patch
+deviation, the patch matching, the ray-unit curve and the hooks' insertion.
 
 Usage: renderpark_compare_test.py SOURCE_DIR (no rpkCpp, no network, no hmcr binary)."""
 
@@ -15,6 +17,7 @@ import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.join(sys.argv.pop(1) if len(sys.argv) > 1 else ".", "scripts"))
 import rpk_leaves  # noqa: E402
+import renderpark_compare  # noqa: E402
 
 # hmcr's scene, in its patch order: face 0 the unit square of z = 0 facing +z, face 1 a light
 # triangle of area 1/2 at z = 1 facing down, face 2 a second light of area 1/2 beside the square.
@@ -233,6 +236,72 @@ class BadInputTest(unittest.TestCase):
                 with open(path, "w") as f:
                     f.write('#include <ctime>\nvoid f() {}\n')
                 rpk_leaves.add_leaf_writer(tmp)
+
+
+def patch(centroid, normal=(0, 0, 1), area=1.0, b=(1, 1, 1)):
+    return renderpark_compare.Patch(area, list(centroid), list(normal), b)
+
+
+class NoiseTest(unittest.TestCase):
+    def test_relative_rms_is_fixed_mesh_noises_deviation_over_lit_channels(self):
+        reference = [[2.0, 1.0, 0.0], [4.0, 4.0, 4.0]]
+        lit = renderpark_compare.lit_channels(reference)
+        self.assertEqual(lit, [(0, 0), (0, 1), (1, 0), (1, 1), (1, 2)])  # not the black one
+        # run 1: +10% on one channel of five; run 2: -20% on another (the black one ignored)
+        runs = [[[2.2, 1.0, 5.0], [4.0, 4.0, 4.0]], [[2.0, 1.0, 0.0], [4.0, 3.2, 4.0]]]
+        want = math.sqrt((0.01 / 5 + 0.04 / 5) / 2)
+        self.assertAlmostEqual(renderpark_compare.relative_rms(runs, reference, lit), want,
+                               places=12)
+        self.assertEqual(renderpark_compare.relative_rms([reference], reference, lit), 0.0)
+
+    def test_a_channel_black_in_either_reference_is_not_lit(self):
+        a, b = [[1.0, 0.0, 1.0]], [[1.0, 1.0, 0.0]]
+        self.assertEqual(renderpark_compare.lit_channels(a, b), [(0, 0)])
+
+    def test_patches_match_by_geometry_whatever_their_order(self):
+        ours = [patch((0, 0, 0)), patch((1, 0, 0)), patch((0, 0, 0), normal=(0, 0, -1)),
+                patch((2, 0, 0), area=2.0)]
+        theirs = [patch((2, 0, 0), area=2.0), patch((0, 0, 0), normal=(0, 0, -1)),
+                  patch((1, 0, 1e-6)), patch((0, 0, 0))]
+        self.assertEqual(renderpark_compare.match_patches(ours, theirs), [3, 2, 1, 0])
+
+    def test_a_patch_of_another_area_or_place_matches_nothing(self):
+        ours = [patch((0, 0, 0)), patch((1, 0, 0))]
+        for other in (patch((0, 0, 0), area=1.01), patch((0.5, 0, 0)),
+                      patch((1, 0, 0), normal=(0, 1, 0))):
+            with self.assertRaises(ValueError):
+                renderpark_compare.match_patches(ours, [other])
+        with self.assertRaises(ValueError):  # two of theirs on one of ours
+            renderpark_compare.match_patches(ours, [patch((0, 0, 0)), patch((0, 0, 0))])
+
+    def test_a_patch_of_two_polygons_has_their_area_weighted_centroid_and_value(self):
+        p = renderpark_compare._patch([[(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)],
+                                       [(1, 0, 0), (3, 0, 0), (3, 1, 0), (1, 1, 0)]],
+                                      [(3.0, 0.0, 1.0), (6.0, 3.0, 1.0)])
+        self.assertAlmostEqual(p.area, 3.0, places=12)
+        for got, want in zip(p.centroid, (1.5, 0.5, 0.0)):
+            self.assertAlmostEqual(got, want, places=12)
+        for got, want in zip(p.b, (5.0, 2.0, 1.0)):
+            self.assertAlmostEqual(got, want, places=12)
+        self.assertEqual(p.normal, [0.0, 0.0, 1.0])
+
+    def test_the_curve_of_ray_units_is_centred_on_the_measured_units(self):
+        curve = renderpark_compare.ray_unit_curve(1000, 8, 0.03)
+        self.assertEqual(curve, [895, 925, 955, 985, 1015, 1045, 1075, 1105])
+        self.assertEqual(renderpark_compare.ray_unit_curve(1000, 3, 0.1), [900, 1000, 1100])
+
+    def test_efficiency_is_one_over_variance_times_seconds(self):
+        self.assertAlmostEqual(renderpark_compare.efficiency(0.01, 2.0), 5000.0, places=9)
+
+    def test_each_hook_goes_in_once_at_its_anchor_or_the_copy_is_refused(self):
+        edits = [("b\n", "B\n", "before"), ("c\n", "C\n", "after")]
+        self.assertEqual(rpk_leaves.insert_at_anchors("a\nb\nc\nd\n", edits, "f"),
+                         "a\nB\nb\nc\nC\nd\n")
+        for text in ("a\nc\n", "b\nb\nc\n"):  # an anchor missing, an anchor twice
+            with self.assertRaises(ValueError):
+                rpk_leaves.insert_at_anchors(text, edits, "f")
+        for anchor, _, _ in rpk_leaves.NOISE_EDITS:
+            self.assertTrue(anchor.endswith("\n") or anchor.endswith("("), anchor)
 
 
 if __name__ == "__main__":
