@@ -129,8 +129,8 @@ void SolveStats::join_refining_pass(const SolveStats& refining) {
 
 namespace {
 
-// The mesh a solve starts from: a refining solve's roots (or the uniform mesh of
-// uniform_max_area), or a solution's leaves to solve again, frozen, with the clusters its
+// The mesh a solve starts from: a refining solve's roots (or a fixed one: the uniform mesh of
+// uniform_max_area, or the roots that nothing may split), or a solution's leaves to solve again, frozen, with the clusters its
 // shape had open.
 struct StartMesh {
     std::unique_ptr<Hierarchy> hierarchy;
@@ -149,11 +149,11 @@ std::unique_ptr<Hierarchy> roots(PatchSet patches, const SolverOptions& o,
                                        HierarchyLimits{o.min_area, o.max_depth, element_limit(o)});
 }
 
-// A refining solve's mesh (or the uniform one) over `patches`.
+// A refining solve's mesh (or the fixed one) over `patches`.
 StartMesh roots_of(PatchSet patches, const SolverOptions& o,
                    std::shared_ptr<const EmbreeScene>& scene) {
-    StartMesh mesh{roots(std::move(patches), o, scene), nullptr, o.uniform_max_area > 0};
-    if (mesh.frozen) mesh.hierarchy->subdivide_uniformly(o.uniform_max_area);
+    StartMesh mesh{roots(std::move(patches), o, scene), nullptr, fixed_from_start(o)};
+    if (o.uniform_max_area > 0) mesh.hierarchy->subdivide_uniformly(o.uniform_max_area);
     return mesh;
 }
 
@@ -486,8 +486,9 @@ private:
 Passes passes_of(const SolverOptions& options) {
     const Pass whole = whole_solve(options);
     // Refine-then-freeze applies to a refined mesh of at least two rays; a fixed mesh (a
-    // reference's uniform one) has nothing to refine, so all its rays solve it.
-    if (!(options.refine_share < 1 && options.uniform_max_area <= 0 && options.rays >= 2)) {
+    // reference's uniform one, or unsplittable patches) has nothing to refine, so all its rays
+    // solve it.
+    if (!(options.refine_share < 1 && !fixed_from_start(options) && options.rays >= 2)) {
         return {whole, {whole.epsilon, 0}};
     }
     // The refining pass's share, at least one ray, leaving one for the frozen pass.

@@ -195,6 +195,14 @@ struct SolverOptions {
 #undef HMCR_FIELD
 };
 
+// Whether a solve's mesh is fixed from its start: the uniform mesh of uniform_max_area, or the
+// patches themselves where nothing may split (max_depth 0 and no clusters to open). Such a solve
+// has nothing to refine, so all its rays solve that mesh as a frozen pass does, lines used both
+// ways and the control variate included (docs/design.md §3.10).
+inline bool fixed_from_start(const SolverOptions& o) {
+    return o.uniform_max_area > 0 || (o.max_depth == 0 && o.clustering == Clustering::none);
+}
+
 // The elements a solve may make: its max_elements, or with the default limit on a higher basis
 // the elements a quarter of the memory holds with their coefficients (docs/design.md §2.6), so
 // that the default bounds the memory on every basis.

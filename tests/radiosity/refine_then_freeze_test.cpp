@@ -228,6 +228,29 @@ TEST(RefineThenFreeze, AUniformMeshIgnoresTheShare) {
     expect_same_leaves(*shared.hierarchy, *whole.hierarchy);
 }
 
+// Patches that nothing may split (max_depth 0, no clusters) are a fixed mesh too: every ray
+// solves them on the leaf lookup, whatever the share, so that lines go both ways in all of
+// them; with clusters to open the share still refines them.
+TEST(RefineThenFreeze, UnsplittablePatchesIgnoreTheShare) {
+    const Scene scene = load_scene("cornell");
+    SolverOptions o = options("power", 100'000, 0.1);
+    o.max_depth = 0;
+    o.bidirectional = Bidirectional::yes;
+    const Solution shared = solve(scene.mesh, o);
+    o.refine_share = 1;
+    const Solution whole = solve(scene.mesh, o);
+    EXPECT_EQ(frozen_iterations(shared.stats), 0u);
+    EXPECT_EQ(shared.stats.oracle_evaluations, 0u);  // no descent asks the oracle
+    EXPECT_EQ(shared.stats.rays, 100'000u);
+    expect_same_leaves(*shared.hierarchy, *whole.hierarchy);
+    o.bidirectional = Bidirectional::no;
+    const Solution one_way = solve(scene.mesh, o);
+    EXPECT_NE(leaf_values(*one_way.hierarchy), leaf_values(*whole.hierarchy));
+    o.clustering = Clustering::isotropic;
+    o.refine_share = 0.1;
+    EXPECT_GT(passes_of(o).frozen.rays, 0u);
+}
+
 // A budget search probes with the refining pass and freezes the accepted probe: its leaves are
 // within the tolerance and those of the same search with the refining share of the rays.
 TEST(RefineThenFreeze, ABudgetSearchFreezesTheAcceptedProbe) {
