@@ -241,7 +241,8 @@ def rpk_command(rpk, mgf, args, clustering):
 def hmcr_command(args, out_dir):
     return [args.hmcr, "solve", "cornell", "--oracle", "power", "--threads", "1",
             "--refine-share", "1", "--epsilon", str(args.hmcr_epsilon), "--rays", str(args.rays), "-q",
-            "-o", os.path.join(out_dir, "cornell.vtp")]
+            "-o", os.path.join(out_dir, "cornell.vtp")] + \
+        (["--sequence", args.sequence] if args.sequence else [])
 
 
 def timed(command, cwd):
@@ -387,6 +388,8 @@ def hmcr_solve_command(args, config, rays, seed, out):
     """hmcr's solve of the Cornell box in one of the measured settings, at `rays` rays."""
     command = [args.hmcr, "solve", "cornell", "--threads", "1", "--rays", str(rays), "--seed",
                str(seed), "-q", "-o", out]
+    if args.sequence:
+        command += ["--sequence", args.sequence]
     if config == "matched":  # the timing comparison's: power, rpkCpp's leaves, refined once
         command += ["--oracle", "power", "--refine-share", "1", "--epsilon",
                     str(args.hmcr_epsilon)]
@@ -850,6 +853,8 @@ def main():
                     help="measure object errors against a point reference instead of times")
     ap.add_argument("--reference", help="--error: an hmcr reference of cornell (default: make "
                     "one in the working folder)")
+    ap.add_argument("--sequence", help="hmcr's ray sequence in the timed and --error solves "
+                    "(default: hmcr's)")
     ap.add_argument("--reference-points", type=int, default=200000)
     ap.add_argument("--reference-paths", type=int, default=64)
     ap.add_argument("--reference-spp", type=float, default=16)
