@@ -130,8 +130,8 @@ void SolveStats::join_refining_pass(const SolveStats& refining) {
 namespace {
 
 // The mesh a solve starts from: a refining solve's roots (or a fixed one: the uniform mesh of
-// uniform_max_area, or the roots that nothing may split), or a solution's leaves to solve again, frozen, with the clusters its
-// shape had open.
+// uniform_max_area, or the roots that nothing may split), or a solution's leaves to solve again,
+// frozen, with the clusters its shape had open.
 struct StartMesh {
     std::unique_ptr<Hierarchy> hierarchy;
     std::unique_ptr<ClusterTree> clusters;  // a frozen mesh's only
