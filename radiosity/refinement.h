@@ -15,6 +15,7 @@
 #include "radiosity/link_cache.h"
 #include "radiosity/solver_options.h"
 #include "rays/embree_scene.h"
+#include "rays/sequence_cursors.h"
 
 namespace hmcr {
 
@@ -32,6 +33,9 @@ struct RefinementContext {
     const LeafIndex* fixed_leaves = nullptr;
     LinkWeight link_weight = LinkWeight::unshot;  // w_ij from the source's Delta B or B
     RaySequence sequence = RaySequence::random;   // the shooting rays' uniforms (rays/sobol.h)
+    // On a fixed mesh with the Sobol sequence, each source leaf's sequence through the pass
+    // (rays/sequence_cursors.h), which each iteration's shot advances; none: one an iteration.
+    SequenceCursors* sequence_cursors = nullptr;
     // On a fixed mesh, whether a line that lands also shoots its receiver leaf's unshot power
     // back to its source (docs/design.md §3.13); never in a refining pass.
     Bidirectional bidirectional = Bidirectional::no;

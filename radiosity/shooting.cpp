@@ -334,6 +334,9 @@ public:
             s.assign(sources.weights(), rays,
                      Rng(ctx.seed, iteration, kStrataStream + part.first_key).uniform(),
                      part.first_key);
+            if (ctx.sequence_cursors && sources.leaves) {
+                ctx.sequence_cursors->advance(sources.regions, s);
+            }
             m_strata = &s;
         }
     }

@@ -416,6 +416,12 @@ Solution solve_in_arena(const SolverOptions& options, const Pass& pass, const So
     // A fixed mesh's leaves by parameter point, where its rays deposit.
     const std::unique_ptr<const LeafIndex> leaf_index =
         fixed_mesh ? std::make_unique<const LeafIndex>(h) : nullptr;
+    // A fixed mesh's leaves keep their Sobol sequences through the pass, scrambled by a key
+    // above every iteration's.
+    std::optional<SequenceCursors> cursors;
+    if (fixed_mesh && options.sequence == RaySequence::sobol) {
+        cursors.emplace((std::uint64_t(1) << 32) + first_iteration);
+    }
     const RefinementContext ctx{
         .hierarchy = h,
         .oracle = oracle,
@@ -427,6 +433,7 @@ Solution solve_in_arena(const SolverOptions& options, const Pass& pass, const So
         .fixed_leaves = leaf_index.get(),
         .link_weight = options.link_weight,
         .sequence = options.sequence,
+        .sequence_cursors = cursors ? &*cursors : nullptr,
         .bidirectional = fixed_mesh ? options.bidirectional : Bidirectional::no,
         .clusters = clusters.get(),
         .receiver_weights = receiver_weights};

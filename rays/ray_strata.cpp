@@ -11,6 +11,7 @@ namespace hmcr {
 void RayStrata::assign(std::span<const double> weights, std::uint64_t rays, double offset,
                        std::uint64_t first) {
     m_first = first;
+    m_continued = false;
     resize_populated(m_start, weights.size() + 1);
     // The total is summed in the order of the cumulative sums, so that the last is exactly 1.
     double total = 0;
@@ -25,6 +26,13 @@ void RayStrata::assign(std::span<const double> weights, std::uint64_t rays, doub
         cumulative += weights[l];
     }
     m_start[weights.size()] = first + rays;
+}
+
+void RayStrata::continue_sequences(std::uint64_t key) {
+    m_continued = true;
+    m_key = key;
+    m_sequence.assign(sources(), 0);
+    m_first_point.assign(sources(), 0);
 }
 
 std::uint32_t RayStrata::source_of(std::uint64_t ray) const {

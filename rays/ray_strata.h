@@ -26,9 +26,34 @@ public:
     std::size_t sources() const { return m_start.empty() ? 0 : m_start.size() - 1; }
     std::uint64_t first() const { return m_first; }
 
+    // Which points of which sequence a source's rays are (rays/sobol.h). As assigned, source l's
+    // rays are points 0, 1, ... of sequence l + first() of the iteration's key; continued
+    // (rays/sequence_cursors.h), they go on from point first_point(l) of a sequence the source
+    // keeps through the iterations, scrambled by `key`.
+    // Continues the sequences, scrambled by `key`: then each source's by continue_source.
+    void continue_sequences(std::uint64_t key);
+    void continue_source(std::uint32_t source, std::uint64_t sequence, std::uint64_t first_point) {
+        m_sequence[source] = sequence;
+        m_first_point[source] = first_point;
+    }
+    bool continued() const { return m_continued; }
+    std::uint64_t sequence(std::uint32_t source) const {
+        return continued() ? m_sequence[source] : source + m_first;
+    }
+    std::uint64_t first_point(std::uint32_t source) const {
+        return continued() ? m_first_point[source] : 0;
+    }
+    // The key of the scrambles: the iteration's, unless the sequences continue.
+    std::uint64_t scramble_key(std::uint64_t iteration_key) const {
+        return continued() ? m_key : iteration_key;
+    }
+
 private:
     std::vector<std::uint64_t> m_start;  // one a source, and the end of the rays last
     std::uint64_t m_first = 0;
+    bool m_continued = false;
+    std::uint64_t m_key = 0;
+    std::vector<std::uint64_t> m_sequence, m_first_point;  // one a source when continued
 };
 
 }  // namespace hmcr

@@ -50,20 +50,23 @@ void sobol_draws(std::uint64_t seed, std::uint64_t key, const RayStrata& strata,
     boost::random::sobol engine(kSequenceDimensions);
     std::uint32_t scramble[kSequenceDimensions];
     std::uint32_t current = 0;
-    std::uint64_t end = 0;  // of the current source's rays: none yet
+    std::uint64_t end = 0;    // of the current source's rays: none yet
+    std::uint64_t start = 0;  // ray + start is the ray's point in its source's sequence
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint64_t ray = first + i;
         if (ray >= end) {  // a new source: its scrambles, and its sequence from the ray's point
             current = strata.source_of(ray);
             end = strata.first_ray(current + 1);
-            const std::uint64_t at = kScrambleStreams + 4 * (current + strata.first());
+            const std::uint64_t at = kScrambleStreams + 4 * strata.sequence(current);
+            const std::uint64_t scramble_key = strata.scramble_key(key);
             for (std::size_t d = 0; d < kSequenceDimensions; ++d) {
-                scramble[d] = std::uint32_t(Rng(seed, key, at + d).next_u64() >> 32);
+                scramble[d] = std::uint32_t(Rng(seed, scramble_key, at + d).next_u64() >> 32);
             }
-            const std::uint64_t point = ray - strata.first_ray(current);
+            start = strata.first_point(current) - strata.first_ray(current);  // mod 2^64
+            const std::uint64_t point = ray + start;
             engine.seed(point > 0 ? point - 1 : 0);
         }
-        const bool origin = ray == strata.first_ray(current);
+        const bool origin = ray + start == 0;
         Rng rng(seed, key, ray);
         rng.next_u64();  // the alias pick's draw, unused: the others keep their places
         out[i] = 0;

@@ -4,8 +4,9 @@
 // are the points 0, 1, 2, ... of its own Sobol sequence in the four dimensions of a ray's start
 // (the point's u and v, the direction's r and phi), Owen-scrambled in each dimension by a hash
 // keyed (seed, key, source, dimension), so that two seeds are independent estimates and each
-// is unbiased. A ray's draws are a function of its index alone, whatever batch or thread
-// makes it.
+// is unbiased; on a fixed mesh a source's sequence goes on through the iterations instead
+// (rays/sequence_cursors.h). A ray's draws are a function of its index alone, whatever batch
+// or thread makes it.
 #pragma once
 
 #include <cstddef>
@@ -26,8 +27,10 @@ inline constexpr std::size_t kSequenceDimensions = 4;  // u, v, r, phi; the dith
 
 // The draws of rays first .. first + n - 1 of the stream (seed, key), which `strata` deals to
 // their sources: draw d of ray first + i at out[d * stride + i], and its source at source[i].
-// Ray r of source l is point r - strata.first_ray(l) of l's sequence, dimension d scrambled by
-// the hash keyed (seed, key, 2^63 + 2^32 + 4 (l + strata.first()) + d). Each dimension takes
+// Ray r of source l is point strata.first_point(l) + r - strata.first_ray(l) of its sequence
+// s = strata.sequence(l) (l + strata.first(), from point 0, unless the strata continue the
+// sources' sequences), dimension d scrambled by the hash keyed (seed, strata.scramble_key(key),
+// 2^63 + 2^32 + 4 s + d). Each dimension takes
 // its first 32 binary digits from the scrambled sequence and the next 21 from the ray's keyed
 // stream (a full Owen scramble makes those uniform and independent); draw 0 (an alias pick's)
 // is 0, and the dither is the stream's last uniform.

@@ -81,6 +81,34 @@ TEST(Sobol, ASourcesFirstPowerOfTwoPointsAreStratified) {
     }
 }
 
+// A source whose sequence continues (rays/sequence_cursors.h) takes the points after its last
+// iteration's: two iterations of 2^(m-1) rays each are, together, one net of 2^m points in each
+// dimension, though each iteration's rays are keyed streams of their own.
+TEST(Sobol, AContinuedSourceGoesOnWhereItsLastRaysStopped) {
+    constexpr int m = 10;
+    constexpr std::size_t half = std::size_t(1) << (m - 1), n = 2 * half;
+    constexpr std::uint64_t kKey = std::uint64_t(1) << 32;
+    for (std::uint64_t seed : {1u, 2u, 99u}) {
+        std::vector<double> x[2];
+        for (std::uint64_t iteration : {0u, 1u}) {
+            RayStrata strata;  // the source of interest second, after one of 100 rays
+            strata.assign(std::vector<double>{100, double(half)}, 100 + half, 0.5);
+            ASSERT_EQ(strata.first_ray(1), 100u);
+            strata.continue_sequences(kKey);
+            strata.continue_source(0, 7, 0);
+            strata.continue_source(1, 3, iteration * half);
+            x[iteration] = draws(seed, iteration, strata, 100, half).x;
+        }
+        for (std::size_t d = 1; d <= kSequenceDimensions; ++d) {
+            std::vector<int> count(n);
+            for (const std::vector<double>& it : x) {
+                for (std::size_t i = 0; i < half; ++i) ++count[std::size_t(it[d * half + i] * n)];
+            }
+            for (std::size_t k = 0; k < n; ++k) ASSERT_EQ(count[k], 1) << "dimension " << d;
+        }
+    }
+}
+
 // Over seeds, one ray's draw is uniform: its mean 1/2 within its standard error
 // sqrt(1 / 12 / seeds), for every draw and for rays at both ends of a dyadic block.
 TEST(Sobol, EachDrawIsUniformOverSeeds) {
