@@ -16,6 +16,7 @@
 #include "common/output_set.h"
 #include "common/stopwatch.h"
 #include "common/text_file.h"
+#include "common/version.h"
 #include "image/image.h"
 #include "meshes/scene.h"
 #include "radiosity/oracle_registry.h"
@@ -312,6 +313,8 @@ nlohmann::json study_settings(const Scene& scene, const StudyOptions& o) {
     }
     const std::string reference_json = read_text_file(o.reference / "reference.json");
     return {{"scene", scene.name},
+            // A version that gives other bits makes other cells.
+            {"bits_version", std::string(bits_version())},
             {"rays_per_leaf", o.rays_per_leaf},
             {"mesh_rays", mesh_rays_json(o)},
             {"geometry", geometry_hash(scene.mesh)},

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "common/version.h"
 #include "tests/hostile/hostile.h"
 #include "tests/support/hmcr_child.h"
 
@@ -200,6 +201,17 @@ TEST_F(HostileStudy, OtherSettingsAreRefusedUnlessRedone) {
     EXPECT_EQ(nlohmann::json::parse(read_file(cell(2)))["settings"]["solve"]["lines"], 4);
     // Threads and cache size change no result, so they are not settings of a study.
     accepted(std::string(kStudy) + " --lines 4 --threads 1 --cache-mb 1");
+}
+
+// A cell of a version whose bits differ (another major or minor number) is another cell.
+TEST_F(HostileStudy, CellsOfAVersionWithOtherBitsAreRefusedUnlessRedone) {
+    accepted(kStudy);
+    nlohmann::json c = nlohmann::json::parse(read_file(cell(2)));
+    ASSERT_EQ(c["settings"]["bits_version"], std::string(bits_version()));
+    c["settings"]["bits_version"] = "0.1";
+    m_temp.write("st/cells/plates-power-B20-s2.json", c.dump());
+    refused(kStudy, "bits_version is \"" + std::string(bits_version()) + "\" now");
+    accepted(std::string(kStudy) + " --redo");
 }
 
 TEST_F(HostileStudy, PlotRefusesWhatIsNoStudysTable) {
