@@ -6,7 +6,8 @@
 Solves a scene on its patches alone (`--max-depth 0`: no element is split, so every solve has
 the same leaves) with each sequence over several seeds, one thread, and a converged solve of the
 same leaves with `--converged-rays`. A variant is a sequence, then `+both` for
-`--bidirectional yes` and `+BASIS` for `--basis BASIS` if wanted (`sobol+both`, `sobol+linear`):
+`--bidirectional yes`, `+cv` for `--control-variate constant` and `+BASIS` for `--basis BASIS` if
+wanted (`sobol+both`, `sobol+linear`; scripts/patch_noise.py):
 a basis's per-patch values are its leaves' means, the patches' first coefficients. Prints, per variant, the per-patch relative RMS deviation
 from the converged solve of its basis (over the lit patches and the three channels), the median CPU seconds
 of one solve (the whole process: user + system), and the efficiency 1 / (deviation^2 x seconds)
@@ -18,7 +19,6 @@ Needs VTK's Python module (Debian's python3-vtk9).  Usage:
 """
 
 import argparse
-import math
 import os
 import statistics
 import subprocess
@@ -28,6 +28,9 @@ import tempfile
 import numpy
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import patch_noise  # noqa: E402  (beside this script)
 
 
 def radiosity(path):
@@ -46,22 +49,12 @@ def radiosity(path):
                         for c in range(3)], axis=1) / weights[:, None]
 
 
-BASES = ("linear", "bilinear", "quadratic", "cubic")
-
-
 def solve(args, out, seed, variant, rays):
     """Solves once; returns the process's CPU seconds."""
-    sequence, *words = variant.split("+")
-    command = [args.hmcr, "solve", args.scene, "--max-depth", "0", "--threads", "1", "--seed",
-               str(seed), "--sequence", sequence, "--rays", str(rays), "-q", "-o", out]
-    for word in words:
-        if word == "both":
-            command += ["--bidirectional", "yes"]
-        elif word in BASES:
-            command += ["--basis", word]
-        else:
-            sys.exit(f"fixed_mesh_noise.py: variant {variant!r} is a sequence, then +both and "
-                     f"+BASIS ({', '.join(BASES)}) if wanted")
+    try:
+        command = patch_noise.hmcr_command(args.hmcr, args.scene, variant, seed, rays, out)
+    except ValueError as e:
+        sys.exit(f"fixed_mesh_noise.py: {e}")
     process = subprocess.Popen(command)
     _, status, usage = os.wait4(process.pid, 0)
     if status != 0:
@@ -83,25 +76,24 @@ def main():
     def converged_for(variant):
         """The converged solve of the variant's basis: another basis converges to another
         solution of the same leaves."""
-        basis = next((w for w in variant.split("+") if w in BASES), "")
+        basis = patch_noise.variant_basis(variant)
         path = os.path.join(work, f"converged{'-' + basis if basis else ''}.vtp")
         if not os.path.exists(path):
             solve(args, path, 1000, "sobol" + ("+" + basis if basis else ""), args.converged_rays)
         return radiosity(path)
 
-    lit = converged_for("sobol") > 0
+    lit = patch_noise.lit_channels(converged_for("sobol"))
     rows = []
     for variant in args.variants.split(","):
         converged = converged_for(variant)
-        squares, seconds = [], []
+        runs, seconds = [], []
         for seed in range(1, args.seeds + 1):
             path = os.path.join(work, f"{variant}-{seed}.vtp")
             seconds.append(solve(args, path, seed, variant, args.rays))
-            relative = (radiosity(path) - converged)[lit] / converged[lit]
-            squares.append(float(numpy.mean(relative**2)))
-        rms = math.sqrt(statistics.fmean(squares))
+            runs.append(radiosity(path))
+        rms = patch_noise.relative_rms(runs, converged, lit)
         rows.append((variant, rms, statistics.median(seconds)))
-    print(f"{args.scene}, {int(lit.sum())} lit patch channels, {args.rays} rays, {args.seeds} seeds, "
+    print(f"{args.scene}, {len(lit)} lit patch channels, {args.rays} rays, {args.seeds} seeds, "
           f"converged at {args.converged_rays}")
     print("| variant | per-patch RMS deviation | CPU s | efficiency |")
     print("|:--|--:|--:|--:|")

@@ -70,7 +70,8 @@ RPK_WHITE_EFFICACY = 183.07
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-import rpk_leaves  # noqa: E402  (beside this script)
+import patch_noise  # noqa: E402  (beside this script)
+import rpk_leaves  # noqa: E402
 CORNELL_OBJ = os.path.join(HERE, "..", "scenes", "cornell", "cornell.obj")
 
 
@@ -621,20 +622,6 @@ def match_patches(ours, theirs, tolerance=1e-4):
     return out
 
 
-def lit_channels(*references):
-    """The (patch, channel) pairs where every reference (lists of B triples) is above 0."""
-    return [(p, c) for p in range(len(references[0])) for c in range(3)
-            if all(r[p][c] > 0 for r in references)]
-
-
-def relative_rms(runs, reference, lit):
-    """fixed_mesh_noise.py's per-patch deviation: the root of the mean over runs of the mean
-    over the lit (patch, channel) pairs of ((B - B_ref) / B_ref)^2."""
-    squares = [statistics.fmean(((run[p][c] - reference[p][c]) / reference[p][c]) ** 2
-                                for p, c in lit) for run in runs]
-    return math.sqrt(statistics.fmean(squares))
-
-
 def ray_unit_curve(units, count, step):
     """`count` ray units spread evenly around `units`, `step` apart relatively (the
     deterministic sequence's curve over ray counts: its error at one count is one sample)."""
@@ -643,19 +630,6 @@ def ray_unit_curve(units, count, step):
 
 def efficiency(rms, cpu):
     return 1.0 / (rms * rms * cpu)
-
-
-def hmcr_noise_command(args, scene, variant, seed, rays, out):
-    """fixed_mesh_noise.py's solve: the scene's patches alone, one thread; `+both` lines used
-    both ways, `+cv` the constant control variate."""
-    sequence, *words = variant.split("+")
-    command = [args.hmcr, "solve", scene["hmcr"], "--max-depth", "0", "--threads", "1",
-               "--seed", str(seed), "--sequence", sequence, "--rays", str(rays), "-q",
-               "-o", out] + scene["hmcr_options"]
-    for word in words:
-        command += {"both": ["--bidirectional", "yes"],
-                    "cv": ["--control-variate", "constant"]}[word]
-    return command
 
 
 def rpk_noise_command(rpk, mgf, units, sequence, iterations):
@@ -667,7 +641,9 @@ def rpk_noise_command(rpk, mgf, units, sequence, iterations):
 
 def hmcr_noise_run(args, scene, variant, seed, rays, work, name):
     out = os.path.join(work, f"{name}.vtp")
-    cpu, _ = cpu_runs(hmcr_noise_command(args, scene, variant, seed, rays, out), work, 1)
+    command = patch_noise.hmcr_command(args.hmcr, scene["hmcr"], variant, seed, rays, out,
+                                       scene["hmcr_options"])
+    cpu, _ = cpu_runs(command, work, 1)
     with open(os.path.join(work, f"{name}.json")) as f:
         summary = json.load(f)
     return {"cpu_s": cpu, "patches": hmcr_patches(out), "rays": summary["counts"]["rays"],
@@ -727,8 +703,8 @@ def noise_scene(args, rpk, scene, work):
 
     h_ref = in_rpk_order(hmcr_ref["patches"])
     r_ref = [p.b for p in rpk_ref["patches"]]
-    lit = lit_channels(h_ref, r_ref)
-    cross = relative_rms([[[v / scale for v in b] for b in h_ref]], r_ref, lit)
+    lit = patch_noise.lit_channels(h_ref, r_ref)
+    cross = patch_noise.relative_rms([[[v / scale for v in b] for b in h_ref]], r_ref, lit)
 
     rows = {f"hmcr {v}": [] for v in args.variants.split(",")}
     rows.update({"rpkCpp PseudoRandom": [], "rpkCpp Niederreiter": []})
@@ -749,12 +725,12 @@ def noise_scene(args, rpk, scene, work):
     single = rpk_noise_run(args, rpk, scene, units, "Niederreiter", work, f"{name}-rpk-float")
     double = rpk_noise_run(args, rpk, scene, units, "Niederreiter", work, f"{name}-rpk-double",
                            double=True)
-    float_vs_double = relative_rms([[p.b for p in single["patches"]]],
+    float_vs_double = patch_noise.relative_rms([[p.b for p in single["patches"]]],
                                    [p.b for p in double["patches"]], lit)
     table = {}
     for row, runs in rows.items():
         reference = r_ref if row.startswith("rpkCpp") else h_ref
-        table[row] = {"rms": relative_rms([r["b"] for r in runs], reference, lit),
+        table[row] = {"rms": patch_noise.relative_rms([r["b"] for r in runs], reference, lit),
                       "cpu_s": statistics.median(r["cpu_s"] for r in runs),
                       "rays": statistics.mean(r["rays"] for r in runs),
                       "cpu_s_runs": [r["cpu_s"] for r in runs],

@@ -4,7 +4,8 @@
 the leaves' patches, areas, units (B = pi x radiance, a sub-element's Ed an exitance) and power
 balance, rpkCpp's Gouraud values at a T-vertex, the .vtp's arrays and one-line errors; and the
 noise mode's pure parts (renderpark_compare.py --noise) on synthetic patches: the per-patch
-deviation, the patch matching, the ray-unit curve and the hooks' insertion.
+deviation and the variants' hmcr commands (scripts/patch_noise.py, fixed_mesh_noise.py's too),
+the patch matching, the ray-unit curve and the hooks' insertion.
 
 Usage: renderpark_compare_test.py SOURCE_DIR (no rpkCpp, no network, no hmcr binary)."""
 
@@ -17,6 +18,7 @@ import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.join(sys.argv.pop(1) if len(sys.argv) > 1 else ".", "scripts"))
 import rpk_leaves  # noqa: E402
+import patch_noise  # noqa: E402
 import renderpark_compare  # noqa: E402
 
 # hmcr's scene, in its patch order: face 0 the unit square of z = 0 facing +z, face 1 a light
@@ -245,18 +247,32 @@ def patch(centroid, normal=(0, 0, 1), area=1.0, b=(1, 1, 1)):
 class NoiseTest(unittest.TestCase):
     def test_relative_rms_is_fixed_mesh_noises_deviation_over_lit_channels(self):
         reference = [[2.0, 1.0, 0.0], [4.0, 4.0, 4.0]]
-        lit = renderpark_compare.lit_channels(reference)
+        lit = patch_noise.lit_channels(reference)
         self.assertEqual(lit, [(0, 0), (0, 1), (1, 0), (1, 1), (1, 2)])  # not the black one
         # run 1: +10% on one channel of five; run 2: -20% on another (the black one ignored)
         runs = [[[2.2, 1.0, 5.0], [4.0, 4.0, 4.0]], [[2.0, 1.0, 0.0], [4.0, 3.2, 4.0]]]
         want = math.sqrt((0.01 / 5 + 0.04 / 5) / 2)
-        self.assertAlmostEqual(renderpark_compare.relative_rms(runs, reference, lit), want,
+        self.assertAlmostEqual(patch_noise.relative_rms(runs, reference, lit), want,
                                places=12)
-        self.assertEqual(renderpark_compare.relative_rms([reference], reference, lit), 0.0)
+        self.assertEqual(patch_noise.relative_rms([reference], reference, lit), 0.0)
+
+    def test_a_variants_words_are_its_options(self):
+        command = patch_noise.hmcr_command("hmcr", "room.mgf", "sobol+both+cv+linear", 3, 2684000,
+                                           "o.vtp", ["--sides", "1"])
+        self.assertEqual(command[:2], ["hmcr", "solve"])
+        words = " ".join(command)
+        for wanted in ("--max-depth 0", "--threads 1", "--seed 3", "--sequence sobol",
+                       "--rays 2684000", "-o o.vtp", "--sides 1", "--bidirectional yes",
+                       "--control-variate constant", "--basis linear"):
+            self.assertIn(wanted, words)
+        self.assertEqual(patch_noise.variant_basis("sobol+both+cubic"), "cubic")
+        self.assertEqual(patch_noise.variant_basis("random"), "")
+        with self.assertRaises(ValueError):
+            patch_noise.hmcr_command("hmcr", "cornell", "sobol+twice", 1, 10, "o.vtp")
 
     def test_a_channel_black_in_either_reference_is_not_lit(self):
         a, b = [[1.0, 0.0, 1.0]], [[1.0, 1.0, 0.0]]
-        self.assertEqual(renderpark_compare.lit_channels(a, b), [(0, 0)])
+        self.assertEqual(patch_noise.lit_channels(a, b), [(0, 0)])
 
     def test_patches_match_by_geometry_whatever_their_order(self):
         ours = [patch((0, 0, 0)), patch((1, 0, 0)), patch((0, 0, 0), normal=(0, 0, -1)),
