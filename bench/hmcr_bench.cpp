@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     std::string results, scaling;
     int cv_seeds = 0;
     bool default_share_only = false;
-    std::string sequence_name(hmcr::name(hmcr::SolverOptions{}.sequence));
+    hmcr::RaySequence sequence = hmcr::SolverOptions{}.sequence;
     app.add_option("--results", results, "write every row here (JSON)");
     app.add_option("--scaling", scaling,
                    "run the scaling study on the generated office scenes in this folder");
@@ -128,12 +128,14 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     app.add_flag("--default-share", default_share_only,
                  "run only the rows of the default refine share (refine, then freeze)");
-    app.add_option("--sequence", sequence_name,
-                   "the table's ray sequence, random or sobol (default: the solver's)")
-        ->check([](const std::string& v) {
-            return hmcr::SettingNames<hmcr::RaySequence>::parse(v) ? std::string()
-                                                                   : std::string("random or sobol");
-        });
+    app.add_option_function<std::string>(
+        "--sequence",
+        [&sequence](const std::string& v) {
+            const auto parsed = hmcr::SettingNames<hmcr::RaySequence>::parse(v);
+            if (!parsed) throw CLI::ValidationError("--sequence", "random or sobol");
+            sequence = *parsed;
+        },
+        "the table's ray sequence, random or sobol (default: the solver's)");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -144,7 +146,6 @@ int main(int argc, char** argv) {
     }
     if (cv_seeds > 0) return run_control_variate_study(cv_seeds);
     std::vector<nlohmann::json> rows;
-    const hmcr::RaySequence sequence = *hmcr::SettingNames<hmcr::RaySequence>::parse(sequence_name);
     if (!default_share_only) rows = run_oracle_rows(sequence);
     for (nlohmann::json& row : run_default_share_rows(sequence)) rows.push_back(row);
     if (!scaling.empty() && !default_share_only) {
