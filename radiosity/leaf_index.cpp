@@ -66,15 +66,15 @@ std::uint32_t LeafIndex::add_grid(std::uint32_t root, std::size_t leaves) {
     return grid;
 }
 
-Element& LeafIndex::locate(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const {
+std::uint32_t LeafIndex::entry_at(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const {
     const std::vector<std::uint32_t>& roots = m_roots[side];
     const std::uint32_t root = roots.empty() ? kUnsplit : roots[patch];
-    if (root == kUnsplit) return m_h.root(patch, side);
+    if (root == kUnsplit) return kUnsplit;
     if (!(root & kQuad)) {
         DomainWalk walk(false, uv);
         std::uint32_t entry = root;
         while (!(entry & kLeaf)) entry = m_nodes[entry][walk.step()];
-        return *m_leaves[entry & ~kLeaf];
+        return entry;
     }
     const Grid& g = m_grids[root & ~kQuad];
     const std::uint32_t i = Domain::quad_cell(uv.x(), g.depth),
@@ -85,7 +85,20 @@ Element& LeafIndex::locate(std::uint32_t patch, std::uint8_t side, const Vec2& u
         do entry = m_nodes[entry][walk.step()];
         while (!(entry & kLeaf));
     }
-    return *m_leaves[entry & ~kLeaf];
+    return entry;
 }
+
+Element& LeafIndex::locate(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const {
+    const std::uint32_t entry = entry_at(patch, side, uv);
+    return entry == kUnsplit ? m_h.root(patch, side) : *m_leaves[entry & ~kLeaf];
+}
+
+std::size_t LeafIndex::number(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const {
+    const std::uint32_t entry = entry_at(patch, side, uv);
+    return entry == kUnsplit ? m_leaves.size() + 2 * std::size_t(patch) + side
+                             : std::size_t(entry & ~kLeaf);
+}
+
+std::size_t LeafIndex::numbers() const { return m_leaves.size() + 2 * m_h.patch_count(); }
 
 }  // namespace hmcr

@@ -28,6 +28,11 @@ public:
     // The leaf of the side (patch, side) containing uv: the element h.locate(h.root(patch,
     // side), uv) finds.
     Element& locate(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const;
+    // The number of the leaf locate finds, below numbers(): one per leaf, the same whether or
+    // not the side's root has been made since the index was (each side that is its own leaf
+    // has the number of its patch and side), so that it names the leaf through a pass.
+    std::size_t number(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const;
+    std::size_t numbers() const;
 
 private:
     // An entry is a node's index, or kLeaf plus a leaf's index. A side's root entry says
@@ -41,6 +46,9 @@ private:
         int depth = 0;
     };
 
+    // The entry of the leaf at uv: kLeaf plus its index, or kUnsplit for a side that is its
+    // own leaf.
+    std::uint32_t entry_at(std::uint32_t patch, std::uint8_t side, const Vec2& uv) const;
     std::uint32_t add(Element& e);
     std::uint32_t add_grid(std::uint32_t root, std::size_t leaves);
 

@@ -15,9 +15,10 @@
 #include "radiosity/link_cache.h"
 #include "radiosity/solver_options.h"
 #include "rays/embree_scene.h"
-#include "rays/sequence_cursors.h"
 
 namespace hmcr {
+
+class SequenceCursors;
 
 // What every descent of a solve shares. Built with designated initialisers (.oracle = ...).
 struct RefinementContext {
@@ -34,7 +35,7 @@ struct RefinementContext {
     LinkWeight link_weight = LinkWeight::unshot;  // w_ij from the source's Delta B or B
     RaySequence sequence = RaySequence::random;   // the shooting rays' uniforms (rays/sobol.h)
     // On a fixed mesh with the Sobol sequence, each source leaf's sequence through the pass
-    // (rays/sequence_cursors.h), which each iteration's shot advances; none: one an iteration.
+    // (radiosity/sequence_cursors.h), which each iteration's shot advances; none: one an iteration.
     SequenceCursors* sequence_cursors = nullptr;
     // On a fixed mesh, whether a line that lands also shoots its receiver leaf's unshot power
     // back to its source (docs/design.md §3.13); never in a refining pass.

@@ -14,6 +14,7 @@
 
 #include "common/populated.h"
 #include "radiosity/control_variate.h"
+#include "radiosity/sequence_cursors.h"
 #include "rays/element_sampler.h"
 #include "rays/rng.h"
 #include "rays/sampling.h"

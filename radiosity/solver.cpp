@@ -20,6 +20,7 @@
 #include "radiosity/link_cache.h"
 #include "radiosity/rank_merge.h"
 #include "radiosity/ray_schedule.h"
+#include "radiosity/sequence_cursors.h"
 #include "radiosity/shooting.h"
 #include "radiosity/solve_passes.h"
 #include "radiosity/view_importance.h"
@@ -420,7 +421,7 @@ Solution solve_in_arena(const SolverOptions& options, const Pass& pass, const So
     // above every iteration's.
     std::optional<SequenceCursors> cursors;
     if (fixed_mesh && options.sequence == RaySequence::sobol) {
-        cursors.emplace((std::uint64_t(1) << 32) + first_iteration);
+        cursors.emplace(*leaf_index, (std::uint64_t(1) << 32) + first_iteration);
     }
     const RefinementContext ctx{
         .hierarchy = h,

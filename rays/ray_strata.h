@@ -27,9 +27,9 @@ public:
     std::uint64_t first() const { return m_first; }
 
     // Which points of which sequence a source's rays are (rays/sobol.h). As assigned, source l's
-    // rays are points 0, 1, ... of sequence l + first() of the iteration's key; continued
-    // (rays/sequence_cursors.h), they go on from point first_point(l) of a sequence the source
-    // keeps through the iterations, scrambled by `key`.
+    // rays are points 0, 1, ... of sequence l + first() of the iteration's key; continued (a
+    // fixed mesh's leaves, docs/design.md §3.2), they go on from point first_point(l) of a
+    // sequence the source keeps through the iterations, scrambled by `key`.
     // Continues the sequences, scrambled by `key`: then each source's by continue_source.
     void continue_sequences(std::uint64_t key);
     void continue_source(std::uint32_t source, std::uint64_t sequence, std::uint64_t first_point) {

@@ -5,8 +5,8 @@
 // (the point's u and v, the direction's r and phi), Owen-scrambled in each dimension by a hash
 // keyed (seed, key, source, dimension), so that two seeds are independent estimates and each
 // is unbiased; on a fixed mesh a source's sequence goes on through the iterations instead
-// (rays/sequence_cursors.h). A ray's draws are a function of its index alone, whatever batch
-// or thread makes it.
+// (RayStrata::continue_sequences). A ray's draws are a function of its index alone, whatever
+// batch or thread makes it.
 #pragma once
 
 #include <cstddef>

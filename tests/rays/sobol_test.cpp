@@ -81,7 +81,7 @@ TEST(Sobol, ASourcesFirstPowerOfTwoPointsAreStratified) {
     }
 }
 
-// A source whose sequence continues (rays/sequence_cursors.h) takes the points after its last
+// A source whose sequence continues (RayStrata::continue_sequences) takes the points after its last
 // iteration's: two iterations of 2^(m-1) rays each are, together, one net of 2^m points in each
 // dimension, though each iteration's rays are keyed streams of their own.
 TEST(Sobol, AContinuedSourceGoesOnWhereItsLastRaysStopped) {
