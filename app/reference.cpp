@@ -36,15 +36,20 @@ struct ReferenceArgs {
     bool quiet = false;
     SceneFlags scene_flags;
     std::vector<const CLI::Option*> mesh_only, points_only;  // for the refusal of a mix
+    std::string mesh_because;  // the mesh flag that made an auto reference a mesh reference
 };
 
 // One kind per run: a flag of the other kind is refused, not ignored.
 void refuse_other_kind(const ReferenceArgs& a, bool points) {
     for (const CLI::Option* option : points ? a.mesh_only : a.points_only) {
         if (option->count() == 0) continue;
-        throw InputError(fmt::format("{} is for a {} reference; this one is a {} reference",
+        const std::string why =
+            a.mesh_because.empty()
+                ? ""
+                : fmt::format(" ({} makes it one; --kind points asks for points)", a.mesh_because);
+        throw InputError(fmt::format("{} is for a {} reference; this one is a {} reference{}",
                                      option->get_name(), points ? "mesh" : "point",
-                                     points ? "point" : "mesh"));
+                                     points ? "point" : "mesh", why));
     }
 }
 
@@ -146,10 +151,11 @@ int run_mesh(ReferenceArgs& a, const Scene& scene, const std::string& command_li
     return 0;
 }
 
-bool any_given(const std::vector<const CLI::Option*>& options) {
+// The first of `options` the command line gives, or "".
+std::string first_given(const std::vector<const CLI::Option*>& options) {
     for (const CLI::Option* option : options)
-        if (option->count() > 0) return true;
-    return false;
+        if (option->count() > 0) return option->get_name();
+    return "";
 }
 
 int run_reference(ReferenceArgs& a, const std::string& command_line) {
@@ -157,10 +163,20 @@ int run_reference(ReferenceArgs& a, const std::string& command_line) {
         throw InputError("kind must be auto, points or mesh, got " + quote(a.kind));
     }
     // auto: a mesh reference when a mesh flag is given (--max-area, --rays, ...), else points.
-    if (a.kind == "auto") a.kind = any_given(a.mesh_only) ? "mesh" : "points";
+    if (a.kind == "auto") {
+        a.mesh_because = first_given(a.mesh_only);
+        a.kind = a.mesh_because.empty() ? "points" : "mesh";
+    }
     const bool points = a.kind == "points";
     refuse_other_kind(a, points);
     const Scene scene = load_scene_reporting(a.scene, a.quiet, SceneUse::solve, a.scene_flags);
+    // A flag such as --sequence may be meant for the solves a reference judges: said, since it
+    // changes the kind of reference.
+    if (!a.quiet && !a.mesh_because.empty()) {
+        fmt::print(
+            "{}: a mesh reference, since {} is given (--kind points for a point reference)\n",
+            scene.name, a.mesh_because);
+    }
     warn_specular(scene, a.quiet, SpecularUse::solve);
     apply_scene_settings(a.flags, scene, a.options.solver);
     size_for_budget(a, scene, points);

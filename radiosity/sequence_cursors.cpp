@@ -13,7 +13,8 @@ void SequenceCursors::advance(std::span<const RayRegion> regions, RayStrata& str
     for (std::uint32_t l = 0; l < strata.sources(); ++l) {
         const RayRegion& g = regions[l];
         // The domain's centre is inside the leaf whatever the rounding of its boundaries.
-        const Vec2 centre = Domain{float(g.u0), float(g.v0), float(g.s)}.centre(g.map != RegionMap::triangle);
+        const Vec2 centre =
+            Domain{float(g.u0), float(g.v0), float(g.s)}.centre(g.map != RegionMap::triangle);
         const std::size_t leaf = m_leaves.number(g.patch, std::uint8_t(g.side), centre);
         strata.continue_source(l, leaf, m_next_point[leaf]);
         m_next_point[leaf] += strata.first_ray(l + 1) - strata.first_ray(l);

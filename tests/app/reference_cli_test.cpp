@@ -74,6 +74,11 @@ TEST_F(ReferenceCli, AMeshFlagMakesAMeshReferenceThatChecksItselfAgainstPoints) 
     plates();
     const CliRun r = run("reference plates.json --max-area 0.1 --rays 20000 -o ref");
     ASSERT_EQ(r.exit_code, 0) << r.err;
+    // The flag that made it one is named: a --sequence meant for the judged solves would do so.
+    EXPECT_NE(r.out.find("plates: a mesh reference, since --rays is given (--kind points for a "
+                         "point reference)"),
+              std::string::npos)
+        << r.out;
     const nlohmann::json summary = json_of("ref/reference.json");
     const nlohmann::json& ref = summary["reference"];
     const auto points = 4 * summary["counts"]["leaves"].get<std::uint64_t>();  // 4 an element
@@ -95,7 +100,8 @@ TEST_F(ReferenceCli, TheKindsFlagsAreKeptApart) {
     plates();
     const auto before = snapshot(m_temp.path());
     refused("reference plates.json --points 100 --max-area 0.1 -o ref",
-            "--points is for a point reference; this one is a mesh reference");
+            "--points is for a point reference; this one is a mesh reference (--max-area makes "
+            "it one; --kind points asks for points)");
     refused("reference plates.json --kind points --max-area 0.1 -o ref",
             "--max-area is for a mesh reference; this one is a point reference");
     refused("reference plates.json --kind mesh --paths 8 -o ref",

@@ -17,8 +17,12 @@ namespace hmcr::test {
 namespace {
 
 RayRegion region_of(const Hierarchy& h, const Element& e) {
-    return {e.domain.u0, e.domain.v0, e.domain.s, e.id.patch,
-            region_map(h.patch_set().patches[e.id.patch]), e.id.side};
+    return {e.domain.u0,
+            e.domain.v0,
+            e.domain.s,
+            e.id.patch,
+            region_map(h.patch_set().patches[e.id.patch]),
+            e.id.side};
 }
 
 TEST(SequenceCursors, ALeafKeepsItsSequenceAndGoesOnFromItsLastPoint) {
