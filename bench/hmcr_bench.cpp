@@ -28,8 +28,10 @@
 #include "bench/control_variate.h"
 #include "bench/scaling.h"
 #include "common/atomic_file.h"
+#include "common/error.h"
 #include "radiosity/oracle_registry.h"
 #include "radiosity/solver_options.h"
+#include "radiosity/solver_settings.h"
 
 namespace hmcr::bench {
 namespace {
@@ -131,9 +133,13 @@ int main(int argc, char** argv) {
     app.add_option_function<std::string>(
         "--sequence",
         [&sequence](const std::string& v) {
-            const auto parsed = hmcr::SettingNames<hmcr::RaySequence>::parse(v);
-            if (!parsed) throw CLI::ValidationError("--sequence", "random or sobol");
-            sequence = *parsed;
+            hmcr::SolverOptions chosen;  // the solver's own reading, and its message
+            try {
+                hmcr::apply_settings({{"sequence", v}}, chosen);
+            } catch (const hmcr::InputError& e) {
+                throw CLI::ValidationError(e.what());
+            }
+            sequence = chosen.sequence;
         },
         "the table's ray sequence, random or sobol (default: the solver's)");
     try {
