@@ -27,10 +27,10 @@ public:
     std::uint64_t first() const { return m_first; }
 
     // Which points of which sequence a source's rays are (rays/sobol.h). As assigned, source l's
-    // rays are points 0, 1, ... of sequence l + first() of the iteration's key; continued (a
-    // fixed mesh's leaves, docs/design.md §3.2), they go on from point first_point(l) of a
-    // sequence the source keeps through the iterations, scrambled by `key`.
-    // Continues the sequences, scrambled by `key`: then each source's by continue_source.
+    // rays are points 0, 1, ... of sequence l + first(), scrambled by the iteration's key.
+    // continue_sequences(key), then continue_source for every source, makes them the points
+    // from first_point(l) on of a sequence the source keeps through the iterations (a fixed
+    // mesh's leaves, docs/design.md §3.2), all scrambled by `key`; the next assign undoes it.
     void continue_sequences(std::uint64_t key);
     void continue_source(std::uint32_t source, std::uint64_t sequence, std::uint64_t first_point) {
         m_sequence[source] = sequence;

@@ -74,18 +74,5 @@ TEST(SequenceCursors, ALeafKeepsItsSequenceAndGoesOnFromItsLastPoint) {
     EXPECT_EQ(sequence_of.size(), 7u);
 }
 
-TEST(SequenceCursors, AssignedStrataStartEverySourceAtPointZeroOfItsOwnSequence) {
-    RayStrata strata;
-    strata.assign(std::vector<double>{1, 1}, 10, 0.5, 40);
-    EXPECT_FALSE(strata.continued());
-    EXPECT_EQ(strata.sequence(1), 41u);
-    EXPECT_EQ(strata.first_point(1), 0u);
-    EXPECT_EQ(strata.scramble_key(9), 9u);
-    strata.continue_sequences(7);
-    EXPECT_TRUE(strata.continued());
-    strata.assign(std::vector<double>{1, 1}, 10, 0.5, 40);  // a new iteration's strata
-    EXPECT_FALSE(strata.continued());
-}
-
 }  // namespace
 }  // namespace hmcr::test

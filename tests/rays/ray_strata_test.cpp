@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The strata that deal an iteration's rays to its sources (rays/ray_strata.h): every ray has one
-// source, each source's count is within one of its share, and over the offset the count's mean
-// is the share exactly.
+// source, each source's count is within one of its share, over the offset the count's mean is
+// the share exactly, and each source's rays are the points of the sequence the strata name.
 #include "rays/ray_strata.h"
 
 #include <gtest/gtest.h>
@@ -60,6 +60,27 @@ TEST(RayStrata, TheMeanCountOverTheOffsetIsTheShare) {
         EXPECT_NEAR(sum[l] / offsets, double(rays) * kWeights[l] / total, 2.0 / offsets)
             << "source " << l;
     }
+}
+
+// Assigned strata start every source at point 0 of its own sequence (l + first()), scrambled by
+// the iteration's key; continued ones take the sources' own, until the next assign.
+TEST(RayStrata, AssignedStrataStartEverySourceAtPointZeroOfItsOwnSequence) {
+    RayStrata strata;
+    strata.assign(std::vector<double>{1, 1}, 10, 0.5, 40);
+    EXPECT_FALSE(strata.continued());
+    EXPECT_EQ(strata.sequence(1), 41u);
+    EXPECT_EQ(strata.first_point(1), 0u);
+    EXPECT_EQ(strata.scramble_key(9), 9u);
+    strata.continue_sequences(7);
+    strata.continue_source(0, 12, 0);
+    strata.continue_source(1, 3, 500);
+    EXPECT_TRUE(strata.continued());
+    EXPECT_EQ(strata.sequence(1), 3u);
+    EXPECT_EQ(strata.first_point(1), 500u);
+    EXPECT_EQ(strata.scramble_key(9), 7u);
+    strata.assign(std::vector<double>{1, 1}, 10, 0.5, 40);  // a new iteration's strata
+    EXPECT_FALSE(strata.continued());
+    EXPECT_EQ(strata.sequence(1), 41u);
 }
 
 }  // namespace
