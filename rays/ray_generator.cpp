@@ -70,14 +70,40 @@ struct Streams {
         const VU b = mix(du, hn::Xor(a, hn::Set(du, key + 2 * kGamma)));
         state = mix(du, hn::Xor(b, hn::Add(index, hn::Set(du, 3 * kGamma))));
     }
-    V uniform(DU du) {
+    VU next(DU du) {
+        state = hn::Add(state, hn::Set(du, kGamma));
+        return mix(du, state);
+    }
+    V uniform(DU du) { return to_unit(hn::ShiftRight<11>(next(du))); }
+    // 53 bits as a fraction in [0, 1).
+    static V to_unit(VU bits) {
         const D d;
         const DI di;
-        state = hn::Add(state, hn::Set(du, kGamma));
-        const VU bits = hn::ShiftRight<11>(mix(du, state));
         return hn::Mul(hn::ConvertTo(d, hn::BitCast(di, bits)), hn::Set(d, 0x1.0p-53));
     }
 };
+
+using DU32 = hn::Rebind<std::uint32_t, DU>;
+using VU32 = hn::Vec<DU32>;
+
+// rays/sobol.h's owen_scramble in every lane.
+template <int kShift>
+HWY_INLINE VU32 swap_digits(DU32 du32, VU32 x, std::uint32_t mask) {
+    const VU32 m = hn::Set(du32, mask);
+    return hn::Or(hn::And(hn::ShiftRight<kShift>(x), m), hn::ShiftLeft<kShift>(hn::And(x, m)));
+}
+HWY_INLINE VU32 reverse_bits(DU32 du32, VU32 x) {
+    x = swap_digits<1>(du32, x, 0x55555555u);
+    x = swap_digits<2>(du32, x, 0x33333333u);
+    x = swap_digits<4>(du32, x, 0x0f0f0f0fu);
+    x = swap_digits<8>(du32, x, 0x00ff00ffu);
+    return hn::RotateRight<16>(x);
+}
+HWY_INLINE VU32 owen_scramble(DU32 du32, VU32 x, VU32 seed) {
+    x = hn::Add(reverse_bits(du32, x), seed);
+    for (const std::uint32_t c : kOwenMultipliers) x = hn::Xor(x, hn::Mul(x, hn::Set(du32, c)));
+    return reverse_bits(du32, x);
+}
 
 // Density proportional to (1 - x) a + x b on [0, 1] (rays/sampling.h's sample_linear).
 HWY_INLINE V linear(D d, V a, V b, V xi) {
@@ -129,17 +155,27 @@ HWY_INLINE void cross3(const V a[3], const V b[3], V out[3]) {
 
 using M = hn::Mask<D>;
 
-// A vector of rays' uniforms from ray `ray` on: `draws` (rays/sobol.h's layout, `stride`
-// apart), or else the rays' keyed streams.
-HWY_INLINE void ray_uniforms(D d, const double* draws, std::size_t stride, std::uint64_t seed,
-                             std::uint64_t key, std::uint64_t ray, std::size_t k, V xi[kRayDraws]) {
+// A vector of rays' uniforms from ray `ray` on, from their keyed streams; with `digits` and
+// `scrambles` (rays/sobol.h's sobol_digits, `stride` apart) finished as sobol_draws does.
+HWY_INLINE void ray_uniforms(D d, const std::uint32_t* digits, const std::uint32_t* scrambles,
+                             std::size_t stride, std::uint64_t seed, std::uint64_t key,
+                             std::uint64_t ray, std::size_t k, V xi[kRayDraws]) {
     const DU du;
-    if (draws != nullptr) {
-        for (std::size_t j = 0; j < kRayDraws; ++j) xi[j] = hn::LoadU(d, draws + j * stride + k);
-    } else {
-        Streams rng(du, seed, key, hn::Iota(du, ray));
+    Streams rng(du, seed, key, hn::Iota(du, ray));
+    if (digits == nullptr) {
         for (std::size_t j = 0; j < kRayDraws; ++j) xi[j] = rng.uniform(du);
+        return;
     }
+    const DU32 du32;
+    rng.next(du);  // the alias pick's draw, unused: the others keep their places
+    xi[0] = hn::Zero(d);
+    for (std::size_t j = 0; j < kSequenceDimensions; ++j) {
+        const VU32 high = owen_scramble(du32, hn::LoadU(du32, digits + j * stride + k),
+                                        hn::LoadU(du32, scrambles + j * stride + k));
+        const VU low = hn::ShiftRight<43>(rng.next(du));
+        xi[j + 1] = Streams::to_unit(hn::Or(hn::ShiftLeft<21>(hn::PromoteTo(du, high)), low));
+    }
+    xi[kRayDraws - 1] = rng.uniform(du);
 }
 
 // The rays' regions: the ones the strata dealt (`given`, from ray k), or Walker's alias
@@ -318,19 +354,21 @@ HWY_INLINE void store_rays(D d, const V origin[3], const V dir[3], V u, V v, V d
     }
 }
 
-// `draws`, when given, holds every ray's uniforms (rays/sobol.h's layout, `stride` apart and
-// readable a whole vector past n); otherwise they come from the rays' keyed streams. `given`,
-// when given, holds every ray's region (as readable), which the alias table otherwise picks.
+// `digits` and `scrambles`, when given, hold every ray's Sobol digits and their scrambles
+// (rays/sobol.h's sobol_digits, `stride` apart and readable a whole vector past n); otherwise
+// the uniforms come from the rays' keyed streams alone. `given`, when given, holds every ray's
+// region (as readable), which the alias table otherwise picks.
 void GenerateRays(const Patch* patches, const RayRegion* regions, std::size_t region_count,
                   const AliasTable::Bin* bins, std::uint64_t seed, std::uint64_t key,
-                  std::uint64_t first, std::size_t n, const double* draws, std::size_t stride,
-                  const std::uint32_t* given, GeneratedRays* out, std::size_t offset) {
+                  std::uint64_t first, std::size_t n, const std::uint32_t* digits,
+                  const std::uint32_t* scrambles, std::size_t stride, const std::uint32_t* given,
+                  GeneratedRays* out, std::size_t offset) {
     const D d;
     const std::size_t lanes = hn::Lanes(d);
     const rg::PatchLayout layout = rg::patch_layout();
     for (std::size_t k = 0; k < n; k += lanes) {
         V xi[kRayDraws];
-        ray_uniforms(d, draws, stride, seed, key, first + k, k, xi);
+        ray_uniforms(d, digits, scrambles, stride, seed, key, first + k, k, xi);
         const V xi_region = xi[0], xi_u = xi[1], xi_v = xi[2], xi_r = xi[3], xi_phi = xi[4];
         const V dither = xi[5];
         const VI region = ray_regions(d, given, k, bins, region_count, xi_region);
@@ -437,31 +475,36 @@ void generate_rays(const std::vector<Patch>& patches, std::span<const RayRegion>
                    const AliasTable& table, std::uint64_t seed, std::uint64_t key,
                    std::uint64_t first, std::size_t n, GeneratedRays& out, std::size_t offset,
                    RaySequence sequence, const RayStrata* strata) {
-    const double* draws = nullptr;
+    const std::uint32_t* digits = nullptr;
+    const std::uint32_t* scrambles = nullptr;
     const std::uint32_t* given = nullptr;
     // Padded by more lanes than the widest vector of any target has, so that the last rays'
     // loads stay inside (HWY_MAX_BYTES, here outside the targets' code, is the last target's).
     constexpr std::size_t kPadding = 64;
     const std::size_t stride = n + kPadding;
     if (sequence == RaySequence::sobol) {
-        thread_local std::vector<double> buffer;
-        thread_local std::vector<std::uint32_t> sources;
-        resize_populated(buffer, kRayDraws * stride);
+        thread_local std::vector<std::uint32_t> digit_buffer, scramble_buffer, sources;
+        resize_populated(digit_buffer, kSequenceDimensions * stride);
+        resize_populated(scramble_buffer, kSequenceDimensions * stride);
         resize_populated(sources, stride);
-        sobol_draws(seed, key, *strata, first, n, buffer.data(), stride, sources.data());
-        // The padding is read too: uniforms and the first source, so that its gathers stay
+        sobol_digits(seed, key, *strata, first, n, digit_buffer.data(), scramble_buffer.data(),
+                     stride, sources.data());
+        // The padding is read too: digits and the first source, so that its gathers stay
         // inside.
-        for (std::size_t d = 0; d < kRayDraws; ++d) {
-            std::fill(buffer.begin() + std::ptrdiff_t(d * stride + n),
-                      buffer.begin() + std::ptrdiff_t((d + 1) * stride), 0.0);
+        for (std::size_t d = 0; d < kSequenceDimensions; ++d) {
+            for (auto* buffer : {&digit_buffer, &scramble_buffer}) {
+                std::fill(buffer->begin() + std::ptrdiff_t(d * stride + n),
+                          buffer->begin() + std::ptrdiff_t((d + 1) * stride), 0u);
+            }
         }
         std::fill(sources.begin() + std::ptrdiff_t(n), sources.end(), 0);
-        draws = buffer.data();
+        digits = digit_buffer.data();
+        scrambles = scramble_buffer.data();
         given = sources.data();
     }
     HWY_DYNAMIC_DISPATCH(GenerateRays)
-    (patches.data(), regions.data(), regions.size(), table.bins(), seed, key, first, n, draws,
-     stride, given, &out, offset);
+    (patches.data(), regions.data(), regions.size(), table.bins(), seed, key, first, n, digits,
+     scrambles, stride, given, &out, offset);
 }
 
 }  // namespace hmcr

@@ -2,6 +2,7 @@
 #include "rays/sobol.h"
 
 #include <boost/random/sobol.hpp>
+#include <vector>
 
 #include "rays/ray_strata.h"
 #include "rays/rng.h"
@@ -20,12 +21,6 @@ std::uint32_t reverse_bits(std::uint32_t x) {
 // Outside the rays' indices (below 2^62), so that no ray's stream is a scramble's.
 constexpr std::uint64_t kScrambleStreams = (std::uint64_t(1) << 63) + (std::uint64_t(1) << 32);
 
-// 32 scrambled digits and the stream's next 21: a uniform of 53 bits.
-double with_low_digits(std::uint32_t digits, std::uint32_t scramble, Rng& rng) {
-    const std::uint64_t high = owen_scramble(digits, scramble);
-    return double((high << 21) | (rng.next_u64() >> 43)) * 0x1.0p-53;
-}
-
 }  // namespace
 
 std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed) {
@@ -33,22 +28,19 @@ std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed) {
     // by an even constant carries upward only.
     x = reverse_bits(x);
     x += seed;
-    x ^= x * 0x6c50b47cu;
-    x ^= x * 0xb82f1e52u;
-    x ^= x * 0xc7afe638u;
-    x ^= x * 0x8d22f6e6u;
+    for (const std::uint32_t c : kOwenMultipliers) x ^= x * c;
     return reverse_bits(x);
 }
 
-void sobol_draws(std::uint64_t seed, std::uint64_t key, const RayStrata& strata,
-                 std::uint64_t first, std::size_t n, double* out, std::size_t stride,
-                 std::uint32_t* source) {
+void sobol_digits(std::uint64_t seed, std::uint64_t key, const RayStrata& strata,
+                  std::uint64_t first, std::size_t n, std::uint32_t* digits,
+                  std::uint32_t* scrambles, std::size_t stride, std::uint32_t* source) {
     // Boost's engine (Joe and Kuo's direction numbers) runs in Gray-code order from the
     // sequence's second point: its state after seed(p - 1) is point p (point 0 is all zeros),
     // so that a source's first 2^m rays are the net they should be. Seeding costs a few XORs a
     // digit of the index, each next point one XOR a dimension.
     boost::random::sobol engine(kSequenceDimensions);
-    std::uint32_t scramble[kSequenceDimensions];
+    std::uint32_t scramble[kSequenceDimensions] = {};
     std::uint32_t current = 0;
     std::uint64_t end = 0;    // of the current source's rays: none yet
     std::uint64_t start = 0;  // ray + start is the ray's point in its source's sequence
@@ -67,15 +59,28 @@ void sobol_draws(std::uint64_t seed, std::uint64_t key, const RayStrata& strata,
             engine.seed(point > 0 ? point - 1 : 0);
         }
         const bool origin = ray + start == 0;
-        Rng rng(seed, key, ray);
+        for (std::size_t d = 0; d < kSequenceDimensions; ++d) {
+            digits[d * stride + i] = origin ? std::uint32_t(0) : std::uint32_t(engine() >> 32);
+            scrambles[d * stride + i] = scramble[d];
+        }
+        source[i] = current;
+    }
+}
+
+void sobol_draws(std::uint64_t seed, std::uint64_t key, const RayStrata& strata,
+                 std::uint64_t first, std::size_t n, double* out, std::size_t stride,
+                 std::uint32_t* source) {
+    std::vector<std::uint32_t> digits(kSequenceDimensions * n), scrambles(digits.size());
+    sobol_digits(seed, key, strata, first, n, digits.data(), scrambles.data(), n, source);
+    for (std::size_t i = 0; i < n; ++i) {
+        Rng rng(seed, key, first + i);
         rng.next_u64();  // the alias pick's draw, unused: the others keep their places
         out[i] = 0;
         for (std::size_t d = 0; d < kSequenceDimensions; ++d) {
-            const auto digits = origin ? std::uint32_t(0) : std::uint32_t(engine() >> 32);
-            out[(d + 1) * stride + i] = with_low_digits(digits, scramble[d], rng);
+            const std::uint64_t high = owen_scramble(digits[d * n + i], scrambles[d * n + i]);
+            out[(d + 1) * stride + i] = double((high << 21) | (rng.next_u64() >> 43)) * 0x1.0p-53;
         }
         out[(kRayDraws - 1) * stride + i] = rng.uniform();
-        source[i] = current;
     }
 }
 

@@ -30,17 +30,28 @@ inline constexpr std::size_t kSequenceDimensions = 4;  // u, v, r, phi; the dith
 // Ray r of source l is point strata.first_point(l) + r - strata.first_ray(l) of its sequence
 // s = strata.sequence(l) (l + strata.first(), from point 0, unless the strata continue the
 // sources' sequences), dimension d scrambled by the hash keyed (seed, strata.scramble_key(key),
-// 2^63 + 2^32 + 4 s + d). Each dimension takes
-// its first 32 binary digits from the scrambled sequence and the next 21 from the ray's keyed
-// stream (a full Owen scramble makes those uniform and independent); draw 0 (an alias pick's)
-// is 0, and the dither is the stream's last uniform.
+// 2^63 + 2^32 + 4 s + d). Each dimension takes its first 32 binary digits from the scrambled
+// sequence and the next 21 from the ray's keyed stream (a full Owen scramble makes those
+// uniform and independent); draw 0 (an alias pick's) is 0, and the dither is the stream's last
+// uniform. This is the one-ray reference; the vector ray generator finishes sobol_digits' output
+// the same way in lanes.
 void sobol_draws(std::uint64_t seed, std::uint64_t key, const RayStrata& strata,
                  std::uint64_t first, std::size_t n, double* out, std::size_t stride,
                  std::uint32_t* source);
 
+// The part of sobol_draws that walks the sequences: dimension d of ray first + i's point, its
+// 32 digits unscrambled, at digits[d * stride + i], that dimension's scramble at
+// scrambles[d * stride + i], and the ray's source at source[i]; d < kSequenceDimensions.
+void sobol_digits(std::uint64_t seed, std::uint64_t key, const RayStrata& strata,
+                  std::uint64_t first, std::size_t n, std::uint32_t* digits,
+                  std::uint32_t* scrambles, std::size_t stride, std::uint32_t* source);
+
 // Owen's nested uniform scramble of the 32-digit fraction x, by a hash (Burley, "Practical
 // Hash-based Owen Scrambling", JCGT 2020, after Laine and Karras): digit k is flipped by a
 // function of `seed` and the digits above it alone.
+// On the reversed digits x += seed, then x ^= x * c for each c of kOwenMultipliers.
 std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed);
+inline constexpr std::uint32_t kOwenMultipliers[] = {0x6c50b47cu, 0xb82f1e52u, 0xc7afe638u,
+                                                     0x8d22f6e6u};
 
 }  // namespace hmcr

@@ -88,13 +88,19 @@ TEST(RayGenerator, EveryInstructionSetGivesTheReferenceBits) {
     const AliasTable table(r.weights);
     RayStrata strata;
     strata.assign(r.weights, kRays, 0.375, 1000);
+    // Sequences continued from points of every size, the origin's among them.
+    RayStrata continued = strata;
+    continued.continue_sequences(5);
+    for (std::uint32_t l = 0; l < continued.sources(); ++l) {
+        continued.continue_source(l, 3 * l + 1, l == 2 ? 0 : (std::uint64_t(1) << (3 * l)) - 1);
+    }
     const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
     ASSERT_FALSE(targets.empty());
     for (const std::int64_t target : targets) {
         hwy::SetSupportedTargetsForTest(target);
-        for (const RaySequence sequence : {RaySequence::random, RaySequence::sobol}) {
-            expect_equal_to_reference(r, table, hwy::TargetName(target), sequence,
-                                      sequence == RaySequence::sobol ? &strata : nullptr);
+        expect_equal_to_reference(r, table, hwy::TargetName(target), RaySequence::random, nullptr);
+        for (const RayStrata* s : {&strata, &continued}) {
+            expect_equal_to_reference(r, table, hwy::TargetName(target), RaySequence::sobol, s);
         }
     }
     hwy::SetSupportedTargetsForTest(0);
