@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <boost/random/sobol.hpp>
 #include <cmath>
 #include <vector>
 
@@ -111,6 +112,30 @@ TEST(Sobol, AContinuedSourceGoesOnWhereItsLastRaysStopped) {
 
 // Over seeds, one ray's draw is uniform: its mean 1/2 within its standard error
 // sqrt(1 / 12 / seeds), for every draw and for rays at both ends of a dyadic block.
+// The digits are Boost's Sobol sequence, point p its engine's state after seed(p - 1), from a
+// source's first point and from one far along a continued sequence.
+TEST(Sobol, TheDigitsAreBoostsSequence) {
+    constexpr std::size_t n = 3000;
+    for (const std::uint64_t first_point : {std::uint64_t(0), (std::uint64_t(1) << 40) + 3}) {
+        RayStrata strata = one_source(n);
+        strata.continue_sequences(9);
+        strata.continue_source(0, 4, first_point);
+        std::vector<std::uint32_t> digits(kSequenceDimensions * n), scrambles(digits.size());
+        std::vector<std::uint32_t> source(n);
+        sobol_digits(1, 2, strata, 0, n, digits.data(), scrambles.data(), n, source.data());
+        boost::random::sobol engine(kSequenceDimensions);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint64_t p = first_point + i;
+            if (p > 0) engine.seed(p - 1);
+            for (std::size_t d = 0; d < kSequenceDimensions; ++d) {
+                const auto expected = p == 0 ? std::uint32_t(0) : std::uint32_t(engine() >> 32);
+                ASSERT_EQ(digits[d * n + i], expected) << "point " << p << ", dimension " << d;
+                ASSERT_EQ(scrambles[d * n + i], scrambles[d * n]) << "point " << p;
+            }
+        }
+    }
+}
+
 TEST(Sobol, EachDrawIsUniformOverSeeds) {
     constexpr int kSeeds = 4000;
     const RayStrata strata = one_source(2048);
