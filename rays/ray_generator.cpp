@@ -207,10 +207,36 @@ struct RegionGeometry {
     M is_triangle, is_bilinear;
 };
 
+// When every lane starts from one region (the usual case when the rays are dealt to their
+// sources), its fields are read once and broadcast: the same values the gathers would read.
+HWY_INLINE RegionGeometry one_region_geometry(D d, const RayRegion& region, const Patch& patch) {
+    RegionGeometry r;
+    r.u0 = hn::Set(d, region.u0);
+    r.v0 = hn::Set(d, region.v0);
+    r.s = hn::Set(d, region.s);
+    for (int q = 0; q < 4; ++q) {
+        for (int a = 0; a < 3; ++a) r.c[q][a] = hn::Set(d, patch.corner[q][a]);
+    }
+    const bool back = region.side == kBack;
+    for (int a = 0; a < 3; ++a) {
+        r.normal[a] = hn::Set(d, patch.normal[a]);
+        r.out_normal[a] = back ? hn::Neg(r.normal[a]) : r.normal[a];
+    }
+    const V zero = hn::Zero(d);
+    r.is_triangle = hn::Eq(zero, hn::Set(d, region.map == RegionMap::triangle ? 0.0 : 1.0));
+    r.is_bilinear = hn::Eq(zero, hn::Set(d, region.map == RegionMap::bilinear ? 0.0 : 1.0));
+    return r;
+}
+
 HWY_INLINE RegionGeometry region_geometry(D d, VI region, const RayRegion* regions,
                                           const Patch* patches, const rg::PatchLayout& layout) {
     const DU du;
     const DI di;
+    const std::int64_t first = hn::GetLane(region);
+    if (hn::AllTrue(di, hn::Eq(region, hn::Set(di, first)))) {
+        const RayRegion& one = regions[first];
+        return one_region_geometry(d, one, patches[one.patch]);
+    }
     const double* const patch_doubles = reinterpret_cast<const double*>(patches);
     const double* const region_doubles = reinterpret_cast<const double*>(regions);
     RegionGeometry r;
