@@ -308,7 +308,7 @@ public:
     IterationShot(const RefinementContext& ctx, const IterationSources& sources,
                   std::uint32_t iteration, std::uint64_t rays, RaySlice slice,
                   const std::function<void(std::uint64_t)>& on_batch, ShootingBuffers& buffers,
-                  const RayPart& part, IterationOutcome& out)
+                  const RayPart& part, const RayStrata* strata, IterationOutcome& out)
         : m_ctx(ctx),
           m_sources(sources),
           m_iteration(iteration),
@@ -323,23 +323,14 @@ public:
           // Lines both ways between the leaves (the zero surfaces' rays go one way: §3.13).
           m_both(m_fixed && ctx.bidirectional == Bidirectional::yes && sources.leaves),
           m_terms(basis_size(ctx.hierarchy.basis()) - 1),
-          m_term_quantum(ctx.hierarchy.term_quantum(out.quantum)) {
+          m_term_quantum(ctx.hierarchy.term_quantum(out.quantum)),
+          m_strata(strata) {
         // One thread cannot overlap anything: it reuses one batch's buffers, which stay in
         // cache.
         const auto threads = std::min<std::size_t>(
             tbb::this_task_arena::max_concurrency(),
             tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
         m_overlap = threads > 1;
-        if (ctx.sequence == RaySequence::sobol) {  // a Sobol ray's source is dealt, not picked
-            RayStrata& s = m_buffers.strata;
-            s.assign(sources.weights(), rays,
-                     Rng(ctx.seed, iteration, kStrataStream + part.first_key).uniform(),
-                     part.first_key);
-            if (ctx.sequence_cursors && sources.leaves) {
-                ctx.sequence_cursors->advance(sources.regions, s);
-            }
-            m_strata = &s;
-        }
     }
 
     void run() {
@@ -620,8 +611,24 @@ private:
     int m_terms;                  // K - 1: a higher basis's coefficients beyond the mean
     PowerQuantum m_term_quantum;  // what deposits toward them are counted in
     bool m_overlap = false;       // the next batch is traced while this one finishes
-    const RayStrata* m_strata = nullptr;
+    const RayStrata* m_strata;    // a Sobol shot's rays dealt to their sources; null otherwise
 };
+
+// A Sobol shot's rays dealt to their sources, into `strata`; on a fixed mesh each source leaf's
+// sequence then goes on from where its rays stopped. Every rank deals all the iteration's rays,
+// its slice empty or not, so that the sequences' cursors stay the same on every rank.
+const RayStrata* deal_rays(const RefinementContext& ctx, const IterationSources& sources,
+                           std::uint32_t iteration, std::uint64_t rays, const RayPart& part,
+                           RayStrata& strata) {
+    if (ctx.sequence != RaySequence::sobol) return nullptr;  // pseudo-random rays pick theirs
+    strata.assign(sources.weights(), rays,
+                  Rng(ctx.seed, iteration, kStrataStream + part.first_key).uniform(),
+                  part.first_key);
+    if (ctx.sequence_cursors && sources.leaves) {
+        ctx.sequence_cursors->advance(sources.regions, strata);
+    }
+    return &strata;
+}
 
 }  // namespace
 
@@ -637,10 +644,13 @@ IterationOutcome shoot_iteration(const RefinementContext& ctx, const IterationSo
         const double power_scale = sources.total / double(rays);  // S / N_iter
         out.quantum = PowerQuantum::for_iteration(power_scale * sources.max_share, rays);
     }
-    if (slice.begin >= slice.end) return out;
     std::optional<ShootingBuffers> own;
     if (!buffers) buffers = &own.emplace();
-    IterationShot(ctx, sources, iteration, rays, slice, on_batch, *buffers, part, out).run();
+    const RayStrata* strata =
+        deal_rays(ctx, sources, iteration, rays, part, buffers->impl().strata);
+    if (slice.begin >= slice.end) return out;
+    IterationShot(ctx, sources, iteration, rays, slice, on_batch, *buffers, part, strata, out)
+        .run();
     return out;
 }
 
