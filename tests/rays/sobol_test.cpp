@@ -110,8 +110,6 @@ TEST(Sobol, AContinuedSourceGoesOnWhereItsLastRaysStopped) {
     }
 }
 
-// Over seeds, one ray's draw is uniform: its mean 1/2 within its standard error
-// sqrt(1 / 12 / seeds), for every draw and for rays at both ends of a dyadic block.
 // The digits are Boost's Sobol sequence, point p its engine's state after seed(p - 1), from a
 // source's first point and from one far along a continued sequence.
 TEST(Sobol, TheDigitsAreBoostsSequence) {
@@ -136,6 +134,8 @@ TEST(Sobol, TheDigitsAreBoostsSequence) {
     }
 }
 
+// Over seeds, one ray's draw is uniform: its mean 1/2 within its standard error
+// sqrt(1 / 12 / seeds), for every draw and for rays at both ends of a dyadic block.
 TEST(Sobol, EachDrawIsUniformOverSeeds) {
     constexpr int kSeeds = 4000;
     const RayStrata strata = one_source(2048);
