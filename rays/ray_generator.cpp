@@ -222,9 +222,9 @@ HWY_INLINE RegionGeometry one_region_geometry(D d, const RayRegion& region, cons
         r.normal[a] = hn::Set(d, patch.normal[a]);
         r.out_normal[a] = back ? hn::Neg(r.normal[a]) : r.normal[a];
     }
-    const V zero = hn::Zero(d);
-    r.is_triangle = hn::Eq(zero, hn::Set(d, region.map == RegionMap::triangle ? 0.0 : 1.0));
-    r.is_bilinear = hn::Eq(zero, hn::Set(d, region.map == RegionMap::bilinear ? 0.0 : 1.0));
+    const auto every_lane_if = [&](bool yes) { return hn::FirstN(d, yes ? hn::Lanes(d) : 0); };
+    r.is_triangle = every_lane_if(region.map == RegionMap::triangle);
+    r.is_bilinear = every_lane_if(region.map == RegionMap::bilinear);
     return r;
 }
 
