@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "radiosity/rank_merge.h"
 
+#include <algorithm>
 #include <cstring>
 #include <span>
 #include <string>
 #include <vector>
+
+#include "rays/embree_scene.h"
 
 namespace hmcr {
 namespace {
@@ -67,8 +70,13 @@ void make_by_id(Hierarchy& h, const WireElement& w) {
 }  // namespace
 
 RaySlice slice_of(std::uint64_t rays, int rank, int ranks) {
-    const std::uint64_t k = std::uint64_t(ranks), q = rays / k, m = rays % k;
-    const auto bound = [&](int r) { return q * std::uint64_t(r) + m * std::uint64_t(r) / k; };
+    // Whole packets, so that every rank traces the packets one rank would (rays/embree_scene.h).
+    constexpr std::uint64_t kPacket = EmbreeScene::kPacketRays;
+    const std::uint64_t packets = rays / kPacket + (rays % kPacket != 0);
+    const std::uint64_t k = std::uint64_t(ranks), q = packets / k, m = packets % k;
+    const auto bound = [&](int r) {
+        return std::min(rays, kPacket * (q * std::uint64_t(r) + m * std::uint64_t(r) / k));
+    };
     return {bound(rank), bound(rank + 1)};
 }
 

@@ -17,8 +17,8 @@
 
 namespace hmcr {
 
-// The rays [begin, end) of `rays` that `rank` of `ranks` shoots: contiguous, sizes differing by
-// at most one.
+// The rays [begin, end) of `rays` that `rank` of `ranks` shoots: contiguous, each beginning at a
+// multiple of EmbreeScene::kPacketRays, sizes differing by at most one packet.
 RaySlice slice_of(std::uint64_t rays, int rank, int ranks);
 
 // Makes every rank's hierarchy and outcome the whole iteration's. `refined`: ranks may have

@@ -247,18 +247,43 @@ void EmbreeScene::first_hits(const GeneratedRays& rays, std::size_t begin, std::
                              std::span<BatchHit> hits) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    for (std::size_t k = begin; k < end; ++k) {
-        const RTCRayHit rh = intersect(m_impl->scene, context, rays.origin[0][k], rays.origin[1][k],
-                                       rays.origin[2][k], rays.direction[0][k],
-                                       rays.direction[1][k], rays.direction[2][k], float(m_offset));
-        BatchHit& h = hits[k];
-        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
-            h.patch = BatchHit::kNoHit;
-            continue;
+    alignas(64) RTCRayHit16 rh;
+    alignas(64) int valid[16];
+    std::fill(std::begin(valid), std::end(valid), -1);
+    const float tnear = float(m_offset);
+    static_assert(kPacketRays == 16, "first_hits() makes RTCRayHit16 packets");
+    for (std::size_t first = begin; first < end; first += kPacketRays) {
+        const std::size_t n = std::min(kPacketRays, end - first);
+        for (std::size_t k = 0; k < kPacketRays; ++k) {
+            // A partial packet's idle lanes repeat its first ray: every lane stays a real query
+            // (some of Embree's code paths ignore the valid mask) and takes the same path.
+            const std::size_t j = first + (k < n ? k : 0);
+            rh.ray.org_x[k] = rays.origin[0][j];
+            rh.ray.org_y[k] = rays.origin[1][j];
+            rh.ray.org_z[k] = rays.origin[2][j];
+            rh.ray.dir_x[k] = rays.direction[0][j];
+            rh.ray.dir_y[k] = rays.direction[1][j];
+            rh.ray.dir_z[k] = rays.direction[2][j];
+            rh.ray.tnear[k] = tnear;
+            rh.ray.tfar[k] = kInf;
+            rh.ray.time[k] = 0;
+            rh.ray.mask[k] = ~0u;
+            rh.ray.id[k] = unsigned(k);
+            rh.ray.flags[k] = 0;
+            rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+            rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
         }
-        const std::uint32_t t = rh.hit.primID;
-        h = {m_triangle_patch[t], m_triangle_patch.second_of_quad(t), rh.ray.tfar, rh.hit.u,
-             rh.hit.v};
+        rtcIntersect16(valid, m_impl->scene, &context, &rh);
+        for (std::size_t k = 0; k < n; ++k) {
+            BatchHit& h = hits[first + k];
+            if (rh.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) {
+                h.patch = BatchHit::kNoHit;
+                continue;
+            }
+            const std::uint32_t t = rh.hit.primID[k];
+            h = {m_triangle_patch[t], m_triangle_patch.second_of_quad(t), rh.ray.tfar[k],
+                 rh.hit.u[k], rh.hit.v[k]};
+        }
     }
 }
 

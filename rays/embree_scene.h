@@ -69,9 +69,11 @@ public:
     // first_hit() with the triangle and its barycentric coordinates (for a patch scene the
     // triangle index counts the two triangles of each quad).
     std::optional<TriangleHit> first_hit_triangle(const Vec3& origin, const Vec3& direction) const;
-    // first_hit() of rays [begin, end) of a batch into hits[begin, end), for a patch scene:
-    // one incoherent single-ray query each (packets and streams gain nothing for incoherent
-    // rays on the measured machines).
+    // first_hit() of rays [begin, end) of a batch into hits[begin, end), for a patch scene, in
+    // 16-wide packets from `begin` (kPacketRays; docs/design.md §3.3 says why). Embree's order of
+    // traversal follows a packet's rays, so a tie between two triangles could go either way by
+    // a ray's packet mates: ranges that start at multiples of kPacketRays of one numbering make
+    // the same packets, and the same hits, however the numbering is split.
     void first_hits(const GeneratedRays& rays, std::size_t begin, std::size_t end,
                     std::span<BatchHit> hits) const;
     // Whether the open segment between two surface points is unoccluded.
@@ -81,6 +83,8 @@ public:
     void visible_many(std::span<const Vec3> p, std::span<const Vec3> q, std::span<bool> out) const;
 
     double offset() const { return m_offset; }  // self-hit offset, metres
+
+    static constexpr std::size_t kPacketRays = 16;  // rays in one first_hits() query
 
     struct Impl;  // opaque: keeps RTC types out of this header
 

@@ -7,22 +7,28 @@
 
 #include <limits>
 
+#include "rays/embree_scene.h"
+
 namespace hmcr::test {
 namespace {
 
-TEST(RankMerge, SlicesCoverTheRaysOnceInOrderWithinOneRayOfEachOther) {
-    for (std::uint64_t rays : {0ull, 1ull, 2ull, 7ull, 2'680'000ull, 1'000'000'000'000'000ull}) {
+// Slices of whole packets, so that every rank traces the packets one rank would.
+TEST(RankMerge, SlicesCoverTheRaysOnceInOrderInWholePacketsWithinOnePacketOfEachOther) {
+    constexpr std::uint64_t packet = EmbreeScene::kPacketRays;
+    for (std::uint64_t rays :
+         {0ull, 1ull, 2ull, 7ull, 17ull, 33ull, 2'680'000ull, 1'000'000'000'000'007ull}) {
         for (int ranks : {1, 2, 3, 7, 64}) {
             std::uint64_t next = 0, smallest = UINT64_MAX, largest = 0;
             for (int r = 0; r < ranks; ++r) {
                 const RaySlice s = slice_of(rays, r, ranks);
                 EXPECT_EQ(s.begin, next) << rays << " rays, rank " << r << " of " << ranks;
+                EXPECT_TRUE(s.begin % packet == 0 || s.begin == rays) << rays << ", " << r;
                 next = s.end;
                 smallest = std::min(smallest, s.end - s.begin);
                 largest = std::max(largest, s.end - s.begin);
             }
             EXPECT_EQ(next, rays);
-            EXPECT_LE(largest - smallest, 1u);
+            EXPECT_LE(largest - smallest, packet) << rays << " rays, " << ranks << " ranks";
         }
     }
 }
