@@ -19,6 +19,7 @@ namespace hmcr::bench {
 namespace {
 
 constexpr std::uint64_t kChunk = std::uint64_t(1) << 22;
+constexpr std::size_t kGrain = 256;  // rays a task traces, as the solve's chunks
 
 double median_of(int runs, const std::function<void()>& run) {
     std::vector<double> t(std::size_t(runs), 0.0);
@@ -30,13 +31,14 @@ double median_of(int runs, const std::function<void()>& run) {
     return median(std::move(t));
 }
 
-double trace_first_hits(const EmbreeScene& scene, const std::vector<Ray>& rays, int runs) {
+double trace_first_hits(const EmbreeScene& scene, const GeneratedRays& rays, std::size_t n,
+                        int runs) {
+    std::vector<BatchHit> hits(n);
     return median_of(runs, [&] {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 4096), [&](auto r) {
+        // The solve's chunks of rays, and its query: first_hits() in packets.
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](auto r) {
             set_tracing_float_mode();
-            for (std::size_t k = r.begin(); k < r.end(); ++k) {
-                (void)scene.first_hit(rays[k].origin, rays[k].direction);
-            }
+            scene.first_hits(rays, r.begin(), r.end(), hits);
         });
     });
 }
@@ -69,19 +71,28 @@ double median(std::vector<double> seconds) {
     return seconds[seconds.size() / 2];
 }
 
-std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream) {
+GeneratedRays incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream) {
     std::vector<double> cumulative;
     double total = 0;
     for (const Patch& p : set.patches) cumulative.push_back(total += p.area);
-    std::vector<Ray> rays(n);
     Rng rng(1234, stream);
-    for (Ray& r : rays) {
+    std::vector<std::size_t> source(n);
+    for (std::size_t& s : source) {
         const auto it =
             std::upper_bound(cumulative.begin(), cumulative.end(), rng.uniform() * total);
-        const Patch& p =
-            set.patches[std::min<std::size_t>(it - cumulative.begin(), set.patches.size() - 1)];
-        r.origin = p.point(sample_element(p, Domain::root(), rng.uniform(), rng.uniform()));
-        r.direction = sample_cosine_hemisphere(p.normal, rng.uniform(), rng.uniform());
+        s = std::min<std::size_t>(std::size_t(it - cumulative.begin()), set.patches.size() - 1);
+    }
+    std::sort(source.begin(), source.end());  // one source's rays together, as the solve deals them
+    GeneratedRays rays;
+    rays.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Patch& p = set.patches[source[k]];
+        const Vec3 o = p.point(sample_element(p, Domain::root(), rng.uniform(), rng.uniform()));
+        const Vec3 d = sample_cosine_hemisphere(p.normal, rng.uniform(), rng.uniform());
+        for (int c = 0; c < 3; ++c) {
+            rays.origin[c][k] = float(o[c]);
+            rays.direction[c][k] = float(d[c]);
+        }
     }
     return rays;
 }
@@ -108,8 +119,8 @@ double solve_floor_seconds(const EmbreeScene& scene, const Hierarchy& h, std::ui
     const int runs = rays + lines_cast > kChunk ? 1 : 3;
     double seconds = 0;
     for (std::uint64_t done = 0, k = 0; done < rays; done += kChunk, ++k) {
-        const auto chunk = incoherent_rays(h.patch_set(), std::min(kChunk, rays - done), k);
-        seconds += trace_first_hits(scene, chunk, runs);
+        const std::uint64_t n = std::min(kChunk, rays - done);
+        seconds += trace_first_hits(scene, incoherent_rays(h.patch_set(), n, k), n, runs);
     }
     const std::uint64_t pairs = lines_cast / std::uint64_t(lines), chunk_pairs = kChunk / lines;
     std::vector<const Element*> leaves;

@@ -11,9 +11,6 @@
 
 namespace hmcr::bench {
 
-struct Ray {
-    Vec3 origin, direction;
-};
 struct Segment {
     Vec3 from, to;
 };
@@ -21,9 +18,10 @@ struct Segment {
 // The median of some timings (the middle one after sorting).
 double median(std::vector<double> seconds);
 
-// Incoherent first-hit rays: area-uniform origins on the patches, cosine directions (`stream`
-// keys the random numbers, for chunks).
-std::vector<Ray> incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream);
+// First-hit rays with area-uniform origins on the patches and cosine directions, the rays of
+// one patch together as the solve deals its rays to their sources, but otherwise incoherent
+// (`stream` keys the random numbers, for chunks). Only the origins and directions are filled.
+GeneratedRays incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream);
 // n_pairs random pairs of `leaves` (of h), `lines` segments between uniform points of each
 // pair (consecutive in the result): what a line-based oracle casts.
 std::vector<Segment> pair_segments(const Hierarchy& h, const std::vector<const Element*>& leaves,
