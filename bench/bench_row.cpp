@@ -54,8 +54,8 @@ RowResult run_row(const RowSpec& spec) {
         r.solver_bytes = st.hierarchy_bytes + st.cache_bytes;
         tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, spec.threads);
         const EmbreeScene embree(sol.hierarchy->patch_set());  // the solver's
-        r.floor_seconds =
-            solve_floor_seconds(embree, *sol.hierarchy, st.rays, st.lines_cast, kLines);
+        r.floor_seconds = solve_floor_seconds(embree, *sol.hierarchy, st.rays, st.lines_cast,
+                                              kLines, o.sequence == RaySequence::sobol);
     }
     // Run to run, shooting times on this virtual machine vary by up to 30%: a solve of a few
     // seconds is run three times and its median time kept (the solution is the same each time).

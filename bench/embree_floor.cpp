@@ -71,7 +71,8 @@ double median(std::vector<double> seconds) {
     return seconds[seconds.size() / 2];
 }
 
-GeneratedRays incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream) {
+GeneratedRays incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream,
+                              bool dealt) {
     std::vector<double> cumulative;
     double total = 0;
     for (const Patch& p : set.patches) cumulative.push_back(total += p.area);
@@ -82,7 +83,7 @@ GeneratedRays incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_
             std::upper_bound(cumulative.begin(), cumulative.end(), rng.uniform() * total);
         s = std::min<std::size_t>(std::size_t(it - cumulative.begin()), set.patches.size() - 1);
     }
-    std::sort(source.begin(), source.end());  // one source's rays together, as the solve deals them
+    if (dealt) std::sort(source.begin(), source.end());
     GeneratedRays rays;
     rays.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
@@ -115,12 +116,12 @@ std::vector<Segment> pair_segments(const Hierarchy& h, const std::vector<const E
 }
 
 double solve_floor_seconds(const EmbreeScene& scene, const Hierarchy& h, std::uint64_t rays,
-                           std::uint64_t lines_cast, int lines) {
+                           std::uint64_t lines_cast, int lines, bool dealt) {
     const int runs = rays + lines_cast > kChunk ? 1 : 3;
     double seconds = 0;
     for (std::uint64_t done = 0, k = 0; done < rays; done += kChunk, ++k) {
         const std::uint64_t n = std::min(kChunk, rays - done);
-        seconds += trace_first_hits(scene, incoherent_rays(h.patch_set(), n, k), n, runs);
+        seconds += trace_first_hits(scene, incoherent_rays(h.patch_set(), n, k, dealt), n, runs);
     }
     const std::uint64_t pairs = lines_cast / std::uint64_t(lines), chunk_pairs = kChunk / lines;
     std::vector<const Element*> leaves;

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // `make bench`: every oracle on `cornell` and `cube-room` at 2,684,000 rays and N_s = 10, at an
 // epsilon giving about 19,000 leaves, on 1 and 2 threads, against the Embree floor of the same
-// work measured in the same run: the same number of incoherent first-hit rays plus, for the
-// line-based oracles, the same number of occlusion lines, cast N_s at a time between random
-// leaf pairs of the solution (bench/embree_floor.h). floor_x = hmcr shooting time / floor time;
-// 1 would mean refinement, sampling and deposits cost nothing. Every ray of those rows refines;
-// then `power` and `kl` on both scenes at the default refine share, the solve users run (a
-// refining pass, then the frozen pass), against the floor of all its rays (--default-share runs
-// those rows alone).
+// work measured in the same run: the same number of first-hit rays, traced as the solve traces
+// its rays, plus, for the line-based oracles, the same number of occlusion lines, cast N_s at a
+// time between random leaf pairs of the solution (bench/embree_floor.h). floor_x = hmcr
+// shooting time / floor time; 1 would mean refinement, sampling and deposits cost nothing.
+// Every ray of those rows refines; then `power` and `kl` on both scenes at the default refine
+// share, the solve users run (a refining pass, then the frozen pass), against the floor of all
+// its rays (--default-share runs those rows alone).
 //
 // Then the scaling study (bench/scaling.h), each point in a process of its own so that its peak
 // memory is its own. Every row, both kinds, goes to --results (bench/results.json), and the

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The Embree scene built from the patches' mesh vertices (shared between patches) against the
 // one built from the patches alone (every patch's corners its own): the same triangles in the
-// same order, so every query must give the same bits.
+// same order, so every query must give the same bits. And a batch's packets against single rays.
 #include "rays/embree_scene.h"
 
 #include <gtest/gtest.h>
@@ -66,6 +66,63 @@ TEST(EmbreeScene, SharedVerticesGiveTheSameHitsOnTheCornellBox) {
 
 TEST(EmbreeScene, SharedVerticesGiveTheSameHitsOnTriangles) {
     expect_same_queries(sphere_around_box());
+}
+
+// The packets of first_hits() against one single-ray query a ray: the same patch, triangle,
+// distance and barycentric coordinates, bit for bit, for ranges that start anywhere and end in a
+// partial packet.
+void expect_packets_give_single_ray_hits(const PatchMesh& mesh) {
+    const PatchSet set = build_patch_set(mesh);
+    const EmbreeScene scene(set);
+    std::vector<std::uint32_t> triangle_patch;
+    std::vector<bool> second;
+    for (std::uint32_t i = 0; i < set.patches.size(); ++i) {
+        for (int t = 0; t < (set.patches[i].is_quad() ? 2 : 1); ++t) {
+            triangle_patch.push_back(i);
+            second.push_back(t == 1);
+        }
+    }
+    constexpr std::size_t n = 20'003;
+    GeneratedRays rays;
+    rays.resize(n);
+    Rng rng(20261208, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Patch& p = set.patches[std::size_t(rng.uniform() * double(set.patches.size()))];
+        const Vec3 x = p.point(sample_element(p, Domain::root(), rng.uniform(), rng.uniform()));
+        const Vec3 d = sample_cosine_hemisphere(p.normal, rng.uniform(), rng.uniform());
+        for (int c = 0; c < 3; ++c) {
+            rays.origin[c][k] = float(x[c]);
+            rays.direction[c][k] = float(d[c]);
+        }
+    }
+    int hits = 0;
+    for (const std::size_t begin : {std::size_t(0), std::size_t(5)}) {
+        std::vector<BatchHit> packed(n);
+        scene.first_hits(rays, begin, n, packed);
+        for (std::size_t k = begin; k < n; ++k) {
+            const Vec3 x(rays.origin[0][k], rays.origin[1][k], rays.origin[2][k]);
+            const Vec3 d(rays.direction[0][k], rays.direction[1][k], rays.direction[2][k]);
+            const auto one = scene.first_hit_triangle(x, d);
+            const BatchHit& h = packed[k];
+            ASSERT_EQ(one.has_value(), h.patch != BatchHit::kNoHit) << "ray " << k;
+            if (!one) continue;
+            ++hits;
+            EXPECT_EQ(h.patch, triangle_patch.at(one->triangle)) << "ray " << k;
+            EXPECT_EQ(bool(h.second_triangle), second.at(one->triangle)) << "ray " << k;
+            EXPECT_EQ(double(h.distance), one->distance) << "ray " << k;
+            EXPECT_EQ(double(h.b1), one->u) << "ray " << k;
+            EXPECT_EQ(double(h.b2), one->v) << "ray " << k;
+        }
+    }
+    EXPECT_GT(hits, 20'000);  // both ranges, most rays landing
+}
+
+TEST(EmbreeScene, PacketsGiveTheSingleRayHitsOnTheCornellBox) {
+    expect_packets_give_single_ray_hits(load_scene("cornell").mesh);
+}
+
+TEST(EmbreeScene, PacketsGiveTheSingleRayHitsOnTriangles) {
+    expect_packets_give_single_ray_hits(sphere_around_box());
 }
 
 TEST(EmbreeScene, MeshVerticesThatAreNotThePatchesAreRefused) {
