@@ -17,17 +17,30 @@
 namespace hmcr::test {
 namespace {
 
+// Each Embree triangle's patch and whether it is a quad's second, listed here rather than taken
+// from the scene's own map (a quad is two triangles, in patch order).
+struct TriangleOf {
+    std::vector<std::uint32_t> patch;
+    std::vector<bool> second;
+};
+TriangleOf triangles_of(const PatchSet& set) {
+    TriangleOf t;
+    for (std::uint32_t i = 0; i < set.patches.size(); ++i) {
+        for (int k = 0; k < (set.patches[i].is_quad() ? 2 : 1); ++k) {
+            t.patch.push_back(i);
+            t.second.push_back(k == 1);
+        }
+    }
+    return t;
+}
+
 // Rays from uniform points of random patches in cosine directions, and segments between two
 // such points: hits, their triangles and barycentric coordinates, and visibility, bit for bit.
 void expect_same_queries(const PatchMesh& mesh) {
     const PatchSet set = build_patch_set(mesh);
     const EmbreeScene own(set.patches), shared(set);
     EXPECT_EQ(own.offset(), shared.offset());
-    // Each triangle's patch, listed here: both scenes share the triangle-to-patch map.
-    std::vector<std::uint32_t> triangle_patch;
-    for (std::uint32_t i = 0; i < set.patches.size(); ++i) {
-        triangle_patch.insert(triangle_patch.end(), set.patches[i].is_quad() ? 2 : 1, i);
-    }
+    const std::vector<std::uint32_t> triangle_patch = triangles_of(set).patch;
     Rng rng(20261125, 0);
     auto random_point = [&](const Patch*& patch) {
         patch = &set.patches[std::size_t(rng.uniform() * double(set.patches.size()))];
@@ -74,14 +87,7 @@ TEST(EmbreeScene, SharedVerticesGiveTheSameHitsOnTriangles) {
 void expect_packets_give_single_ray_hits(const PatchMesh& mesh) {
     const PatchSet set = build_patch_set(mesh);
     const EmbreeScene scene(set);
-    std::vector<std::uint32_t> triangle_patch;
-    std::vector<bool> second;
-    for (std::uint32_t i = 0; i < set.patches.size(); ++i) {
-        for (int t = 0; t < (set.patches[i].is_quad() ? 2 : 1); ++t) {
-            triangle_patch.push_back(i);
-            second.push_back(t == 1);
-        }
-    }
+    const TriangleOf triangle = triangles_of(set);
     constexpr std::size_t n = 20'003;
     GeneratedRays rays;
     rays.resize(n);
@@ -107,8 +113,8 @@ void expect_packets_give_single_ray_hits(const PatchMesh& mesh) {
             ASSERT_EQ(one.has_value(), h.patch != BatchHit::kNoHit) << "ray " << k;
             if (!one) continue;
             ++hits;
-            EXPECT_EQ(h.patch, triangle_patch.at(one->triangle)) << "ray " << k;
-            EXPECT_EQ(bool(h.second_triangle), second.at(one->triangle)) << "ray " << k;
+            EXPECT_EQ(h.patch, triangle.patch.at(one->triangle)) << "ray " << k;
+            EXPECT_EQ(bool(h.second_triangle), triangle.second.at(one->triangle)) << "ray " << k;
             EXPECT_EQ(double(h.distance), one->distance) << "ray " << k;
             EXPECT_EQ(double(h.b1), one->u) << "ray " << k;
             EXPECT_EQ(double(h.b2), one->v) << "ray " << k;
