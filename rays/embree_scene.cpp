@@ -249,9 +249,16 @@ void EmbreeScene::first_hits(const GeneratedRays& rays, std::size_t begin, std::
     rtcInitIntersectContext(&context);
     alignas(64) RTCRayHit16 rh;
     alignas(64) int valid[16];
-    std::fill(std::begin(valid), std::end(valid), -1);
-    const float tnear = float(m_offset);
     static_assert(kPacketRays == 16, "first_hits() makes RTCRayHit16 packets");
+    // What Embree only reads, once: a query writes tfar and the hit alone.
+    for (std::size_t k = 0; k < kPacketRays; ++k) {
+        valid[k] = -1;
+        rh.ray.tnear[k] = float(m_offset);
+        rh.ray.time[k] = 0;
+        rh.ray.mask[k] = ~0u;
+        rh.ray.id[k] = unsigned(k);
+        rh.ray.flags[k] = 0;
+    }
     for (std::size_t first = begin; first < end; first += kPacketRays) {
         const std::size_t n = std::min(kPacketRays, end - first);
         for (std::size_t k = 0; k < kPacketRays; ++k) {
@@ -264,12 +271,7 @@ void EmbreeScene::first_hits(const GeneratedRays& rays, std::size_t begin, std::
             rh.ray.dir_x[k] = rays.direction[0][j];
             rh.ray.dir_y[k] = rays.direction[1][j];
             rh.ray.dir_z[k] = rays.direction[2][j];
-            rh.ray.tnear[k] = tnear;
             rh.ray.tfar[k] = kInf;
-            rh.ray.time[k] = 0;
-            rh.ray.mask[k] = ~0u;
-            rh.ray.id[k] = unsigned(k);
-            rh.ray.flags[k] = 0;
             rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
             rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
         }
