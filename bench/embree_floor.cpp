@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "radiosity/shooting.h"
 #include "rays/element_sampler.h"
 #include "rays/rng.h"
 #include "rays/sampling.h"
@@ -19,7 +20,6 @@ namespace hmcr::bench {
 namespace {
 
 constexpr std::uint64_t kChunk = std::uint64_t(1) << 22;
-constexpr std::size_t kGrain = 256;  // rays a task traces, as the solve's chunks
 
 double median_of(int runs, const std::function<void()>& run) {
     std::vector<double> t(std::size_t(runs), 0.0);
@@ -36,9 +36,10 @@ double trace_first_hits(const EmbreeScene& scene, const GeneratedRays& rays, std
     std::vector<BatchHit> hits(n);
     return median_of(runs, [&] {
         // The solve's chunks of rays, and its query: first_hits() in packets.
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](auto r) {
+        tbb::parallel_for(std::size_t(0), (n + kChunkRays - 1) / kChunkRays, [&](std::size_t c) {
             set_tracing_float_mode();
-            scene.first_hits(rays, r.begin(), r.end(), hits);
+            scene.first_hits(rays, c * kChunkRays, std::min<std::size_t>(n, (c + 1) * kChunkRays),
+                             hits);
         });
     });
 }
@@ -71,8 +72,8 @@ double median(std::vector<double> seconds) {
     return seconds[seconds.size() / 2];
 }
 
-GeneratedRays incoherent_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream,
-                              bool dealt) {
+GeneratedRays first_hit_rays(const PatchSet& set, std::uint64_t n, std::uint64_t stream,
+                             bool dealt) {
     std::vector<double> cumulative;
     double total = 0;
     for (const Patch& p : set.patches) cumulative.push_back(total += p.area);
@@ -121,7 +122,7 @@ double solve_floor_seconds(const EmbreeScene& scene, const Hierarchy& h, std::ui
     double seconds = 0;
     for (std::uint64_t done = 0, k = 0; done < rays; done += kChunk, ++k) {
         const std::uint64_t n = std::min(kChunk, rays - done);
-        seconds += trace_first_hits(scene, incoherent_rays(h.patch_set(), n, k, dealt), n, runs);
+        seconds += trace_first_hits(scene, first_hit_rays(h.patch_set(), n, k, dealt), n, runs);
     }
     const std::uint64_t pairs = lines_cast / std::uint64_t(lines), chunk_pairs = kChunk / lines;
     std::vector<const Element*> leaves;

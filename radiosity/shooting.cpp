@@ -16,6 +16,7 @@
 #include "radiosity/control_variate.h"
 #include "radiosity/sequence_cursors.h"
 #include "rays/element_sampler.h"
+#include "rays/embree_scene.h"
 #include "rays/rng.h"
 #include "rays/sampling.h"
 
@@ -174,7 +175,8 @@ ShootingBuffers::~ShootingBuffers() = default;
 namespace {
 
 constexpr std::uint64_t kBatchRays = 1 << 16;
-constexpr std::uint64_t kGrain = 256;
+// Batches and chunks of whole packets: a packet's rays follow from the slice's numbering alone.
+static_assert(kChunkRays % EmbreeScene::kPacketRays == 0 && kBatchRays % kChunkRays == 0);
 
 // Pilot rays draw from streams of their own, apart from the iteration's rays.
 constexpr std::uint64_t kPilotStream = std::uint64_t(1) << 62;
@@ -393,10 +395,10 @@ private:
     void trace(Batch& b, std::uint64_t first) {
         b.first = first;
         b.n = std::min(kBatchRays, m_slice.end - first);
-        b.chunks.assign((b.n + kGrain - 1) / kGrain, {});
+        b.chunks.assign((b.n + kChunkRays - 1) / kChunkRays, {});
         tbb::parallel_for(std::uint64_t(0), b.chunks.size(), [&](std::uint64_t c) {
             set_tracing_float_mode();
-            trace_chunk(b, c * kGrain, std::min(b.n, (c + 1) * kGrain), b.chunks[c]);
+            trace_chunk(b, c * kChunkRays, std::min(b.n, (c + 1) * kChunkRays), b.chunks[c]);
         });
     }
 
@@ -577,7 +579,7 @@ private:
     // A refined mesh's landed rays' deposits toward their receivers' coefficients beyond the
     // mean, once the descents have found the receivers: on every thread, as the tracing.
     void project_landed(Batch& b, std::size_t landed) const {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, landed, kGrain),
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, landed, kChunkRays),
                           [&](const tbb::blocked_range<std::size_t>& range) {
                               for (std::size_t q = range.begin(); q != range.end(); ++q) {
                                   const std::uint32_t k = b.landed[q];

@@ -64,6 +64,10 @@ private:
     std::vector<double> m_weights;  // A_l |Delta B_l|, for the alias table
 };
 
+// The rays a task of the shooting generates and traces together (a multiple of
+// EmbreeScene::kPacketRays, so that chunks are whole packets); the bench's floor traces the same.
+inline constexpr std::uint64_t kChunkRays = 256;
+
 // The rays of an iteration that one process shoots: [begin, end) of its N (MPI ranks share an
 // iteration; a single process shoots all of it, the default).
 struct RaySlice {
